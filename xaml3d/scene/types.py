@@ -1,0 +1,405 @@
+"""The normalized scene: typed, fully resolved, immutable.
+
+This is the contract between the reader (``xaml3d.xaml`` builds it from markup) and the renderer
+(``xaml3d.render`` draws it). It never imports lxml. Conventions, everywhere in this module:
+
+- Matrices are 4x4 float64 numpy arrays in the project's COLUMN-vector convention, ``p' = M @ p``
+  (a WPF matrix from markup is the transpose; convert only with ``xaml3d.scene.transforms``).
+  They are made read-only.
+- Colours are ``RGBA`` tuples of four floats in 0..1, sRGB, STRAIGHT (not premultiplied) alpha,
+  in the order (r, g, b, a). The renderer premultiplies.
+- Angles are degrees, as in WPF, and the field names say so.
+- Every object that came from markup carries ``line`` (lxml's sourceline, 1-based) or None.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Union
+
+import numpy as np
+
+from xaml3d.errors import Diagnostic
+
+RGBA = tuple[float, float, float, float]
+Vec3 = tuple[float, float, float]
+
+WHITE: RGBA = (1.0, 1.0, 1.0, 1.0)
+BLACK: RGBA = (0.0, 0.0, 0.0, 1.0)
+TRANSPARENT: RGBA = (1.0, 1.0, 1.0, 0.0)  # WPF's Transparent is #00FFFFFF
+PLACEHOLDER: RGBA = (0.75, 0.75, 0.75, 1.0)  # stands in for 2D content xaml3d cannot draw
+
+
+def frozen_array(values, dtype=np.float64) -> np.ndarray:
+    """A read-only numpy copy of ``values`` (scene arrays are never mutated after building)."""
+    arr = np.array(values, dtype=dtype, copy=True)
+    arr.setflags(write=False)
+    return arr
+
+
+def identity() -> np.ndarray:
+    return frozen_array(np.eye(4))
+
+
+# --------------------------------------------------------------------------- brushes
+# Brush space is texture-coordinate space, y down. 2D brush transforms are 3x3 affine matrices in
+# column-vector convention (p' = M @ (x, y, 1)), or None for identity.
+
+
+@dataclass(frozen=True)
+class GradientStop:
+    color: RGBA = TRANSPARENT
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class SolidColorBrush:
+    color: RGBA = TRANSPARENT
+    opacity: float = 1.0
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class LinearGradientBrush:
+    stops: tuple[GradientStop, ...] = ()
+    start_point: tuple[float, float] = (0.0, 0.0)
+    end_point: tuple[float, float] = (1.0, 1.0)
+    mapping_mode: str = "RelativeToBoundingBox"  # or "Absolute"
+    spread_method: str = "Pad"  # "Pad" | "Reflect" | "Repeat"
+    color_interpolation_mode: str = "SRgbLinearInterpolation"
+    opacity: float = 1.0
+    transform: np.ndarray | None = None  # Brush.Transform, 3x3
+    relative_transform: np.ndarray | None = None  # Brush.RelativeTransform, 3x3
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class RadialGradientBrush:
+    stops: tuple[GradientStop, ...] = ()
+    center: tuple[float, float] = (0.5, 0.5)
+    gradient_origin: tuple[float, float] = (0.5, 0.5)
+    radius_x: float = 0.5
+    radius_y: float = 0.5
+    mapping_mode: str = "RelativeToBoundingBox"
+    spread_method: str = "Pad"
+    color_interpolation_mode: str = "SRgbLinearInterpolation"
+    opacity: float = 1.0
+    transform: np.ndarray | None = None
+    relative_transform: np.ndarray | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class ImageBrush:
+    """An image on the surface. ``image`` is the decoded picture as a read-only (H, W, 4) uint8
+    straight-alpha RGBA array, or None when the file could not be found/read (then the brush
+    draws nothing and a diagnostic says why)."""
+
+    source: str | None = None  # the ImageSource as written in markup
+    path: str | None = None  # the resolved local file path
+    image: np.ndarray | None = None
+    opacity: float = 1.0
+    viewport: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 1.0)  # x, y, w, h
+    viewport_units: str = "RelativeToBoundingBox"  # or "Absolute"
+    viewbox: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 1.0)
+    viewbox_units: str = "RelativeToBoundingBox"
+    stretch: str = "Fill"  # None | Fill | Uniform | UniformToFill
+    tile_mode: str = "None"  # None | Tile | FlipX | FlipY | FlipXY
+    alignment_x: str = "Center"
+    alignment_y: str = "Center"
+    transform: np.ndarray | None = None
+    relative_transform: np.ndarray | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class PlaceholderBrush:
+    """VisualBrush, DrawingBrush and Viewport2DVisual3D content: arbitrary 2D WPF content a 3D
+    interpreter cannot draw. Rendered as a flat neutral colour; a diagnostic is always emitted."""
+
+    kind: str = "VisualBrush"
+    color: RGBA = PLACEHOLDER
+    opacity: float = 1.0
+    line: int | None = None
+
+
+Brush = Union[SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush, PlaceholderBrush]
+
+
+# --------------------------------------------------------------------------- materials
+# A Material in the scene is a tuple of leaf passes (MaterialGroup flattened in document order).
+# A leaf with brush None draws nothing (WPF: Color is only a multiplier of the brush).
+
+
+@dataclass(frozen=True)
+class DiffuseMaterial:
+    brush: Brush | None = None
+    color: RGBA = WHITE
+    ambient_color: RGBA = WHITE
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class SpecularMaterial:
+    brush: Brush | None = None
+    color: RGBA = WHITE
+    specular_power: float = 40.0
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class EmissiveMaterial:
+    brush: Brush | None = None
+    color: RGBA = WHITE
+    line: int | None = None
+
+
+MaterialPass = Union[DiffuseMaterial, SpecularMaterial, EmissiveMaterial]
+
+
+# --------------------------------------------------------------------------- lights
+# Light geometry (direction, position) is in the light's own space; ``world`` is the light's
+# composite transform to world space (column convention).
+
+
+@dataclass(frozen=True)
+class AmbientLight:
+    color: RGBA = WHITE
+    world: np.ndarray = field(default_factory=identity)
+    name: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class DirectionalLight:
+    color: RGBA = WHITE
+    direction: Vec3 = (0.0, 0.0, -1.0)
+    world: np.ndarray = field(default_factory=identity)
+    name: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class PointLight:
+    color: RGBA = WHITE
+    position: Vec3 = (0.0, 0.0, 0.0)
+    range: float = math.inf
+    constant_attenuation: float = 1.0
+    linear_attenuation: float = 0.0
+    quadratic_attenuation: float = 0.0
+    world: np.ndarray = field(default_factory=identity)
+    name: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class SpotLight:
+    color: RGBA = WHITE
+    position: Vec3 = (0.0, 0.0, 0.0)
+    direction: Vec3 = (0.0, 0.0, -1.0)
+    outer_cone_angle: float = 90.0  # full angle, degrees
+    inner_cone_angle: float = 180.0  # full angle, degrees; clamped to outer when lighting
+    range: float = math.inf
+    constant_attenuation: float = 1.0
+    linear_attenuation: float = 0.0
+    quadratic_attenuation: float = 0.0
+    world: np.ndarray = field(default_factory=identity)
+    name: str | None = None
+    line: int | None = None
+
+
+Light = Union[AmbientLight, DirectionalLight, PointLight, SpotLight]
+
+
+# --------------------------------------------------------------------------- geometry
+
+
+@dataclass(frozen=True)
+class Mesh:
+    """A MeshGeometry3D after WPF's rules (wpf3d.md section 5), ready to draw.
+
+    positions (N, 3) float64; indices (T, 3) int64, every index valid (prefix/truncation applied,
+    or the implicit (0,1,2),(3,4,5)... when none were given); normals (N, 3) float64, unit length
+    or zero (user normals normalized, the rest generated); texcoords (N, 2) float64 (missing ones
+    are (0, 0)). All read-only.
+    """
+
+    positions: np.ndarray
+    indices: np.ndarray
+    normals: np.ndarray
+    texcoords: np.ndarray
+    line: int | None = None
+
+    @property
+    def triangle_count(self) -> int:
+        return int(self.indices.shape[0])
+
+
+@dataclass(frozen=True)
+class Model:
+    """One GeometryModel3D, flattened: its mesh, its passes, and its composite world matrix."""
+
+    mesh: Mesh
+    material: tuple[MaterialPass, ...] = ()
+    back_material: tuple[MaterialPass, ...] = ()
+    world: np.ndarray = field(default_factory=identity)
+    name: str | None = None
+    line: int | None = None
+
+
+# --------------------------------------------------------------------------- cameras
+# Fields and defaults as WPF's (wpf3d.md section 1). The math lives in xaml3d.scene.camera_math.
+
+
+@dataclass(frozen=True)
+class PerspectiveCamera:
+    position: Vec3 = (0.0, 0.0, 0.0)
+    look_direction: Vec3 = (0.0, 0.0, -1.0)
+    up_direction: Vec3 = (0.0, 1.0, 0.0)
+    near_plane_distance: float = 0.125
+    far_plane_distance: float = math.inf
+    field_of_view: float = 45.0  # horizontal, degrees
+    transform: np.ndarray = field(default_factory=identity)  # Camera.Transform, column convention
+    name: str | None = None
+    line: int | None = None
+    is_default: bool = False  # True when the markup gave no camera and WPF's default is used
+
+
+@dataclass(frozen=True)
+class OrthographicCamera:
+    position: Vec3 = (0.0, 0.0, 0.0)
+    look_direction: Vec3 = (0.0, 0.0, -1.0)
+    up_direction: Vec3 = (0.0, 1.0, 0.0)
+    near_plane_distance: float = 0.125
+    far_plane_distance: float = math.inf
+    width: float = 2.0
+    transform: np.ndarray = field(default_factory=identity)
+    name: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class MatrixCamera:
+    """ViewMatrix and ProjectionMatrix are kept in WPF's ROW-vector form, exactly as written in
+    markup (they are WPF's own matrices, Direct3D clip space: visible where 0 <= z <= w)."""
+
+    view_matrix: np.ndarray = field(default_factory=identity)  # WPF row-vector form
+    projection_matrix: np.ndarray = field(default_factory=identity)  # WPF row-vector form
+    transform: np.ndarray = field(default_factory=identity)  # column convention
+    name: str | None = None
+    line: int | None = None
+
+
+Camera = Union[PerspectiveCamera, OrthographicCamera, MatrixCamera]
+
+
+# --------------------------------------------------------------------------- animation
+
+
+@dataclass(frozen=True)
+class KeyFrame:
+    kind: str  # "Linear" | "Discrete" | "Spline" | "Easing"
+    key_time: str | None  # as written ("0:0:1", "50%", "Uniform", "Paced") or None
+    value: object
+    key_spline: tuple[float, float, float, float] | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class Animation:
+    """One animation timeline (DoubleAnimation, Point3DAnimation, ...UsingKeyFrames ...), read and
+    kept so that a later step can render the scene at a time t. The static render ignores it."""
+
+    type: str  # element name, e.g. "DoubleAnimation"
+    target_name: str | None
+    target_property: str | None
+    from_value: object = None
+    to_value: object = None
+    by_value: object = None
+    key_frames: tuple[KeyFrame, ...] = ()
+    begin_time: float | None = 0.0  # seconds; None = never begins
+    duration: float | str = "Automatic"  # seconds, or "Automatic" / "Forever"
+    repeat_behavior: float | str = 1.0  # iteration count, or "Forever", or ("time", seconds)
+    auto_reverse: bool = False
+    fill_behavior: str = "HoldEnd"
+    speed_ratio: float = 1.0
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class Storyboard:
+    animations: tuple[Animation, ...] = ()
+    trigger: str | None = None  # routed event that starts it ("Viewport3D.Loaded"...), or None
+    starts_at_load: bool = False
+    name: str | None = None
+    line: int | None = None
+
+
+# --------------------------------------------------------------------------- viewport & scene
+
+
+@dataclass(frozen=True)
+class Viewport:
+    """One Viewport3D: its size, camera, and everything it draws, in draw order."""
+
+    index: int
+    name: str | None
+    width: float
+    height: float
+    size_source: str  # "viewport" | "ancestor:<Type>" | "default"
+    camera: Camera | None  # None: Camera="{x:Null}", WPF draws nothing
+    models: tuple[Model, ...] = ()
+    lights: tuple[Light, ...] = ()
+    background: Brush | None = None  # the 2D background beneath (usually None: transparent)
+    clip_to_bounds: bool = True
+    line: int | None = None
+
+    @property
+    def triangle_count(self) -> int:
+        return sum(m.mesh.triangle_count for m in self.models)
+
+    def bounds(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """World-space axis-aligned bounds (min, max) of every model's vertices, or None."""
+        lo, hi = None, None
+        for m in self.models:
+            p = m.mesh.positions
+            if p.shape[0] == 0 or m.mesh.indices.shape[0] == 0:
+                continue
+            w = p @ m.world[:3, :3].T + m.world[:3, 3]
+            a, b = w.min(axis=0), w.max(axis=0)
+            lo = a if lo is None else np.minimum(lo, a)
+            hi = b if hi is None else np.maximum(hi, b)
+        return None if lo is None else (lo, hi)
+
+
+@dataclass(frozen=True)
+class Scene:
+    file: str | None
+    viewports: tuple[Viewport, ...] = ()
+    storyboards: tuple[Storyboard, ...] = ()
+    diagnostics: tuple[Diagnostic, ...] = ()
+    resources_used: tuple[str, ...] = ()  # files whose resources were read (App.xaml, merged...)
+
+    def viewport(self, which: int | str | None = None) -> Viewport:
+        """The viewport by index or x:Name (None: the first). Raises SceneError."""
+        from xaml3d.errors import SceneError
+
+        if not self.viewports:
+            raise SceneError("the document holds no Viewport3D", code="SCN001", file=self.file)
+        if which is None:
+            return self.viewports[0]
+        if isinstance(which, int) or (isinstance(which, str) and which.isdigit()):
+            i = int(which)
+            if 0 <= i < len(self.viewports):
+                return self.viewports[i]
+            raise SceneError(
+                f"viewport index {i} out of range (the document has {len(self.viewports)})",
+                code="SCN002",
+                file=self.file,
+            )
+        for vp in self.viewports:
+            if vp.name == which:
+                return vp
+        names = ", ".join(repr(v.name) for v in self.viewports if v.name) or "none named"
+        raise SceneError(f"no viewport named {which!r} ({names})", code="SCN002", file=self.file)
