@@ -1,0 +1,114 @@
+"""Conformance runs over a folder of real-world XAML files.
+
+Renders every file (with the companion resource dictionaries it needs) in every mode and
+records, per file, whether it rendered, rendered with warnings, or was refused with which
+diagnostic, plus triangle counts and timings. Used by ``tools/conformance.py`` (which writes
+``docs/conformance.md`` and a contact sheet) and by the corpus robustness test.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from xaml3d.errors import ERROR, WARNING, Diagnostic, XamlError
+
+MODES = ("shaded", "flat", "wireframe")
+
+# Resource dictionaries a file needs, by file-name prefix: application resources (App.xaml-style)
+# that live in another file of the corpus (see the corpus README).
+COMPANIONS: dict[str, tuple[str, ...]] = {
+    "006": ("008",),
+    "007": ("008",),
+    "009": ("008",),
+    "010": ("008",),
+    "011": ("008",),
+    "023": ("029",),
+    "032": ("033",),
+}
+
+
+@dataclass
+class ModeResult:
+    mode: str
+    seconds: float
+    drawn_pixels: int = 0
+    image: object = None  # PIL image (kept for the contact sheet)
+    error: str | None = None
+
+
+@dataclass
+class FileResult:
+    name: str
+    status: str  # "rendered" | "rendered with warnings" | "refused" | "no viewport"
+    viewports: int = 0
+    triangles: int = 0
+    lights: int = 0
+    load_seconds: float = 0.0
+    warnings: list[Diagnostic] = field(default_factory=list)
+    refusal: str | None = None
+    modes: list[ModeResult] = field(default_factory=list)
+
+
+def companions_for(path: Path) -> list[Path]:
+    """The corpus files whose resources ``path`` needs (matched by the 3-digit prefix)."""
+    prefix = path.name[:3]
+    out = []
+    for other in COMPANIONS.get(prefix, ()):
+        out.extend(sorted(path.parent.glob(f"{other}_*.xaml")))
+    return out
+
+
+def run_file(
+    path: Path,
+    size: tuple[int, int] | None = None,
+    ssaa: int | None = None,
+    modes: tuple[str, ...] = MODES,
+) -> FileResult:
+    """Load and render one file in every mode; never raises for a XamlError."""
+    from xaml3d.render.api import render_arrays
+    from xaml3d.xaml.loader import load
+
+    result = FileResult(name=path.name, status="refused")
+    t0 = time.perf_counter()
+    try:
+        scene = load(path, resources=companions_for(path))
+    except XamlError as exc:
+        result.load_seconds = time.perf_counter() - t0
+        result.refusal = exc.format()
+        return result
+    result.load_seconds = time.perf_counter() - t0
+    result.viewports = len(scene.viewports)
+    result.warnings = [d for d in scene.diagnostics if d.severity in (WARNING, ERROR)]
+    if not scene.viewports:
+        result.status = "no viewport"
+        return result
+    vp = scene.viewports[0]
+    result.triangles = vp.triangle_count
+    result.lights = len(vp.lights)
+    width, height = size if size else (None, None)
+    refused = False
+    for mode in modes:
+        t1 = time.perf_counter()
+        try:
+            rendering = render_arrays(scene, width=width, height=height, mode=mode, ssaa=ssaa)
+        except XamlError as exc:
+            result.modes.append(ModeResult(mode, time.perf_counter() - t1, error=exc.format()))
+            refused = True
+            result.refusal = exc.format()
+            continue
+        drawn = int(np.count_nonzero(rendering.rgba[..., 3]))
+        result.modes.append(
+            ModeResult(mode, time.perf_counter() - t1, drawn_pixels=drawn, image=rendering.image())
+        )
+        for d in rendering.diagnostics:
+            if d.severity in (WARNING, ERROR) and d not in result.warnings:
+                result.warnings.append(d)
+    if refused:
+        result.status = "refused"
+    else:
+        result.status = "rendered with warnings" if result.warnings else "rendered"
+    return result

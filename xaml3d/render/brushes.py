@@ -1,0 +1,340 @@
+"""Per-pixel brush sampling on 3D surfaces (wpf3d.md section 7).
+
+Covers SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush and the
+PlaceholderBrush (VisualBrush / DrawingBrush stand-in). Pipeline step: after rasterization, each
+covered pixel has perspective-correct texture coordinates; ``sample_brush`` turns them into
+PREMULTIPLIED rgba (Brush.Opacity included), which the rasterizer multiplies by the interpolated
+vertex lighting colour.
+
+Brush space is texture-coordinate space, y down. Relative units (RelativeToBoundingBox) refer to
+the axis-aligned box of ALL the mesh's texture coordinates (``brush_bounds``). With B the map of the
+unit box onto that box, R = RelativeTransform and T = Transform (3x3 column form), brush content
+is placed in texture space by T @ (B R B^-1) @ [B when the content is in relative units]; a pixel is
+sampled by mapping its texture coordinates back through the inverse. A non-invertible brush
+transform draws nothing (transparent).
+
+Gradients follow WPF's gradient texture generator: stops sorted stably by offset, the gradient
+line is [0, 1] (stops outside it contribute by interpolation), coincident offsets give a hard edge
+(the later stop wins from the edge on), colours interpolated in STRAIGHT alpha (in sRGB for
+SRgbLinearInterpolation, the default; in linear scRGB for ScRgbLinearInterpolation) and then
+premultiplied. Pad's start colour is the first stop at offset 0 (left limit), its end colour the
+last stop at 1. A radial gradient whose origin lies outside the ellipse uses the end colour where
+the focal ray misses the ellipse, as WPF's pixel shader does.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.scene.types import (
+    Brush,
+    ImageBrush,
+    LinearGradientBrush,
+    PlaceholderBrush,
+    RadialGradientBrush,
+    SolidColorBrush,
+)
+
+Bounds = tuple[np.ndarray, np.ndarray]
+
+
+def brush_bounds(texcoords: np.ndarray) -> Bounds:
+    """(min_xy, max_xy) of all texture coordinates: the brush's bounding box for relative units.
+
+    A zero-width (or zero-height) box, e.g. a mesh without texture coordinates (all (0, 0)), is
+    widened to extent 1 on that axis starting at its minimum, so the relative map stays invertible
+    and every coordinate on that axis samples the brush at relative position 0. No coordinates at
+    all give the unit box.
+    """
+    tc = np.asarray(texcoords, dtype=np.float64).reshape(-1, 2)
+    if tc.shape[0] == 0:
+        return np.zeros(2), np.ones(2)
+    lo = tc.min(axis=0)
+    hi = tc.max(axis=0)
+    hi = np.where(hi - lo > 0.0, hi, lo + 1.0)
+    return lo, hi
+
+
+def bounds_matrix(bounds: Bounds) -> np.ndarray:
+    """B: the unit box (0,0)-(1,1) onto the bounding box, 3x3 column form."""
+    lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
+    size = hi - lo
+    return np.array([[size[0], 0.0, lo[0]], [0.0, size[1], lo[1]], [0.0, 0.0, 1.0]])
+
+
+def brush_to_texture_matrix(brush, bounds: Bounds, relative_content: bool) -> np.ndarray:
+    """T @ (B R B^-1) @ [B if the brush's own geometry is in relative units]."""
+    b = bounds_matrix(bounds)
+    m = np.eye(3)
+    if relative_content:
+        m = b
+    if brush.relative_transform is not None:
+        r = np.asarray(brush.relative_transform, dtype=np.float64)
+        m = b @ r @ np.linalg.inv(b) @ m
+    if brush.transform is not None:
+        m = np.asarray(brush.transform, dtype=np.float64) @ m
+    return m
+
+
+def inverse_map(matrix: np.ndarray, uv: np.ndarray) -> np.ndarray | None:
+    """Texture coordinates (M, 2) back into brush space, or None for a singular matrix."""
+    det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
+    if not np.isfinite(det) or abs(det) < 1e-300:
+        return None
+    inv = np.linalg.inv(matrix)
+    return uv @ inv[:2, :2].T + inv[:2, 2]
+
+
+# --------------------------------------------------------------------------- gradients
+
+
+def _srgb_to_linear(c: np.ndarray) -> np.ndarray:
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def _linear_to_srgb(c: np.ndarray) -> np.ndarray:
+    c = np.clip(c, 0.0, 1.0)
+    return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1.0 / 2.4) - 0.055)
+
+
+def _sorted_stops(brush) -> tuple[np.ndarray, np.ndarray]:
+    offsets = np.array([s.offset for s in brush.stops], dtype=np.float64)
+    colors = np.array([s.color for s in brush.stops], dtype=np.float64).reshape(-1, 4)
+    order = np.argsort(offsets, kind="stable")
+    return offsets[order], colors[order]
+
+
+def _lookup(offsets: np.ndarray, colors: np.ndarray, t: np.ndarray, side: str) -> np.ndarray:
+    """Straight-alpha colour of the piecewise-linear stop function at t (M,) -> (M, 4)."""
+    k = offsets.shape[0]
+    i = np.searchsorted(offsets, t, side=side)
+    lo = np.clip(i - 1, 0, k - 1)
+    hi = np.clip(i, 0, k - 1)
+    # np.take is much faster than fancy indexing for millions of rows
+    off_lo = np.take(offsets, lo)
+    span = np.take(offsets, hi) - off_lo
+    pos = span > 0.0
+    frac = np.where(pos, (t - off_lo) / np.where(pos, span, 1.0), 0.0)
+    frac = np.clip(frac, 0.0, 1.0)
+    c_lo = np.take(colors, lo, axis=0)
+    return c_lo + (np.take(colors, hi, axis=0) - c_lo) * frac[:, None]
+
+
+def gradient_colors(brush, t: np.ndarray) -> np.ndarray:
+    """Premultiplied rgba (M, 4) of a gradient brush at gradient parameters t (before spread),
+    Opacity NOT applied. NaN t (no defined parameter) gives the end colour."""
+    t = np.asarray(t, dtype=np.float64).reshape(-1)
+    m = t.shape[0]
+    if not brush.stops:
+        return np.zeros((m, 4))
+    offsets, colors = _sorted_stops(brush)
+    linear = brush.color_interpolation_mode == "ScRgbLinearInterpolation"
+    if linear:
+        colors = colors.copy()
+        colors[:, :3] = _srgb_to_linear(colors[:, :3])
+    missing = np.isnan(t)
+    t = np.where(missing, 1.0, t)
+    spread = brush.spread_method
+    below = None
+    if spread == "Repeat":
+        t = t - np.floor(t)
+    elif spread == "Reflect":
+        t = np.mod(t, 2.0)
+        t = np.where(t > 1.0, 2.0 - t, t)
+    else:  # Pad: below 0 takes the LEFT limit at 0 (the first stop at 0), above 1 the right one
+        below = t < 0.0
+        t = np.clip(t, 0.0, 1.0)
+    out = _lookup(offsets, colors, t, "right")
+    if below is not None and below.any():
+        out[below] = _lookup(offsets, colors, np.zeros(1), "left")[0]
+    if missing.any():  # no parameter (degenerate line, ray missing the ellipse): end colour
+        out[missing] = _lookup(offsets, colors, np.ones(1), "right")[0]
+    if linear:
+        out[:, :3] = _linear_to_srgb(out[:, :3])
+    out[:, :3] *= out[:, 3:4]
+    return out
+
+
+def _linear_t(brush: LinearGradientBrush, q: np.ndarray) -> np.ndarray:
+    s = np.array(brush.start_point, dtype=np.float64)
+    e = np.array(brush.end_point, dtype=np.float64)
+    d = e - s
+    dd = float(d @ d)
+    if dd == 0.0:
+        return np.full(q.shape[0], np.nan)  # degenerate line: end colour everywhere
+    return ((q - s) @ d) / dd
+
+
+def _radial_t(brush: RadialGradientBrush, q: np.ndarray) -> np.ndarray:
+    """t where the ray from GradientOrigin through q meets the ellipse (t = 1 on it)."""
+    rx, ry = float(brush.radius_x), float(brush.radius_y)
+    if rx == 0.0 or ry == 0.0:
+        return np.full(q.shape[0], np.nan)
+    c = np.array(brush.center, dtype=np.float64)
+    r = np.array([rx, ry])
+    p = (q - c) / r  # unit-circle space
+    o = (np.array(brush.gradient_origin, dtype=np.float64) - c) / r
+    d = p - o
+    dd = np.einsum("ij,ij->i", d, d)
+    od = d @ o
+    oo = float(o @ o)
+    # |o + s d| = 1 at s = (-od + sqrt(od^2 - dd (oo - 1))) / dd; t = 1 / s.
+    disc = od * od - dd * (oo - 1.0)
+    root = np.sqrt(np.maximum(disc, 0.0))
+    den = root - od
+    ok = (dd > 0.0) & (disc >= 0.0) & (den > 0.0)
+    t = np.where(ok, dd / np.where(ok, den, 1.0), np.nan)  # NaN: ray misses -> end colour
+    return np.where(dd > 0.0, t, 0.0)  # at the origin itself: the first colour
+
+
+def _sample_gradient(brush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
+    relative = brush.mapping_mode != "Absolute"
+    q = inverse_map(brush_to_texture_matrix(brush, bounds, relative), uv)
+    if q is None:
+        return np.zeros((uv.shape[0], 4))
+    t = _linear_t(brush, q) if isinstance(brush, LinearGradientBrush) else _radial_t(brush, q)
+    return gradient_colors(brush, t)
+
+
+# --------------------------------------------------------------------------- images
+
+_ALIGN = {"Left": 0.0, "Top": 0.0, "Center": 0.5, "Right": 1.0, "Bottom": 1.0}
+_EPS = 1e-9  # tolerance of the TileMode None edge test (inverse-mapped coordinates round)
+
+
+def _premultiplied_image(image: np.ndarray) -> np.ndarray:
+    img = np.asarray(image, dtype=np.float64) / 255.0
+    img[..., :3] *= img[..., 3:4]
+    return img
+
+
+def bilinear(img: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
+    """Bilinear sample of a premultiplied (H, W, 4) image at pixel coordinates (texel centres at
+    half-integers); neighbours beyond the edge are clamped to the edge texel."""
+    h, w = img.shape[:2]
+    x = px - 0.5
+    y = py - 0.5
+    x0 = np.floor(x)
+    y0 = np.floor(y)
+    fx = (x - x0)[:, None]
+    fy = (y - y0)[:, None]
+    xi0 = np.clip(x0, 0, w - 1).astype(np.intp)
+    xi1 = np.clip(x0 + 1, 0, w - 1).astype(np.intp)
+    yi0 = np.clip(y0, 0, h - 1).astype(np.intp)
+    yi1 = np.clip(y0 + 1, 0, h - 1).astype(np.intp)
+    flat = img.reshape(-1, img.shape[-1])
+
+    def texel(yi, xi):
+        return np.take(flat, yi * w + xi, axis=0)
+
+    top = texel(yi0, xi0) * (1.0 - fx) + texel(yi0, xi1) * fx
+    bottom = texel(yi1, xi0) * (1.0 - fx) + texel(yi1, xi1) * fx
+    return top * (1.0 - fy) + bottom * fy
+
+
+def _tile_fraction(local: np.ndarray, mode: str, flip: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Position inside the tile (0..1) and whether the point is drawn at all."""
+    if mode == "None":
+        return local, (local >= -_EPS) & (local <= 1.0 + _EPS)
+    index = np.floor(local)
+    frac = local - index
+    if flip:
+        frac = np.where(np.mod(index, 2.0) == 1.0, 1.0 - frac, frac)
+    return frac, np.ones(local.shape, dtype=bool)
+
+
+def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
+    """TileBrush layout: the Viewbox of the image is stretched (Stretch, AlignmentX/Y) into the
+    Viewport, which is one tile; TileMode None leaves everything outside the tile transparent.
+    Absolute Viewbox units are image pixels (96 dpi assumed). Inside the tile, points outside the
+    image (Uniform letterboxing) are transparent."""
+    m = uv.shape[0]
+    out = np.zeros((m, 4))
+    if brush.image is None or brush.image.size == 0:
+        return out
+    h, w = brush.image.shape[:2]
+    vbx, vby, vbw, vbh = (float(v) for v in brush.viewbox)
+    if brush.viewbox_units != "Absolute":
+        vbx, vbw, vby, vbh = vbx * w, vbw * w, vby * h, vbh * h
+    vpx, vpy, vpw, vph = (float(v) for v in brush.viewport)
+    if brush.viewport_units != "Absolute":
+        lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
+        size = hi - lo
+        vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
+        vpy, vph = lo[1] + vpy * size[1], vph * size[1]
+    if min(vbw, vbh, vpw, vph) <= 0.0:
+        return out  # an empty viewbox or viewport draws nothing
+    sx, sy = vpw / vbw, vph / vbh
+    if brush.stretch == "Uniform":
+        sx = sy = min(sx, sy)
+    elif brush.stretch == "UniformToFill":
+        sx = sy = max(sx, sy)
+    elif brush.stretch == "None":
+        sx = sy = 1.0
+    ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
+    oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
+    q = inverse_map(brush_to_texture_matrix(brush, bounds, False), uv)
+    if q is None:
+        return out
+    mode = brush.tile_mode
+    fx, in_x = _tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+    fy, in_y = _tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+    px = vbx + (vpx + fx * vpw - ox) / sx
+    py = vby + (vpy + fy * vph - oy) / sy
+    keep = in_x & in_y & (px >= -_EPS) & (px <= w + _EPS) & (py >= -_EPS) & (py <= h + _EPS)
+    if keep.any():
+        out[keep] = bilinear(_premultiplied_image(brush.image), px[keep], py[keep])
+    return out
+
+
+# --------------------------------------------------------------------------- public
+
+
+def _premultiplied(color) -> np.ndarray:
+    c = np.array(color, dtype=np.float64)
+    c[:3] *= c[3]
+    return c
+
+
+def sample_brush(brush: Brush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
+    """Premultiplied rgba (M, 4) of ``brush`` at texture coordinates ``uv`` (M, 2), Opacity
+    included. ``bounds`` is ``brush_bounds`` of the mesh's texture coordinates."""
+    uv = np.asarray(uv, dtype=np.float64).reshape(-1, 2)
+    m = uv.shape[0]
+    with np.errstate(under="ignore"):
+        if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
+            c = _premultiplied(brush.color) * float(brush.opacity)
+            return np.broadcast_to(c, (m, 4)).copy()
+        if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)):
+            out = _sample_gradient(brush, uv, bounds)
+        elif isinstance(brush, ImageBrush):
+            out = _sample_image(brush, uv, bounds)
+        else:
+            raise TypeError(f"not a brush: {type(brush).__name__}")
+        if brush.opacity != 1.0:
+            out *= float(brush.opacity)
+        return out
+
+
+def brush_is_uniform(brush: Brush) -> bool:
+    """True when the brush is one colour everywhere (the rasterizer can skip sampling)."""
+    return isinstance(brush, (SolidColorBrush, PlaceholderBrush))
+
+
+def brush_average(brush: Brush) -> np.ndarray:
+    """A representative premultiplied colour (4,) for the ``flat`` and ``wireframe`` modes:
+    the solid colour, the mean of the gradient stops, the mean of the image pixels."""
+    if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
+        return _premultiplied(brush.color) * float(brush.opacity)
+    if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)):
+        if not brush.stops:
+            return np.zeros(4)
+        cols = np.array([_premultiplied(s.color) for s in brush.stops])
+        return cols.mean(axis=0) * float(brush.opacity)
+    if isinstance(brush, ImageBrush):
+        if brush.image is None or brush.image.size == 0:
+            return np.zeros(4)
+        img = np.asarray(brush.image, dtype=np.float64).reshape(-1, 4) / 255.0
+        img[:, :3] *= img[:, 3:4]
+        return img.mean(axis=0) * float(brush.opacity)
+    raise TypeError(f"not a brush: {type(brush).__name__}")
