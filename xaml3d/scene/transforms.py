@@ -1,0 +1,270 @@
+"""Affine 3D transformations: the matrices behind Transform3D and the camera pipeline.
+
+Covers TranslateTransform3D, ScaleTransform3D, RotateTransform3D (AxisAngleRotation3D and
+QuaternionRotation3D), MatrixTransform3D (via ``from_wpf``) and Transform3DGroup (``compose``),
+plus the "build a transformation from what it must do" tools of camera-pipeline.md section 1.
+
+Convention: COLUMN vectors, ``p' = M @ (x, y, z, 1)``, translation in the 4th column. WPF (and
+its markup) writes ROW vectors, ``p' = p M``, translation in the 4th row; ``from_wpf`` and
+``to_wpf`` are the one place where the two meet (a transpose). Every matrix returned here is a
+read-only float64 numpy array. Angles are degrees, as in WPF.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from xaml3d.errors import GeometryError
+from xaml3d.scene.types import frozen_array
+
+ArrayLike = Sequence[float] | np.ndarray
+
+# Relative tolerance for a degenerate source frame: the volume (area) spanned by the frame's
+# edge vectors divided by the product of their lengths is the |sine| of the angles between them;
+# below this the frame is treated as flat (collinear points, coplanar points, dependent vectors).
+DEGENERATE_TOL = 1e-10
+# A matrix is singular when its smallest singular value is below this fraction of its largest.
+SINGULAR_TOL = 1e-12
+
+
+def _vec(v: ArrayLike, n: int = 3, what: str = "vector") -> np.ndarray:
+    a = np.asarray(v, dtype=np.float64).reshape(-1)
+    if a.shape[0] != n:
+        raise GeometryError(f"{what} must have {n} components, got {a.shape[0]}", code="GEO001")
+    return a
+
+
+def _sine_measure(vectors: list[np.ndarray]) -> float:
+    """|det| (or, for two 2D vectors, |cross|) over the product of the lengths: 0 when flat."""
+    lengths = [float(np.linalg.norm(e)) for e in vectors]
+    if min(lengths) == 0.0 or not all(math.isfinite(x) for x in lengths):
+        return 0.0
+    det = float(np.linalg.det(np.stack(vectors, axis=1)))
+    return abs(det) / math.prod(lengths)
+
+
+def _solve_homogeneous(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
+    """The matrix M with M @ src = dst (src, dst: columns are homogeneous points/vectors)."""
+    # M src = dst  <=>  src^T M^T = dst^T: one linear solve for all rows of M at once.
+    m = np.linalg.solve(src.T, dst.T).T
+    return frozen_array(m)
+
+
+def points_to_points_2d(p0, p1, p2, q0, q1, q2) -> np.ndarray:
+    """The 3x3 affine matrix M with M @ (pi, 1) = (qi, 1) for three non-collinear points pi."""
+    p = [_vec(x, 2, "2D point") for x in (p0, p1, p2)]
+    q = [_vec(x, 2, "2D point") for x in (q0, q1, q2)]
+    if _sine_measure([p[1] - p[0], p[2] - p[0]]) < DEGENERATE_TOL:
+        raise GeometryError(
+            "points_to_points_2d: the three source points are collinear (or coincide), "
+            "so no affine map is fixed by them",
+            code="GEO001",
+        )
+    src = np.array([[*x, 1.0] for x in p]).T
+    dst = np.array([[*x, 1.0] for x in q]).T
+    return _solve_homogeneous(src, dst)
+
+
+def points_to_points(p0, p1, p2, p3, q0, q1, q2, q3) -> np.ndarray:
+    """The 4x4 affine matrix M with M @ (pi, 1) = (qi, 1) for four non-coplanar points pi."""
+    p = [_vec(x, 3, "point") for x in (p0, p1, p2, p3)]
+    q = [_vec(x, 3, "point") for x in (q0, q1, q2, q3)]
+    if _sine_measure([p[1] - p[0], p[2] - p[0], p[3] - p[0]]) < DEGENERATE_TOL:
+        raise GeometryError(
+            "points_to_points: the four source points are coplanar (or coincide), "
+            "so no affine map of 3-space is fixed by them",
+            code="GEO001",
+        )
+    src = np.array([[*x, 1.0] for x in p]).T
+    dst = np.array([[*x, 1.0] for x in q]).T
+    return _solve_homogeneous(src, dst)
+
+
+def point_and_vectors_to_point_and_vectors(p, u, v, w, q, u2, v2, w2) -> np.ndarray:
+    """The 4x4 affine matrix sending point p to q and vectors u, v, w to u2, v2, w2."""
+    vecs = [_vec(x, 3, "vector") for x in (u, v, w)]
+    if _sine_measure(vecs) < DEGENERATE_TOL:
+        raise GeometryError(
+            "point_and_vectors_to_point_and_vectors: the source vectors u, v, w are linearly "
+            "dependent (or one is zero), so no affine map is fixed by them",
+            code="GEO002",
+        )
+    # Points carry a homogeneous 1, vectors a 0: translation does not act on vectors.
+    src = np.column_stack([*(np.append(x, 0.0) for x in vecs), np.append(_vec(p, 3, "point"), 1)])
+    targets = [_vec(x, 3, "vector") for x in (u2, v2, w2)]
+    dst = np.column_stack(
+        [*(np.append(x, 0.0) for x in targets), np.append(_vec(q, 3, "point"), 1.0)]
+    )
+    return _solve_homogeneous(src, dst)
+
+
+# --------------------------------------------------------------------------- basic transforms
+
+
+def identity() -> np.ndarray:
+    return frozen_array(np.eye(4))
+
+
+def translation(dx: float, dy: float, dz: float) -> np.ndarray:
+    """TranslateTransform3D (OffsetX, OffsetY, OffsetZ)."""
+    m = np.eye(4)
+    m[:3, 3] = (dx, dy, dz)
+    return frozen_array(m)
+
+
+def _about_center(linear: np.ndarray, center: ArrayLike) -> np.ndarray:
+    """T(c) L T(-c): the linear map ``linear`` (3x3) acting about the point c."""
+    c = _vec(center, 3, "center")
+    m = np.eye(4)
+    m[:3, :3] = linear
+    m[:3, 3] = c - linear @ c
+    return frozen_array(m)
+
+
+def scaling(sx: float, sy: float, sz: float, center: ArrayLike = (0.0, 0.0, 0.0)) -> np.ndarray:
+    """ScaleTransform3D about (CenterX, CenterY, CenterZ): T(c) S T(-c)."""
+    return _about_center(np.diag([sx, sy, sz]).astype(np.float64), center)
+
+
+def _cos_sin_deg(angle_deg: float) -> tuple[float, float]:
+    """cos and sin of an angle in degrees, exact at multiples of 90 (so a quarter turn of an
+    axis-aligned model lands on exact coordinates instead of 6e-17 residues)."""
+    a = float(angle_deg) % 360.0
+    exact = {0.0: (1.0, 0.0), 90.0: (0.0, 1.0), 180.0: (-1.0, 0.0), 270.0: (0.0, -1.0)}
+    if a in exact:
+        return exact[a]
+    r = math.radians(a)
+    return math.cos(r), math.sin(r)
+
+
+def rotation_axis_angle(
+    axis: ArrayLike, angle_deg: float, center: ArrayLike = (0.0, 0.0, 0.0)
+) -> np.ndarray:
+    """RotateTransform3D with AxisAngleRotation3D: right-hand rule about the (normalized) axis,
+    about ``center``. A zero axis is the identity (WPF's rule)."""
+    a = _vec(axis, 3, "axis")
+    length = float(np.linalg.norm(a))
+    if length == 0.0 or not math.isfinite(length):
+        return _about_center(np.eye(3), center)
+    x, y, z = a / length
+    cos, sin = _cos_sin_deg(angle_deg)
+    # Rodrigues: R = cos I + sin [a]x + (1 - cos) a a^T
+    k = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+    r = cos * np.eye(3) + sin * k + (1.0 - cos) * np.outer((x, y, z), (x, y, z))
+    return _about_center(r, center)
+
+
+def rotation_quaternion(
+    x: float, y: float, z: float, w: float, center: ArrayLike = (0.0, 0.0, 0.0)
+) -> np.ndarray:
+    """RotateTransform3D with QuaternionRotation3D, WPF's formula (wpf3d.md section 5) exactly.
+
+    WPF does NOT normalize the quaternion, so neither do we: a non-unit quaternion also scales
+    and shears, as in WPF. The formula is WPF's row-vector matrix; ours is its transpose.
+    """
+    x2, y2, z2 = x + x, y + y, z + z
+    xx, yy, zz = x * x2, y * y2, z * z2
+    xy, xz, yz = x * y2, x * z2, y * z2
+    wx, wy, wz = w * x2, w * y2, w * z2
+    row_form = np.array(
+        [
+            [1.0 - (yy + zz), xy + wz, xz - wy],
+            [xy - wz, 1.0 - (xx + zz), yz + wx],
+            [xz + wy, yz - wx, 1.0 - (xx + yy)],
+        ]
+    )
+    return _about_center(row_form.T, center)
+
+
+def compose(*matrices: np.ndarray) -> np.ndarray:
+    """Transform3DGroup: apply ``matrices`` first to last, so compose(A, B) == B @ A."""
+    m = np.eye(4)
+    for a in matrices:
+        m = np.asarray(a, dtype=np.float64) @ m
+    return frozen_array(m)
+
+
+def from_wpf(m) -> np.ndarray:
+    """A WPF Matrix3D (row-vector form: 16 numbers row-major as in markup, M11 M12 M13 M14 ...
+    OffsetX OffsetY OffsetZ M44, translation in the 4th row) -> the project's column form.
+
+    ``p_row @ M_wpf == (M_col @ p_col)^T``, hence M_col = M_wpf^T. Accepts a 4x4 array or 16
+    numbers."""
+    a = np.asarray(m, dtype=np.float64)
+    if a.size != 16:
+        raise GeometryError(f"a Matrix3D has 16 numbers, got {a.size}", code="GEO004")
+    return frozen_array(a.reshape(4, 4).T)
+
+
+def to_wpf(m) -> np.ndarray:
+    """The project's column-form matrix -> WPF's row-vector Matrix3D (4x4; ``.ravel()`` gives the
+    16 numbers in markup order). The inverse of ``from_wpf`` (a transpose)."""
+    a = np.asarray(m, dtype=np.float64)
+    if a.shape != (4, 4):
+        raise GeometryError(f"expected a 4x4 matrix, got shape {a.shape}", code="GEO004")
+    return frozen_array(a.T)
+
+
+# --------------------------------------------------------------------------- applying matrices
+
+
+def transform_points(m: np.ndarray, pts) -> np.ndarray:
+    """Affine transform of points (N, 3) -> (N, 3). The bottom row of ``m`` is taken to be
+    (0, 0, 0, 1); for a projective matrix use ``transform_homogeneous``."""
+    m = np.asarray(m, dtype=np.float64)
+    p = np.asarray(pts, dtype=np.float64).reshape(-1, 3)
+    return p @ m[:3, :3].T + m[:3, 3]
+
+
+def transform_homogeneous(m: np.ndarray, pts) -> np.ndarray:
+    """Points (N, 3) -> homogeneous (N, 4) = (M @ (p, 1)) for every p, not divided."""
+    m = np.asarray(m, dtype=np.float64)
+    p = np.asarray(pts, dtype=np.float64).reshape(-1, 3)
+    return p @ m[:, :3].T + m[:, 3]
+
+
+def transform_directions(m: np.ndarray, vecs) -> np.ndarray:
+    """Directions (N, 3): only the linear part acts (no translation)."""
+    m = np.asarray(m, dtype=np.float64)
+    return np.asarray(vecs, dtype=np.float64).reshape(-1, 3) @ m[:3, :3].T
+
+
+def _is_singular(a: np.ndarray) -> bool:
+    if not np.all(np.isfinite(a)):
+        return True
+    s = np.linalg.svd(a, compute_uv=False)
+    return bool(s[0] == 0.0 or s[-1] <= s[0] * SINGULAR_TOL)
+
+
+def is_singular(m) -> bool:
+    """True when ``m`` cannot be inverted reliably (non-finite, or a tiny relative singular
+    value)."""
+    return _is_singular(np.asarray(m, dtype=np.float64))
+
+
+def invert(m) -> np.ndarray:
+    """The inverse of ``m``; GeometryError GEO003 when it is singular (or not finite)."""
+    a = np.asarray(m, dtype=np.float64)
+    if _is_singular(a):
+        raise GeometryError("the matrix is singular and cannot be inverted", code="GEO003")
+    return frozen_array(np.linalg.inv(a))
+
+
+def normal_matrix(m) -> np.ndarray:
+    """The 3x3 matrix for normals: inverse-transpose of the upper-left 3x3 (GEO003 if singular)."""
+    a = np.asarray(m, dtype=np.float64)[:3, :3]
+    if _is_singular(a):
+        raise GeometryError(
+            "the transform flattens space (singular 3x3 part): normals are undefined",
+            code="GEO003",
+        )
+    return frozen_array(np.linalg.inv(a).T)
+
+
+def is_mirroring(m) -> bool:
+    """True when the linear part has a negative determinant (the transform flips handedness,
+    so a locally counter-clockwise triangle is seen clockwise)."""
+    return bool(np.linalg.det(np.asarray(m, dtype=np.float64)[:3, :3]) < 0.0)
