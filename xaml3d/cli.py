@@ -1,13 +1,40 @@
-"""The ``xaml3d`` command line (click): a thin layer over the Python API."""
+"""The ``xaml3d`` command line (click): a thin layer over the Python API.
+
+Commands live in their own modules: ``render`` (cli_render), ``validate`` (cli_validate),
+``camera`` (cli_camera), ``info`` (cli_info); shared helpers in cli_common. Diagnostics go to
+stderr, data to stdout. Exit status: 0 success, 1 the input could not be handled, 2 usage error.
+"""
 
 from __future__ import annotations
 
 import click
 
 from xaml3d import __version__
+from xaml3d.cli_camera import camera_command
+from xaml3d.cli_info import info_command
+from xaml3d.cli_render import render_command
+from xaml3d.cli_validate import validate_command
+
+HELP = """Render and check WPF XAML 3D scenes (Viewport3D) headless.
+
+\b
+Examples:
+  xaml3d render scene.xaml -o scene.png
+  xaml3d validate scene.xaml
+  xaml3d camera scene.xaml --point 0,0,0
+  xaml3d info scene.xaml --json
+
+Run xaml3d COMMAND --help for each command's options.
+"""
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(context_settings={"help_option_names": ["-h", "--help"]}, help=HELP)
 @click.version_option(__version__, prog_name="xaml3d")
 def main() -> None:
-    """Render and check WPF XAML 3D scenes (Viewport3D) headless."""
+    pass
+
+
+main.add_command(render_command)
+main.add_command(validate_command)
+main.add_command(camera_command)
+main.add_command(info_command)

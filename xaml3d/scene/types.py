@@ -124,7 +124,9 @@ class PlaceholderBrush:
     line: int | None = None
 
 
-Brush = Union[SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush, PlaceholderBrush]
+Brush = Union[
+    SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush, PlaceholderBrush
+]
 
 
 # --------------------------------------------------------------------------- materials
