@@ -35,7 +35,8 @@ class Diagnostic:
     column: int | None = None
 
     def format(self) -> str:
-        return f"{_location(self.file, self.line, self.column)}: {self.severity} {self.code} {self.message}"
+        where = _location(self.file, self.line, self.column)
+        return f"{where}: {self.severity} {self.code} {self.message}"
 
     def __str__(self) -> str:
         return self.format()

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Union
 
 import numpy as np
 
@@ -124,9 +123,7 @@ class PlaceholderBrush:
     line: int | None = None
 
 
-Brush = Union[
-    SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush, PlaceholderBrush
-]
+Brush = SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush | PlaceholderBrush
 
 
 # --------------------------------------------------------------------------- materials
@@ -157,7 +154,7 @@ class EmissiveMaterial:
     line: int | None = None
 
 
-MaterialPass = Union[DiffuseMaterial, SpecularMaterial, EmissiveMaterial]
+MaterialPass = DiffuseMaterial | SpecularMaterial | EmissiveMaterial
 
 
 # --------------------------------------------------------------------------- lights
@@ -211,7 +208,7 @@ class SpotLight:
     line: int | None = None
 
 
-Light = Union[AmbientLight, DirectionalLight, PointLight, SpotLight]
+Light = AmbientLight | DirectionalLight | PointLight | SpotLight
 
 
 # --------------------------------------------------------------------------- geometry
@@ -293,7 +290,7 @@ class MatrixCamera:
     line: int | None = None
 
 
-Camera = Union[PerspectiveCamera, OrthographicCamera, MatrixCamera]
+Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
 
 
 # --------------------------------------------------------------------------- animation
