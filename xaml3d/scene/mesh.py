@@ -1,0 +1,236 @@
+"""MeshGeometry3D normalization: WPF's rules for indices, normals and texture coordinates.
+
+Turns the four collections of a MeshGeometry3D (Positions, TriangleIndices, Normals,
+TextureCoordinates) into the ``Mesh`` the renderer draws, exactly as WPF's renderer does
+(wpf3d.md section 5; GFX/resources/meshgeometry3d.cpp):
+
+- no positions: nothing drawn;
+- indices given: the longest prefix of valid indices (0 <= i < count), truncated to whole
+  triangles; no indices: the implicit triangles (0,1,2), (3,4,5), ...;
+- normals: the user's are normalized (zero stays zero); when fewer than the positions, all are
+  generated and the user's override the first ones. A generated normal is the normalized sum of
+  the UNIT face normals of the triangles using the vertex (not area-weighted);
+- texture coordinates: missing ones are (0, 0), extra ones ignored.
+
+Everything is vectorized: a million triangles take one pass of numpy per step.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.errors import INFO, WARNING, Diagnostic
+from xaml3d.scene.types import Mesh
+
+MESH_CODES: dict[str, tuple[str, str]] = {
+    "MSH001": (
+        WARNING,
+        "a triangle index is out of range: it and every index after it are ignored",
+    ),
+    "MSH002": (WARNING, "index count (or implicit position count) is not a multiple of 3"),
+    "MSH003": (WARNING, "Normals count differs from Positions count"),
+    "MSH004": (WARNING, "TextureCoordinates count differs from Positions count"),
+    "MSH005": (INFO, "degenerate (zero-area) triangles: they draw nothing"),
+    "MSH006": (WARNING, "the mesh has no triangles to draw"),
+}
+
+
+def _rows(values, width: int, dtype=np.float64) -> np.ndarray:
+    """``values`` (None, a flat list or an (n, width) array) as an (n, width) array."""
+    if values is None:
+        return np.zeros((0, width), dtype)
+    arr = np.asarray(values, dtype=dtype)
+    if arr.size % width:
+        raise ValueError(f"expected a multiple of {width} values, got {arr.size}")
+    return arr.reshape(-1, width)
+
+
+def _frozen(arr: np.ndarray, dtype=np.float64) -> np.ndarray:
+    out = np.array(arr, dtype=dtype, copy=True)
+    out.setflags(write=False)
+    return out
+
+
+def _normalize_rows(v: np.ndarray) -> np.ndarray:
+    """Unit rows; zero and non-finite rows become zero."""
+    with np.errstate(all="ignore"):  # numpy errors are fatal under the test configuration
+        length = np.sqrt(np.einsum("ij,ij->i", v, v))
+        out = np.zeros_like(v)
+        good = np.isfinite(length) & (length > 1e-150)
+        np.divide(v, length[:, None], out=out, where=good[:, None])
+        rest = np.flatnonzero(~good)
+        if rest.size:
+            # Zero rows, and rows whose squared length overflowed or underflowed: divide by the
+            # largest |component| first, which keeps the direction and makes squaring safe.
+            w = v[rest]
+            big = np.abs(w).max(axis=1)
+            ok = (big > 0) & np.isfinite(big)
+            w = np.divide(w, big[:, None], out=np.zeros_like(w), where=ok[:, None])
+            length = np.sqrt(np.einsum("ij,ij->i", w, w))
+            out[rest] = np.divide(w, length[:, None], out=np.zeros_like(w), where=ok[:, None])
+    return out
+
+
+def face_normals(positions, indices) -> np.ndarray:
+    """Unit face normals normalize((v1 - v0) x (v2 - v0)), (T, 3); degenerate faces give zero.
+
+    ``indices`` is (T, 3) or flat with every index valid. Right-handed: the normal points to the
+    side from which the triangle is seen counter-clockwise.
+    """
+    p = _rows(positions, 3)
+    tri = _rows(indices, 3, np.int64)
+    v0 = p[tri[:, 0]]
+    with np.errstate(all="ignore"):  # non-finite results are zeroed by _normalize_rows
+        n = np.cross(p[tri[:, 1]] - v0, p[tri[:, 2]] - v0)
+    return _normalize_rows(n)
+
+
+def _accumulate(fn: np.ndarray, tri: np.ndarray, n: int) -> np.ndarray:
+    """normalize(sum of the unit face normals ``fn`` over the triangles using each vertex)."""
+    flat = tri.ravel()
+    # bincount per component is a vectorized scatter-add (much faster than np.add.at).
+    summed = np.empty((n, 3))
+    for c in range(3):
+        summed[:, c] = np.bincount(flat, weights=np.repeat(fn[:, c], 3), minlength=n)
+    return _normalize_rows(summed)
+
+
+def vertex_normals(positions, indices) -> np.ndarray:
+    """Generated vertex normals (N, 3): normalize(sum of unit face normals using the vertex).
+
+    Not area-weighted (WPF's rule). A vertex used by no triangle, or only by degenerate ones,
+    gets the zero normal; a triangle naming one vertex twice is degenerate and adds nothing.
+    """
+    p = _rows(positions, 3)
+    tri = _rows(indices, 3, np.int64)
+    return _accumulate(face_normals(p, tri), tri, p.shape[0])
+
+
+def _triangles(n: int, idx: np.ndarray | None, line: int | None, out: list[Diagnostic]):
+    """The (T, 3) triangles WPF draws from ``idx`` over ``n`` positions."""
+    if idx is None or idx.size == 0:
+        t = n // 3
+        if n % 3:
+            out.append(
+                _diag(
+                    "MSH002",
+                    f"Positions has {n} points, not a multiple of 3; with no TriangleIndices "
+                    f"the last {n % 3} are not part of any triangle",
+                    line,
+                )
+            )
+        return np.arange(3 * t, dtype=np.int64).reshape(t, 3)
+    total = idx.shape[0]
+    if total % 3:
+        out.append(
+            _diag(
+                "MSH002",
+                f"TriangleIndices has {total} entries, not a multiple of 3; "
+                f"the last {total % 3} are ignored",
+                line,
+            )
+        )
+    bad = (idx < 0) | (idx >= n)
+    keep = total
+    if bad.any():
+        keep = int(np.argmax(bad))
+        used = keep - keep % 3
+        out.append(
+            _diag(
+                "MSH001",
+                f"TriangleIndices[{keep}] = {int(idx[keep])} is out of range (0..{n - 1} for "
+                f"{n} positions): WPF draws only the {used // 3} triangle(s) before it, "
+                f"{total - used} of {total} indices ignored",
+                line,
+            )
+        )
+    keep -= keep % 3
+    return idx[:keep].reshape(-1, 3)
+
+
+def _diag(code: str, message: str, line: int | None) -> Diagnostic:
+    return Diagnostic(code, MESH_CODES[code][0], message, line=line)
+
+
+def build_mesh(
+    positions,
+    indices=None,
+    normals=None,
+    texcoords=None,
+    line: int | None = None,
+) -> tuple[Mesh, list[Diagnostic]]:
+    """The ``Mesh`` WPF draws from a MeshGeometry3D's collections, with diagnostics.
+
+    ``positions`` (N, 3) or flat, ``indices`` flat or (T, 3) ints, ``normals`` (M, 3),
+    ``texcoords`` (K, 2); any may be None. The Mesh keeps all N positions, normals (N, 3)
+    and texcoords (N, 2), and only the triangles WPF draws. Arrays are read-only copies.
+    """
+    diags: list[Diagnostic] = []
+    p = _rows(positions, 3)
+    n = p.shape[0]
+    if n == 0:
+        diags.append(_diag("MSH006", "MeshGeometry3D has no Positions: nothing is drawn", line))
+        empty = Mesh(
+            positions=_frozen(np.zeros((0, 3))),
+            indices=_frozen(np.zeros((0, 3)), np.int64),
+            normals=_frozen(np.zeros((0, 3))),
+            texcoords=_frozen(np.zeros((0, 2))),
+            line=line,
+        )
+        return empty, diags
+
+    idx = None if indices is None else np.asarray(indices, dtype=np.int64).ravel()
+    tri = _triangles(n, idx, line, diags)
+    if tri.shape[0] == 0:
+        diags.append(_diag("MSH006", "MeshGeometry3D has no complete triangle to draw", line))
+
+    fn = face_normals(p, tri)
+    degenerate = int(np.count_nonzero(~fn.any(axis=1)))
+    if degenerate:
+        diags.append(
+            _diag(
+                "MSH005",
+                f"{degenerate} of {tri.shape[0]} triangles are degenerate (zero area)",
+                line,
+            )
+        )
+
+    user_n = _rows(normals, 3)
+    m = user_n.shape[0]
+    if m and m != n:
+        diags.append(
+            _diag(
+                "MSH003",
+                f"{m} Normals for {n} Positions: "
+                + ("the rest are generated" if m < n else f"the last {m - n} are ignored"),
+                line,
+            )
+        )
+    if m >= n:
+        nrm = _normalize_rows(user_n[:n])
+    else:
+        nrm = _accumulate(fn, tri, n)
+        nrm[:m] = _normalize_rows(user_n)
+
+    uv = _rows(texcoords, 2)
+    k = uv.shape[0]
+    if k and k != n:
+        diags.append(
+            _diag(
+                "MSH004",
+                f"{k} TextureCoordinates for {n} Positions: "
+                + ("the rest are (0, 0)" if k < n else f"the last {k - n} are ignored"),
+                line,
+            )
+        )
+    tex = np.zeros((n, 2))
+    tex[: min(k, n)] = uv[:n]
+
+    mesh = Mesh(
+        positions=_frozen(p),
+        indices=_frozen(tri, np.int64),
+        normals=_frozen(nrm),
+        texcoords=_frozen(tex),
+        line=line,
+    )
+    return mesh, diags
