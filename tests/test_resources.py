@@ -1,0 +1,178 @@
+"""Resource lookup: scope, order, merged dictionaries, App.xaml, cycles, missing keys."""
+
+from __future__ import annotations
+
+import pytest
+
+from xaml3d.errors import ResourceError
+from xaml3d.xaml.loader import load
+
+NS = (
+    'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+    'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+)
+MESH = "<MeshGeometry3D x:Key='mesh' Positions='0,0,0 1,0,0 0,1,0'/>"
+USE = ("<ModelVisual3D><ModelVisual3D.Content><GeometryModel3D Geometry='{StaticResource mesh}'"
+       " Material='{StaticResource mat}'/></ModelVisual3D.Content></ModelVisual3D>")  # fmt: skip
+
+
+def mat(color: str) -> str:
+    return f"<DiffuseMaterial x:Key='mat' Brush='{color}'/>"
+
+
+def codes(s):
+    return [d.code for d in s.diagnostics]
+
+
+def color_of(s):
+    return s.viewports[0].models[0].material[0].brush.color
+
+
+RED, BLUE, LIME = (1.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 1.0), (0.0, 1.0, 0.0, 1.0)
+
+
+def test_nearest_scope_wins():
+    xml = (f"<Window {NS}><Window.Resources>{MESH}{mat('Red')}</Window.Resources>"
+           f"<Grid><Grid.Resources>{mat('Blue')}</Grid.Resources>"
+           f"<Viewport3D>{USE}</Viewport3D></Grid></Window>")  # fmt: skip
+    s = load(xml, text=True)
+    assert color_of(s) == BLUE
+    assert s.viewports[0].models[0].mesh.triangle_count == 1
+
+
+def test_viewport_resources_and_element_form():
+    xml = (f"<Viewport3D {NS}><Viewport3D.Resources>{MESH}{mat('Lime')}"
+           f"<ModelVisual3D x:Key='vis'>{USE}</ModelVisual3D></Viewport3D.Resources>"
+           "<StaticResource ResourceKey='vis'/><StaticResource ResourceKey='vis'/>"
+           "</Viewport3D>")  # fmt: skip
+    s = load(xml, text=True)
+    # used twice: built once per use
+    assert len(s.viewports[0].models) == 2 and color_of(s) == LIME
+
+
+def test_static_resource_must_come_first():
+    xml = (f"<Grid {NS}><Viewport3D>{USE}</Viewport3D>"
+           f"<Grid.Resources>{MESH}{mat('Red')}</Grid.Resources></Grid>")  # fmt: skip
+    s = load(xml, text=True)
+    assert s.viewports[0].models == ()
+    assert "RES002" in codes(s)
+    # DynamicResource may refer forward
+    dyn = xml.replace("StaticResource", "DynamicResource")
+    assert color_of(load(dyn, text=True)) == RED
+
+
+def test_missing_key_names_key_and_line():
+    xml = f"<Grid {NS}>\n<Grid.Resources>{MESH}</Grid.Resources>\n<Viewport3D>{USE}</Viewport3D>"
+    xml += "</Grid>"
+    s = load(xml, text=True)
+    d = next(d for d in s.diagnostics if d.code == "RES001")
+    assert "'mat'" in d.message and d.line == 3
+    # the model is still drawn, with no material
+    assert s.viewports[0].models[0].material == ()
+
+
+def test_cycle_reported():
+    xml = (f"<Grid {NS}><Grid.Resources>"
+           "<MaterialGroup x:Key='a'><StaticResource ResourceKey='a'/></MaterialGroup>"
+           f"{MESH}</Grid.Resources><Viewport3D><ModelVisual3D><ModelVisual3D.Content>"
+           "<GeometryModel3D Geometry='{StaticResource mesh}' Material='{StaticResource a}'/>"
+           "</ModelVisual3D.Content></ModelVisual3D></Viewport3D></Grid>")  # fmt: skip
+    s = load(xml, text=True)
+    assert "RES003" in codes(s)
+
+
+def test_null_markup():
+    xml = (f"<Grid {NS}><Grid.Resources>{MESH}</Grid.Resources><Viewport3D><ModelVisual3D>"
+           "<ModelVisual3D.Content><GeometryModel3D Geometry='{StaticResource mesh}' "
+           "Material='{x:Null}'/></ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+           "</Grid>")  # fmt: skip
+    s = load(xml, text=True)
+    assert s.viewports[0].models[0].material == ()
+
+
+def test_merged_dictionary(tmp_path):
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "dict.xaml").write_text(
+        f"<ResourceDictionary {NS}>{MESH}{mat('Blue')}</ResourceDictionary>"
+    )
+    scene = tmp_path / "scene.xaml"
+    scene.write_text(
+        f"<Grid {NS}><Grid.Resources><ResourceDictionary><ResourceDictionary.MergedDictionaries>"
+        "<ResourceDictionary Source='sub\\dict.xaml'/></ResourceDictionary.MergedDictionaries>"
+        f"</ResourceDictionary></Grid.Resources><Viewport3D>{USE}</Viewport3D></Grid>"
+    )
+    s = load(scene)
+    assert color_of(s) == BLUE
+    assert any(f.endswith("dict.xaml") for f in s.resources_used)
+
+
+def test_merged_dictionary_outside_tree_refused(tmp_path):
+    (tmp_path / "outside.xaml").write_text(
+        f"<ResourceDictionary {NS}>{MESH}{mat('Blue')}</ResourceDictionary>"
+    )
+    (tmp_path / "scene").mkdir()
+    scene = tmp_path / "scene" / "scene.xaml"
+    scene.write_text(
+        f"<Grid {NS}><Grid.Resources><ResourceDictionary><ResourceDictionary.MergedDictionaries>"
+        "<ResourceDictionary Source='../outside.xaml'/></ResourceDictionary.MergedDictionaries>"
+        f"</ResourceDictionary></Grid.Resources><Viewport3D>{USE}</Viewport3D></Grid>"
+    )
+    s = load(scene, discover_app=False)
+    assert "RES004" in codes(s) and s.viewports[0].models == ()
+    allowed = load(scene, allow_outside=True, discover_app=False)
+    assert color_of(allowed) == BLUE
+
+
+def test_merged_dictionary_missing_and_self_including(tmp_path):
+    a = tmp_path / "a.xaml"
+    a.write_text(
+        f"<ResourceDictionary {NS}><ResourceDictionary.MergedDictionaries>"
+        "<ResourceDictionary Source='a.xaml'/><ResourceDictionary Source='nope.xaml'/>"
+        "</ResourceDictionary.MergedDictionaries></ResourceDictionary>"
+    )
+    scene = tmp_path / "scene.xaml"
+    scene.write_text(
+        f"<Grid {NS}><Grid.Resources><ResourceDictionary Source='a.xaml'/></Grid.Resources>"
+        "<Viewport3D/></Grid>"
+    )
+    s = load(scene)
+    assert "RES005" in codes(s)  # nope.xaml
+
+
+def test_app_xaml_discovered_in_parent(tmp_path):
+    (tmp_path / "App.xaml").write_text(
+        f"<Application {NS}><Application.Resources>{MESH}{mat('Red')}"
+        "</Application.Resources></Application>"
+    )
+    (tmp_path / "views").mkdir()
+    scene = tmp_path / "views" / "w.xaml"
+    scene.write_text(f"<Viewport3D {NS}>{USE}</Viewport3D>")
+    s = load(scene)
+    assert color_of(s) == RED
+    info = next(d for d in s.diagnostics if d.code == "RES006")
+    assert "App.xaml" in info.message and info.severity == "info"
+    off = load(scene, discover_app=False)
+    assert off.viewports[0].models == () and "RES001" in codes(off)
+
+
+def test_explicit_resources_and_order_inside_app(tmp_path):
+    res = tmp_path / "res.xaml"
+    res.write_text(
+        f"<ResourceDictionary {NS}>{MESH}<MaterialGroup x:Key='mat'>"
+        "<StaticResource ResourceKey='inner'/></MaterialGroup>"
+        "<DiffuseMaterial x:Key='inner' Brush='Red'/></ResourceDictionary>"
+    )
+    scene = tmp_path / "s.xaml"
+    scene.write_text(f"<Viewport3D {NS}>{USE}</Viewport3D>")
+    s = load(scene, [res])
+    # 'inner' is defined after 'mat' inside the resource file: WPF refuses the forward reference
+    assert "RES002" in codes(s)
+    assert str(res) in s.resources_used
+
+
+def test_explicit_resource_file_missing_is_fatal(tmp_path):
+    scene = tmp_path / "s.xaml"
+    scene.write_text(f"<Viewport3D {NS}/>")
+    with pytest.raises(ResourceError) as ei:
+        load(scene, [tmp_path / "missing.xaml"])
+    assert ei.value.code == "RES009"

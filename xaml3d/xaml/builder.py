@@ -1,0 +1,352 @@
+"""Building the normalized Scene from a parsed XAML tree (architecture: markup -> Scene).
+
+Covers finding every Viewport3D (in document order, whatever the root: Window, Page,
+UserControl, a custom control, a bare Viewport3D; not those inside templates and styles), the
+viewport's size (own Width/Height, else the nearest ancestor with both, else 640 x 480:
+wpf3d.md section 2), camera (WPF's default PerspectiveCamera when none is given), background (the
+nearest ancestor's Background brush) and ClipToBounds; the model tree flattened in draw order
+(ModelVisual3D: Content before Children) with each model's and light's world matrix
+(p_world = p_local * M_model * M_group... * M_visual... in WPF row terms); ModelUIElement3D,
+ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from xaml3d.scene import transforms as T
+from xaml3d.scene.types import (
+    DiffuseMaterial,
+    Model,
+    PerspectiveCamera,
+    PlaceholderBrush,
+    Scene,
+    Viewport,
+)
+from xaml3d.xaml import vocabulary as voc
+from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
+from xaml3d.xaml.brushes_reader import brush_property, material
+from xaml3d.xaml.context import (
+    ReadContext,
+    element_name,
+    is_presentation,
+    qname,
+    split_markup,
+    x_attr,
+)
+from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
+from xaml3d.xaml.parser import ParsedDocument
+from xaml3d.xaml.props import Props
+from xaml3d.xaml.resources import Resources
+
+DEFAULT_SIZE = (640.0, 480.0)
+_TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
+              "HierarchicalDataTemplate"}  # fmt: skip
+_REFERENCE = {"StaticResource", "DynamicResource"}
+
+
+class Reader:
+    """Builds scene objects from elements: property access, references, dispatch."""
+
+    def __init__(self, ctx: ReadContext, resources: Resources) -> None:
+        self.ctx = ctx
+        self.resources = resources
+        self._props: dict[int, Props] = {}
+
+    def props(self, el) -> Props:
+        """The element's properties (read once: diagnostics are not repeated on reuse)."""
+        hit = self._props.get(id(el))
+        if hit is None or hit.el is not el:
+            hit = Props(self, self.ctx.keep(el))
+            self._props[id(el)] = hit
+        return hit
+
+    def build_node(self, el, build, default=None):
+        """Build a child element, following ``<StaticResource ResourceKey=.../>`` elements and
+        skipping (with one diagnostic) elements of unknown namespaces."""
+        ns, local = qname(el.tag)
+        if not is_presentation(ns):
+            self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
+            return default
+        if local in _REFERENCE:
+            key = el.get("ResourceKey")
+            if key is None:
+                self.ctx.diag("RES001", f"<{local}> without ResourceKey", el)
+                return default
+            entry = self.resources.lookup(key, el, dynamic=local == "DynamicResource")
+            return default if entry is None else self.build_resource(entry, build, default, el)
+        et = voc.lookup(local)
+        if et is None:
+            hint = voc.did_you_mean(local, voc.known_types())
+            self.ctx.diag("XAML003", f"unknown element {local!r}{hint}: skipped", el)
+            return default
+        return build(el)
+
+    def build_resource(self, entry, build, default, ref_el):
+        with self.ctx.building(entry) as ok:
+            if not ok:
+                key = x_attr(entry, "Key")
+                self.ctx.diag("RES003", f"resource {key!r} refers to itself (cycle)", ref_el)
+                return default
+            return self.build_node(entry, build, default)
+
+
+class _Acc:
+    def __init__(self) -> None:
+        self.models: list[Model] = []
+        self.lights: list = []
+
+
+# --------------------------------------------------------------------------- 3D tree
+
+
+def walk_model3d(r: Reader, el, parent: np.ndarray, acc: _Acc) -> None:
+    p = r.props(el)
+    t = p.type
+    if t == "Model3DGroup":
+        world = T.compose(transform_property(r, p), parent)
+        for k in p.items("Children"):
+            r.build_node(k, lambda e: walk_model3d(r, e, world, acc))
+    elif t == "GeometryModel3D":
+        _geometry_model(r, p, parent, acc)
+    elif t in LIGHT_TYPES:
+        acc.lights.append(light(r, el, parent))
+    else:
+        r.ctx.diag("SCN008", f"{t} is not a Model3D: skipped", el)
+
+
+def _geometry_model(r: Reader, p: Props, parent: np.ndarray, acc: _Acc) -> None:
+    el = p.el
+    if not p.has("Geometry"):
+        r.ctx.diag("SCN005", "GeometryModel3D without Geometry: skipped", el)
+        return
+    m = p.obj("Geometry", lambda e: mesh(r, e), None)
+    if m is None:
+        return
+    mat = p.obj("Material", lambda e: material(r, e), ())
+    back = p.obj("BackMaterial", lambda e: material(r, e), ())
+    if not mat and not back:
+        r.ctx.diag("SCN011", "GeometryModel3D without Material draws nothing", el)
+    world = T.compose(transform_property(r, p), parent)
+    acc.models.append(
+        Model(m, tuple(mat or ()), tuple(back or ()), world, element_name(el), el.sourceline)
+    )
+
+
+def walk_visual3d(r: Reader, el, parent: np.ndarray, acc: _Acc) -> None:
+    p = r.props(el)
+    t = p.type
+    if p.etype is None or p.etype.kind != "visual3d":
+        kind = "a Model3D (WPF requires a ModelVisual3D around it)" if (
+            p.etype is not None and p.etype.kind in ("model3d", "light")
+        ) else "not a Visual3D"  # fmt: skip
+        r.ctx.diag("SCN008", f"{t} is {kind}: skipped", el)
+        return
+    world = T.compose(transform_property(r, p), parent)
+    if t == "ModelVisual3D":
+        p.obj("Content", lambda e: walk_model3d(r, e, world, acc))
+    elif t == "ModelUIElement3D":
+        p.obj("Model", lambda e: walk_model3d(r, e, world, acc))
+    elif t == "Viewport2DVisual3D":
+        _viewport2d(r, p, world, acc)
+        return
+    for k in p.items("Children"):
+        r.build_node(k, lambda e: walk_visual3d(r, e, world, acc))
+
+
+def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
+    el = p.el
+    r.ctx.diag("SCN007", "Viewport2DVisual3D: its 2D content is drawn as a placeholder", el)
+    m = p.obj("Geometry", lambda e: mesh(r, e), None)
+    if m is None:
+        return
+    placeholder = PlaceholderBrush(kind="Viewport2DVisual3D", line=el.sourceline)
+    mat = p.obj("Material", lambda e: material(r, e), ()) or ()
+    mat = tuple(replace(x, brush=placeholder) for x in mat) or (
+        DiffuseMaterial(brush=placeholder, line=el.sourceline),
+    )
+    acc.models.append(Model(m, mat, (), world, element_name(el), el.sourceline))
+
+
+# --------------------------------------------------------------------------- viewports
+
+
+def _length(r: Reader, p: Props, prop: str) -> float | None:
+    """A Width/Height that is a usable number (not Auto, NaN, a Binding...)."""
+    raw = p.attrs.get(prop)
+    if raw is None or raw.strip().lower() == "auto":
+        return None
+    from xaml3d.xaml.values import parse_double
+
+    v = p.value(prop, parse_double, None)
+    if v is None or not np.isfinite(v) or v <= 0:
+        return None
+    return float(v)
+
+
+def _framework_ancestors(el):
+    node = el.getparent()
+    while node is not None:
+        ns, local = qname(node.tag)
+        if is_presentation(ns) and "." not in local:
+            yield node
+        elif not is_presentation(ns):
+            yield node
+        node = node.getparent()
+
+
+def build_viewport(r: Reader, el, index: int) -> Viewport:
+    p = r.props(el)
+    w, h = _length(r, p, "Width"), _length(r, p, "Height")
+    source = "viewport"
+    if w is None or h is None:
+        w = h = None
+        for anc in _framework_ancestors(el):
+            if not is_presentation(qname(anc.tag)[0]):
+                continue
+            ap = r.props(anc)
+            aw, ah = _length(r, ap, "Width"), _length(r, ap, "Height")
+            if aw is not None and ah is not None:
+                w, h, source = aw, ah, f"ancestor:{ap.type}"
+                break
+        if w is None:
+            w, h = DEFAULT_SIZE
+            source = "default"
+    how = {"viewport": "its own Width/Height", "default": "the default size"}.get(
+        source, f"the nearest sized ancestor ({source.split(':', 1)[-1]})"
+    )
+    r.ctx.diag("SCN003", f"Viewport3D #{index} size {w:g} x {h:g} from {how}", el)
+
+    if p.has("Camera"):
+        cam = p.obj("Camera", lambda e: camera(r, e), None)
+        if cam is None and "Camera" in p.attrs and split_markup(p.attrs["Camera"]) is not None:
+            if split_markup(p.attrs["Camera"])[0] == "Null":
+                r.ctx.diag("SCN009", "Camera is {x:Null}: WPF draws nothing", el)
+            else:
+                cam = PerspectiveCamera(is_default=True)
+    else:
+        cam = PerspectiveCamera(is_default=True)
+        r.ctx.diag("SCN004", "no Camera: WPF's default PerspectiveCamera is used", el)
+
+    background = None
+    for anc in _framework_ancestors(el):
+        if not is_presentation(qname(anc.tag)[0]):
+            continue
+        ap = r.props(anc)
+        if ap.has("Background"):
+            background = brush_property(r, ap, "Background")
+            break
+
+    from xaml3d.xaml.values import parse_bool
+
+    acc = _Acc()
+    for k in p.items("Children"):
+        r.build_node(k, lambda e: walk_visual3d(r, e, T.identity(), acc))
+    return Viewport(
+        index=index,
+        name=element_name(el),
+        width=w,
+        height=h,
+        size_source=source,
+        camera=cam,
+        models=tuple(acc.models),
+        lights=tuple(acc.lights),
+        background=background,
+        clip_to_bounds=p.value("ClipToBounds", parse_bool, True),
+        line=el.sourceline,
+    )
+
+
+# --------------------------------------------------------------------------- document walk
+
+
+class _Walk:
+    """One pass over the main document: viewports, triggers, unresolved markup reported."""
+
+    def __init__(self, r: Reader) -> None:
+        self.r = r
+        self.viewports: list = []
+        self.triggers: list = []
+
+    def visit(self, el) -> None:
+        r = self.r
+        ns, local = qname(el.tag)
+        if not is_presentation(ns):
+            msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
+            r.ctx.diag("XAML001", msg, el, once=(ns, local))
+            if x_attr(el, "Class") is not None:
+                r.ctx.diag(
+                    "XAML007", f"x:Class={x_attr(el, 'Class')!r}: code-behind is not run", el
+                )
+            for child in el:
+                if isinstance(child.tag, str) and "." not in qname(child.tag)[1]:
+                    self.visit(child)
+            return
+        if local in _TEMPLATES:
+            if any(True for _ in el.iter("{*}Viewport3D")):
+                r.ctx.diag("XAML015", f"Viewport3D inside a {local} is not instantiated", el)
+            return
+        if local == "Viewport3D":
+            self.viewports.append(el)
+            self._triggers(el)
+            return
+        et = voc.lookup(local)
+        if et is None:
+            hint = voc.did_you_mean(local, voc.known_types())
+            r.ctx.diag("XAML003", f"unknown element {local!r}{hint}", el)
+        elif et.kind not in ("framework", "resource"):
+            return  # 3D/brush objects outside a Viewport3D (resources, effects...)
+        p = r.props(el)
+        r.resources.dictionary_of(el)  # reads merged dictionaries now: their problems are reported
+        for prop, value in p.attrs.items():
+            if prop not in ("Width", "Height", "Background"):
+                m = split_markup(value)
+                if m and m[0] in ("Binding", "Static", "TemplateBinding", "RelativeSource"):
+                    p.markup(prop, value)  # reports it
+        self._triggers(el)
+        for child in el:
+            if not isinstance(child.tag, str):
+                continue
+            cl = qname(child.tag)[1]
+            if "." in cl:
+                if cl.endswith((".Resources", ".Triggers", ".MergedDictionaries")):
+                    continue
+                for g in child:
+                    if isinstance(g.tag, str):
+                        self.visit(g)
+            else:
+                self.visit(child)
+
+    def _triggers(self, el) -> None:
+        for child in el:
+            if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Triggers"):
+                self.triggers.extend(k for k in child if isinstance(k.tag, str))
+
+
+def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> Scene:
+    r = Reader(ctx, resources)
+    walk = _Walk(r)
+    walk.visit(doc.root)
+    viewports = tuple(build_viewport(r, el, i) for i, el in enumerate(walk.viewports))
+    if not viewports:
+        ctx.diag("SCN001", "the document holds no Viewport3D", doc.root)
+
+    storyboards: list = []
+    begun: set[int] = set()
+    for t in walk.triggers:
+        read_trigger(r, t, storyboards, begun)
+    d = resources.dictionary_of(doc.root)
+    for key, entry in d.entries.items() if d else ():
+        if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
+            storyboards.append(read_storyboard(r, entry, None, key))
+
+    diags = sorted(ctx.diagnostics, key=lambda g: (g.file or "", g.line or 0))
+    return Scene(
+        file=doc.file,
+        viewports=viewports,
+        storyboards=tuple(storyboards),
+        diagnostics=tuple(diags),
+        resources_used=tuple(dict.fromkeys(ctx.files_used)),
+    )

@@ -1,0 +1,197 @@
+"""Reading context shared by the XAML reader modules: diagnostics, documents, namespaces.
+
+Holds what every step of reading needs: the list of diagnostics (each stamped with the file the
+element came from and lxml's source line), the parsed documents (the scene, App.xaml, merged
+dictionaries) and which folders paths may point into, and the namespace classification of
+elements and attributes (presentation, XAML language, ignorable, unknown/clr-namespace).
+"""
+
+from __future__ import annotations
+
+from contextlib import contextmanager
+from pathlib import Path
+
+from lxml import etree
+
+from xaml3d.errors import Diagnostic, XamlError
+from xaml3d.xaml.parser import MC_NS, PRESENTATION_NAMESPACES, XAML_NS, ParsedDocument
+from xaml3d.xaml.vocabulary import READER_CODES
+
+
+def qname(el_or_attr: str) -> tuple[str | None, str]:
+    """(namespace, local name) of a Clark-notation tag or attribute name."""
+    if el_or_attr.startswith("{"):
+        ns, _, local = el_or_attr[1:].partition("}")
+        return ns, local
+    return None, el_or_attr
+
+
+def is_presentation(ns: str | None) -> bool:
+    return ns in PRESENTATION_NAMESPACES
+
+
+class ReadContext:
+    """Diagnostics and documents of one load."""
+
+    def __init__(self, *, allow_outside: bool = False, limits=None) -> None:
+        self.diagnostics: list[Diagnostic] = []
+        self.allow_outside = allow_outside
+        self.limits = limits
+        self.allowed_roots: list[Path] = []
+        self.files_used: list[str] = []
+        self._docs: dict[int, tuple[etree._Element, ParsedDocument]] = {}
+        self._once: set = set()
+        self._building: list[int] = []
+        self._keep: list[etree._Element] = []  # keeps proxies alive while ids are used as keys
+
+    # ----------------------------------------------------------------- documents
+    def add_document(self, doc: ParsedDocument, *, trusted: bool = False) -> None:
+        self._docs[id(doc.root)] = (doc.root, doc)
+        if trusted and doc.directory is not None:
+            self.allowed_roots.append(doc.directory)
+
+    def doc_of(self, el: etree._Element) -> ParsedDocument | None:
+        entry = self._docs.get(id(el.getroottree().getroot()))
+        return entry[1] if entry else None
+
+    def file_of(self, el: etree._Element | None) -> str | None:
+        if el is None:
+            return None
+        doc = self.doc_of(el)
+        return doc.file if doc else None
+
+    def path_allowed(self, path: Path) -> bool:
+        if self.allow_outside:
+            return True
+        path = path.resolve()
+        for root in self.allowed_roots:
+            try:
+                path.relative_to(root.resolve())
+                return True
+            except ValueError:
+                continue
+        return False
+
+    def keep(self, el: etree._Element) -> etree._Element:
+        self._keep.append(el)
+        return el
+
+    # ----------------------------------------------------------------- diagnostics
+    def diag(
+        self,
+        code: str,
+        message: str,
+        el: etree._Element | None = None,
+        *,
+        line: int | None = None,
+        file: str | None = None,
+        once: object = None,
+    ) -> None:
+        """Record a diagnostic; ``once`` (a key) suppresses repeats of the same report."""
+        if once is not None:
+            if (code, once) in self._once:
+                return
+            self._once.add((code, once))
+        severity = READER_CODES.get(code, ("warning", ""))[0]
+        if el is not None:
+            line = line if line is not None else el.sourceline
+            file = file or self.file_of(el)
+        self.diagnostics.append(Diagnostic(code, severity, message, file, line))
+
+    def add(self, diagnostic: Diagnostic, el: etree._Element | None = None) -> None:
+        """Record a diagnostic made elsewhere (mesh building...), filling in file/line."""
+        if el is not None and (diagnostic.file is None or diagnostic.line is None):
+            diagnostic = Diagnostic(
+                diagnostic.code,
+                diagnostic.severity,
+                diagnostic.message,
+                diagnostic.file or self.file_of(el),
+                diagnostic.line if diagnostic.line is not None else el.sourceline,
+                diagnostic.column,
+            )
+        self.diagnostics.append(diagnostic)
+
+    def error(self, exc: XamlError, el: etree._Element | None, severity: str = "warning") -> None:
+        """Turn a recoverable XamlError (bad value syntax...) into a located diagnostic."""
+        exc.with_location(self.file_of(el), el.sourceline if el is not None else None)
+        self.diagnostics.append(
+            Diagnostic(exc.code, severity, exc.message, exc.file, exc.line, exc.column)
+        )
+
+    # ----------------------------------------------------------------- resource build guard
+    @contextmanager
+    def building(self, el: etree._Element):
+        """Guard against a resource whose value refers back to itself (yields False on a cycle)."""
+        key = id(el)
+        if key in self._building:
+            yield False
+            return
+        self.keep(el)
+        self._building.append(key)
+        try:
+            yield True
+        finally:
+            self._building.pop()
+
+
+def ignorable_namespaces(el: etree._Element) -> set[str]:
+    """Namespaces listed by mc:Ignorable on this element or its ancestors."""
+    out: set[str] = set()
+    node = el
+    while node is not None:
+        val = node.get(f"{{{MC_NS}}}Ignorable")
+        if val:
+            for prefix in val.split():
+                uri = node.nsmap.get(prefix)
+                if uri:
+                    out.add(uri)
+        node = node.getparent()
+    out.add(MC_NS)
+    return out
+
+
+def x_attr(el: etree._Element, name: str) -> str | None:
+    """An x: (XAML language) attribute: Key, Name, Class, Shared ..."""
+    return el.get(f"{{{XAML_NS}}}{name}")
+
+
+def element_name(el: etree._Element) -> str | None:
+    """x:Name, or the Name property (both name an object for Storyboard.TargetName)."""
+    return x_attr(el, "Name") or el.get("Name")
+
+
+def doc_position(el: etree._Element) -> tuple[int, ...]:
+    """The element's position in document order, as a comparable path of child indices."""
+    path = []
+    node = el
+    parent = node.getparent()
+    while parent is not None:
+        path.append(parent.index(node))
+        node, parent = parent, parent.getparent()
+    return tuple(reversed(path))
+
+
+def split_markup(value: str) -> tuple[str, str] | None:
+    """``{Name args}`` -> (Name without prefix, args); None when not a markup extension.
+
+    ``{}`` at the start escapes a literal brace.
+    """
+    v = value.strip()
+    if not v.startswith("{") or v.startswith("{}"):
+        return None
+    if not v.endswith("}"):
+        return ("", v)
+    body = v[1:-1].strip()
+    name, _, args = body.partition(" ")
+    if "," in name:  # "{Binding,Path=X}" is unusual but legal
+        name, _, rest = name.partition(",")
+        args = rest + args
+    return name.split(":")[-1], args.strip()
+
+
+def markup_key(args: str) -> str:
+    """The key of ``{StaticResource key}`` / ``{StaticResource ResourceKey=key}``."""
+    a = args.strip()
+    if a.startswith("ResourceKey"):
+        _, _, a = a.partition("=")
+    return a.strip().strip("'\"")

@@ -1,0 +1,208 @@
+"""Safe XML reading of XAML documents (pipeline step 1: text -> lxml tree with source lines).
+
+The parser never loads a DTD, never resolves entities, never touches the network, and refuses
+any ``<!DOCTYPE``/``<!ENTITY`` declaration outright (billion-laughs and external-entity
+documents are the classic attacks on XML readers). ``huge_tree`` is on because real meshes put a
+million numbers in one attribute; the size, element-count and nesting-depth limits below take
+over the protection that libxml2's own ceilings would give, and are checked while parsing so that
+a hostile document is stopped early with bounded memory.
+
+Fatal problems raise :class:`~xaml3d.errors.XamlSyntaxError`:
+
+- XML001 not well-formed (lxml's line and column), XML002 DTD/entity declaration refused,
+- XML003 document too large, XML004 too many elements, XML005 nesting too deep,
+- XML006 file unreadable.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from lxml import etree
+
+from xaml3d.errors import XamlSyntaxError
+
+PRESENTATION_NS = "http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+PRESENTATION_NS_2007 = "http://schemas.microsoft.com/netfx/2007/xaml/presentation"
+PRESENTATION_NAMESPACES = frozenset({PRESENTATION_NS, PRESENTATION_NS_2007})
+XAML_NS = "http://schemas.microsoft.com/winfx/2006/xaml"
+MC_NS = "http://schemas.openxmlformats.org/markup-compatibility/2006"
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Ceilings on a document (generous: the largest real XAML meshes fit many times over)."""
+
+    max_bytes: int = 256 * 1024 * 1024
+    max_elements: int = 1_000_000
+    max_depth: int = 256
+
+
+DEFAULT_LIMITS = Limits()
+
+
+@dataclass
+class ParsedDocument:
+    """A parsed XAML document: its root element and the names it is known by."""
+
+    root: etree._Element
+    file: str  # the label used in diagnostics: the path as the user gave it, or "<string>"
+    path: Path | None  # the resolved file path (None for text input)
+
+    @property
+    def directory(self) -> Path | None:
+        return None if self.path is None else self.path.parent
+
+
+_PROLOG_SKIP = re.compile(rb"\s+|<\?.*?\?>|<!--.*?-->", re.DOTALL)
+
+
+def _head_bytes(data: bytes) -> bytes:
+    """The prolog as 8-bit text whatever the encoding (UTF-16/32 are narrowed to ASCII-ish)."""
+    head = data[:65536]
+    for bom, enc in (
+        (b"\xff\xfe\x00\x00", "utf-32-le"),
+        (b"\x00\x00\xfe\xff", "utf-32-be"),
+        (b"\xff\xfe", "utf-16-le"),
+        (b"\xfe\xff", "utf-16-be"),
+    ):
+        if head.startswith(bom):
+            text = head[len(bom) :].decode(enc, errors="replace")
+            return text.encode("ascii", errors="replace")
+    if head.startswith(b"\xef\xbb\xbf"):
+        return head[3:]
+    # BOM-less UTF-16 ("<\0" or "\0<")
+    if head[:2] in (b"<\x00", b"\x00<"):
+        enc = "utf-16-le" if head[:2] == b"<\x00" else "utf-16-be"
+        return head.decode(enc, errors="replace").encode("ascii", errors="replace")
+    return head
+
+
+def _refuse_doctype(data: bytes, file: str) -> None:
+    """Refuse a DOCTYPE in the prolog (the only place XML allows one) before libxml2 sees it."""
+    head = _head_bytes(data)
+    pos = 0
+    while True:
+        m = _PROLOG_SKIP.match(head, pos)
+        if not m or m.end() == pos:
+            break
+        pos = m.end()
+    rest = head[pos : pos + 16].upper()
+    if rest.startswith(b"<!DOCTYPE") or rest.startswith(b"<!ENTITY"):
+        line = head[:pos].count(b"\n") + 1
+        raise XamlSyntaxError(
+            "DOCTYPE/ENTITY declarations are refused (DTDs and entities are never processed)",
+            code="XML002",
+            file=file,
+            line=line,
+            column=1,
+        )
+
+
+def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = None):
+    """Parse XAML bytes safely; returns the root element. Raises XamlSyntaxError."""
+    limits = limits or DEFAULT_LIMITS
+    if len(data) > limits.max_bytes:
+        raise XamlSyntaxError(
+            f"document is {len(data)} bytes, above the limit of {limits.max_bytes}",
+            code="XML003",
+            file=file,
+        )
+    _refuse_doctype(data, file)
+    events = etree.iterparse(
+        io.BytesIO(data),
+        events=("start", "end"),
+        resolve_entities=False,
+        no_network=True,
+        load_dtd=False,
+        dtd_validation=False,
+        attribute_defaults=False,
+        huge_tree=True,
+        remove_comments=True,
+        remove_pis=True,
+    )
+    depth = 0
+    count = 0
+    root = None
+    try:
+        for event, el in events:
+            if event == "start":
+                depth += 1
+                count += 1
+                if root is None:
+                    root = el
+                if depth > limits.max_depth:
+                    raise XamlSyntaxError(
+                        f"elements nested deeper than {limits.max_depth} levels",
+                        code="XML005",
+                        file=file,
+                        line=el.sourceline,
+                    )
+                if count > limits.max_elements:
+                    raise XamlSyntaxError(
+                        f"more than {limits.max_elements} elements",
+                        code="XML004",
+                        file=file,
+                        line=el.sourceline,
+                    )
+            else:
+                depth -= 1
+    except etree.XMLSyntaxError as exc:
+        line, col = exc.position if exc.position else (exc.lineno, None)
+        msg = exc.msg or str(exc)
+        code = "XML002" if ("entity" in msg.lower() or "doctype" in msg.lower()) else "XML001"
+        raise XamlSyntaxError(
+            f"not well-formed XML: {msg}", code=code, file=file, line=line, column=col
+        ) from None
+    if root is None:
+        raise XamlSyntaxError("empty document", code="XML001", file=file, line=1, column=1)
+    docinfo = root.getroottree().docinfo
+    if docinfo.doctype or docinfo.internalDTD is not None:
+        raise XamlSyntaxError(
+            "DOCTYPE/ENTITY declarations are refused", code="XML002", file=file, line=1
+        )
+    return root
+
+
+def read_file_bytes(path: str | os.PathLike, file: str, limits: Limits | None = None) -> bytes:
+    """Read a file with the size limit checked before the bytes are loaded."""
+    limits = limits or DEFAULT_LIMITS
+    try:
+        size = os.path.getsize(path)
+        if size > limits.max_bytes:
+            raise XamlSyntaxError(
+                f"file is {size} bytes, above the limit of {limits.max_bytes}",
+                code="XML003",
+                file=file,
+            )
+        with open(path, "rb") as fh:
+            return fh.read()
+    except OSError as exc:
+        raise XamlSyntaxError(
+            f"cannot read file: {exc.strerror or exc}", code="XML006", file=file
+        ) from None
+
+
+def parse_document(
+    source: str | os.PathLike | bytes,
+    *,
+    text: bool = False,
+    limits: Limits | None = None,
+    file: str | None = None,
+) -> ParsedDocument:
+    """Parse a path (default) or, with ``text=True``, XAML text or bytes."""
+    if text or isinstance(source, bytes):
+        data = source.encode("utf-8") if isinstance(source, str) else bytes(source)
+        if isinstance(source, str):
+            # a str has already been decoded: drop any encoding declaration's claim
+            data = re.sub(rb"^(\s*<\?xml[^>]*?)encoding=(['\"]).*?\2", rb"\1", data, count=1)
+        label = file or "<string>"
+        return ParsedDocument(parse_bytes(data, label, limits), label, None)
+    label = file or os.fspath(source)
+    path = Path(source)
+    data = read_file_bytes(path, label, limits)
+    return ParsedDocument(parse_bytes(data, label, limits), label, path.resolve())

@@ -1,0 +1,259 @@
+"""Property access on one XAML element: attribute and property-element forms, content properties.
+
+``Props(reader, el)`` gathers every property an element sets, however it is written:
+``Prop="..."`` attributes, ``<Type.Prop>`` property elements (with or without an explicit
+collection element such as ``<Model3DCollection>``), and content children that go to the type's
+content property (wpf3d.md section 4). Attached properties (``Grid.Column``,
+``Storyboard.TargetName``) are kept apart. While gathering, it reports what the vocabulary does
+not know (with a did-you-mean suggestion), event handler attributes, ``x:Class``, and attributes
+from unknown namespaces. Converting a property to a value (``value``), an object built from
+elements (``obj``) or a list of child elements (``items``) goes through markup extensions
+(``{StaticResource}``, ``{x:Null}``, ``{Binding}`` ...) and value-syntax errors, which become
+located diagnostics while the property keeps its default.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from lxml import etree
+
+from xaml3d.errors import ValueSyntaxError
+from xaml3d.xaml import vocabulary as voc
+from xaml3d.xaml.context import (
+    ignorable_namespaces,
+    is_presentation,
+    markup_key,
+    qname,
+    split_markup,
+)
+from xaml3d.xaml.parser import XAML_NS
+
+NULL = object()  # an explicit {x:Null}
+_COLLECTION_KINDS = ("collection",)
+_SILENT_X = {"Key", "Name", "Shared", "Uid", "FieldModifier", "ClassModifier", "Subclass"}
+
+
+class Props:
+    """The properties one element sets (see module docstring)."""
+
+    def __init__(self, reader, el: etree._Element) -> None:
+        self.r = reader
+        self.el = el
+        self.ns, self.type = qname(el.tag)
+        self.etype = voc.lookup(self.type)
+        self.attrs: dict[str, str] = {}
+        self.attached: dict[str, str] = {}
+        self.elems: dict[str, list[etree._Element]] = {}
+        self.elem_text: dict[str, str] = {}
+        self.prop_el: dict[str, etree._Element] = {}
+        self.content: list[etree._Element] = []
+        self.text = (el.text or "").strip()
+        self._read_attributes()
+        self._read_children()
+
+    # ----------------------------------------------------------------- gathering
+    def _known(self, prop: str) -> bool:
+        return self.etype is None or self.etype.open or prop in self.etype.properties
+
+    def _check_property(self, prop: str, node: etree._Element, value: str | None) -> bool:
+        """Report unknown/unsupported/event properties; True when the property is usable."""
+        ctx = self.r.ctx
+        kind = self.etype.property_kind(prop) if self.etype else None
+        if kind == "event" or (
+            (self.etype is None or self.etype.open or kind is None)
+            and voc.is_event_name(prop)
+            and value is not None
+            and value.strip().isidentifier()
+        ):
+            ctx.diag("XAML008", f"event handler {prop}={value!r} ignored (code-behind)", node)
+            return False
+        if not self._known(prop):
+            hint = voc.did_you_mean(prop, self.etype.properties)
+            ctx.diag("XAML004", f"{self.type} has no property {prop!r}{hint}", node)
+            return False
+        return True
+
+    def _read_attributes(self) -> None:
+        ctx = self.r.ctx
+        ignorable = None
+        for name, value in self.el.attrib.items():
+            ns, local = qname(name)
+            if ns == XAML_NS:
+                if local == "Class":
+                    ctx.diag("XAML007", f"x:Class={value!r}: code-behind is not run", self.el)
+                elif local not in _SILENT_X:
+                    ctx.diag("XAML006", f"x:{local} is not used by xaml3d", self.el)
+                continue
+            if ns is not None and not is_presentation(ns):
+                if ignorable is None:
+                    ignorable = ignorable_namespaces(self.el)
+                if ns in ignorable or ns == "http://www.w3.org/XML/1998/namespace":
+                    continue
+                ctx.diag("XAML002", f"attribute {local!r} from namespace {ns!r} ignored", self.el)
+                continue
+            if "." in local:
+                owner, _, prop = local.rpartition(".")
+                if owner == self.type or (self.etype and prop in self.etype.properties
+                                          and owner not in voc.ATTACHED_OWNERS):  # fmt: skip
+                    local = prop
+                else:
+                    if voc.is_event_name(prop) and value.strip().isidentifier():
+                        ctx.diag("XAML008", f"event handler {local}={value!r} ignored", self.el)
+                    else:
+                        self.attached[local] = value
+                    continue
+            if self._check_property(local, self.el, value):
+                self.attrs[local] = value
+
+    def _read_children(self) -> None:
+        for child in self.el:
+            if not isinstance(child.tag, str):
+                continue
+            ns, local = qname(child.tag)
+            if is_presentation(ns) and "." in local:
+                owner, _, prop = local.rpartition(".")
+                if not self._known(prop):
+                    self._check_property(prop, child, None)
+                    continue
+                if (
+                    owner != self.type
+                    and owner in voc.ATTACHED_OWNERS
+                    and not (self.etype and prop in self.etype.properties)
+                ):
+                    continue  # attached property element on a framework element
+                if prop in self.attrs:
+                    self.r.ctx.diag(
+                        "XAML012",
+                        f"{self.type}.{prop} is set both as attribute and as element: "
+                        "the element is used",
+                        child,
+                    )
+                    del self.attrs[prop]
+                kids = [k for k in child if isinstance(k.tag, str)]
+                self.elems.setdefault(prop, []).extend(kids)
+                self.prop_el[prop] = child
+                if not kids and (child.text or "").strip():
+                    self.elem_text[prop] = child.text.strip()
+            else:
+                self.content.append(child)
+        if self.content and self.etype is not None and self.etype.content:
+            prop = self.etype.content
+            if prop in self.attrs:
+                self.r.ctx.diag("XAML012", f"{self.type}.{prop} set twice", self.content[0])
+                del self.attrs[prop]
+            self.elems.setdefault(prop, []).extend(self.content)
+            self.prop_el.setdefault(prop, self.el)
+
+    # ----------------------------------------------------------------- access
+    def has(self, prop: str) -> bool:
+        return prop in self.attrs or prop in self.elems or prop in self.elem_text
+
+    def line_of(self, prop: str) -> etree._Element:
+        return self.prop_el.get(prop, self.el)
+
+    def markup(self, prop: str, value: str):
+        """Evaluate a markup extension; returns (kind, payload): 'plain' | 'null' | 'element' |
+        'default' (reported)."""
+        m = split_markup(value)
+        if m is None:
+            v = value.strip()
+            return ("plain", v[2:] if v.startswith("{}") else value)
+        name, args = m
+        ctx = self.r.ctx
+        if name == "Null":
+            return ("null", None)
+        if name in ("StaticResource", "DynamicResource"):
+            key = markup_key(args)
+            entry = self.r.resources.lookup(key, self.el, dynamic=name == "DynamicResource")
+            return ("element", entry) if entry is not None else ("default", None)
+        if name == "Binding":
+            code = "XAML009"
+        elif name == "Static":
+            code = "XAML010"
+        elif name == "":
+            ctx.diag("XAML016", f"{prop}={value!r}: malformed markup extension", self.el)
+            return ("default", None)
+        else:
+            code = "XAML011"
+        ctx.diag(code, f"{self.type}.{prop}={value!r} cannot be evaluated: default kept", self.el)
+        return ("default", None)
+
+    def value(self, prop: str, conv: Callable[[str], object], default=None):
+        """A value-type property (numbers, vectors, colours, collections...)."""
+        if prop in self.attrs:
+            kind, payload = self.markup(prop, self.attrs[prop])
+            if kind == "plain":
+                return self._convert(conv, payload, self.el, prop, default)
+            if kind == "element":
+                text = (payload.text or "").strip()
+                if text and len(payload) == 0:
+                    return self._convert(conv, text, payload, prop, default)
+                self.r.ctx.diag(
+                    "RES008", f"resource for {self.type}.{prop} is not a value", self.el
+                )
+            return default
+        if prop in self.elem_text:
+            return self._convert(conv, self.elem_text[prop], self.line_of(prop), prop, default)
+        kids = self.items(prop)
+        if kids:
+            node = kids[-1]
+            text = (node.text or "").strip()
+            if text:
+                return self._convert(conv, text, node, prop, default)
+            self.r.ctx.diag("XAML013", f"{self.type}.{prop}: expected a value", node)
+        return default
+
+    def _convert(self, conv, s, node, prop, default):
+        try:
+            return conv(s)
+        except ValueSyntaxError as exc:
+            exc.message = f"{self.type}.{prop}: {exc.message}"
+            self.r.ctx.error(exc, node)
+            return default
+
+    def obj(self, prop: str, build: Callable, default=None, *, from_string=None):
+        """An object property built from an element (or resource); ``from_string`` converts a
+        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None."""
+        if prop in self.attrs:
+            kind, payload = self.markup(prop, self.attrs[prop])
+            if kind == "null":
+                return None
+            if kind == "element":
+                return self.r.build_resource(payload, build, default, self.el)
+            if kind == "plain":
+                if from_string is not None:
+                    return self._convert(from_string, payload, self.el, prop, default)
+                self.r.ctx.diag(
+                    "XAML013", f"{self.type}.{prop} needs an element, not {payload!r}", self.el
+                )
+            return default
+        kids = self.items(prop)
+        if not kids:
+            if prop in self.elem_text and from_string is not None:
+                text = self.elem_text[prop]
+                return self._convert(from_string, text, self.line_of(prop), prop, default)
+            return default
+        if len(kids) > 1:
+            self.r.ctx.diag(
+                "XAML014", f"{self.type}.{prop} has {len(kids)} values: the last is used", kids[1]
+            )
+        return self.r.build_node(kids[-1], build, default)
+
+    def items(self, prop: str) -> list[etree._Element]:
+        """Child elements of a property, explicit collection elements unwrapped."""
+        out: list[etree._Element] = []
+        for k in self.elems.get(prop, ()):
+            ns, local = qname(k.tag)
+            et = voc.lookup(local) if is_presentation(ns) else None
+            if et is not None and et.kind in _COLLECTION_KINDS:
+                out.extend(c for c in k if isinstance(c.tag, str))
+            else:
+                out.append(k)
+        return out
+
+    def string(self, prop: str, default: str | None = None) -> str | None:
+        if prop in self.attrs:
+            kind, payload = self.markup(prop, self.attrs[prop])
+            return payload if kind == "plain" else default
+        return self.elem_text.get(prop, default)

@@ -1,0 +1,268 @@
+"""Resource dictionaries and resource references (XAML ``.Resources``, StaticResource...).
+
+Covers: ``x:Key`` entries of any ``<X.Resources>`` (Window, Page, Grid, Viewport3D, Application,
+ResourceDictionary ...) and of a root ``ResourceDictionary``; ``MergedDictionaries`` with
+``Source`` (resolved relative to the referring file, refused outside the allowed folder trees);
+application resources from files the user names or from an ``App.xaml`` found beside the scene
+or in its parent folders; ``{StaticResource}`` / ``{DynamicResource}`` / ``<StaticResource/>``
+lookup by scope (nearest enclosing element first, up the tree, then the application) and, for
+StaticResource, document order (the entry must come first).
+
+Entries are kept as lxml elements and built at each use by the builder (the Scene is immutable,
+so a resource used twice is simply built twice), in the context of the document that defines
+them: a reference inside an App.xaml entry resolves from App.xaml's tree.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from lxml import etree
+
+from xaml3d.errors import ResourceError, XamlError
+from xaml3d.xaml.context import ReadContext, doc_position, qname, x_attr
+from xaml3d.xaml.parser import ParsedDocument, parse_document
+
+APP_FILE_NAMES = ("app.xaml",)
+APP_DISCOVERY_LEVELS = 8
+
+
+def reduce_uri(source: str) -> str | None:
+    """A local relative path from a XAML URI (pack URIs reduced); None for network URIs."""
+    s = source.strip()
+    low = s.lower()
+    if low.startswith(("http://", "https://", "ftp://", "//", "\\\\")):
+        return None
+    for marker in (";component/", ",,,/"):
+        i = low.rfind(marker)
+        if i >= 0:
+            s = s[i + len(marker) :]
+            break
+    if s.lower().startswith("file:///"):
+        s = s[8:] if os.name == "nt" else s[7:]
+    s = s.replace("\\", "/")
+    if s.startswith("/") and not Path(s).exists():
+        s = s.lstrip("/")  # "/Folder/x.xaml" is relative to the application root
+    return s
+
+
+class Dictionary:
+    """One resource dictionary: own entries plus merged dictionaries."""
+
+    def __init__(self, owner: etree._Element) -> None:
+        self.owner = owner
+        self.entries: dict[str, etree._Element] = {}
+        self.merged: list[Dictionary] = []
+
+    def find(self, key: str) -> tuple[etree._Element, bool] | None:
+        """(entry, is_local): local entries first, then merged ones, the last merged first."""
+        if key in self.entries:
+            return self.entries[key], True
+        for d in reversed(self.merged):
+            hit = d.find(key)
+            if hit:
+                return hit[0], False
+        return None
+
+
+class Resources:
+    """Resource lookup for one load."""
+
+    def __init__(self, ctx: ReadContext) -> None:
+        self.ctx = ctx
+        self._dicts: dict[int, tuple[etree._Element, Dictionary | None]] = {}
+        self._files: dict[Path, Dictionary | None] = {}
+        self._loading: set[Path] = set()
+        self.app: list[tuple[ParsedDocument, Dictionary]] = []
+
+    # ----------------------------------------------------------------- dictionaries
+    def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
+        """The resources an element carries (its ``.Resources``, or itself if a dictionary)."""
+        hit = self._dicts.get(id(owner))
+        if hit is not None:
+            return hit[1]
+        self._dicts[id(owner)] = (owner, None)  # guards re-entry while merging
+        d = self._collect(owner)
+        self._dicts[id(owner)] = (owner, d)
+        return d
+
+    def _collect(self, owner: etree._Element) -> Dictionary | None:
+        containers: list[etree._Element] = []
+        if qname(owner.tag)[1] == "ResourceDictionary":
+            containers.append(owner)
+        for child in owner:
+            if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Resources"):
+                kids = [k for k in child if isinstance(k.tag, str)]
+                explicit = (
+                    len(kids) == 1
+                    and qname(kids[0].tag)[1] == "ResourceDictionary"
+                    and x_attr(kids[0], "Key") is None
+                )
+                # <X.Resources><ResourceDictionary>...: the explicit dictionary is the content
+                containers.append(kids[0] if explicit else child)
+        if not containers:
+            return None
+        result = Dictionary(owner)
+        for c in containers:
+            self._fill(result, c)
+        return result
+
+    def _fill(self, d: Dictionary, container: etree._Element) -> None:
+        if qname(container.tag)[1] == "ResourceDictionary" and container.get("Source"):
+            merged = self._merged(container)  # <ResourceDictionary Source="..."/> as the whole
+            if merged is not None:
+                d.merged.append(merged)
+        for child in container:
+            if not isinstance(child.tag, str):
+                continue
+            local = qname(child.tag)[1]
+            if local == "ResourceDictionary.MergedDictionaries":
+                for md in child:
+                    if isinstance(md.tag, str):
+                        merged = self._merged(md)
+                        if merged is not None:
+                            d.merged.append(merged)
+                continue
+            if "." in local:
+                continue  # other property elements of the dictionary
+            key = x_attr(child, "Key")
+            if key is None:
+                if local not in ("Style", "DataTemplate", "ControlTemplate"):
+                    self.ctx.diag("RES007", f"{local} in a resource dictionary has no x:Key", child)
+                continue
+            self.ctx.keep(child)
+            d.entries[key] = child
+
+    def _merged(self, md: etree._Element) -> Dictionary | None:
+        source = md.get("Source")
+        if source is None:
+            inline = Dictionary(md)
+            self._fill(inline, md)
+            return inline
+        doc = self.ctx.doc_of(md)
+        rel = reduce_uri(source)
+        if rel is None:
+            self.ctx.diag("RES004", f"merged dictionary {source!r}: network URIs are refused", md)
+            return None
+        base = doc.directory if doc and doc.directory else Path.cwd()
+        path = (base / rel).resolve()
+        if not self.ctx.path_allowed(path):
+            self.ctx.diag(
+                "RES004",
+                f"merged dictionary {source!r} leaves the scene's folder tree: refused "
+                "(allow_outside=True permits it)",
+                md,
+            )
+            return None
+        return self.load_dictionary_file(path, source, md)
+
+    def load_dictionary_file(
+        self, path: Path, label: str, ref: etree._Element | None
+    ) -> Dictionary | None:
+        if path in self._loading:
+            self.ctx.diag("RES003", f"merged dictionary {label!r} includes itself (cycle)", ref)
+            return None
+        if path in self._files:
+            return self._files[path]
+        if not path.is_file():
+            self.ctx.diag("RES005", f"merged dictionary {label!r} not found ({path})", ref)
+            return None
+        self._loading.add(path)
+        try:
+            doc = parse_document(path, limits=self.ctx.limits, file=str(path))
+        except XamlError as exc:
+            self.ctx.diag("RES005", f"merged dictionary {label!r} unreadable: {exc.message}", ref)
+            self._loading.discard(path)
+            self._files[path] = None
+            return None
+        self.ctx.add_document(doc)
+        self.ctx.files_used.append(doc.file)
+        d = self.dictionary_of(doc.root)
+        self._loading.discard(path)
+        self._files[path] = d
+        return d
+
+    # ----------------------------------------------------------------- application resources
+    def add_app_file(self, path: str | os.PathLike, *, discovered: bool = False) -> None:
+        """Read application resources from a file (App.xaml or any resource file)."""
+        label = os.fspath(path)
+        try:
+            doc = parse_document(path, limits=self.ctx.limits, file=label)
+        except XamlError as exc:
+            if discovered:
+                self.ctx.diag("RES005", f"{label}: cannot be used: {exc.message}", line=exc.line,
+                              file=label)  # fmt: skip
+                return
+            raise ResourceError(
+                f"resource file {label!r} cannot be read: {exc.message}",
+                code="RES009",
+                file=label,
+                line=exc.line,
+                column=exc.column,
+            ) from None
+        self.ctx.add_document(doc, trusted=True)
+        self.ctx.files_used.append(label)
+        d = self.dictionary_of(doc.root) or Dictionary(doc.root)
+        self.app.append((doc, d))
+        how = "found beside the scene" if discovered else "given"
+        self.ctx.diag(
+            "RES006",
+            f"application resources read from {label} ({how}: {len(d.entries)} entries)",
+            file=label,
+            line=doc.root.sourceline,
+        )
+
+    def discover_app(self, scene_path: Path) -> Path | None:
+        """The nearest App.xaml in the scene's folder or its parents (bounded), if any."""
+        folder = scene_path.parent
+        for _ in range(APP_DISCOVERY_LEVELS):
+            try:
+                names = os.listdir(folder)
+            except OSError:
+                names = []
+            for n in sorted(names):
+                if n.lower() in APP_FILE_NAMES:
+                    cand = (folder / n).resolve()
+                    if cand != scene_path.resolve() and cand.is_file():
+                        return cand
+            if folder.parent == folder:
+                break
+            folder = folder.parent
+        return None
+
+    # ----------------------------------------------------------------- lookup
+    def lookup(
+        self, key: str, from_el: etree._Element, *, dynamic: bool = False
+    ) -> etree._Element | None:
+        """The entry for ``key`` seen from ``from_el``; reports RES001/RES002 when missing."""
+        here = doc_position(from_el)
+        later = None
+        node = from_el
+        while node is not None:
+            d = self.dictionary_of(node)
+            if d is not None:
+                hit = d.find(key)
+                if hit is not None:
+                    entry, local = hit
+                    if dynamic or not local or doc_position(entry) < here:
+                        return entry
+                    later = later or entry
+            node = node.getparent()
+        own_root = from_el.getroottree().getroot()
+        for doc, d in reversed(self.app):
+            if doc.root is own_root:
+                continue  # already searched (with the order rule) on the way up
+            hit = d.find(key)
+            if hit is not None:
+                return hit[0]
+        if later is not None:
+            self.ctx.diag(
+                "RES002",
+                f"StaticResource {key!r} is used before its definition (line {later.sourceline}); "
+                "WPF requires the entry to come first (DynamicResource would allow it)",
+                from_el,
+            )
+        else:
+            self.ctx.diag("RES001", f"resource {key!r} not found", from_el)
+        return None

@@ -1,0 +1,363 @@
+"""The closed vocabulary of XAML element types xaml3d knows, and every reader diagnostic code.
+
+Each known type lists its properties and their value kinds, its content property, whether xaml3d
+supports it, and what kind of object it is. The 3D types, brushes, 2D transforms and animations
+are CLOSED: a property not listed is reported (with the closest known name as a suggestion, so
+``LookDirecton`` says "did you mean LookDirection?"). Framework types (Window, Grid, Button ...)
+are OPEN: xaml3d only walks through them for Viewport3Ds, resources and triggers, so their many
+properties are not checked. Known-but-unsupported types and properties (VisualBrush content,
+DoubleAnimationUsingPath ...) are reported as such: this table is documentation too.
+"""
+
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass
+
+from xaml3d.errors import ERROR, INFO, WARNING
+
+
+@dataclass(frozen=True)
+class ElementType:
+    name: str
+    kind: str  # visual3d | model3d | light | geometry | camera | material | transform3d |
+    # rotation3d | brush | transform2d | timeline | keyframe | trigger | action | collection |
+    # resource | framework | other
+    properties: dict[str, str]  # property name -> value kind
+    content: str | None = None  # content property
+    supported: bool = True
+    open: bool = False  # framework element: properties not checked
+    note: str = ""
+
+    def property_kind(self, prop: str) -> str | None:
+        return self.properties.get(prop)
+
+
+_TYPES: dict[str, ElementType] = {}
+
+
+def _t(name, kind, props=None, content=None, supported=True, open=False, note="", base=()):
+    merged: dict[str, str] = {}
+    for b in base:
+        merged.update(b)
+    merged.update(props or {})
+    _TYPES[name] = ElementType(name, kind, merged, content, supported, open, note)
+
+
+# --------------------------------------------------------------------------- property sets
+_D, _B, _S = "double", "bool", "string"
+_P3, _V3 = "point3d", "vector3d"
+UI_PROPS = {
+    "Width": _D, "Height": _D, "MinWidth": _D, "MinHeight": _D, "MaxWidth": _D,
+    "MaxHeight": _D, "Margin": _S, "HorizontalAlignment": _S, "VerticalAlignment": _S,
+    "ClipToBounds": _B, "Opacity": _D, "Visibility": _S, "IsHitTestVisible": _B,
+    "Focusable": _B, "IsEnabled": _B, "Name": _S, "Resources": "resources",
+    "Triggers": "triggers", "RenderTransform": "object", "RenderTransformOrigin": _S,
+    "LayoutTransform": "object", "Clip": "object", "Effect": "object", "Style": "object",
+    "Tag": "object", "ToolTip": "object", "Cursor": _S, "DataContext": "object",
+    "FocusVisualStyle": "object", "SnapsToDevicePixels": _B, "UseLayoutRounding": _B,
+    "FlowDirection": _S, "OpacityMask": "brush", "CacheMode": "object", "Uid": _S,
+    "InputBindings": "object", "CommandBindings": "object", "ContextMenu": "object",
+    "BitmapEffect": "object", "AllowDrop": _B, "ForceCursor": _B, "Language": _S,
+    "OverridesDefaultStyle": _B, "Loaded": "event", "Unloaded": "event",
+}  # fmt: skip
+_TRANSFORMABLE = {"Transform": "transform3d"}
+_TIMELINE = {
+    "BeginTime": "timespan", "Duration": "duration", "RepeatBehavior": "repeat",
+    "AutoReverse": _B, "FillBehavior": _S, "SpeedRatio": _D, "AccelerationRatio": _D,
+    "DecelerationRatio": _D, "Name": _S, "Completed": "event",
+    "CurrentStateInvalidated": "event", "CurrentTimeInvalidated": "event",
+    "CurrentGlobalSpeedInvalidated": "event", "RemoveRequested": "event",
+}  # fmt: skip
+_BRUSH = {"Opacity": _D, "Transform": "transform2d", "RelativeTransform": "transform2d"}
+_GRADIENT = {
+    "GradientStops": "gradientstop[]", "MappingMode": _S, "SpreadMethod": _S,
+    "ColorInterpolationMode": _S,
+}  # fmt: skip
+_TILE = {
+    "Viewport": "rect", "ViewportUnits": _S, "Viewbox": "rect", "ViewboxUnits": _S,
+    "Stretch": _S, "TileMode": _S, "AlignmentX": _S, "AlignmentY": _S,
+}  # fmt: skip
+_LIGHT = {"Color": "color", "Transform": "transform3d"}
+_POINTLIGHT = {
+    "Position": _P3, "Range": _D, "ConstantAttenuation": _D, "LinearAttenuation": _D,
+    "QuadraticAttenuation": _D,
+}  # fmt: skip
+_CAMERA = {
+    "Position": _P3, "LookDirection": _V3, "UpDirection": _V3, "NearPlaneDistance": _D,
+    "FarPlaneDistance": _D, "Transform": "transform3d",
+}  # fmt: skip
+_UI3D = {
+    "Transform": "transform3d", "Visibility": _S, "IsHitTestVisible": _B, "IsEnabled": _B,
+    "Focusable": _B, "Name": _S, "Uid": _S,
+}  # fmt: skip
+_CENTER3 = {"CenterX": _D, "CenterY": _D, "CenterZ": _D}
+_CENTER2 = {"CenterX": _D, "CenterY": _D}
+
+# --------------------------------------------------------------------------- 3D types
+_t("Viewport3D", "viewport", {"Camera": "camera", "Children": "visual3d[]"}, "Children",
+   base=(UI_PROPS,))  # fmt: skip
+_t(
+    "ModelVisual3D",
+    "visual3d",
+    {"Content": "model3d", "Children": "visual3d[]", "Transform": "transform3d"},
+    "Children",
+)
+_t("ModelUIElement3D", "visual3d", {"Model": "model3d"}, "Model", base=(_UI3D,))
+_t("ContainerUIElement3D", "visual3d", {"Children": "visual3d[]"}, "Children", base=(_UI3D,))
+_t("Viewport2DVisual3D", "visual3d",
+   {"Geometry": "geometry", "Material": "material", "Visual": "object", "CacheMode": "object"},
+   "Visual", base=(_UI3D,), note="2D content is drawn as a placeholder")  # fmt: skip
+_t("Model3DGroup", "model3d", {"Children": "model3d[]"}, "Children", base=(_TRANSFORMABLE,))
+_t("GeometryModel3D", "model3d",
+   {"Geometry": "geometry", "Material": "material", "BackMaterial": "material"},
+   base=(_TRANSFORMABLE,))  # fmt: skip
+_t("MeshGeometry3D", "geometry",
+   {"Positions": "point3d[]", "Normals": "vector3d[]", "TextureCoordinates": "point[]",
+    "TriangleIndices": "int[]"})  # fmt: skip
+_t("AmbientLight", "light", base=(_LIGHT,))
+_t("DirectionalLight", "light", {"Direction": _V3}, base=(_LIGHT,))
+_t("PointLight", "light", base=(_LIGHT, _POINTLIGHT))
+_t(
+    "SpotLight",
+    "light",
+    {"Direction": _V3, "InnerConeAngle": _D, "OuterConeAngle": _D},
+    base=(_LIGHT, _POINTLIGHT),
+)
+_t("PerspectiveCamera", "camera", {"FieldOfView": _D}, base=(_CAMERA,))
+_t("OrthographicCamera", "camera", {"Width": _D}, base=(_CAMERA,))
+_t(
+    "MatrixCamera",
+    "camera",
+    {"ViewMatrix": "matrix3d", "ProjectionMatrix": "matrix3d", "Transform": "transform3d"},
+)
+_t("DiffuseMaterial", "material", {"Brush": "brush", "Color": "color", "AmbientColor": "color"})
+_t("SpecularMaterial", "material", {"Brush": "brush", "Color": "color", "SpecularPower": _D})
+_t("EmissiveMaterial", "material", {"Brush": "brush", "Color": "color"})
+_t("MaterialGroup", "material", {"Children": "material[]"}, "Children")
+_t("TranslateTransform3D", "transform3d", {"OffsetX": _D, "OffsetY": _D, "OffsetZ": _D})
+_t("ScaleTransform3D", "transform3d", {"ScaleX": _D, "ScaleY": _D, "ScaleZ": _D}, base=(_CENTER3,))
+_t("RotateTransform3D", "transform3d", {"Rotation": "rotation3d"}, base=(_CENTER3,))
+_t("MatrixTransform3D", "transform3d", {"Matrix": "matrix3d"})
+_t("Transform3DGroup", "transform3d", {"Children": "transform3d[]"}, "Children")
+_t("AxisAngleRotation3D", "rotation3d", {"Axis": _V3, "Angle": _D})
+_t("QuaternionRotation3D", "rotation3d", {"Quaternion": "quaternion"})
+for _c in ("Model3DCollection", "Transform3DCollection", "MaterialCollection",
+           "Visual3DCollection", "GradientStopCollection", "TransformCollection",
+           "TimelineCollection", "TriggerActionCollection", "TriggerCollection"):  # fmt: skip
+    _t(_c, "collection", content="Children")
+for _c in ("Point3DCollection", "Vector3DCollection", "PointCollection", "Int32Collection",
+           "DoubleCollection"):  # fmt: skip
+    _t(_c, "valuecollection", note="written as element text")
+
+# --------------------------------------------------------------------------- brushes
+_t("SolidColorBrush", "brush", {"Color": "color"}, base=(_BRUSH,))
+_t("LinearGradientBrush", "brush", {"StartPoint": "point", "EndPoint": "point"},
+   "GradientStops", base=(_BRUSH, _GRADIENT))  # fmt: skip
+_t("RadialGradientBrush", "brush",
+   {"Center": "point", "GradientOrigin": "point", "RadiusX": _D, "RadiusY": _D},
+   "GradientStops", base=(_BRUSH, _GRADIENT))  # fmt: skip
+_t("ImageBrush", "brush", {"ImageSource": "image"}, base=(_BRUSH, _TILE))
+_t(
+    "VisualBrush",
+    "brush",
+    {"Visual": "object", "AutoLayoutContent": _B},
+    "Visual",
+    supported=False,
+    base=(_BRUSH, _TILE),
+    note="2D content: drawn as a placeholder",
+)
+_t("DrawingBrush", "brush", {"Drawing": "object"}, "Drawing", supported=False,
+   base=(_BRUSH, _TILE), note="2D drawing: drawn as a placeholder")  # fmt: skip
+_t(
+    "BitmapCacheBrush",
+    "brush",
+    {"Target": "object", "BitmapCache": "object"},
+    supported=False,
+    base=(_BRUSH,),
+    note="drawn as a placeholder",
+)
+_t("GradientStop", "gradientstop", {"Color": "color", "Offset": _D})
+_t("TranslateTransform", "transform2d", {"X": _D, "Y": _D})
+_t("ScaleTransform", "transform2d", {"ScaleX": _D, "ScaleY": _D}, base=(_CENTER2,))
+_t("RotateTransform", "transform2d", {"Angle": _D}, base=(_CENTER2,))
+_t("SkewTransform", "transform2d", {"AngleX": _D, "AngleY": _D}, base=(_CENTER2,))
+_t("MatrixTransform", "transform2d", {"Matrix": "matrix"})
+_t("TransformGroup", "transform2d", {"Children": "transform2d[]"}, "Children")
+
+# --------------------------------------------------------------------------- animation
+_STORY_ATTACHED = {"Storyboard.TargetName": _S, "Storyboard.TargetProperty": _S}
+_t("Storyboard", "timeline", {"Children": "timeline[]"}, "Children", base=(_TIMELINE,))
+_t("ParallelTimeline", "timeline", {"Children": "timeline[]"}, "Children", base=(_TIMELINE,))
+_t(
+    "BeginStoryboard",
+    "action",
+    {"Storyboard": "storyboard", "Name": _S, "HandoffBehavior": _S},
+    "Storyboard",
+)
+for _c in ("PauseStoryboard", "ResumeStoryboard", "StopStoryboard", "RemoveStoryboard",
+           "SkipStoryboardToFill", "SeekStoryboard", "SetStoryboardSpeedRatio"):  # fmt: skip
+    _t(_c, "action", {"BeginStoryboardName": _S, "Offset": _S, "Origin": _S, "SpeedRatio": _D},
+       note="interactive control: not evaluated")  # fmt: skip
+_t(
+    "EventTrigger",
+    "trigger",
+    {"RoutedEvent": _S, "SourceName": _S, "Actions": "action[]"},
+    "Actions",
+)
+_ANIM_VALUE = {"Double": _D, "Point3D": _P3, "Vector3D": _V3, "Quaternion": "quaternion",
+               "Rotation3D": "rotation3d", "Color": "color", "Point": "point"}  # fmt: skip
+_FROM_TO = {"IsAdditive": _B, "IsCumulative": _B, "EasingFunction": "object"}
+for _v, _k in _ANIM_VALUE.items():
+    ok = _v != "Point"  # 2D point animations have no 3D target
+    _t(f"{_v}Animation", "animation",
+       {"From": _k, "To": _k, "By": _k, "UseShortestPath": _B},
+       base=(_TIMELINE, _FROM_TO), supported=ok)  # fmt: skip
+    _t(f"{_v}AnimationUsingKeyFrames", "animation", {"KeyFrames": "keyframe[]"}, "KeyFrames",
+       base=(_TIMELINE, _FROM_TO), supported=ok)  # fmt: skip
+    for _kind in ("Linear", "Discrete", "Spline", "Easing"):
+        _t(f"{_kind}{_v}KeyFrame", "keyframe",
+           {"KeyTime": "keytime", "Value": _k, "KeySpline": "keyspline",
+            "EasingFunction": "object"}, "Value")  # fmt: skip
+for _c in ("DoubleAnimationUsingPath", "PointAnimationUsingPath", "MatrixAnimationUsingPath"):
+    _t(
+        _c,
+        "animation",
+        {"PathGeometry": "object", "Source": _S},
+        base=(_TIMELINE, _FROM_TO),
+        supported=False,
+        note="path animations are not evaluated",
+    )
+_KEYFRAME_COLLECTIONS = [f"{v}KeyFrameCollection" for v in _ANIM_VALUE]
+for _c in _KEYFRAME_COLLECTIONS:
+    _t(_c, "collection", content="Children")
+
+# --------------------------------------------------------------------------- resources & markup
+_t("ResourceDictionary", "resource", {"Source": _S, "MergedDictionaries": "object"})
+_t("StaticResource", "reference", {"ResourceKey": _S})
+_t("DynamicResource", "reference", {"ResourceKey": _S})
+
+# --------------------------------------------------------------------------- framework (open)
+_FRAMEWORK = """
+Window Page UserControl Application Grid Border Canvas StackPanel DockPanel WrapPanel Viewbox
+ScrollViewer Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox ComboBoxItem
+ListBox ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline
+Frame ContentPresenter ContentControl AdornerDecorator Decorator ColumnDefinition RowDefinition
+Style Setter ControlTemplate DataTemplate ItemsPanelTemplate HierarchicalDataTemplate Trigger
+MultiTrigger Condition DataTrigger MultiDataTrigger EventSetter ToolTip Menu MenuItem Separator
+Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar InkCanvas
+MediaElement KeyBinding MouseBinding BooleanToVisibilityConverter Run Span Bold Italic Underline
+Hyperlink LineBreak Paragraph FlowDocument FlowDocumentScrollViewer RichTextBox PasswordBox
+UniformGrid GridSplitter StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Popup
+Thumb Track ScrollBar ResizeGrip NavigationWindow HeaderedContentControl Calendar DatePicker
+DataGrid TreeView TreeViewItem PathGeometry PathFigure PathFigureCollection PathSegmentCollection
+BezierSegment LineSegment ArcSegment PolyLineSegment PolyBezierSegment QuadraticBezierSegment
+PolyQuadraticBezierSegment EllipseGeometry RectangleGeometry LineGeometry GeometryGroup
+CombinedGeometry StreamGeometry DrawingGroup GeometryDrawing ImageDrawing GlyphRunDrawing
+VideoDrawing DrawingImage BitmapImage Pen DropShadowEffect BlurEffect VisualTarget
+ObjectDataProvider XmlDataProvider Binding MultiBinding RelativeSource ImageSource BitmapCache
+Color Double Int32 String Boolean Point Point3D Vector3D Thickness CornerRadius FontFamily
+FontWeight Array Null Static Type Key Code XData
+"""
+for _c in _FRAMEWORK.split():
+    _t(_c, "framework", open=True)
+
+# attached-property owners whose attributes are accepted anywhere ("Grid.Column" ...)
+ATTACHED_OWNERS = frozenset(
+    "Grid Canvas DockPanel Storyboard RenderOptions TextBlock TextElement ToolTipService "
+    "KeyboardNavigation ScrollViewer Panel Validation FocusManager Selector AutomationProperties "
+    "VirtualizingStackPanel InputMethod SpellCheck ContextMenuService Typography "
+    "NumberSubstitution TextOptions Timeline Mouse Keyboard Stylus RadioButton Button "
+    "ButtonBase ToggleButton Control UIElement FrameworkElement DesignerProperties "
+    "Viewport3D Window Page".split()
+)
+
+# event attributes: a handler name in code-behind (not evaluable)
+EVENT_SUFFIXES = (
+    "Loaded", "Unloaded", "Click", "Checked", "Unchecked", "Indeterminate", "Changed", "Down",
+    "Up", "Move", "Enter", "Leave", "Wheel", "Completed", "Invalidated", "Rendered", "Startup",
+    "Exit", "Closing", "Closed", "Activated", "Deactivated", "Initialized", "Opened", "Expanded",
+    "Collapsed", "Selected", "Unselected", "Drop", "DragOver", "Tick", "Input", "Started",
+    "Requested", "Navigated", "Navigating", "Scroll", "Focus", "Pressed", "Released",
+)  # fmt: skip
+
+
+def is_event_name(prop: str) -> bool:
+    """Whether a property name looks like a routed/CLR event (handler attributes)."""
+    name = prop.rsplit(".", 1)[-1]
+    return name.endswith(EVENT_SUFFIXES) and not name.startswith(("Is", "Has"))
+
+
+def lookup(name: str) -> ElementType | None:
+    return _TYPES.get(name)
+
+
+def known_types() -> list[str]:
+    return sorted(_TYPES)
+
+
+def suggest(name: str, candidates) -> str | None:
+    """The closest known name (difflib), or None."""
+    found = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.75)
+    return found[0] if found else None
+
+
+def did_you_mean(name: str, candidates) -> str:
+    s = suggest(name, candidates)
+    return f" (did you mean {s}?)" if s else ""
+
+
+# --------------------------------------------------------------------------- diagnostic codes
+READER_CODES: dict[str, tuple[str, str]] = {
+    "XML001": (ERROR, "not well-formed XML (fatal)"),
+    "XML002": (ERROR, "DOCTYPE/ENTITY declaration refused (fatal)"),
+    "XML003": (ERROR, "document larger than the size limit (fatal)"),
+    "XML004": (ERROR, "more elements than the limit (fatal)"),
+    "XML005": (ERROR, "elements nested deeper than the limit (fatal)"),
+    "XML006": (ERROR, "file cannot be read (fatal)"),
+    "XAML001": (INFO, "element from an unknown or clr-namespace namespace skipped"),
+    "XAML002": (INFO, "attribute from an unknown or clr-namespace namespace ignored"),
+    "XAML003": (WARNING, "unknown element type (closest known name suggested)"),
+    "XAML004": (WARNING, "unknown property (closest known name suggested)"),
+    "XAML005": (WARNING, "known element type that xaml3d does not support"),
+    "XAML006": (INFO, "known property that xaml3d does not use"),
+    "XAML007": (INFO, "x:Class code-behind is not run"),
+    "XAML008": (INFO, "event handler attribute ignored (code-behind is not run)"),
+    "XAML009": (WARNING, "{Binding} cannot be evaluated from markup: property keeps its default"),
+    "XAML010": (WARNING, "{x:Static} cannot be evaluated: property keeps its default"),
+    "XAML011": (WARNING, "markup extension not evaluated ({TemplateBinding}, {x:Type}...)"),
+    "XAML012": (WARNING, "property set more than once (attribute and element forms)"),
+    "XAML013": (WARNING, "element of the wrong kind for this property: ignored"),
+    "XAML014": (WARNING, "several values for a single-valued property: the last is used"),
+    "XAML015": (INFO, "Viewport3D inside a template or style is not instantiated"),
+    "XAML016": (WARNING, "malformed markup extension"),
+    "RES001": (WARNING, "resource key not found"),
+    "RES002": (WARNING, "StaticResource used before its definition"),
+    "RES003": (WARNING, "resource reference cycle"),
+    "RES004": (WARNING, "resource file outside the scene's folder tree refused"),
+    "RES005": (WARNING, "merged resource dictionary missing or unreadable"),
+    "RES006": (INFO, "application resources read from a file"),
+    "RES007": (INFO, "resource entry without x:Key ignored"),
+    "RES008": (WARNING, "resource of the wrong type for this property"),
+    "RES009": (ERROR, "resource file named by the user cannot be read (fatal)"),
+    "SCN001": (WARNING, "the document holds no Viewport3D"),
+    "SCN003": (INFO, "viewport size source (own, ancestor or default)"),
+    "SCN004": (INFO, "no camera given: WPF's default PerspectiveCamera is used"),
+    "SCN005": (WARNING, "GeometryModel3D without a Geometry skipped"),
+    "SCN006": (WARNING, "geometry that is not a MeshGeometry3D skipped"),
+    "SCN007": (WARNING, "Viewport2DVisual3D 2D content drawn as a placeholder"),
+    "SCN008": (WARNING, "element of the wrong kind in a 3D tree skipped"),
+    "SCN009": (INFO, "Camera is {x:Null}: the viewport draws nothing"),
+    "SCN010": (WARNING, "transform cannot be built: identity used"),
+    "SCN011": (INFO, "GeometryModel3D without Material or BackMaterial draws nothing"),
+    "BRU001": (WARNING, "VisualBrush/DrawingBrush content drawn as a placeholder"),
+    "BRU002": (WARNING, "image file not found: the brush draws nothing"),
+    "BRU003": (WARNING, "image file cannot be decoded: the brush draws nothing"),
+    "BRU004": (WARNING, "network image URI refused: the brush draws nothing"),
+    "BRU005": (WARNING, "image path outside the scene's folder tree refused"),
+    "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
+    "ANI001": (WARNING, "animation type not evaluated (path animations, 2D targets)"),
+    "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
+    "ANI003": (INFO, "EasingFunction ignored (linear timing used)"),
+    "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
+}
