@@ -1,0 +1,83 @@
+"""The command line as a real process (``python -m xaml3d``): exit codes, the byte streams of
+stdin/stdout/stderr, no traceback on bad input."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+from test_cli import BAD, PNG_SIGNATURE, SQUARE, TYPO
+
+
+def xaml3d(*args, input: bytes | None = None, cwd=None) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "xaml3d", *[str(a) for a in args]],
+        input=input,
+        capture_output=True,
+        cwd=cwd,
+        timeout=120,
+    )
+
+
+def test_stdin_to_stdout_is_png_bytes_only(tmp_path):
+    p = xaml3d("render", "-", "-o", "-", input=SQUARE.encode(), cwd=tmp_path)
+    assert p.returncode == 0
+    assert p.stdout.startswith(PNG_SIGNATURE)
+    assert p.stderr == b""
+
+
+def test_warnings_on_stderr_image_on_stdout(tmp_path):
+    (tmp_path / "t.xaml").write_text(TYPO)
+    p = xaml3d("render", "t.xaml", "-o", "-", cwd=tmp_path)
+    assert p.returncode == 0 and p.stdout.startswith(PNG_SIGNATURE)
+    assert p.stderr.decode().startswith("t.xaml:3:") and b"warning XAML004" in p.stderr
+    assert b"warning" not in p.stdout
+
+
+def test_exit_codes_0_1_2(tmp_path):
+    (tmp_path / "ok.xaml").write_text(SQUARE)
+    (tmp_path / "bad.xaml").write_text(BAD)
+    assert xaml3d("render", "ok.xaml", "-o", "ok.png", cwd=tmp_path).returncode == 0
+    assert (tmp_path / "ok.png").read_bytes().startswith(PNG_SIGNATURE)
+    bad = xaml3d("render", "bad.xaml", "-o", "bad.png", cwd=tmp_path)
+    assert bad.returncode == 1 and not (tmp_path / "bad.png").exists()
+    assert bad.stderr.decode().startswith("bad.xaml:2:") and b"Traceback" not in bad.stderr
+    usage = xaml3d("render", "ok.xaml", "-o", "x.png", "--ssaa", "9", cwd=tmp_path)
+    assert usage.returncode == 2 and b"Usage:" in usage.stderr
+
+
+def test_batch_in_a_real_process(tmp_path):
+    for name, text in (("a", SQUARE), ("bad", BAD), ("b", SQUARE)):
+        (tmp_path / f"{name}.xaml").write_text(text)
+    p = xaml3d("render", "a.xaml", "bad.xaml", "b.xaml", "--output-dir", "out", cwd=tmp_path)
+    assert p.returncode == 1
+    assert sorted(f.name for f in (tmp_path / "out").iterdir()) == ["a.png", "b.png"]
+    last = p.stderr.decode().strip().splitlines()[-1]
+    assert last == "xaml3d: rendered 2 of 3 scenes; failed: bad.xaml"
+    assert p.stdout == b""
+
+
+def test_refuse_overwrite_in_a_real_process(tmp_path):
+    (tmp_path / "s.xaml").write_text(SQUARE)
+    p = xaml3d("render", "s.xaml", "-o", "./s.xaml", "--format", "png", cwd=tmp_path)
+    assert p.returncode == 1 and b"IO002" in p.stderr
+    assert (tmp_path / "s.xaml").read_text() == SQUARE
+
+
+def test_validate_json_and_info_json(tmp_path):
+    (tmp_path / "t.xaml").write_text(TYPO)
+    p = xaml3d("validate", "--format", "json", "t.xaml", cwd=tmp_path)
+    assert p.returncode == 0 and p.stderr == b""
+    codes = {d["code"] for d in json.loads(p.stdout)}
+    assert "XAML004" in codes
+    assert xaml3d("validate", "--strict", "t.xaml", cwd=tmp_path).returncode == 1
+    info = json.loads(xaml3d("info", "--json", "t.xaml", cwd=tmp_path).stdout)
+    assert info["viewports"][0]["triangles"] == 2
+
+
+def test_camera_point_in_a_real_process(tmp_path):
+    (tmp_path / "s.xaml").write_text(SQUARE)
+    p = xaml3d("camera", "s.xaml", "--point", "0,0,0", cwd=tmp_path)
+    # The image centre of the 40 x 30 viewport: (20, 15).
+    assert p.returncode == 0 and b"point 0,0,0 -> pixel (20, 15)" in p.stdout

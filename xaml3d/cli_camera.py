@@ -1,0 +1,311 @@
+"""``xaml3d camera``: the camera-pipeline.md derivation made inspectable (section 7).
+
+For one viewport and render size: the camera's properties (defaults marked), the frame u, v, w,
+both fields of view, the view-cone points A, B, C, c = -n/f, Mper, Mpp (or the orthographic map),
+Mwind, the world-to-pixel product and WPF's own view and projection matrices (row-vector form).
+``--point X,Y,Z`` shows where world points land, or why they are clipped.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+
+import click
+import numpy as np
+
+from xaml3d.cli_common import describe_os_error, display_name, io_error, load_scene, render_size
+from xaml3d.errors import XamlError
+from xaml3d.scene.types import MatrixCamera
+
+# Scene field name -> WPF property name, in the order WPF's documentation lists them.
+WPF_NAMES = {
+    "position": "Position",
+    "look_direction": "LookDirection",
+    "up_direction": "UpDirection",
+    "field_of_view": "FieldOfView",
+    "width": "Width",
+    "near_plane_distance": "NearPlaneDistance",
+    "far_plane_distance": "FarPlaneDistance",
+    "view_matrix": "ViewMatrix",
+    "projection_matrix": "ProjectionMatrix",
+    "transform": "Transform",
+}
+
+# Pipeline matrices shown, with their labels (column form unless WPF's).
+MATRICES = (
+    ("m_per", "Mper (column vectors, p' = M p): world -> standard perspective view volume"),
+    ("m_pp", "Mpp (column vectors): perspective -> parallel view volume"),
+    ("m_ortho", "Morth (column vectors): world -> standard parallel view volume"),
+    ("m_wind", "Mwind (column vectors): [-1,1]^2 -> pixels"),
+    ("view_matrix", "view (column vectors): world -> camera space, Camera.Transform included"),
+    ("clip_matrix", "clip (column vectors): world -> homogeneous parallel view volume"),
+    ("world_to_pixel", "world -> pixel (column vectors): Mwind Mpp Mper (divide by w)"),
+    ("wpf_view", "WPF view matrix (ROW vectors, p' = p M, as WPF reports it)"),
+    ("wpf_projection", "WPF projection matrix (ROW vectors, Direct3D clip 0 <= z <= w)"),
+)
+
+
+def _num(x: float) -> str:
+    x = float(x)
+    if math.isnan(x):
+        return "NaN"
+    if math.isinf(x):
+        return "Infinity" if x > 0 else "-Infinity"
+    return f"{x:.6g}" if x != 0 else "0"
+
+
+def _jsonable(val):
+    if isinstance(val, np.ndarray):
+        return _jsonable(val.tolist())
+    if isinstance(val, (list, tuple)):
+        return [_jsonable(v) for v in val]
+    if isinstance(val, float) and not math.isfinite(val):
+        return str(val).replace("inf", "Infinity").replace("nan", "NaN")
+    return val
+
+
+def _default_of(f: dataclasses.Field):
+    if f.default is not dataclasses.MISSING:
+        return f.default
+    if f.default_factory is not dataclasses.MISSING:
+        return f.default_factory()
+    return dataclasses.MISSING
+
+
+def camera_properties(camera) -> list[tuple[str, object, bool]]:
+    """(WPF name, value, is_default) for every property of the camera, compared with the scene
+    dataclass defaults (which are WPF's, wpf3d.md section 1)."""
+    out = []
+    for f in dataclasses.fields(camera):
+        if f.name not in WPF_NAMES:
+            continue
+        value, default = getattr(camera, f.name), _default_of(f)
+        if isinstance(value, np.ndarray):
+            same = default is not dataclasses.MISSING and np.array_equal(value, default)
+        else:
+            same = value == default or (
+                isinstance(value, float) and isinstance(default, float) and value == default
+            )
+        out.append((WPF_NAMES[f.name], value, bool(same)))
+    return out
+
+
+def _format_value(value) -> str:
+    if isinstance(value, np.ndarray) and value.shape == (4, 4):
+        return "Identity" if np.array_equal(value, np.eye(4)) else _matrix_inline(value)
+    if isinstance(value, (tuple, list, np.ndarray)):
+        return ",".join(_num(v) for v in value)
+    return _num(value) if isinstance(value, (int, float)) else str(value)
+
+
+def _matrix_inline(m) -> str:
+    return " ".join(_num(v) for v in np.asarray(m).ravel())
+
+
+def _matrix_lines(m) -> list[str]:
+    m = np.asarray(m, dtype=np.float64)
+    finite = np.abs(m[np.isfinite(m)])
+    # Round-off from solving for the matrix (1e-17 where the math gives 0) is shown as 0.
+    tiny = 1e-12 * float(finite.max()) if finite.size else 0.0
+    with np.errstate(invalid="ignore"):
+        m = np.where(np.abs(m) < tiny, 0.0, m)
+    cells = [[_num(v) for v in row] for row in m]
+    width = max(len(c) for row in cells for c in row)
+    return ["    | " + "  ".join(c.rjust(width) for c in row) + " |" for row in cells]
+
+
+def parse_point(ctx, param, values):
+    points = []
+    for text in values:
+        parts = [p for p in text.replace(",", " ").split() if p]
+        try:
+            if len(parts) != 3:
+                raise ValueError
+            points.append(tuple(float(p) for p in parts))
+        except ValueError:
+            raise click.BadParameter(f"{text!r} is not X,Y,Z (three numbers)") from None
+    return points
+
+
+def locate_points(pipe, points) -> list[dict]:
+    """Where each world point lands: pixel x, y and depth z', or why it is clipped (tests on
+    the homogeneous parallel-volume coordinates, before division: camera-pipeline.md section 6)."""
+    if not points:
+        return []
+    pts = np.asarray(points, dtype=np.float64)
+    with np.errstate(all="ignore"):
+        pixels, depth, visible = pipe.project(pts)
+        h = np.hstack([pts, np.ones((len(pts), 1))]) @ np.asarray(pipe.clip_matrix).T
+    out = []
+    for i, p in enumerate(points):
+        x, y, z, w = h[i]
+        if w <= 0:
+            why = "behind the camera"
+        elif z > 0:
+            why = "behind the near plane (closer than NearPlaneDistance)"
+        elif z < -w:
+            why = "beyond the far plane"
+        elif abs(x) > w or abs(y) > w:
+            why = "outside the image"
+        else:
+            why = None if bool(visible[i]) else "on the edge of the view volume"
+        item = {"point": list(p), "visible": why is None, "reason": why}
+        if w > 0:
+            item.update(x=float(pixels[i, 0]), y=float(pixels[i, 1]), depth=float(depth[i]))
+        out.append(item)
+    return out
+
+
+def _pipeline_text(pipe) -> list[str]:
+    lines = [
+        f"Pipeline for a {_num(pipe.width)} x {_num(pipe.height)} image, "
+        f"aspect {_num(pipe.aspect)}:"
+    ]
+    for name in ("u", "v", "w", "A", "B", "C"):
+        val = getattr(pipe, name)
+        if val is not None:
+            val = np.asarray(val, dtype=np.float64)
+            val = np.where(np.abs(val) < 1e-12 * float(np.max(np.abs(val))), 0.0, val)
+            lines.append(f"  {name} = ({', '.join(_num(c) for c in val)})")
+    if pipe.fov_h is not None:
+        lines.append(f"  horizontal field of view = {_num(pipe.fov_h)} degrees")
+        lines.append(f"  vertical field of view   = {_num(pipe.fov_v)} degrees")
+    if pipe.near is not None:
+        eff = " (effective: FarPlaneDistance is Infinity)" if pipe.far_is_infinite else ""
+        lines.append(f"  near = {_num(pipe.near)}, far = {_num(pipe.far)}{eff}")
+    if pipe.c is not None:
+        lines.append(f"  c = -near/far = {_num(pipe.c)}")
+    for name, label in MATRICES:
+        m = getattr(pipe, name)
+        if m is not None:
+            lines.append(f"  {label}:")
+            lines.extend(_matrix_lines(m))
+    return lines
+
+
+HELP = """Show the camera math for one viewport: the camera's properties (defaults
+marked), the frame u, v, w, both fields of view, A, B, C, c = -n/f, Mper, Mpp, Mwind, the
+world-to-pixel product and WPF's own view and projection matrices.
+
+\b
+Examples:
+  xaml3d camera scene.xaml
+  xaml3d camera scene.xaml -W 1024 -H 768 --viewport 1
+  xaml3d camera scene.xaml --point 0,0,0 --point 1,1,-5
+  xaml3d camera scene.xaml --json | jq .pipeline.world_to_pixel
+"""
+
+
+@click.command("camera", help=HELP, short_help="Show the camera math for one viewport.")
+@click.argument("scene", metavar="SCENE")
+@click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
+@click.option("-W", "--width", type=click.IntRange(min=1), help="Image width (as in render).")
+@click.option("-H", "--height", type=click.IntRange(min=1), help="Image height (as in render).")
+@click.option("--scale", type=click.FloatRange(min=0, min_open=True), help="Multiply the size.")
+@click.option("--fit", is_flag=True, help="Show the camera as render --fit would move it.")
+@click.option(
+    "--point",
+    "points",
+    multiple=True,
+    callback=parse_point,
+    metavar="X,Y,Z",
+    help="World point to locate (repeatable).",
+)
+@click.option(
+    "-r",
+    "--resources",
+    multiple=True,
+    metavar="FILE",
+    help="Extra resource dictionary (repeatable).",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
+def camera_command(scene, viewport, width, height, scale, fit, points, resources, as_json) -> None:
+    from xaml3d.scene.camera_math import camera_pipeline
+
+    name = display_name(scene)
+    ctx = click.get_current_context()
+    try:
+        sc = load_scene(scene, tuple(resources))
+        vp = sc.viewport(viewport)
+    except XamlError as exc:
+        click.echo(exc.with_location(file=name).format(), err=True)
+        ctx.exit(1)
+    except (OSError, ValueError) as exc:
+        click.echo(io_error(name, describe_os_error(exc)), err=True)
+        ctx.exit(1)
+    w, h = render_size(vp, width, height, scale)
+    if fit:
+        from xaml3d.scene.fit import fit_viewport
+
+        vp, notes = fit_viewport(vp, w, h, file=sc.file or name)
+        for d in notes:
+            click.echo(d.format(), err=True)
+    cam = vp.camera
+    report: dict = {
+        "file": sc.file or name,
+        "viewport": {"index": vp.index, "name": vp.name, "width": w, "height": h},
+        "camera": None,
+        "pipeline": None,
+        "points": [],
+        "error": None,
+    }
+    pipe = error = None
+    if cam is not None:
+        report["camera"] = {
+            "kind": type(cam).__name__,
+            "is_default": bool(getattr(cam, "is_default", False)),
+            "line": cam.line,
+            "properties": {
+                n: {"value": _jsonable(v), "default": d} for n, v, d in camera_properties(cam)
+            },
+        }
+    try:
+        pipe = camera_pipeline(cam, w, h, vp.bounds())
+    except XamlError as exc:
+        error = exc.with_location(file=sc.file or name)
+        report["error"] = error.as_diagnostic().to_dict()
+    if pipe is not None:
+        report["pipeline"] = _jsonable(pipe.as_dict())
+        report["points"] = locate_points(pipe, points)
+    if as_json:
+        click.echo(json.dumps(report, indent=2))
+    else:
+        click.echo("\n".join(_camera_text(vp, cam, pipe, report["points"])))
+    if error is not None:
+        click.echo(error.format(), err=True)
+        ctx.exit(1)
+
+
+def _camera_text(vp, cam, pipe, located) -> list[str]:
+    label = f"viewport {vp.index}" + (f" ({vp.name})" if vp.name else "")
+    if cam is None:
+        return [f"{label}: Camera is {{x:Null}}: WPF draws nothing"]
+    head = f"{label}: {type(cam).__name__}"
+    if getattr(cam, "is_default", False):
+        head += " (WPF's default camera: the markup gives none)"
+    elif cam.line is not None:
+        head += f" (line {cam.line})"
+    lines = [head]
+    for n, v, d in camera_properties(cam):
+        if isinstance(v, np.ndarray) and not np.array_equal(v, np.eye(4)):
+            lines.append(f"  {n} =" + (" (default)" if d else ""))
+            lines.extend(_matrix_lines(v))
+        else:
+            lines.append(f"  {n} = {_format_value(v)}" + (" (default)" if d else ""))
+    if isinstance(cam, MatrixCamera):
+        lines.append("  (MatrixCamera: the aspect ratio is ignored, the projection used as given)")
+    if pipe is not None:
+        lines.append("")
+        lines.extend(_pipeline_text(pipe))
+    for item in located:
+        p = ",".join(_num(c) for c in item["point"])
+        if item["visible"]:
+            lines.append(
+                f"point {p} -> pixel ({_num(item['x'])}, {_num(item['y'])}), "
+                f"depth {_num(item['depth'])}"
+            )
+        else:
+            lines.append(f"point {p} -> clipped: {item['reason']}")
+    return lines

@@ -1,0 +1,126 @@
+"""Shared pieces of the ``xaml3d`` command line: reading a scene from a path or stdin, the render
+size rule (wpf3d.md section 2, camera-pipeline.md section 8), printing diagnostics to stderr,
+and the codes the command line itself emits (IO0xx).
+
+Data goes to stdout, diagnostics to stderr, never mixed.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from collections.abc import Iterable
+from dataclasses import replace
+from pathlib import Path
+
+import click
+
+from xaml3d.errors import ERROR, INFO, Diagnostic, XamlError
+from xaml3d.scene.types import Scene, Viewport
+
+STDIN_NAME = "<stdin>"
+TEXT_NAME = "<string>"  # the loader's label for markup given as text
+
+CLI_CODES: dict[str, tuple[str, str]] = {
+    "IO001": (ERROR, "a file could not be read or written (missing, unreadable, bad path)"),
+    "IO002": (ERROR, "the output would overwrite an input file: refused"),
+    "IO003": (ERROR, "two scenes of a batch would write the same output file"),
+}
+
+
+def io_error(file: str | None, message: str, code: str = "IO001") -> str:
+    """``file: error IO001 message`` for problems that are not in the scene's text."""
+    return f"{file or '<input>'}: error {code} {message}"
+
+
+def describe_os_error(exc: BaseException) -> str:
+    if isinstance(exc, OSError) and exc.strerror:
+        name = f": {exc.filename}" if exc.filename else ""
+        return f"{exc.strerror}{name}"
+    return str(exc) or type(exc).__name__
+
+
+def display_name(source: str) -> str:
+    return STDIN_NAME if source == "-" else source
+
+
+def load_scene(source: str, resources: Iterable[str] = ()) -> Scene:
+    """Load a scene from a path, or from stdin (as bytes) when ``source`` is ``-``: its
+    relative references then resolve against the current directory."""
+    from xaml3d.xaml.loader import load
+
+    if source != "-":
+        return load(source, tuple(resources))
+    data = sys.stdin.buffer.read()
+    try:
+        scene = load(data, tuple(resources), text=True)
+    except XamlError as exc:
+        if exc.file in (None, TEXT_NAME):
+            exc.file = STDIN_NAME
+        raise
+    if scene.file not in (None, TEXT_NAME):
+        return scene
+    diags = tuple(
+        replace(d, file=STDIN_NAME) if d.file in (None, TEXT_NAME) else d for d in scene.diagnostics
+    )
+    return replace(scene, file=STDIN_NAME, diagnostics=diags)
+
+
+def with_file(diag: Diagnostic, file: str | None) -> Diagnostic:
+    """The diagnostic with ``file`` filled in when the producer did not know it."""
+    if diag.file is not None or file is None:
+        return diag
+    return Diagnostic(diag.code, diag.severity, diag.message, file, diag.line, diag.column)
+
+
+def echo_diagnostics(
+    diags: Iterable[Diagnostic], *, quiet: bool = False, verbose: bool = False
+) -> None:
+    """Print diagnostics to stderr, one per line, skipping duplicates: errors always, warnings
+    unless ``quiet``, infos only when ``verbose``."""
+    seen: set[Diagnostic] = set()
+    for d in diags:
+        if d in seen or (quiet and d.severity != ERROR):
+            continue
+        if d.severity == INFO and not verbose:
+            continue
+        seen.add(d)
+        click.echo(d.format(), err=True)
+
+
+def render_size(
+    vp: Viewport, width: int | None, height: int | None, scale: float | None = None
+) -> tuple[int, int]:
+    """The pixel size of a render: both given -> as given (the aspect changes like a resized
+    window); one given -> the other follows the viewport's aspect; none -> the viewport's size.
+    ``scale`` then multiplies both. Rounded to whole pixels, at least 1."""
+    w0, h0 = float(vp.width), float(vp.height)
+    if width is not None and height is not None:
+        w, h = float(width), float(height)
+    elif width is not None:
+        w = float(width)
+        h = w * h0 / w0 if w0 > 0 else w
+    elif height is not None:
+        h = float(height)
+        w = h * w0 / h0 if h0 > 0 else h
+    else:
+        w, h = w0, h0
+    if scale is not None:
+        w, h = w * scale, h * scale
+    if not (math.isfinite(w) and math.isfinite(h)):
+        raise click.UsageError(f"render size {w} x {h} is not finite")
+    return max(1, round(w)), max(1, round(h))
+
+
+def same_file(a: Path, b: Path) -> bool:
+    try:
+        return a.resolve() == b.resolve() or (a.exists() and b.exists() and a.samefile(b))
+    except OSError:
+        return False
+
+
+def stderr_is_terminal() -> bool:
+    try:
+        return sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        return False

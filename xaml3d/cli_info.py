@@ -1,0 +1,118 @@
+"""``xaml3d info``: what a scene holds -- viewports (size and where it came from), cameras,
+models, triangles, lights, world bounds, resource files read, and a diagnostics summary."""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+
+import click
+
+from xaml3d.cli_common import describe_os_error, display_name, io_error, load_scene
+from xaml3d.errors import SEVERITIES, XamlError
+from xaml3d.scene.types import Scene
+
+
+def scene_info(scene: Scene, name: str | None = None) -> dict:
+    """A JSON-ready summary of ``scene``."""
+    viewports = []
+    for vp in scene.viewports:
+        b = vp.bounds()
+        cam = vp.camera
+        viewports.append(
+            {
+                "index": vp.index,
+                "name": vp.name,
+                "width": vp.width,
+                "height": vp.height,
+                "size_source": vp.size_source,
+                "camera": None if cam is None else type(cam).__name__,
+                "camera_is_default": bool(getattr(cam, "is_default", False)),
+                "models": len(vp.models),
+                "triangles": vp.triangle_count,
+                "lights": len(vp.lights),
+                "light_kinds": dict(Counter(type(light).__name__ for light in vp.lights)),
+                "bounds": None if b is None else {"min": b[0].tolist(), "max": b[1].tolist()},
+                "line": vp.line,
+            }
+        )
+    counts = Counter(d.severity for d in scene.diagnostics)
+    return {
+        "file": scene.file or name,
+        "viewports": viewports,
+        "storyboards": len(scene.storyboards),
+        "resources_used": list(scene.resources_used),
+        "diagnostics": {s: counts.get(s, 0) for s in SEVERITIES},
+    }
+
+
+def _text(info: dict) -> list[str]:
+    lines = [f"{info['file']}: {len(info['viewports'])} viewport(s)"]
+    for v in info["viewports"]:
+        name = f" {v['name']!r}" if v["name"] else ""
+        lines.append(
+            f"  viewport {v['index']}{name}: {v['width']:g} x {v['height']:g} "
+            f"(size from {v['size_source']})"
+        )
+        cam = v["camera"] or "none (Camera={x:Null})"
+        lines.append(f"    camera: {cam}" + (" (WPF's default)" if v["camera_is_default"] else ""))
+        kinds = ", ".join(f"{n} {k}" for k, n in v["light_kinds"].items())
+        lines.append(
+            f"    models: {v['models']}, triangles: {v['triangles']}, lights: {v['lights']}"
+            + (f" ({kinds})" if kinds else "")
+        )
+        if v["bounds"] is None:
+            lines.append("    bounds: empty")
+        else:
+            lo = ", ".join(f"{c:g}" for c in v["bounds"]["min"])
+            hi = ", ".join(f"{c:g}" for c in v["bounds"]["max"])
+            lines.append(f"    bounds: ({lo}) .. ({hi})")
+    if info["storyboards"]:
+        lines.append(f"  storyboards: {info['storyboards']} (ignored by a static render)")
+    res = ", ".join(info["resources_used"]) or "none"
+    lines.append(f"  resource files: {res}")
+    d = info["diagnostics"]
+    lines.append(
+        "  diagnostics: "
+        + ", ".join(f"{d[s]} {s}(s)" for s in SEVERITIES)
+        + " (xaml3d validate lists them)"
+    )
+    return lines
+
+
+HELP = """Summarize a scene: viewports (size and its source), cameras, counts of
+models, triangles and lights, world bounds, resource files read, diagnostics.
+
+\b
+Examples:
+  xaml3d info scene.xaml
+  xaml3d info scene.xaml --json | jq '.viewports[0].triangles'
+"""
+
+
+@click.command("info", help=HELP, short_help="Summarize what a scene holds.")
+@click.argument("scene", metavar="SCENE")
+@click.option(
+    "-r",
+    "--resources",
+    multiple=True,
+    metavar="FILE",
+    help="Extra resource dictionary (repeatable).",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+def info_command(scene, resources, as_json) -> None:
+    name = display_name(scene)
+    ctx = click.get_current_context()
+    try:
+        sc = load_scene(scene, tuple(resources))
+    except XamlError as exc:
+        click.echo(exc.with_location(file=name).format(), err=True)
+        ctx.exit(1)
+    except (OSError, ValueError) as exc:
+        click.echo(io_error(name, describe_os_error(exc)), err=True)
+        ctx.exit(1)
+    info = scene_info(sc, name)
+    if as_json:
+        click.echo(json.dumps(info, indent=2))
+    else:
+        click.echo("\n".join(_text(info)))

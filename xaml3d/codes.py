@@ -1,0 +1,81 @@
+"""The diagnostics catalogue: every stable code xaml3d can print, with its severity and meaning.
+
+Each stage owns its table (reader, value converters, meshes, cameras, scene checks, --fit, the
+command line); this module merges them into one mapping for ``docs/diagnostics.md`` and its test.
+A code listed by two tables keeps the first entry (the stage that emits it as a diagnostic); the
+exception classes' default codes (``xaml3d.errors``) only fill in codes no table lists.
+
+Codes emitted by modules that keep no table of their own (transforms: GEO; renderer: RND; scene
+selection: SCN002) are listed here in ``EXTRA_CODES``, until their modules export one.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from xaml3d import errors
+from xaml3d.errors import ERROR, WARNING
+
+# (module, table name, required): a missing required table is a bug; an optional one is merged
+# when its module exports it.
+TABLES: tuple[tuple[str, str, bool], ...] = (
+    ("xaml3d.xaml.vocabulary", "READER_CODES", True),
+    ("xaml3d.xaml.values", "VALUE_CODES", True),
+    ("xaml3d.scene.mesh", "MESH_CODES", True),
+    ("xaml3d.scene.camera_check", "CAMERA_CODES", True),
+    ("xaml3d.scene.checks", "CHECK_CODES", True),
+    ("xaml3d.scene.fit", "FIT_CODES", True),
+    ("xaml3d.cli_common", "CLI_CODES", True),
+    ("xaml3d.render.api", "RENDER_CODES", False),
+    ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
+)
+
+EXTRA_CODES: dict[str, tuple[str, str]] = {
+    "SCN002": (
+        ERROR,
+        "--viewport names no viewport of the document (index out of range, no such name)",
+    ),
+    "GEO001": (ERROR, "degenerate points or vectors: the transformation cannot be built"),
+    "GEO002": (ERROR, "dependent vectors: the transformation cannot be built"),
+    "GEO003": (ERROR, "singular matrix: it cannot be inverted"),
+    "GEO004": (ERROR, "a Matrix3D does not have 16 numbers / is not 4x4"),
+    "RND001": (ERROR, "image size over the limit (pixels per side or supersampled samples)"),
+    "RND002": (WARNING, "nothing was drawn in the image (info when the viewport has no models)"),
+    "RND004": (
+        WARNING,
+        "model skipped by the renderer: singular transform or non-finite coordinates",
+    ),
+    "RND005": (ERROR, "bad render argument (mode, ssaa, background)"),
+    "RND006": (ERROR, "unknown output image format (use .png, .jpg, .jpeg or .webp)"),
+    "RND007": (ERROR, "the output image cannot be written"),
+}
+
+
+def _error_defaults() -> dict[str, tuple[str, str]]:
+    """The default code of every XamlError subclass, as a fatal error."""
+    out = {}
+    for name in dir(errors):
+        cls = getattr(errors, name)
+        if isinstance(cls, type) and issubclass(cls, errors.XamlError):
+            doc = (cls.__doc__ or name).strip().splitlines()[0]
+            out.setdefault(cls.default_code, (ERROR, f"{name}: {doc}"))
+    return out
+
+
+def all_codes() -> dict[str, tuple[str, str]]:
+    """Every code -> (severity, meaning), sorted by code."""
+    merged: dict[str, tuple[str, str]] = {}
+    for module, table, required in TABLES:
+        try:
+            codes = getattr(importlib.import_module(module), table)
+        except (ImportError, AttributeError):
+            if required:
+                raise
+            continue
+        for code, entry in codes.items():
+            merged.setdefault(code, (entry[0], entry[1]))
+    for code, entry in EXTRA_CODES.items():
+        merged.setdefault(code, entry)
+    for code, entry in _error_defaults().items():
+        merged.setdefault(code, entry)
+    return dict(sorted(merged.items()))

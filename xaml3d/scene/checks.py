@@ -1,0 +1,214 @@
+"""Scene-level validation: problems visible only once the whole normalized Scene is built.
+
+The reader already reports what it sees in the markup (unknown names, bad values, mesh index
+problems: ``Scene.diagnostics``) and ``xaml3d.scene.camera_check`` reports what is wrong with a
+camera on its own. This module adds what needs the scene as a whole (wpf3d.md sections 5-6,
+camera-pipeline.md section 9): models that draw nothing (no triangles, no material, passes
+without a brush), a viewport with nothing in it, no lights over diffuse-only materials (WPF draws
+those opaque black), and a camera that sees none of the geometry.
+
+Codes are ``CHK0xx`` (``CHECK_CODES``); each finding is a Diagnostic located at the object's line.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, GeometryError
+from xaml3d.scene.types import (
+    AmbientLight,
+    DiffuseMaterial,
+    EmissiveMaterial,
+    Model,
+    Scene,
+    SpecularMaterial,
+    Viewport,
+)
+
+CHECK_CODES: dict[str, tuple[str, str]] = {
+    "CHK001": (WARNING, "a model's mesh has no triangles: it draws nothing"),
+    "CHK002": (WARNING, "no lights and only diffuse materials: the models render black"),
+    "CHK003": (WARNING, "the camera sees none of the scene's geometry (try --fit)"),
+    "CHK004": (WARNING, "a material pass has no brush: it draws nothing"),
+    "CHK005": (WARNING, "a model has neither Material nor BackMaterial: it draws nothing"),
+    "CHK006": (WARNING, "a viewport holds no models: it draws nothing"),
+    "CHK007": (INFO, "only ambient light: every surface is lit flat, without shading"),
+}
+
+
+def _diag(code: str, message: str, file: str | None, line: int | None) -> Diagnostic:
+    return Diagnostic(code, CHECK_CODES[code][0], message, file, line, None if line is None else 1)
+
+
+def _label(model: Model, index: int) -> str:
+    return f"model {model.name!r}" if model.name else f"model #{index}"
+
+
+def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]:
+    out: list[Diagnostic] = []
+    label = _label(model, index)
+    line = model.line if model.line is not None else model.mesh.line
+    if model.mesh.triangle_count == 0:
+        n = int(model.mesh.positions.shape[0])
+        out.append(
+            _diag("CHK001", f"{label} has no triangles ({n} positions): draws nothing", file, line)
+        )
+    if not model.material and not model.back_material:
+        out.append(
+            _diag(
+                "CHK005",
+                f"{label} has neither Material nor BackMaterial: draws nothing",
+                file,
+                line,
+            )
+        )
+    for which, passes in (("Material", model.material), ("BackMaterial", model.back_material)):
+        for p in passes:
+            if p.brush is None:
+                kind = type(p).__name__
+                out.append(
+                    _diag(
+                        "CHK004",
+                        f"{kind} in {label}'s {which} has no Brush: it draws nothing "
+                        "(Color only multiplies the brush)",
+                        file,
+                        p.line if p.line is not None else line,
+                    )
+                )
+    return out
+
+
+def _shows_without_light(model: Model) -> bool:
+    """True when the model shows something other than black with no lights: an emissive pass
+    with a brush (specular needs a light too). A diffuse pass with a brush draws black."""
+    return any(
+        isinstance(p, EmissiveMaterial) and p.brush is not None
+        for p in model.material + model.back_material
+    )
+
+
+def _has_diffuse(model: Model) -> bool:
+    return any(
+        isinstance(p, DiffuseMaterial) and p.brush is not None
+        for p in model.material + model.back_material
+    )
+
+
+def _check_lights(vp: Viewport, file: str | None) -> list[Diagnostic]:
+    drawn = [m for m in vp.models if m.mesh.triangle_count > 0]
+    if not vp.lights:
+        black = [m for m in drawn if _has_diffuse(m) and not _shows_without_light(m)]
+        if black:
+            return [
+                _diag(
+                    "CHK002",
+                    f"viewport {vp.index} has no lights: {len(black)} model(s) with only diffuse "
+                    "materials render opaque black (add e.g. <AmbientLight/> or a "
+                    "<DirectionalLight/>)",
+                    file,
+                    vp.line,
+                )
+            ]
+        return []
+    lit = [
+        m
+        for m in drawn
+        if any(isinstance(p, (DiffuseMaterial, SpecularMaterial)) for p in m.material)
+    ]
+    if lit and all(isinstance(light, AmbientLight) for light in vp.lights):
+        return [
+            _diag(
+                "CHK007",
+                f"viewport {vp.index} has only AmbientLight: surfaces are lit evenly, without "
+                "shading (and specular materials show nothing)",
+                file,
+                vp.line,
+            )
+        ]
+    return []
+
+
+def world_vertices(vp: Viewport) -> np.ndarray:
+    """Every drawn vertex of the viewport in world space, (N, 3): one matmul per model."""
+    parts = [
+        m.mesh.positions @ m.world[:3, :3].T + m.world[:3, 3]
+        for m in vp.models
+        if m.mesh.triangle_count > 0
+    ]
+    return np.concatenate(parts) if parts else np.zeros((0, 3))
+
+
+def box_corners(bounds: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """The 8 corners (8, 3) of the axis-aligned box (min, max)."""
+    lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
+    pick = np.array([[i >> 2 & 1, i >> 1 & 1, i & 1] for i in range(8)], dtype=bool)
+    return np.where(pick, hi, lo)
+
+
+def sees_nothing(clip_matrix: np.ndarray, points: np.ndarray) -> bool:
+    """True when every point lies strictly outside ONE plane of the view volume.
+
+    ``clip_matrix`` sends world points to homogeneous coordinates of the standard parallel view
+    volume (camera_math's contract): visible where -w <= x <= w, -w <= y <= w, -w <= z <= 0. Each
+    bound is linear in the world point, so each is a half-space; if all vertices are beyond one of
+    them, so is every triangle (a convex combination of its vertices). Conservative: geometry
+    that misses the volume only near a corner is not reported."""
+    if points.shape[0] == 0:
+        return False
+    h = np.hstack([points, np.ones((points.shape[0], 1))]) @ np.asarray(clip_matrix).T
+    x, y, z, w = h[:, 0], h[:, 1], h[:, 2], h[:, 3]
+    outside = (x > w, -x > w, y > w, -y > w, z > 0, -z > w)
+    return any(bool(np.all(o)) for o in outside)
+
+
+def _check_visibility(vp: Viewport, file: str | None) -> list[Diagnostic]:
+    points = world_vertices(vp)
+    if vp.camera is None or points.shape[0] == 0:
+        return []
+    from xaml3d.scene.camera_math import camera_pipeline
+
+    bounds = vp.bounds()
+    try:
+        pipe = camera_pipeline(vp.camera, vp.width, vp.height, bounds)
+        with np.errstate(all="ignore"):
+            if sees_nothing(pipe.clip_matrix, box_corners(bounds)):
+                return []  # the whole box is out: camera_check's CAM107 says so already
+            hidden = sees_nothing(pipe.clip_matrix, points)
+    except (CameraError, GeometryError, ValueError, ArithmeticError):
+        return []  # the camera check reports why there is no pipeline
+    return [_not_seen(vp, file)] if hidden else []
+
+
+def _not_seen(vp: Viewport, file: str | None) -> Diagnostic:
+    cam = vp.camera
+    line = getattr(cam, "line", None) if cam is not None else None
+    return _diag(
+        "CHK003",
+        f"the camera of viewport {vp.index} sees none of its {vp.triangle_count} triangle(s): "
+        "each lies outside the view volume (render with --fit to frame the scene)",
+        file,
+        line if line is not None else vp.line,
+    )
+
+
+def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
+    """Every scene-level finding for one viewport (its models, lights and camera coverage)."""
+    out: list[Diagnostic] = []
+    if not vp.models:
+        out.append(
+            _diag("CHK006", f"viewport {vp.index} holds no models: it draws nothing", file, vp.line)
+        )
+    for i, model in enumerate(vp.models):
+        out.extend(_check_model(model, i, file))
+    out.extend(_check_lights(vp, file))
+    out.extend(_check_visibility(vp, file))
+    return out
+
+
+def check_scene(scene: Scene) -> list[Diagnostic]:
+    """Scene-level findings (CHK0xx) for every viewport of ``scene``, in document order. (A
+    document without any Viewport3D is the reader's SCN001.)"""
+    out: list[Diagnostic] = []
+    for vp in scene.viewports:
+        out.extend(check_viewport(vp, scene.file))
+    return out
