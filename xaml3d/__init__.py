@@ -5,40 +5,29 @@ Public API::
     scene = xaml3d.load("scene.xaml")          # -> Scene (typed, resolved, immutable)
     image = xaml3d.render(scene, width=800)     # -> PIL.Image.Image (RGBA)
     result = xaml3d.render_arrays(scene)        # -> Rendering (RGBA array, depth buffer)
+    xaml3d.save_image(image, "out.png")         # atomic write (PNG, JPEG, WebP)
 """
 
 from __future__ import annotations
 
-from xaml3d.errors import Diagnostic, XamlError
-
 __version__ = "0.1.0"
+
+# The subpackage xaml3d.render and the function xaml3d.render share a name. Importing the
+# subpackage first and binding the functions afterwards means the package attribute ends up
+# being the function, and later imports of xaml3d.render.* (already in sys.modules) do not
+# rebind it.
+import xaml3d.render.api  # noqa: E402,F401
+from xaml3d.errors import Diagnostic, XamlError  # noqa: E402
+from xaml3d.render.api import Rendering, render, render_arrays, save_image  # noqa: E402
+from xaml3d.xaml.loader import load  # noqa: E402
 
 __all__ = [
     "Diagnostic",
+    "Rendering",
     "XamlError",
     "__version__",
     "load",
     "render",
     "render_arrays",
+    "save_image",
 ]
-
-
-def load(source, resources=(), **options):
-    """Read a XAML file (path, or text with ``text=True``) into a Scene. See xaml3d.xaml.loader."""
-    from xaml3d.xaml.loader import load as _load
-
-    return _load(source, resources=resources, **options)
-
-
-def render(scene_or_path, **options):
-    """Render a Scene (or a path to a XAML file) to a Pillow RGBA image. See xaml3d.render.api."""
-    from xaml3d.render.api import render as _render
-
-    return _render(scene_or_path, **options)
-
-
-def render_arrays(scene_or_path, **options):
-    """Render and return the numpy RGBA array and depth buffer. See xaml3d.render.api."""
-    from xaml3d.render.api import render_arrays as _render_arrays
-
-    return _render_arrays(scene_or_path, **options)
