@@ -1,0 +1,131 @@
+"""Public API: sizing, limits, errors, diagnostics, atomic image writing."""
+
+from __future__ import annotations
+
+import os
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from xaml3d.errors import RenderError, SceneError
+from xaml3d.render import api
+from xaml3d.render.api import render, render_arrays, save_image
+from xaml3d.scene.types import (
+    AmbientLight,
+    DiffuseMaterial,
+    Mesh,
+    Model,
+    OrthographicCamera,
+    Scene,
+    SolidColorBrush,
+    Viewport,
+    frozen_array,
+)
+
+ORTHO = OrthographicCamera(position=(0, 0, 10), width=8.0)
+
+
+def scene(w=64, h=48, camera=ORTHO):
+    pos = frozen_array([(-2, -2, 0), (2, -2, 0), (2, 2, 0), (-2, 2, 0)])
+    idx = frozen_array([(0, 1, 2), (0, 2, 3)], np.int64)
+    m = Mesh(pos, idx, frozen_array(np.tile([0, 0, 1.0], (4, 1))), frozen_array(np.zeros((4, 2))))
+    model = Model(m, (DiffuseMaterial(brush=SolidColorBrush((1, 0, 0, 1))),))
+    vp = Viewport(0, None, w, h, "viewport", camera, (model,), (AmbientLight(),))
+    return Scene("mem.xaml", (vp,))
+
+
+def test_size_from_viewport_and_one_side():
+    # Viewport 64 x 48 (4:3): width 32 -> height 32 * 48/64 = 24; height 12 -> width 16.
+    assert render_arrays(scene(), ssaa=1).rgba.shape == (48, 64, 4)
+    r = render_arrays(scene(), 32, ssaa=1)
+    assert (r.width, r.height) == (32, 24) and r.rgba.shape == (24, 32, 4)
+    r = render_arrays(scene(), height=12, ssaa=1)
+    assert (r.width, r.height) == (16, 12)
+    # 100 x 30 (rounded): 30 * 64/48 = 40 -> 40
+    assert render_arrays(scene(), height=30, ssaa=1).width == 40
+
+
+def test_both_sides_change_aspect_like_a_resized_window():
+    # Orthographic Width 8 over 40 px: 5 px per unit horizontally; the view height is
+    # 8 / (40/10) = 2 units over 10 px, also 5 px per unit. The quad (4 units) spans 20 columns.
+    r = render_arrays(scene(), 40, 10, ssaa=1)
+    assert r.rgba.shape == (10, 40, 4)
+    assert (r.rgba[5, :, 3] > 0).sum() == 20
+
+
+def test_limits_and_bad_arguments():
+    with pytest.raises(RenderError) as e:
+        render_arrays(scene(), 20000, 10)
+    assert e.value.code == "RND001"
+    with pytest.raises(RenderError) as e:
+        render_arrays(scene(), 100, 100, max_size=50)
+    assert e.value.code == "RND001"
+    with pytest.raises(RenderError) as e:  # per side fine, total samples over the cap
+        render_arrays(scene(), 16000, 16000, ssaa=4)
+    assert e.value.code == "RND001" and "ssaa" in e.value.message
+    with pytest.raises(RenderError):
+        render_arrays(scene(), 0, 10)
+    with pytest.raises(RenderError):
+        render_arrays(scene(), mode="cartoon")
+    with pytest.raises(RenderError):
+        render_arrays(scene(), ssaa=5)
+
+
+def test_no_viewport_and_no_camera():
+    with pytest.raises(SceneError):
+        render_arrays(Scene("x.xaml", ()))
+    r = render_arrays(scene(camera=None), ssaa=1)
+    assert (r.rgba == 0).all()
+    assert any(d.code == "CAM104" for d in r.diagnostics)
+
+
+def test_background_and_image():
+    img = render(scene(), ssaa=1, background=(0, 0, 255, 255))
+    assert isinstance(img, Image.Image) and img.mode == "RGBA" and img.size == (64, 48)
+    assert img.getpixel((0, 0)) == (0, 0, 255, 255)
+    assert img.getpixel((32, 24)) == (255, 0, 0, 255)
+
+
+def test_save_png_jpeg_and_unknown(tmp_path):
+    img = render(scene(), ssaa=1)
+    out = tmp_path / "a.png"
+    save_image(img, out)
+    with Image.open(out) as back:
+        assert back.mode == "RGBA" and back.getpixel((32, 24)) == (255, 0, 0, 255)
+    jpg = tmp_path / "a.jpg"
+    save_image(img, jpg)  # flattened on white
+    with Image.open(jpg) as back:
+        r, g, b = back.getpixel((0, 0))
+        assert min(r, g, b) > 245
+    with pytest.raises(RenderError):
+        save_image(img, tmp_path / "a.bmpx")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.jpg", "a.png"]
+
+
+def test_save_is_atomic(tmp_path, monkeypatch):
+    out = tmp_path / "keep.png"
+    out.write_bytes(b"old contents")
+    img = render(scene(), ssaa=1)
+
+    def broken_save(self, fp, format=None, **kw):
+        fp.write(b"partial")
+        raise OSError("disk full")
+
+    monkeypatch.setattr(Image.Image, "save", broken_save)
+    with pytest.raises(RenderError):
+        save_image(img, out)
+    assert out.read_bytes() == b"old contents"
+    assert os.listdir(tmp_path) == ["keep.png"]
+
+
+def test_save_into_missing_directory(tmp_path):
+    with pytest.raises(RenderError):
+        save_image(render(scene(), ssaa=1), tmp_path / "nope" / "x.png")
+
+
+def test_ssaa_default_and_depth():
+    r = render_arrays(scene())  # default ssaa 2 for shaded
+    assert r.rgba.shape == (48, 64, 4)
+    assert np.isinf(r.depth[0, 0]) and 0.0 <= r.depth[24, 32] <= 1.0
+    assert api.MAX_SUPERSAMPLED_PIXELS >= 1920 * 1080 * 16

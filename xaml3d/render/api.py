@@ -1,0 +1,215 @@
+"""Public rendering API: Scene (or XAML path) -> RGBA array / Pillow image / image file.
+
+``render_arrays`` runs the whole pipeline for one Viewport3D (camera-pipeline.md section 6) and
+returns a ``Rendering``; ``render`` returns a Pillow RGBA image; ``save_image`` writes PNG, JPEG
+or WebP atomically.
+
+Size: the viewport's own size unless given. One of width/height given: the other follows the
+viewport's aspect ratio (rounded, at least 1). Both given: used as is, and the camera takes
+aspect = width / height, exactly as a resized WPF window does.
+
+Depth in ``Rendering.depth`` is WPF's normalized device depth z_ndc = -z' (0 on the near plane,
+1 on the (effective) far plane; non-linear in distance for perspective cameras), the nearest
+sample of each supersampling block, +inf where nothing was drawn.
+
+Background: the ``background`` argument (straight RGBA floats 0..1, or 0..255 ints) when given;
+else the viewport's own 2D background when it is a solid colour; else transparent.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError
+from xaml3d.render.draw import draw_viewport_models, make_context
+from xaml3d.render.frame import Framebuffer
+from xaml3d.render.wireframe import draw_wireframe
+from xaml3d.scene.types import PlaceholderBrush, Scene, SolidColorBrush
+
+MODES = ("shaded", "flat", "wireframe")
+MAX_SUPERSAMPLED_PIXELS = 1 << 26  # ~67 M samples: about 1.6 GB of colour + depth buffers
+_FORMATS = {".png": "PNG", ".jpg": "JPEG", ".jpeg": "JPEG", ".webp": "WEBP"}
+
+
+@dataclass
+class Rendering:
+    """The result of ``render_arrays``: straight-alpha rgba (H, W, 4) uint8, depth (H, W)
+    float64 (z_ndc, +inf where empty), the size, and the diagnostics of the render."""
+
+    rgba: np.ndarray
+    depth: np.ndarray
+    width: int
+    height: int
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def image(self):
+        from PIL import Image
+
+        return Image.fromarray(self.rgba, mode="RGBA")
+
+
+def _resolve_size(vp, width, height, max_size: int) -> tuple[int, int]:
+    vw, vh = float(vp.width), float(vp.height)
+    if width is None and height is None:
+        w, h = round(vw), round(vh)
+    elif height is None:
+        w = int(width)
+        h = max(1, round(w * vh / vw)) if vw > 0 else w
+    elif width is None:
+        h = int(height)
+        w = max(1, round(h * vw / vh)) if vh > 0 else h
+    else:
+        w, h = int(width), int(height)
+    if w < 1 or h < 1:
+        raise RenderError(f"image size {w} x {h} is empty (width and height must be >= 1)")
+    if w > max_size or h > max_size:
+        raise RenderError(
+            f"image size {w} x {h} exceeds the limit of {max_size} pixels per side "
+            "(raise max_size to allow it)",
+            code="RND001",
+        )
+    return w, h
+
+
+def _background(bg, vp) -> tuple[float, float, float, float]:
+    if bg is None:
+        brush = vp.background
+        if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
+            r, g, b, a = brush.color
+            return (r, g, b, a * float(brush.opacity))
+        return (0.0, 0.0, 0.0, 0.0)
+    vals = tuple(bg)
+    if len(vals) == 3:
+        vals = (*vals, 1.0 if all(isinstance(v, float) for v in vals) else 255)
+    if len(vals) != 4:
+        raise RenderError(f"background must be an RGBA tuple, got {bg!r}", code="RND005")
+    if any(isinstance(v, int) and not isinstance(v, bool) and v > 1 for v in vals):
+        vals = tuple(v / 255.0 for v in vals)
+    return tuple(float(min(max(v, 0.0), 1.0)) for v in vals)
+
+
+def render_arrays(
+    scene_or_path,
+    width: int | None = None,
+    height: int | None = None,
+    *,
+    viewport=None,
+    mode: str = "shaded",
+    background=None,
+    ssaa: int | None = None,
+    hidden_lines: bool = True,
+    line_color=None,
+    antialias_lines: bool = False,
+    max_size: int = 16384,
+    resources=(),
+) -> Rendering:
+    """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
+
+    ``mode``: "shaded" (WPF), "flat" (per-face lighting) or "wireframe". ``ssaa``: 1..4 samples
+    per side (default 2, wireframe 1). ``hidden_lines=False`` hides occluded wireframe edges;
+    ``line_color`` (straight RGBA) overrides the material colour of wireframe edges.
+    Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
+    if isinstance(scene_or_path, Scene):
+        scene = scene_or_path
+    else:
+        from xaml3d.xaml.loader import load
+
+        scene = load(scene_or_path, resources=resources)
+    if mode not in MODES:
+        raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
+    if ssaa is None:
+        ssaa = 1 if mode == "wireframe" else 2
+    if not (isinstance(ssaa, int) and 1 <= ssaa <= 4):
+        raise RenderError(f"ssaa must be an integer from 1 to 4, got {ssaa!r}", code="RND005")
+    vp = scene.viewport(viewport)
+    w, h = _resolve_size(vp, width, height, max_size)
+    if w * h * ssaa * ssaa > MAX_SUPERSAMPLED_PIXELS:
+        raise RenderError(
+            f"image size {w} x {h} with ssaa={ssaa} needs {w * h * ssaa * ssaa} samples, over the "
+            f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or ssaa",
+            code="RND001",
+        )
+    diags: list[Diagnostic] = []
+    bg = _background(background, vp)
+    sw, sh = w * ssaa, h * ssaa
+    fb = Framebuffer(sw, sh, bg)
+    ctx = make_context(sw, sh)
+    try:
+        from xaml3d.scene.camera_math import camera_pipeline
+
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds())
+    except CameraError as exc:
+        exc.with_location(file=scene.file)
+        diags.append(exc.as_diagnostic())
+        pipeline = None
+    if pipeline is not None:
+        if mode == "wireframe":
+            color = None if line_color is None else _background(line_color, vp)
+            draw_wireframe(fb, vp, pipeline, ctx, color, ssaa, hidden_lines, antialias_lines)
+        else:
+            draw_viewport_models(fb, vp, pipeline, ctx, mode)
+    for d in ctx.diagnostics:
+        diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
+                                                 d.line, d.column))  # fmt: skip
+    if fb.fragments_drawn == 0:
+        sev = INFO if not vp.models else WARNING
+        diags.append(Diagnostic("RND002", sev, "nothing was drawn in the image", scene.file))
+    rgba, depth = fb.resolve(ssaa)
+    return Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
+
+
+def render(scene_or_path, width: int | None = None, height: int | None = None, **options):
+    """Same arguments as ``render_arrays``; returns a Pillow RGBA image."""
+    return render_arrays(scene_or_path, width, height, **options).image()
+
+
+def save_image(image, path, format: str | None = None, background=None) -> None:
+    """Write ``image`` (Pillow image or (H, W, 4) uint8 array) to ``path`` atomically.
+
+    The format comes from ``format`` or the suffix (.png, .jpg/.jpeg, .webp). JPEG and WebP are
+    flattened onto ``background`` (straight RGBA/RGB, default white). A temporary file in the
+    same directory is written, fsynced and renamed over ``path``; on failure it is removed and an
+    existing file is left untouched. Raises RenderError."""
+    from PIL import Image
+
+    path = Path(path)
+    fmt = (format or _FORMATS.get(path.suffix.lower(), "")).upper()
+    if fmt == "JPG":
+        fmt = "JPEG"
+    if fmt not in ("PNG", "JPEG", "WEBP"):
+        raise RenderError(
+            f"cannot write {path.name!r}: unknown image format (use .png, .jpg, .jpeg or .webp)",
+            code="RND006",
+        )
+    if isinstance(image, np.ndarray):
+        image = Image.fromarray(image, mode="RGBA")
+    if fmt != "PNG":
+        bg = (1.0, 1.0, 1.0, 1.0) if background is None else tuple(background)
+        if any(isinstance(v, int) and v > 1 for v in bg):
+            bg = tuple(v / 255.0 for v in bg)
+        base = Image.new("RGBA", image.size, tuple(int(round(v * 255)) for v in (*bg[:3], 1.0)))
+        image = Image.alpha_composite(base, image.convert("RGBA")).convert("RGB")
+    directory = path.parent if str(path.parent) else Path(".")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        raise RenderError(f"cannot write {path}: {exc}", code="RND007") from exc
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            image.save(fh, format=fmt)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException as exc:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        if isinstance(exc, OSError):
+            raise RenderError(f"cannot write {path}: {exc}", code="RND007") from exc
+        raise
