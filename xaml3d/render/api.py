@@ -12,8 +12,8 @@ Depth in ``Rendering.depth`` is WPF's normalized device depth z_ndc = -z' (0 on 
 1 on the (effective) far plane; non-linear in distance for perspective cameras), the nearest
 sample of each supersampling block, +inf where nothing was drawn.
 
-Background: the ``background`` argument (straight RGBA floats 0..1, or 0..255 ints) when given;
-else the viewport's own 2D background when it is a solid colour; else transparent.
+Background: the ``background`` argument (straight RGBA floats 0..1, or 0..255 ints) when given,
+else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, is not drawn).
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError
 from xaml3d.render.draw import draw_viewport_models, make_context
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.wireframe import draw_wireframe
-from xaml3d.scene.types import PlaceholderBrush, Scene, SolidColorBrush
+from xaml3d.scene.types import Scene
 
 MODES = ("shaded", "flat", "wireframe")
 MAX_SUPERSAMPLED_PIXELS = 1 << 26  # ~67 M samples: about 1.6 GB of colour + depth buffers
@@ -77,11 +77,9 @@ def _resolve_size(vp, width, height, max_size: int) -> tuple[int, int]:
 
 
 def _background(bg, vp) -> tuple[float, float, float, float]:
+    # Transparent by default (wpf3d.md section 2): the 3D content is composited over whatever
+    # 2D lies beneath it, which is not ours to draw; the caller chooses a fill.
     if bg is None:
-        brush = vp.background
-        if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
-            r, g, b, a = brush.color
-            return (r, g, b, a * float(brush.opacity))
         return (0.0, 0.0, 0.0, 0.0)
     vals = tuple(bg)
     if len(vals) == 3:

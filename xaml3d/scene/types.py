@@ -89,11 +89,24 @@ class RadialGradientBrush:
     line: int | None = None
 
 
+def placeholder_image(size: int = 64, cells: int = 8) -> np.ndarray:
+    """The picture that stands in for an ImageBrush whose file is missing or unreadable: a grey
+    checkerboard, so the textured surface stays visible (and its orientation readable) instead
+    of vanishing. WPF itself would fail to load such a scene; a diagnostic always says so."""
+    idx = np.arange(size) * cells // size
+    light = (idx[:, None] + idx[None, :]) % 2 == 0
+    img = np.empty((size, size, 4), dtype=np.uint8)
+    img[...] = (128, 128, 128, 255)
+    img[light] = (192, 192, 192, 255)
+    return frozen_array(img, dtype=np.uint8)
+
+
 @dataclass(frozen=True)
 class ImageBrush:
     """An image on the surface. ``image`` is the decoded picture as a read-only (H, W, 4) uint8
-    straight-alpha RGBA array, or None when the file could not be found/read (then the brush
-    draws nothing and a diagnostic says why)."""
+    straight-alpha RGBA array. When the file could not be found or read, ``image`` is the grey
+    checker of ``placeholder_image()``, ``is_placeholder`` is True and a diagnostic says why;
+    ``image`` None (no ImageSource at all) draws nothing."""
 
     source: str | None = None  # the ImageSource as written in markup
     path: str | None = None  # the resolved local file path
@@ -109,6 +122,7 @@ class ImageBrush:
     alignment_y: str = "Center"
     transform: np.ndarray | None = None
     relative_transform: np.ndarray | None = None
+    is_placeholder: bool = False
     line: int | None = None
 
 

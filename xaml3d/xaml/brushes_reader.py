@@ -28,6 +28,7 @@ from xaml3d.scene.types import (
     SolidColorBrush,
     SpecularMaterial,
     frozen_array,
+    placeholder_image,
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.resources import reduce_uri
@@ -140,10 +141,15 @@ def _image_brush(r, p) -> ImageBrush:
     path = image = None
     if source:
         path, image = load_image(r, source, el)
+    # A missing picture would make the surface vanish; a grey checker keeps the model visible.
+    is_placeholder = bool(source) and image is None
+    if is_placeholder:
+        image = placeholder_image()
     return ImageBrush(
         source=source,
         path=path,
         image=image,
+        is_placeholder=is_placeholder,
         viewport=p.value("Viewport", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
         viewport_units=p.value("ViewportUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
         viewbox=p.value("Viewbox", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
@@ -160,19 +166,29 @@ def load_image(r, source: str, el) -> tuple[str | None, np.ndarray | None]:
     """Resolve and decode an ImageSource; diagnostics say why when there is no image."""
     rel = reduce_uri(source)
     if rel is None:
-        r.ctx.diag("BRU004", f"ImageSource {source!r}: network URIs are never fetched", el)
+        r.ctx.diag(
+            "BRU004",
+            f"ImageSource {source!r}: network URIs are never fetched; a grey checker stands in",
+            el,
+        )
         return None, None
     doc = r.ctx.doc_of(el)
     base = doc.directory if doc is not None and doc.directory is not None else Path.cwd()
     path = (base / rel).resolve()
     if not r.ctx.path_allowed(path):
-        r.ctx.diag("BRU005", f"ImageSource {source!r} leaves the scene's folder tree", el)
+        r.ctx.diag(
+            "BRU005",
+            f"ImageSource {source!r} leaves the scene's folder tree; a grey checker stands in",
+            el,
+        )
         return None, None
     if not path.is_file():
         # Windows file names are case-insensitive: try a case-insensitive match
         alt = _case_insensitive(path)
         if alt is None:
-            r.ctx.diag("BRU002", f"image {source!r} not found ({path})", el)
+            r.ctx.diag(
+                "BRU002", f"image {source!r} not found ({path}); a grey checker stands in", el
+            )
             return str(path), None
         path = alt
     try:
@@ -181,7 +197,9 @@ def load_image(r, source: str, el) -> tuple[str | None, np.ndarray | None]:
         with Image.open(path) as im:
             arr = np.asarray(im.convert("RGBA"), dtype=np.uint8)
     except Exception as exc:  # Pillow raises many kinds for a corrupt or unknown file
-        r.ctx.diag("BRU003", f"image {source!r} cannot be decoded: {exc}", el)
+        r.ctx.diag(
+            "BRU003", f"image {source!r} cannot be decoded ({exc}); a grey checker stands in", el
+        )
         return str(path), None
     return str(path), frozen_array(arr, dtype=np.uint8)
 
