@@ -140,7 +140,7 @@ def _image_brush(r, p) -> ImageBrush:
     source = p.string("ImageSource")
     path = image = None
     if source:
-        path, image = load_image(r, source, el)
+        path, image = load_image(r, source, el, p.attr_keys.get("ImageSource"))
     # A missing picture would make the surface vanish; a grey checker keeps the model visible.
     is_placeholder = bool(source) and image is None
     if is_placeholder:
@@ -162,14 +162,16 @@ def _image_brush(r, p) -> ImageBrush:
     )
 
 
-def load_image(r, source: str, el) -> tuple[str | None, np.ndarray | None]:
-    """Resolve and decode an ImageSource; diagnostics say why when there is no image."""
+def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None, np.ndarray | None]:
+    """Resolve and decode an ImageSource; diagnostics (located at ``el``'s attribute ``attr``
+    when the source is an attribute) say why when there is no image."""
     rel = reduce_uri(source)
     if rel is None:
         r.ctx.diag(
             "BRU004",
             f"ImageSource {source!r}: network URIs are never fetched; a grey checker stands in",
             el,
+            attr=attr,
         )
         return None, None
     doc = r.ctx.doc_of(el)
@@ -180,15 +182,15 @@ def load_image(r, source: str, el) -> tuple[str | None, np.ndarray | None]:
             "BRU005",
             f"ImageSource {source!r} leaves the scene's folder tree; a grey checker stands in",
             el,
+            attr=attr,
         )
         return None, None
     if not path.is_file():
         # Windows file names are case-insensitive: try a case-insensitive match
         alt = _case_insensitive(path)
         if alt is None:
-            r.ctx.diag(
-                "BRU002", f"image {source!r} not found ({path}); a grey checker stands in", el
-            )
+            msg = f"image {source!r} not found ({path}); a grey checker stands in"
+            r.ctx.diag("BRU002", msg, el, attr=attr)
             return str(path), None
         path = alt
     try:
@@ -197,9 +199,8 @@ def load_image(r, source: str, el) -> tuple[str | None, np.ndarray | None]:
         with Image.open(path) as im:
             arr = np.asarray(im.convert("RGBA"), dtype=np.uint8)
     except Exception as exc:  # Pillow raises many kinds for a corrupt or unknown file
-        r.ctx.diag(
-            "BRU003", f"image {source!r} cannot be decoded ({exc}); a grey checker stands in", el
-        )
+        msg = f"image {source!r} cannot be decoded ({exc}); a grey checker stands in"
+        r.ctx.diag("BRU003", msg, el, attr=attr)
         return str(path), None
     return str(path), frozen_array(arr, dtype=np.uint8)
 

@@ -37,7 +37,7 @@ from xaml3d.xaml.context import (
     x_attr,
 )
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
-from xaml3d.xaml.parser import ParsedDocument
+from xaml3d.xaml.parser import XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
 
@@ -75,8 +75,11 @@ class Reader:
             if key is None:
                 self.ctx.diag("RES001", f"<{local}> without ResourceKey", el)
                 return default
-            entry = self.resources.lookup(key, el, dynamic=local == "DynamicResource")
-            return default if entry is None else self.build_resource(entry, build, default, el)
+            dynamic = local == "DynamicResource"
+            entry = self.resources.lookup(key, el, dynamic=dynamic, attr="ResourceKey")
+            if entry is None:
+                return default
+            return self.build_resource(entry, build, default, el, "ResourceKey")
         et = voc.lookup(local)
         if et is None:
             hint = voc.did_you_mean(local, voc.known_types())
@@ -84,11 +87,13 @@ class Reader:
             return default
         return build(el)
 
-    def build_resource(self, entry, build, default, ref_el):
+    def build_resource(self, entry, build, default, ref_el, attr=None):
+        """Build a resource entry referred to from ``ref_el`` (its attribute ``attr``)."""
         with self.ctx.building(entry) as ok:
             if not ok:
                 key = x_attr(entry, "Key")
-                self.ctx.diag("RES003", f"resource {key!r} refers to itself (cycle)", ref_el)
+                msg = f"resource {key!r} refers to itself (cycle)"
+                self.ctx.diag("RES003", msg, ref_el, attr=attr)
                 return default
             return self.build_node(entry, build, default)
 
@@ -223,7 +228,8 @@ def build_viewport(r: Reader, el, index: int) -> Viewport:
         cam = p.obj("Camera", lambda e: camera(r, e), None)
         if cam is None and "Camera" in p.attrs and split_markup(p.attrs["Camera"]) is not None:
             if split_markup(p.attrs["Camera"])[0] == "Null":
-                r.ctx.diag("SCN009", "Camera is {x:Null}: WPF draws nothing", el)
+                msg = "Camera is {x:Null}: WPF draws nothing"
+                r.ctx.diag("SCN009", msg, el, attr=p.attr_keys.get("Camera"))
             else:
                 cam = PerspectiveCamera(is_default=True)
     else:
@@ -277,9 +283,8 @@ class _Walk:
             msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
             r.ctx.diag("XAML001", msg, el, once=(ns, local))
             if x_attr(el, "Class") is not None:
-                r.ctx.diag(
-                    "XAML007", f"x:Class={x_attr(el, 'Class')!r}: code-behind is not run", el
-                )
+                msg = f"x:Class={x_attr(el, 'Class')!r}: code-behind is not run"
+                r.ctx.diag("XAML007", msg, el, attr=f"{{{XAML_NS}}}Class")
             for child in el:
                 if isinstance(child.tag, str) and "." not in qname(child.tag)[1]:
                     self.visit(child)
@@ -342,7 +347,7 @@ def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> 
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
 
-    diags = sorted(ctx.diagnostics, key=lambda g: (g.file or "", g.line or 0))
+    diags = sorted(ctx.diagnostics, key=lambda g: (g.file or "", g.line or 0, g.column or 0))
     return Scene(
         file=doc.file,
         viewports=viewports,

@@ -1,14 +1,16 @@
 """Reading context shared by the XAML reader modules: diagnostics, documents, namespaces.
 
 Holds what every step of reading needs: the list of diagnostics (each stamped with the file the
-element came from and lxml's source line), the parsed documents (the scene, App.xaml, merged
-dictionaries) and which folders paths may point into, and the namespace classification of
-elements and attributes (presentation, XAML language, ignorable, unknown/clr-namespace).
+element came from and the line and column of its start tag or of the attribute concerned, found
+by source_map.py), the parsed documents (the scene, App.xaml, merged dictionaries) and which
+folders paths may point into, and the namespace classification of elements and attributes
+(presentation, XAML language, ignorable, unknown/clr-namespace).
 """
 
 from __future__ import annotations
 
 from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
 
 from lxml import etree
@@ -77,43 +79,73 @@ class ReadContext:
         return el
 
     # ----------------------------------------------------------------- diagnostics
+    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int | None, int | None]:
+        """(line, column) of an element's ``<``, or of attribute ``attr``'s name (a key of
+        ``el.attrib``) in its own document's text; (sourceline, None) when not found."""
+        doc = self.doc_of(el)
+        where = doc.locate(el, attr) if doc is not None else None
+        return where if where is not None else (el.sourceline, None)
+
     def diag(
         self,
         code: str,
         message: str,
         el: etree._Element | None = None,
         *,
+        attr: str | None = None,
         line: int | None = None,
+        column: int | None = None,
         file: str | None = None,
         once: object = None,
     ) -> None:
-        """Record a diagnostic; ``once`` (a key) suppresses repeats of the same report."""
+        """Record a diagnostic about ``el`` (or its attribute ``attr``, a key of ``el.attrib``);
+        ``once`` (a key) suppresses repeats of the same report."""
         if once is not None:
             if (code, once) in self._once:
                 return
             self._once.add((code, once))
         severity = READER_CODES.get(code, ("warning", ""))[0]
         if el is not None:
-            line = line if line is not None else el.sourceline
+            if line is None:
+                line, column = self.locate(el, attr)
             file = file or self.file_of(el)
-        self.diagnostics.append(Diagnostic(code, severity, message, file, line))
+        self.diagnostics.append(Diagnostic(code, severity, message, file, line, column))
 
-    def add(self, diagnostic: Diagnostic, el: etree._Element | None = None) -> None:
-        """Record a diagnostic made elsewhere (mesh building...), filling in file/line."""
-        if el is not None and (diagnostic.file is None or diagnostic.line is None):
+    def add(
+        self, diagnostic: Diagnostic, el: etree._Element | None = None, attr: str | None = None
+    ) -> None:
+        """Record a diagnostic made elsewhere (mesh building...) about ``el`` (or its attribute
+        ``attr``): an unknown location, or ``el``'s sourceline, becomes the located one."""
+        about_el = el is not None and diagnostic.line in (None, el.sourceline)
+        if about_el and diagnostic.column is None:
+            line, column = self.locate(el, attr)
             diagnostic = Diagnostic(
                 diagnostic.code,
                 diagnostic.severity,
                 diagnostic.message,
                 diagnostic.file or self.file_of(el),
-                diagnostic.line if diagnostic.line is not None else el.sourceline,
-                diagnostic.column,
+                line,
+                column,
+            )
+        elif el is not None and (diagnostic.file is None or diagnostic.line is None):
+            diagnostic = replace(
+                diagnostic,
+                file=diagnostic.file or self.file_of(el),
+                line=el.sourceline if diagnostic.line is None else diagnostic.line,
             )
         self.diagnostics.append(diagnostic)
 
-    def error(self, exc: XamlError, el: etree._Element | None, severity: str = "warning") -> None:
+    def error(
+        self,
+        exc: XamlError,
+        el: etree._Element | None,
+        severity: str = "warning",
+        attr: str | None = None,
+    ) -> None:
         """Turn a recoverable XamlError (bad value syntax...) into a located diagnostic."""
-        exc.with_location(self.file_of(el), el.sourceline if el is not None else None)
+        if el is not None:
+            line, column = self.locate(el, attr) if exc.line is None else (None, None)
+            exc.with_location(self.file_of(el), line, column)
         self.diagnostics.append(
             Diagnostic(exc.code, severity, exc.message, exc.file, exc.line, exc.column)
         )

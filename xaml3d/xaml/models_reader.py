@@ -138,6 +138,15 @@ def camera(r, el):
     return None
 
 
+# the mesh property each MSH code is about (its diagnostic points at that attribute)
+_MESH_ATTRS = {
+    "MSH001": "TriangleIndices",
+    "MSH002": "TriangleIndices",
+    "MSH003": "Normals",
+    "MSH004": "TextureCoordinates",
+}
+
+
 def mesh(r, el):
     """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types)."""
     from xaml3d.scene.mesh import build_mesh
@@ -157,7 +166,11 @@ def mesh(r, el):
         line=el.sourceline,
     )
     for dg in diags:
-        r.ctx.add(dg, el)
+        attr = _MESH_ATTRS.get(dg.code)
+        key = p.attr_keys.get(attr) if attr else None
+        if key is None and dg.code == "MSH002":  # no TriangleIndices: about the Positions count
+            key = p.attr_keys.get("Positions")
+        r.ctx.add(dg, el, key)
     return result
 
 

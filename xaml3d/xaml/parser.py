@@ -25,6 +25,7 @@ from pathlib import Path
 from lxml import etree
 
 from xaml3d.errors import XamlSyntaxError
+from xaml3d.xaml.source_map import SourceMap
 
 PRESENTATION_NS = "http://schemas.microsoft.com/winfx/2006/xaml/presentation"
 PRESENTATION_NS_2007 = "http://schemas.microsoft.com/netfx/2007/xaml/presentation"
@@ -47,11 +48,17 @@ DEFAULT_LIMITS = Limits()
 
 @dataclass
 class ParsedDocument:
-    """A parsed XAML document: its root element and the names it is known by."""
+    """A parsed XAML document: its root element, the names it is known by and its text's
+    start-tag positions (for diagnostics' columns)."""
 
     root: etree._Element
     file: str  # the label used in diagnostics: the path as the user gave it, or "<string>"
     path: Path | None  # the resolved file path (None for text input)
+    source: SourceMap | None = None
+
+    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int, int] | None:
+        """(line, column) of an element of this document, or of one of its attributes."""
+        return None if self.source is None else self.source.locate(el, attr)
 
     @property
     def directory(self) -> Path | None:
@@ -94,12 +101,14 @@ def _refuse_doctype(data: bytes, file: str) -> None:
     rest = head[pos : pos + 16].upper()
     if rest.startswith(b"<!DOCTYPE") or rest.startswith(b"<!ENTITY"):
         line = head[:pos].count(b"\n") + 1
+        line_start = head.rfind(b"\n", 0, pos) + 1
+        column = len(head[line_start:pos].decode("utf-8", errors="replace")) + 1
         raise XamlSyntaxError(
             "DOCTYPE/ENTITY declarations are refused (DTDs and entities are never processed)",
             code="XML002",
             file=file,
             line=line,
-            column=1,
+            column=column,
         )
 
 
@@ -136,23 +145,30 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
                 if root is None:
                     root = el
                 if depth > limits.max_depth:
-                    raise XamlSyntaxError(
-                        f"elements nested deeper than {limits.max_depth} levels",
-                        code="XML005",
-                        file=file,
-                        line=el.sourceline,
+                    raise _located(
+                        XamlSyntaxError(
+                            f"elements nested deeper than {limits.max_depth} levels",
+                            code="XML005",
+                            file=file,
+                        ),
+                        data,
+                        el,
                     )
                 if count > limits.max_elements:
-                    raise XamlSyntaxError(
-                        f"more than {limits.max_elements} elements",
-                        code="XML004",
-                        file=file,
-                        line=el.sourceline,
+                    raise _located(
+                        XamlSyntaxError(
+                            f"more than {limits.max_elements} elements", code="XML004", file=file
+                        ),
+                        data,
+                        el,
                     )
             else:
                 depth -= 1
     except etree.XMLSyntaxError as exc:
+        # lxml's column is 1-based and counts characters of the decoded text (a tab is one, a
+        # BOM none); it is 0 only when nothing at all could be read (an empty document)
         line, col = exc.position if exc.position else (exc.lineno, None)
+        line, col = max(line or 1, 1), max(col or 1, 1)
         msg = exc.msg or str(exc)
         code = "XML002" if ("entity" in msg.lower() or "doctype" in msg.lower()) else "XML001"
         raise XamlSyntaxError(
@@ -166,6 +182,18 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
             "DOCTYPE/ENTITY declarations are refused", code="XML002", file=file, line=1
         )
     return root
+
+
+def _located(exc: XamlSyntaxError, data: bytes, el: etree._Element) -> XamlSyntaxError:
+    """The limit error placed at the start tag of the element that crossed the limit."""
+    where = SourceMap(data, el.getroottree().docinfo.encoding).locate(el)
+    exc.line, exc.column = where if where else (el.sourceline, None)
+    return exc
+
+
+def _document(root: etree._Element, data: bytes, file: str, path: Path | None) -> ParsedDocument:
+    source = SourceMap(data, root.getroottree().docinfo.encoding)
+    return ParsedDocument(root, file, path, source)
 
 
 def read_file_bytes(path: str | os.PathLike, file: str, limits: Limits | None = None) -> bytes:
@@ -201,8 +229,8 @@ def parse_document(
             # a str has already been decoded: drop any encoding declaration's claim
             data = re.sub(rb"^(\s*<\?xml[^>]*?)encoding=(['\"]).*?\2", rb"\1", data, count=1)
         label = file or "<string>"
-        return ParsedDocument(parse_bytes(data, label, limits), label, None)
+        return _document(parse_bytes(data, label, limits), data, label, None)
     label = file or os.fspath(source)
     path = Path(source)
     data = read_file_bytes(path, label, limits)
-    return ParsedDocument(parse_bytes(data, label, limits), label, path.resolve())
+    return _document(parse_bytes(data, label, limits), data, label, path.resolve())

@@ -43,6 +43,7 @@ class Props:
         self.ns, self.type = qname(el.tag)
         self.etype = voc.lookup(self.type)
         self.attrs: dict[str, str] = {}
+        self.attr_keys: dict[str, str] = {}  # property -> its attribute's key in el.attrib
         self.attached: dict[str, str] = {}
         self.elems: dict[str, list[etree._Element]] = {}
         self.elem_text: dict[str, str] = {}
@@ -56,8 +57,11 @@ class Props:
     def _known(self, prop: str) -> bool:
         return self.etype is None or self.etype.open or prop in self.etype.properties
 
-    def _check_property(self, prop: str, node: etree._Element, value: str | None) -> bool:
-        """Report unknown/unsupported/event properties; True when the property is usable."""
+    def _check_property(
+        self, prop: str, node: etree._Element, value: str | None, attr: str | None = None
+    ) -> bool:
+        """Report unknown/unsupported/event properties (located at attribute ``attr`` when the
+        property is an attribute); True when the property is usable."""
         ctx = self.r.ctx
         kind = self.etype.property_kind(prop) if self.etype else None
         if kind == "event" or (
@@ -66,11 +70,12 @@ class Props:
             and value is not None
             and value.strip().isidentifier()
         ):
-            ctx.diag("XAML008", f"event handler {prop}={value!r} ignored (code-behind)", node)
+            msg = f"event handler {prop}={value!r} ignored (code-behind)"
+            ctx.diag("XAML008", msg, node, attr=attr)
             return False
         if not self._known(prop):
             hint = voc.did_you_mean(prop, self.etype.properties)
-            ctx.diag("XAML004", f"{self.type} has no property {prop!r}{hint}", node)
+            ctx.diag("XAML004", f"{self.type} has no property {prop!r}{hint}", node, attr=attr)
             return False
         return True
 
@@ -81,16 +86,18 @@ class Props:
             ns, local = qname(name)
             if ns == XAML_NS:
                 if local == "Class":
-                    ctx.diag("XAML007", f"x:Class={value!r}: code-behind is not run", self.el)
+                    msg = f"x:Class={value!r}: code-behind is not run"
+                    ctx.diag("XAML007", msg, self.el, attr=name)
                 elif local not in _SILENT_X:
-                    ctx.diag("XAML006", f"x:{local} is not used by xaml3d", self.el)
+                    ctx.diag("XAML006", f"x:{local} is not used by xaml3d", self.el, attr=name)
                 continue
             if ns is not None and not is_presentation(ns):
                 if ignorable is None:
                     ignorable = ignorable_namespaces(self.el)
                 if ns in ignorable or ns == "http://www.w3.org/XML/1998/namespace":
                     continue
-                ctx.diag("XAML002", f"attribute {local!r} from namespace {ns!r} ignored", self.el)
+                msg = f"attribute {local!r} from namespace {ns!r} ignored"
+                ctx.diag("XAML002", msg, self.el, attr=name)
                 continue
             if "." in local:
                 owner, _, prop = local.rpartition(".")
@@ -99,12 +106,14 @@ class Props:
                     local = prop
                 else:
                     if voc.is_event_name(prop) and value.strip().isidentifier():
-                        ctx.diag("XAML008", f"event handler {local}={value!r} ignored", self.el)
+                        msg = f"event handler {local}={value!r} ignored"
+                        ctx.diag("XAML008", msg, self.el, attr=name)
                     else:
                         self.attached[local] = value
                     continue
-            if self._check_property(local, self.el, value):
+            if self._check_property(local, self.el, value, name):
                 self.attrs[local] = value
+                self.attr_keys[local] = name
 
     def _read_children(self) -> None:
         for child in self.el:
@@ -161,37 +170,41 @@ class Props:
             return ("plain", v[2:] if v.startswith("{}") else value)
         name, args = m
         ctx = self.r.ctx
+        attr = self.attr_keys.get(prop)
         if name == "Null":
             return ("null", None)
         if name in ("StaticResource", "DynamicResource"):
             key = markup_key(args)
-            entry = self.r.resources.lookup(key, self.el, dynamic=name == "DynamicResource")
+            dynamic = name == "DynamicResource"
+            entry = self.r.resources.lookup(key, self.el, dynamic=dynamic, attr=attr)
             return ("element", entry) if entry is not None else ("default", None)
         if name == "Binding":
             code = "XAML009"
         elif name == "Static":
             code = "XAML010"
         elif name == "":
-            ctx.diag("XAML016", f"{prop}={value!r}: malformed markup extension", self.el)
+            msg = f"{prop}={value!r}: malformed markup extension"
+            ctx.diag("XAML016", msg, self.el, attr=attr)
             return ("default", None)
         else:
             code = "XAML011"
-        ctx.diag(code, f"{self.type}.{prop}={value!r} cannot be evaluated: default kept", self.el)
+        msg = f"{self.type}.{prop}={value!r} cannot be evaluated: default kept"
+        ctx.diag(code, msg, self.el, attr=attr)
         return ("default", None)
 
     def value(self, prop: str, conv: Callable[[str], object], default=None):
         """A value-type property (numbers, vectors, colours, collections...)."""
         if prop in self.attrs:
             kind, payload = self.markup(prop, self.attrs[prop])
+            attr = self.attr_keys.get(prop)
             if kind == "plain":
-                return self._convert(conv, payload, self.el, prop, default)
+                return self._convert(conv, payload, self.el, prop, default, attr)
             if kind == "element":
                 text = (payload.text or "").strip()
                 if text and len(payload) == 0:
                     return self._convert(conv, text, payload, prop, default)
-                self.r.ctx.diag(
-                    "RES008", f"resource for {self.type}.{prop} is not a value", self.el
-                )
+                msg = f"resource for {self.type}.{prop} is not a value"
+                self.r.ctx.diag("RES008", msg, self.el, attr=attr)
             return default
         if prop in self.elem_text:
             return self._convert(conv, self.elem_text[prop], self.line_of(prop), prop, default)
@@ -204,12 +217,12 @@ class Props:
             self.r.ctx.diag("XAML013", f"{self.type}.{prop}: expected a value", node)
         return default
 
-    def _convert(self, conv, s, node, prop, default):
+    def _convert(self, conv, s, node, prop, default, attr=None):
         try:
             return conv(s)
         except ValueSyntaxError as exc:
             exc.message = f"{self.type}.{prop}: {exc.message}"
-            self.r.ctx.error(exc, node)
+            self.r.ctx.error(exc, node, attr=attr)
             return default
 
     def obj(self, prop: str, build: Callable, default=None, *, from_string=None):
@@ -219,14 +232,14 @@ class Props:
             kind, payload = self.markup(prop, self.attrs[prop])
             if kind == "null":
                 return None
+            attr = self.attr_keys.get(prop)
             if kind == "element":
-                return self.r.build_resource(payload, build, default, self.el)
+                return self.r.build_resource(payload, build, default, self.el, attr)
             if kind == "plain":
                 if from_string is not None:
-                    return self._convert(from_string, payload, self.el, prop, default)
-                self.r.ctx.diag(
-                    "XAML013", f"{self.type}.{prop} needs an element, not {payload!r}", self.el
-                )
+                    return self._convert(from_string, payload, self.el, prop, default, attr)
+                msg = f"{self.type}.{prop} needs an element, not {payload!r}"
+                self.r.ctx.diag("XAML013", msg, self.el, attr=attr)
             return default
         kids = self.items(prop)
         if not kids:

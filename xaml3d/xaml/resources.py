@@ -143,7 +143,8 @@ class Resources:
         doc = self.ctx.doc_of(md)
         rel = reduce_uri(source)
         if rel is None:
-            self.ctx.diag("RES004", f"merged dictionary {source!r}: network URIs are refused", md)
+            msg = f"merged dictionary {source!r}: network URIs are refused"
+            self.ctx.diag("RES004", msg, md, attr="Source")
             return None
         base = doc.directory if doc and doc.directory else Path.cwd()
         path = (base / rel).resolve()
@@ -153,6 +154,7 @@ class Resources:
                 f"merged dictionary {source!r} leaves the scene's folder tree: refused "
                 "(allow_outside=True permits it)",
                 md,
+                attr="Source",
             )
             return None
         return self.load_dictionary_file(path, source, md)
@@ -161,18 +163,21 @@ class Resources:
         self, path: Path, label: str, ref: etree._Element | None
     ) -> Dictionary | None:
         if path in self._loading:
-            self.ctx.diag("RES003", f"merged dictionary {label!r} includes itself (cycle)", ref)
+            msg = f"merged dictionary {label!r} includes itself (cycle)"
+            self.ctx.diag("RES003", msg, ref, attr="Source")
             return None
         if path in self._files:
             return self._files[path]
         if not path.is_file():
-            self.ctx.diag("RES005", f"merged dictionary {label!r} not found ({path})", ref)
+            msg = f"merged dictionary {label!r} not found ({path})"
+            self.ctx.diag("RES005", msg, ref, attr="Source")
             return None
         self._loading.add(path)
         try:
             doc = parse_document(path, limits=self.ctx.limits, file=str(path))
         except XamlError as exc:
-            self.ctx.diag("RES005", f"merged dictionary {label!r} unreadable: {exc.message}", ref)
+            msg = f"merged dictionary {label!r} unreadable: {exc.message}"
+            self.ctx.diag("RES005", msg, ref, attr="Source")
             self._loading.discard(path)
             self._files[path] = None
             return None
@@ -191,8 +196,8 @@ class Resources:
             doc = parse_document(path, limits=self.ctx.limits, file=label)
         except XamlError as exc:
             if discovered:
-                self.ctx.diag("RES005", f"{label}: cannot be used: {exc.message}", line=exc.line,
-                              file=label)  # fmt: skip
+                msg = f"{label}: cannot be used: {exc.message}"
+                self.ctx.diag("RES005", msg, line=exc.line, column=exc.column, file=label)
                 return
             raise ResourceError(
                 f"resource file {label!r} cannot be read: {exc.message}",
@@ -209,8 +214,8 @@ class Resources:
         self.ctx.diag(
             "RES006",
             f"application resources read from {label} ({how}: {len(d.entries)} entries)",
+            doc.root,
             file=label,
-            line=doc.root.sourceline,
         )
 
     def discover_app(self, scene_path: Path) -> Path | None:
@@ -233,9 +238,10 @@ class Resources:
 
     # ----------------------------------------------------------------- lookup
     def lookup(
-        self, key: str, from_el: etree._Element, *, dynamic: bool = False
+        self, key: str, from_el: etree._Element, *, dynamic: bool = False, attr: str | None = None
     ) -> etree._Element | None:
-        """The entry for ``key`` seen from ``from_el``; reports RES001/RES002 when missing."""
+        """The entry for ``key`` seen from ``from_el``; reports RES001/RES002 when missing (at
+        ``from_el``'s attribute ``attr`` when the reference is an attribute)."""
         here = doc_position(from_el)
         later = None
         node = from_el
@@ -259,10 +265,12 @@ class Resources:
         if later is not None:
             self.ctx.diag(
                 "RES002",
-                f"StaticResource {key!r} is used before its definition (line {later.sourceline}); "
+                f"StaticResource {key!r} is used before its definition "
+                f"(line {self.ctx.locate(later)[0]}); "
                 "WPF requires the entry to come first (DynamicResource would allow it)",
                 from_el,
+                attr=attr,
             )
         else:
-            self.ctx.diag("RES001", f"resource {key!r} not found", from_el)
+            self.ctx.diag("RES001", f"resource {key!r} not found", from_el, attr=attr)
         return None

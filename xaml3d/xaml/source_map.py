@@ -1,0 +1,199 @@
+"""Source positions of parsed XAML: the line and 1-based column of an element's start tag or of
+one of its attributes (used to locate every reader diagnostic as ``file:line:col``).
+
+lxml gives an element only a ``sourceline``, and it is the line of the ``>`` that ENDS its start
+tag. So the document's bytes are kept and, when a position is first asked for, decoded; one
+forward scan (advanced only as far as needed) finds the start tags outside comments, CDATA
+sections and processing instructions. They appear in the text in the same order as lxml's
+elements in document order, so an element's index in document order is the index of its start
+tag. That index is found by walking back from the element in document order to one already
+located (diagnostics mostly come in document order, so the walk is short) or to the root; past a
+bound, libxml2 counts it (XPath ``count(ancestor::*) + count(preceding::*)``). The tag's name is
+checked against the element's name as written, and an attribute is found by scanning that one
+start tag only, jumping over quoted values (which may hold ``>``, never ``<``).
+
+Columns count characters of the decoded text (a tab is one column) from 1; a BOM is not a column.
+Lines count ``\n`` as libxml2 does (``\r\n`` is one line break, a lone ``\r`` none).
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+import re
+
+from lxml import etree
+
+# A start tag's "<" and name, or a whole comment / CDATA section / processing instruction (whose
+# text may hold a fake "<Tag"). End tags and the DOCTYPE do not match at all, so the scan never
+# builds a match object for them; attribute values cannot hold "<", so the scan for the next
+# "<" (a C loop: every branch starts with it) runs through a 30 MB Positions value untouched.
+_MARKUP = re.compile(r"<([^\s/>!?]+)|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>", re.S)
+# The next attribute of a start tag, up to its value's opening quote.
+_ATTR = re.compile(r"""\s*([^\s=/>"']+)\s*=\s*(["'])""")
+_XML_NS = "http://www.w3.org/XML/1998/namespace"
+_WALK_LIMIT = 4096  # steps back in document order before asking libxml2 for the index
+
+_BOMS = (
+    (b"\xef\xbb\xbf", "utf-8-sig"),
+    (b"\xff\xfe\x00\x00", "utf-32"),
+    (b"\x00\x00\xfe\xff", "utf-32"),
+    (b"\xff\xfe", "utf-16"),
+    (b"\xfe\xff", "utf-16"),
+)
+
+
+def decode_source(data: bytes, declared: str | None = None) -> str:
+    """The document's text as libxml2 read it: a BOM decides (and is dropped), else BOM-less
+    UTF-16, else the declared encoding (lxml's ``docinfo.encoding``), else UTF-8."""
+    encoding = None
+    for bom, enc in _BOMS:
+        if data.startswith(bom):
+            encoding = enc
+            break
+    else:
+        if data[:2] == b"<\x00":
+            encoding = "utf-16-le"
+        elif data[:2] == b"\x00<":
+            encoding = "utf-16-be"
+        else:
+            encoding = declared or "utf-8"
+    try:
+        return data.decode(encoding, errors="replace")
+    except LookupError:  # an encoding name Python does not know
+        return data.decode("utf-8", errors="replace")
+
+
+def written_name(el: etree._Element) -> str:
+    """The element's name as written in its start tag (``prefix:Local`` or ``Local``)."""
+    local = el.tag.rpartition("}")[2]
+    prefix = el.prefix
+    return f"{prefix}:{local}" if prefix else local
+
+
+def _previous(node: etree._Element) -> etree._Element | None:
+    """The element just before ``node`` in document order (None for the root)."""
+    prev = node.getprevious()
+    while prev is not None and not isinstance(prev.tag, str):
+        prev = prev.getprevious()
+    if prev is None:
+        return node.getparent()
+    while True:  # the last element of prev's subtree comes just before node
+        last = None
+        for child in reversed(prev):
+            if isinstance(child.tag, str):
+                last = child
+                break
+        if last is None:
+            return prev
+        prev = last
+
+
+class SourceMap:
+    """Start-tag positions of one parsed document, found lazily in one forward pass."""
+
+    def __init__(self, data: bytes, declared_encoding: str | None = None) -> None:
+        self._data: bytes | None = data
+        self._declared = declared_encoding
+        self.text = ""
+        self._scan = None  # the finditer over the text, advanced only as far as needed
+        self._starts: list[int] = []  # offset of each start tag's "<", in document order
+        self._names: list[str] = []  # its name as written
+        self._memo: dict[int, tuple[etree._Element, int]] = {}  # keeps located proxies alive
+        self._marks = [(0, 1, 0)]  # (offset, its line, its line's start) already placed, sorted
+
+    def _tokens_upto(self, i: int) -> bool:
+        """Scan until start tag ``i`` is known; False when the text has fewer tags."""
+        if self._data is not None:
+            self.text = decode_source(self._data, self._declared)
+            self._data = None
+            self._scan = _MARKUP.finditer(self.text)
+        starts, names = self._starts, self._names
+        if self._scan is not None:
+            for m in self._scan:
+                name = m.group(1)
+                if name is not None:
+                    starts.append(m.start())
+                    names.append(name)
+                    if len(starts) > i:
+                        return True
+            self._scan = None
+        return len(starts) > i
+
+    def _order(self, el: etree._Element) -> int:
+        """The element's index in document order."""
+        memo = self._memo
+        node, steps = el, 0
+        while True:
+            hit = memo.get(id(node))
+            if hit is not None and hit[0] is node:
+                return hit[1] + steps
+            prev = _previous(node)
+            if prev is None:
+                return steps  # node is the root: index 0
+            node, steps = prev, steps + 1
+            if steps > _WALK_LIMIT:
+                return int(el.xpath("count(ancestor::*) + count(preceding::*)"))
+
+    def _tag(self, el: etree._Element) -> int | None:
+        """Index of the element's start tag (None when the text does not match the tree)."""
+        try:
+            i = self._order(el)
+        except (TypeError, ValueError, etree.Error):
+            return None
+        if not self._tokens_upto(i) or self._names[i] != written_name(el):
+            return None  # the text and the tree disagree: give no column rather than a wrong one
+        self._memo[id(el)] = (el, i)
+        return i
+
+    def position_at(self, offset: int) -> tuple[int, int]:
+        """1-based (line, column) of a text offset. Counting starts from the nearest offset
+        already placed, so positions asked in document order cost one pass in all (even when
+        the whole document is one line)."""
+        marks = self._marks
+        k = bisect.bisect_right(marks, (offset, math.inf)) - 1
+        base, line, line_start = marks[k]
+        text = self.text
+        newlines = text.count("\n", base, offset)
+        if newlines:
+            line += newlines
+            line_start = text.rfind("\n", base, offset) + 1
+        marks.insert(k + 1, (offset, line, line_start))
+        return line, offset - line_start + 1
+
+    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int, int] | None:
+        """(line, column) of ``el``'s ``<``, or of the start of attribute ``attr``'s name (a key
+        of ``el.attrib``, Clark notation) when it is written in the start tag; None when the
+        element cannot be matched to the text."""
+        i = self._tag(el)
+        if i is None:
+            return None
+        offset = self._starts[i]
+        if attr is not None:
+            found = self._attribute(el, i, attr)
+            offset = offset if found is None else found
+        return self.position_at(offset)
+
+    def _attribute(self, el: etree._Element, i: int, attr: str) -> int | None:
+        """Offset of attribute ``attr``'s name in start tag ``i``: a scan from one attribute to
+        the next that jumps over each quoted value (which may hold ">" or the other quote)."""
+        text = self.text
+        pos = self._starts[i] + 1 + len(self._names[i])
+        while True:
+            m = _ATTR.match(text, pos)
+            if m is None:
+                return None  # reached the tag's end
+            name = m.group(1)
+            prefix, _, local = name.rpartition(":")
+            if prefix != "xmlns" and name != "xmlns":
+                if prefix:
+                    ns = _XML_NS if prefix == "xml" else el.nsmap.get(prefix)
+                    key = f"{{{ns}}}{local}"
+                else:
+                    key = name
+                if key == attr:
+                    return m.start(1)
+            close = text.find(m.group(2), m.end())
+            if close < 0:
+                return None
+            pos = close + 1
