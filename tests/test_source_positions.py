@@ -11,6 +11,7 @@ import time
 import pytest
 
 from xaml3d.errors import XamlSyntaxError
+from xaml3d.scene.camera_check import check_camera
 from xaml3d.xaml.loader import load
 from xaml3d.xaml.parser import Limits, parse_bytes, parse_document
 from xaml3d.xaml.source_map import SourceMap
@@ -303,3 +304,28 @@ def test_far_walk_falls_back_to_libxml2s_count():
     # "<a>" is cols 1-3, the 5000 "<b/>" take 4 columns each: "<c/>" starts at 3 + 20000 + 1
     assert sm.locate(root[-1]) == (1, 20004)
     assert sm.locate(root[2500]) == (1, 3 + 2500 * 4 + 1)
+
+
+def test_scene_objects_carry_their_start_tag_position():
+    # Cameras, models and viewports carry (line, column) of their '<', so the camera and scene
+    # checks made outside the reader point at the same place the reader's diagnostics do.
+    s = load(
+        '<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+        ' Width="10" Height="10">\n'  # line 1, '<' at column 1
+        "  <Viewport3D.Camera>\n"
+        "      <PerspectiveCamera LookDirection='0,0,0'/>\n"  # line 3, column 7
+        "  </Viewport3D.Camera>\n"
+        "  <ModelVisual3D><ModelVisual3D.Content>\n"
+        "    <GeometryModel3D><GeometryModel3D.Geometry>"  # line 6, column 5
+        "<MeshGeometry3D Positions='0 0 0 1 0 0 0 1 0'/></GeometryModel3D.Geometry>"
+        "</GeometryModel3D>\n"
+        "  </ModelVisual3D.Content></ModelVisual3D>\n"
+        "</Viewport3D>",
+        text=True,
+    )
+    vp = s.viewports[0]
+    assert (vp.line, vp.column) == (1, 1)
+    assert (vp.camera.line, vp.camera.column) == (3, 7)
+    assert (vp.models[0].line, vp.models[0].column) == (6, 5)
+    [cam001] = [d for d in check_camera(vp.camera, 10, 10) if d.code == "CAM001"]
+    assert (cam001.line, cam001.column) == (3, 7)

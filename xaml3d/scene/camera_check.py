@@ -3,7 +3,7 @@
 ``check_camera`` never raises: it returns one Diagnostic per problem found (errors: the camera
 cannot produce an image; warnings: an image, probably not the intended one). ``camera_pipeline``
 raises a CameraError with the first error's code, so the codes here are the codes everywhere.
-Diagnostics carry file=None (the reader fills it in) and line=camera.line.
+Diagnostics carry file=None (the reader fills it in) and the camera's line and column.
 
 Thresholds (chosen, documented here and in CAMERA_CODES):
 - UpDirection "nearly parallel" to LookDirection: less than 1 degree apart (parallel, an error:
@@ -72,12 +72,15 @@ def _box_corners(bounds) -> np.ndarray:
 class _Report:
     """Collects diagnostics with the camera's line."""
 
-    def __init__(self, line: int | None) -> None:
+    def __init__(self, line: int | None, column: int | None = None) -> None:
         self.line = line
+        self.column = column
         self.items: list[Diagnostic] = []
 
     def __call__(self, code: str, message: str) -> None:
-        self.items.append(Diagnostic(code, CAMERA_CODES[code][0], message, None, self.line))
+        self.items.append(
+            Diagnostic(code, CAMERA_CODES[code][0], message, None, self.line, self.column)
+        )
 
     def error_count(self) -> int:
         return sum(1 for d in self.items if d.severity == ERROR)
@@ -86,7 +89,7 @@ class _Report:
 def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagnostic]:
     """Every problem of ``camera`` for a ``width`` x ``height`` viewport (and, when given, the
     scene's world AABB ``bounds`` = (min, max)). Never raises."""
-    report = _Report(getattr(camera, "line", None))
+    report = _Report(getattr(camera, "line", None), getattr(camera, "column", None))
     with np.errstate(all="ignore"):
         try:
             _check(camera, width, height, bounds, report)

@@ -36,8 +36,11 @@ CHECK_CODES: dict[str, tuple[str, str]] = {
 }
 
 
-def _diag(code: str, message: str, file: str | None, line: int | None) -> Diagnostic:
-    return Diagnostic(code, CHECK_CODES[code][0], message, file, line, None if line is None else 1)
+def _diag(code: str, message: str, file: str | None, where) -> Diagnostic:
+    """A finding located at ``where``: a scene object with ``line``/``column`` (or None)."""
+    line = getattr(where, "line", None)
+    column = getattr(where, "column", None) if line is not None else None
+    return Diagnostic(code, CHECK_CODES[code][0], message, file, line, column)
 
 
 def _label(model: Model, index: int) -> str:
@@ -47,11 +50,11 @@ def _label(model: Model, index: int) -> str:
 def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]:
     out: list[Diagnostic] = []
     label = _label(model, index)
-    line = model.line if model.line is not None else model.mesh.line
+    where = model if model.line is not None else model.mesh
     if model.mesh.triangle_count == 0:
         n = int(model.mesh.positions.shape[0])
         out.append(
-            _diag("CHK001", f"{label} has no triangles ({n} positions): draws nothing", file, line)
+            _diag("CHK001", f"{label} has no triangles ({n} positions): draws nothing", file, where)
         )
     if not model.material and not model.back_material:
         out.append(
@@ -59,7 +62,7 @@ def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]
                 "CHK005",
                 f"{label} has neither Material nor BackMaterial: draws nothing",
                 file,
-                line,
+                where,
             )
         )
     for which, passes in (("Material", model.material), ("BackMaterial", model.back_material)):
@@ -72,7 +75,7 @@ def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]
                         f"{kind} in {label}'s {which} has no Brush: it draws nothing "
                         "(Color only multiplies the brush)",
                         file,
-                        p.line if p.line is not None else line,
+                        p if p.line is not None else where,
                     )
                 )
     return out
@@ -106,7 +109,7 @@ def _check_lights(vp: Viewport, file: str | None) -> list[Diagnostic]:
                     "materials render opaque black (add e.g. <AmbientLight/> or a "
                     "<DirectionalLight/>)",
                     file,
-                    vp.line,
+                    vp,
                 )
             ]
         return []
@@ -122,7 +125,7 @@ def _check_lights(vp: Viewport, file: str | None) -> list[Diagnostic]:
                 f"viewport {vp.index} has only AmbientLight: surfaces are lit evenly, without "
                 "shading (and specular materials show nothing)",
                 file,
-                vp.line,
+                vp,
             )
         ]
     return []
@@ -181,13 +184,13 @@ def _check_visibility(vp: Viewport, file: str | None) -> list[Diagnostic]:
 
 def _not_seen(vp: Viewport, file: str | None) -> Diagnostic:
     cam = vp.camera
-    line = getattr(cam, "line", None) if cam is not None else None
+    located = cam is not None and getattr(cam, "line", None) is not None
     return _diag(
         "CHK003",
         f"the camera of viewport {vp.index} sees none of its {vp.triangle_count} triangle(s): "
         "each lies outside the view volume (render with --fit to frame the scene)",
         file,
-        line if line is not None else vp.line,
+        cam if located else vp,
     )
 
 
@@ -196,7 +199,7 @@ def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     out: list[Diagnostic] = []
     if not vp.models:
         out.append(
-            _diag("CHK006", f"viewport {vp.index} holds no models: it draws nothing", file, vp.line)
+            _diag("CHK006", f"viewport {vp.index} holds no models: it draws nothing", file, vp)
         )
     for i, model in enumerate(vp.models):
         out.extend(_check_model(model, i, file))

@@ -57,6 +57,7 @@ class SolidColorBrush:
     color: RGBA = TRANSPARENT
     opacity: float = 1.0
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -71,6 +72,7 @@ class LinearGradientBrush:
     transform: np.ndarray | None = None  # Brush.Transform, 3x3
     relative_transform: np.ndarray | None = None  # Brush.RelativeTransform, 3x3
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -87,6 +89,7 @@ class RadialGradientBrush:
     transform: np.ndarray | None = None
     relative_transform: np.ndarray | None = None
     line: int | None = None
+    column: int | None = None
 
 
 def placeholder_image(size: int = 64, cells: int = 8) -> np.ndarray:
@@ -124,6 +127,7 @@ class ImageBrush:
     relative_transform: np.ndarray | None = None
     is_placeholder: bool = False
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -135,6 +139,7 @@ class PlaceholderBrush:
     color: RGBA = PLACEHOLDER
     opacity: float = 1.0
     line: int | None = None
+    column: int | None = None
 
 
 Brush = SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush | PlaceholderBrush
@@ -151,6 +156,7 @@ class DiffuseMaterial:
     color: RGBA = WHITE
     ambient_color: RGBA = WHITE
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -159,6 +165,7 @@ class SpecularMaterial:
     color: RGBA = WHITE
     specular_power: float = 40.0
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -166,6 +173,7 @@ class EmissiveMaterial:
     brush: Brush | None = None
     color: RGBA = WHITE
     line: int | None = None
+    column: int | None = None
 
 
 MaterialPass = DiffuseMaterial | SpecularMaterial | EmissiveMaterial
@@ -182,6 +190,7 @@ class AmbientLight:
     world: np.ndarray = field(default_factory=identity)
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -191,6 +200,7 @@ class DirectionalLight:
     world: np.ndarray = field(default_factory=identity)
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -204,6 +214,7 @@ class PointLight:
     world: np.ndarray = field(default_factory=identity)
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -220,6 +231,7 @@ class SpotLight:
     world: np.ndarray = field(default_factory=identity)
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 Light = AmbientLight | DirectionalLight | PointLight | SpotLight
@@ -243,6 +255,7 @@ class Mesh:
     normals: np.ndarray
     texcoords: np.ndarray
     line: int | None = None
+    column: int | None = None
 
     @property
     def triangle_count(self) -> int:
@@ -259,6 +272,7 @@ class Model:
     world: np.ndarray = field(default_factory=identity)
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 # --------------------------------------------------------------------------- cameras
@@ -276,6 +290,7 @@ class PerspectiveCamera:
     transform: np.ndarray = field(default_factory=identity)  # Camera.Transform, column convention
     name: str | None = None
     line: int | None = None
+    column: int | None = None
     is_default: bool = False  # True when the markup gave no camera and WPF's default is used
 
 
@@ -290,6 +305,7 @@ class OrthographicCamera:
     transform: np.ndarray = field(default_factory=identity)
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -302,6 +318,7 @@ class MatrixCamera:
     transform: np.ndarray = field(default_factory=identity)  # column convention
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
@@ -317,6 +334,7 @@ class KeyFrame:
     value: object
     key_spline: tuple[float, float, float, float] | None = None
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -338,6 +356,7 @@ class Animation:
     fill_behavior: str = "HoldEnd"
     speed_ratio: float = 1.0
     line: int | None = None
+    column: int | None = None
 
 
 @dataclass(frozen=True)
@@ -347,6 +366,7 @@ class Storyboard:
     starts_at_load: bool = False
     name: str | None = None
     line: int | None = None
+    column: int | None = None
 
 
 # --------------------------------------------------------------------------- viewport & scene
@@ -367,6 +387,7 @@ class Viewport:
     background: Brush | None = None  # the 2D background beneath (usually None: transparent)
     clip_to_bounds: bool = True
     line: int | None = None
+    column: int | None = None
 
     @property
     def triangle_count(self) -> int:

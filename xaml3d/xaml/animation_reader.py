@@ -70,7 +70,7 @@ def read_storyboard(r, el, trigger: str | None = None, name: str | None = None) 
         trigger=trigger,
         starts_at_load=starts,
         name=name or element_name(el) or x_attr(el, "Key"),
-        line=el.sourceline,
+        **r.ctx.position(el),
     )
 
 
@@ -121,7 +121,7 @@ def _flatten(r, el, inherited: dict, out: list, top: bool = False) -> None:
                 "FillBehavior", lambda s: V.parse_enum(s, ("HoldEnd", "Stop")), "HoldEnd"
             ),  # fmt: skip
             speed_ratio=p.value("SpeedRatio", V.parse_double, 1.0),
-            line=el.sourceline,
+            **r.ctx.position(el),
         )
     )
 
@@ -147,7 +147,7 @@ def _key_frame(r, el, vtype: str) -> KeyFrame | None:
         key_time=key_time,
         value=_read_value(r, p, "Value", vtype),
         key_spline=p.value("KeySpline", V.parse_key_spline, None) if kind == "Spline" else None,
-        line=el.sourceline,
+        **r.ctx.position(el),
     )
 
 

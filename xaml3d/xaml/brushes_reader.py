@@ -61,7 +61,7 @@ def _common(r, p) -> dict:
         "opacity": p.value("Opacity", V.parse_double, 1.0),
         "transform": p.obj("Transform", lambda el: transform2d(r, el), None),
         "relative_transform": p.obj("RelativeTransform", lambda el: transform2d(r, el), None),
-        "line": p.el.sourceline,
+        **r.ctx.position(p.el),
     }
 
 
@@ -100,6 +100,7 @@ def brush(r, el):
             color=p.value("Color", V.parse_color, (1.0, 1.0, 1.0, 0.0)),
             opacity=c["opacity"],
             line=c["line"],
+            column=c["column"],
         )
     if t in ("LinearGradientBrush", "RadialGradientBrush"):
         common = dict(
@@ -129,7 +130,7 @@ def brush(r, el):
     if t in ("VisualBrush", "DrawingBrush", "BitmapCacheBrush"):
         r.ctx.diag("BRU001", f"{t} content cannot be drawn: a neutral placeholder is used", el)
         return PlaceholderBrush(
-            kind=t, opacity=p.value("Opacity", V.parse_double, 1.0), line=el.sourceline
+            kind=t, opacity=p.value("Opacity", V.parse_double, 1.0), **r.ctx.position(el)
         )
     r.ctx.diag("XAML013", f"{t} is not a Brush: ignored", el)
     return None
@@ -238,7 +239,7 @@ def material(r, el) -> tuple:
                 brush=brush_property(r, p, "Brush"),
                 color=p.value("Color", V.parse_color, white),
                 ambient_color=p.value("AmbientColor", V.parse_color, white),
-                line=el.sourceline,
+                **r.ctx.position(el),
             ),
         )
     if t == "SpecularMaterial":
@@ -247,7 +248,7 @@ def material(r, el) -> tuple:
                 brush=brush_property(r, p, "Brush"),
                 color=p.value("Color", V.parse_color, white),
                 specular_power=p.value("SpecularPower", V.parse_double, 40.0),
-                line=el.sourceline,
+                **r.ctx.position(el),
             ),
         )
     if t == "EmissiveMaterial":
@@ -255,7 +256,7 @@ def material(r, el) -> tuple:
             EmissiveMaterial(
                 brush=brush_property(r, p, "Brush"),
                 color=p.value("Color", V.parse_color, white),
-                line=el.sourceline,
+                **r.ctx.position(el),
             ),
         )
     r.ctx.diag("XAML013", f"{t} is not a Material: ignored", el)

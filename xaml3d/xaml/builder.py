@@ -136,7 +136,7 @@ def _geometry_model(r: Reader, p: Props, parent: np.ndarray, acc: _Acc) -> None:
         r.ctx.diag("SCN011", "GeometryModel3D without Material draws nothing", el)
     world = T.compose(transform_property(r, p), parent)
     acc.models.append(
-        Model(m, tuple(mat or ()), tuple(back or ()), world, element_name(el), el.sourceline)
+        Model(m, tuple(mat or ()), tuple(back or ()), world, element_name(el), **r.ctx.position(el))
     )
 
 
@@ -167,12 +167,12 @@ def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
     m = p.obj("Geometry", lambda e: mesh(r, e), None)
     if m is None:
         return
-    placeholder = PlaceholderBrush(kind="Viewport2DVisual3D", line=el.sourceline)
+    placeholder = PlaceholderBrush(kind="Viewport2DVisual3D", **r.ctx.position(el))
     mat = p.obj("Material", lambda e: material(r, e), ()) or ()
     mat = tuple(replace(x, brush=placeholder) for x in mat) or (
-        DiffuseMaterial(brush=placeholder, line=el.sourceline),
+        DiffuseMaterial(brush=placeholder, **r.ctx.position(el)),
     )
-    acc.models.append(Model(m, mat, (), world, element_name(el), el.sourceline))
+    acc.models.append(Model(m, mat, (), world, element_name(el), **r.ctx.position(el)))
 
 
 # --------------------------------------------------------------------------- viewports
@@ -261,7 +261,7 @@ def build_viewport(r: Reader, el, index: int) -> Viewport:
         lights=tuple(acc.lights),
         background=background,
         clip_to_bounds=p.value("ClipToBounds", parse_bool, True),
-        line=el.sourceline,
+        **r.ctx.position(el),
     )
 
 

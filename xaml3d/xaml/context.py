@@ -86,6 +86,12 @@ class ReadContext:
         where = doc.locate(el, attr) if doc is not None else None
         return where if where is not None else (el.sourceline, None)
 
+    def position(self, el: etree._Element) -> dict:
+        """``line=`` and ``column=`` of an element's start tag, for the scene objects it makes
+        (so camera, model and light checks point at the same place the reader's do)."""
+        line, column = self.locate(el)
+        return {"line": line, "column": column}
+
     def diag(
         self,
         code: str,

@@ -113,7 +113,7 @@ def camera(r, el):
     p = r.props(el)
     t = p.type
     d = V.parse_double
-    common = dict(transform=transform_property(r, p), name=element_name(el), line=el.sourceline)
+    common = dict(transform=transform_property(r, p), name=element_name(el), **r.ctx.position(el))
     if t in ("PerspectiveCamera", "OrthographicCamera"):
         frame = dict(
             position=p.value("Position", V.parse_point3d, (0.0, 0.0, 0.0)),
@@ -163,7 +163,7 @@ def mesh(r, el):
         p.value("TriangleIndices", V.parse_int32_collection, None),
         p.value("Normals", V.parse_vector3d_collection, None),
         p.value("TextureCoordinates", V.parse_point_collection, None),
-        line=el.sourceline,
+        line=r.ctx.position(el)["line"],
     )
     for dg in diags:
         attr = _MESH_ATTRS.get(dg.code)
@@ -186,7 +186,7 @@ def light(r, el, parent_world: np.ndarray):
         color=p.value("Color", V.parse_color, WHITE),
         world=T.compose(transform_property(r, p), parent_world),
         name=element_name(el),
-        line=el.sourceline,
+        **r.ctx.position(el),
     )
     if t == "AmbientLight":
         return AmbientLight(**common)
