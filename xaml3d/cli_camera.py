@@ -15,7 +15,14 @@ import math
 import click
 import numpy as np
 
-from xaml3d.cli_common import describe_os_error, display_name, io_error, load_scene, render_size
+from xaml3d.cli_common import (
+    describe_os_error,
+    display_name,
+    io_error,
+    load_scene,
+    render_size,
+    resources_option,
+)
 from xaml3d.errors import XamlError
 from xaml3d.scene.types import MatrixCamera
 
@@ -213,13 +220,7 @@ Examples:
     metavar="X,Y,Z",
     help="World point to locate (repeatable).",
 )
-@click.option(
-    "-r",
-    "--resources",
-    multiple=True,
-    metavar="FILE",
-    help="Extra resource dictionary (repeatable).",
-)
+@resources_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
 def camera_command(scene, viewport, width, height, scale, fit, points, resources, as_json) -> None:
     from xaml3d.scene.camera_math import camera_pipeline

@@ -124,3 +124,13 @@ def stderr_is_terminal() -> bool:
         return sys.stderr.isatty()
     except (AttributeError, ValueError):
         return False
+
+
+# The -r option every command shares: application resource dictionaries (App.xaml and the like).
+resources_option = click.option(
+    "-r",
+    "--resources",
+    multiple=True,
+    metavar="FILE",
+    help="Extra resource dictionary (repeatable), like App.xaml.",
+)

@@ -8,7 +8,13 @@ from collections import Counter
 
 import click
 
-from xaml3d.cli_common import describe_os_error, display_name, io_error, load_scene
+from xaml3d.cli_common import (
+    describe_os_error,
+    display_name,
+    io_error,
+    load_scene,
+    resources_option,
+)
 from xaml3d.errors import SEVERITIES, XamlError
 from xaml3d.scene.types import Scene
 
@@ -92,13 +98,7 @@ Examples:
 
 @click.command("info", help=HELP, short_help="Summarize what a scene holds.")
 @click.argument("scene", metavar="SCENE")
-@click.option(
-    "-r",
-    "--resources",
-    multiple=True,
-    metavar="FILE",
-    help="Extra resource dictionary (repeatable).",
-)
+@resources_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def info_command(scene, resources, as_json) -> None:
     name = display_name(scene)

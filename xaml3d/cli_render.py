@@ -24,6 +24,7 @@ from xaml3d.cli_common import (
     io_error,
     load_scene,
     render_size,
+    resources_option,
     same_file,
     stderr_is_terminal,
     with_file,
@@ -253,13 +254,7 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 @click.option(
     "--viewport", metavar="INDEX|NAME", help="Which Viewport3D to render (default: the first)."
 )
-@click.option(
-    "-r",
-    "--resources",
-    multiple=True,
-    metavar="FILE",
-    help="Extra resource dictionary (repeatable), like App.xaml.",
-)
+@resources_option
 @click.option(
     "--fit", is_flag=True, help="Move the camera (same direction) so the whole scene is framed."
 )

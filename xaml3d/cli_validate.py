@@ -17,6 +17,7 @@ from xaml3d.cli_common import (
     display_name,
     load_scene,
     render_size,
+    resources_option,
     with_file,
 )
 from xaml3d.errors import ERROR, SEVERITIES, WARNING, Diagnostic, XamlError
@@ -87,13 +88,7 @@ Exit status: 0 no errors, 1 errors (or warnings with --strict), 2 usage error.
 
 @click.command("validate", help=HELP)
 @click.argument("scenes", nargs=-1, required=True, metavar="SCENE...")
-@click.option(
-    "-r",
-    "--resources",
-    multiple=True,
-    metavar="FILE",
-    help="Extra resource dictionary (repeatable).",
-)
+@resources_option
 @click.option(
     "--format",
     "fmt",

@@ -280,32 +280,29 @@ class Model:
 
 
 @dataclass(frozen=True)
-class PerspectiveCamera:
+class ProjectionCamera:
+    """What PerspectiveCamera and OrthographicCamera share (WPF's ProjectionCamera)."""
+
     position: Vec3 = (0.0, 0.0, 0.0)
     look_direction: Vec3 = (0.0, 0.0, -1.0)
     up_direction: Vec3 = (0.0, 1.0, 0.0)
     near_plane_distance: float = 0.125
     far_plane_distance: float = math.inf
-    field_of_view: float = 45.0  # horizontal, degrees
     transform: np.ndarray = field(default_factory=identity)  # Camera.Transform, column convention
     name: str | None = None
     line: int | None = None
     column: int | None = None
+
+
+@dataclass(frozen=True)
+class PerspectiveCamera(ProjectionCamera):
+    field_of_view: float = 45.0  # horizontal, degrees
     is_default: bool = False  # True when the markup gave no camera and WPF's default is used
 
 
 @dataclass(frozen=True)
-class OrthographicCamera:
-    position: Vec3 = (0.0, 0.0, 0.0)
-    look_direction: Vec3 = (0.0, 0.0, -1.0)
-    up_direction: Vec3 = (0.0, 1.0, 0.0)
-    near_plane_distance: float = 0.125
-    far_plane_distance: float = math.inf
+class OrthographicCamera(ProjectionCamera):
     width: float = 2.0
-    transform: np.ndarray = field(default_factory=identity)
-    name: str | None = None
-    line: int | None = None
-    column: int | None = None
 
 
 @dataclass(frozen=True)
