@@ -129,3 +129,17 @@ def test_ssaa_default_and_depth():
     assert r.rgba.shape == (48, 64, 4)
     assert np.isinf(r.depth[0, 0]) and 0.0 <= r.depth[24, 32] <= 1.0
     assert api.MAX_SUPERSAMPLED_PIXELS >= 1920 * 1080 * 16
+
+
+def test_emissive_over_transparent_background_stays_visible():
+    # An emissive-only pass adds rgb with alpha 0. Premultiplied (0, 0.5, 0, 0) cannot be stored
+    # as straight alpha; alpha is raised to the largest channel: (0, 255, 0) at alpha 128, which
+    # composited over black gives back exactly (0, 128, 0).
+    from xaml3d.render.frame import to_straight_uint8
+
+    planes = np.zeros((4, 1, 2), dtype=np.float32)
+    planes[:, 0, 0] = (0.0, 0.5, 0.0, 0.0)  # added light over transparency
+    planes[:, 0, 1] = (0.25, 0.0, 0.0, 0.5)  # an ordinary translucent pixel is unchanged
+    out = to_straight_uint8(planes)
+    assert out[0, 0].tolist() == [0, 255, 0, 128]
+    assert out[0, 1].tolist() == [128, 0, 0, 128]

@@ -171,9 +171,16 @@ class Framebuffer:
 
 
 def to_straight_uint8(premul: np.ndarray) -> np.ndarray:
-    """Premultiplied float planes (4, H, W) -> straight-alpha uint8 (H, W, 4), rounded."""
+    """Premultiplied float planes (4, H, W) -> straight-alpha uint8 (H, W, 4), rounded.
+
+    A pixel whose premultiplied colour exceeds its alpha (added light over transparency) gets
+    alpha = its largest channel, so the emitted colour shows instead of vanishing."""
     premul = np.asarray(premul, dtype=np.float32)
-    a = np.clip(premul[3], 0.0, 1.0)
+    # Emissive and specular passes ADD light with alpha 0 (wpf3d.md section 6): over a
+    # transparent background that leaves "luminous" pixels whose colour exceeds their alpha,
+    # which straight alpha cannot hold. Raising alpha to the largest channel keeps the colour
+    # and is exact over black (and any dark backdrop WPF typically composites onto).
+    a = np.clip(np.maximum(premul[3], premul[:3].max(axis=0)), 0.0, 1.0)
     scale = np.zeros_like(a)
     np.divide(255.0, a, out=scale, where=a > 0.0)  # un-premultiply; empty pixels stay 0
     out = np.empty(a.shape + (4,), dtype=np.uint8)
