@@ -36,13 +36,9 @@ def contact_sheet(results, path: Path) -> None:
         x, y = (k % cols) * THUMB[0], (k // cols) * (THUMB[1] + 16)
         thumb = img.copy()
         thumb.thumbnail(THUMB)
-        # A checkerboard shows what is transparent.
-        bg = Image.new("RGB", thumb.size, (230, 230, 230))
-        bd = ImageDraw.Draw(bg)
-        for i in range(0, thumb.size[0], 8):
-            for j in range(0, thumb.size[1], 8):
-                if (i // 8 + j // 8) % 2:
-                    bd.rectangle([i, j, i + 7, j + 7], fill=(200, 200, 200))
+        # A flat blue-grey backdrop shows what is transparent (a checkerboard would be confused
+        # with the grey checker that stands in for missing images).
+        bg = Image.new("RGB", thumb.size, (176, 196, 222))
         bg.paste(thumb, (0, 0), thumb)
         sheet.paste(bg, (x, y + 16))
         draw.text((x + 2, y + 2), name[:38], fill=(0, 0, 0))
