@@ -143,3 +143,20 @@ def test_emissive_over_transparent_background_stays_visible():
     out = to_straight_uint8(planes)
     assert out[0, 0].tolist() == [0, 255, 0, 128]
     assert out[0, 1].tolist() == [128, 0, 0, 128]
+
+
+def test_saved_file_gets_the_usual_mode(tmp_path):
+    # The atomic write goes through a 0600 temporary file; the result must have the mode a
+    # plain open() gives: 0666 minus the umask (0644 under umask 022).
+    import os
+
+    from PIL import Image
+
+    from xaml3d.render.api import save_image
+
+    old = os.umask(0o022)
+    try:
+        save_image(Image.new("RGBA", (2, 2)), tmp_path / "a.png")
+    finally:
+        os.umask(old)
+    assert (tmp_path / "a.png").stat().st_mode & 0o777 == 0o644

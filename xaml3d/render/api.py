@@ -166,6 +166,12 @@ def render(scene_or_path, width: int | None = None, height: int | None = None, *
     return render_arrays(scene_or_path, width, height, **options).image()
 
 
+def _current_umask() -> int:
+    mask = os.umask(0o022)  # reading the umask means setting it; put it straight back
+    os.umask(mask)
+    return mask
+
+
 def save_image(image, path, format: str | None = None, background=None) -> None:
     """Write ``image`` (Pillow image or (H, W, 4) uint8 array) to ``path`` atomically.
 
@@ -202,6 +208,8 @@ def save_image(image, path, format: str | None = None, background=None) -> None:
             image.save(fh, format=fmt)
             fh.flush()
             os.fsync(fh.fileno())
+        # mkstemp creates the file 0600; give it the mode a plain open() would have.
+        os.chmod(tmp, 0o666 & ~_current_umask())
         os.replace(tmp, path)
     except BaseException as exc:
         try:
