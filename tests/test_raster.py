@@ -113,3 +113,15 @@ def test_fragments_in_triangle_order():
     _, frags = coverage(tris, budget=5)
     t = np.concatenate([f.tri for f in frags])
     assert (np.diff(t) >= 0).all() and set(t.tolist()) == {0, 1, 2}
+
+
+def test_constant_depth_is_exact_at_every_pixel():
+    # A triangle whose three vertices share one depth must give exactly that depth everywhere
+    # (not merely within rounding): coplanar surfaces then tie exactly, and the depth test's
+    # "later draw wins ties" holds between different triangulations of the same plane.
+    z = 0.1 + 0.2  # 0.30000000000000004: not a friendly binary fraction
+    xy = np.array([[[0.3, 0.7], [61.9, 2.2], [17.1, 45.6]], [[3.0, 40.0], [60.0, 47.0], [50, 1.0]]])
+    depth = np.full((2, 3), z)
+    frags = list(rasterize(xy, depth, 64, 48, inv_w=np.array([[1.0, 0.5, 0.25]] * 2)))
+    d = np.concatenate([f.depth for f in frags])
+    assert d.size > 500 and (d == z).all()

@@ -155,9 +155,14 @@ def rasterize(
         v = (e + 2) % 3  # the vertex opposite edge e
         S[:, v] = (A[item_tri, e] * px0 + B[item_tri, e] * py + C[item_tri, e]) * inv_area
         G[:, v] = (A[item_tri, e] * SUBPIXEL) * inv_area
+    # Depth relative to vertex 0: z0 + sum lam_v (z_v - z0). A triangle of constant depth then
+    # gets exactly that depth at every pixel (sum lam_v == 1 only up to rounding), so coplanar
+    # surfaces of equal depth tie exactly and the later draw wins, as the depth test intends.
     zi = z_t[item_tri]
-    dS = np.einsum("ij,ij->i", S, zi)
-    dG = np.einsum("ij,ij->i", G, zi)
+    z0 = zi[:, 0]
+    dz = zi - z0[:, None]
+    dS = z0 + np.einsum("ij,ij->i", S, dz)
+    dG = np.einsum("ij,ij->i", G, dz)
     pix0 = row * width + lo
 
     ends = np.cumsum(span)
