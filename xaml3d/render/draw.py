@@ -113,7 +113,9 @@ def _unit_rows(v: np.ndarray) -> np.ndarray:
     return np.where(ok, v / np.where(ok, length, 1.0), 0.0)
 
 
-def side_fragments(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext, budget=None):
+def side_fragments(
+    pm: PreparedModel, tris: np.ndarray, ctx: DrawContext, budget=None, weights: bool = True
+):
     """Fragments of the triangles ``tris`` (indices into the mesh's triangle list) in triangle
     order; ``weights`` are the perspective-correct weights on the ORIGINAL three vertices and
     ``tri`` is the original triangle index. Fragments beyond the far plane are dropped.
@@ -161,11 +163,11 @@ def side_fragments(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext, budget
         src = tris[order_key[order]]
         piece = np.concatenate([np.full(keep.size, -1), np.arange(csrc.size)])[order]
     kw = {} if budget is None else {"budget": budget}
-    for frag in rasterize(xy, d, ctx.width, ctx.height, q, **kw):
+    for frag in rasterize(xy, d, ctx.width, ctx.height, q, weights=weights, **kw):
         keep_f = frag.depth <= 1.0
         if not keep_f.all():
             frag = frag.select(keep_f)
-        if piece is not None:
+        if piece is not None and frag.weights is not None:
             pc = piece[frag.tri]
             m = pc >= 0
             if m.any():
@@ -237,7 +239,9 @@ def draw_model(fb: Framebuffer, pm: PreparedModel, lights, ctx: DrawContext, mod
         if not passes or tris.size == 0:
             continue
         shaders = [PassShader(pm, p, sign, lights, flat, faces) for p in passes]
-        frags = side_fragments(pm, tris, ctx)
+        # Flat colours with uniform brushes are per triangle: no weights to interpolate.
+        need_weights = not (flat and all(sh.uniform for sh in shaders))
+        frags = side_fragments(pm, tris, ctx, weights=need_weights)
         if len(shaders) == 1:  # stream: no need to keep the fragments
             for frag in frags:
                 _blend(fb, passes[0], frag, shaders[0](frag))

@@ -47,13 +47,14 @@ class Fragments:
     pixel: np.ndarray
     depth: np.ndarray
     tri: np.ndarray
-    weights: np.ndarray
+    weights: np.ndarray | None  # None when the caller asked for none (nothing to interpolate)
 
     def __len__(self) -> int:
         return int(self.pixel.shape[0])
 
     def select(self, mask: np.ndarray) -> Fragments:
-        return Fragments(self.pixel[mask], self.depth[mask], self.tri[mask], self.weights[mask])
+        w = None if self.weights is None else self.weights[mask]
+        return Fragments(self.pixel[mask], self.depth[mask], self.tri[mask], w)
 
 
 def _ceil_div(a: np.ndarray, b: int) -> np.ndarray:
@@ -67,6 +68,7 @@ def rasterize(
     height: int,
     inv_w: np.ndarray | None = None,
     budget: int = DEFAULT_BUDGET,
+    weights: bool = True,
 ) -> Iterator[Fragments]:
     """Yield the fragments of triangles ``xy`` (T, 3, 2) in pixel coordinates.
 
@@ -74,6 +76,8 @@ def rasterize(
     ``inv_w`` (T, 3) (affine when ``inv_w`` is None). Either winding is accepted; degenerate
     (zero snapped area) and non-finite triangles produce nothing. Pixel centres exactly on an edge
     belong to the triangle only if the edge is a top or a left edge (Direct3D's rule).
+    With ``weights=False`` the fragments carry no weights (flat colours per triangle need none,
+    and computing them is a large share of the per-fragment work).
     """
     xy = np.asarray(xy, dtype=np.float64)
     t_count = xy.shape[0]
@@ -178,9 +182,11 @@ def rasterize(
         t = item_tri[sl][it]
         d = dS[sl][it] + dG[sl][it] * kcol
         pix = pix0[sl][it] + kcol.astype(np.int64)
-        lam = S[sl][it] + G[sl][it] * kcol[:, None]
-        if q_t is not None:
-            lam *= q_t[t]
-            lam /= lam.sum(axis=1, keepdims=True)
+        lam = None
+        if weights:
+            lam = S[sl][it] + G[sl][it] * kcol[:, None]
+            if q_t is not None:
+                lam *= q_t[t]
+                lam /= lam.sum(axis=1, keepdims=True)
         yield Fragments(pixel=pix, depth=d, tri=tris[t], weights=lam)
         start = stop

@@ -140,7 +140,7 @@ def draw_wireframe(
     limit = None
     if not hidden_lines:
         for pm in prepared:
-            for frag in side_fragments(pm, _drawn_triangles(pm), ctx):
+            for frag in side_fragments(pm, _drawn_triangles(pm), ctx, weights=False):
                 fb.depth_only(frag.pixel, frag.depth)
         limit = _dilate_max(fb.depth, fb.width, fb.height, ssaa) + 1e-9
     fixed = None
