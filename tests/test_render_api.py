@@ -160,3 +160,15 @@ def test_saved_file_gets_the_usual_mode(tmp_path):
     finally:
         os.umask(old)
     assert (tmp_path / "a.png").stat().st_mode & 0o777 == 0o644
+
+
+def test_png_compress_level_changes_size_not_pixels(tmp_path):
+    # PNG is lossless at every zlib level: the fast default (1) and the smallest (9) decode to
+    # the same pixels; 9 is no larger. A noisy 64x64 image so that levels actually differ.
+    rng = np.random.default_rng(3)
+    arr = (rng.integers(0, 4, (64, 64, 4)) * 60).astype(np.uint8)
+    save_image(arr, tmp_path / "fast.png")
+    save_image(arr, tmp_path / "small.png", compress_level=9)
+    for name in ("fast.png", "small.png"):
+        assert (np.asarray(Image.open(tmp_path / name)) == arr).all()
+    assert (tmp_path / "small.png").stat().st_size <= (tmp_path / "fast.png").stat().st_size

@@ -18,7 +18,9 @@ from the integer edge inequalities, so only covered pixels are generated, then e
 flat fragment list in chunks of at most ``budget`` fragments. Python only loops over chunks.
 
 Attributes are interpolated perspective-correctly (attr/w and 1/w are affine in screen space);
-depth z' is itself affine in screen space and is interpolated linearly.
+depth z' is itself affine in screen space and is interpolated linearly, from the triangle's plane
+written at a canonical corner, so that the same triangle always gets bit-identical depth (ties
+between repeated draws of one surface then go to the later draw, as the depth test intends).
 """
 
 from __future__ import annotations
@@ -59,6 +61,25 @@ class Fragments:
 
 def _ceil_div(a: np.ndarray, b: int) -> np.ndarray:
     return -((-a) // b)
+
+
+def _depth_planes(X: np.ndarray, Y: np.ndarray, z: np.ndarray):
+    """Per triangle: depth gradient (gx, gy) per sub-pixel unit and the canonical corner
+    (z_r, X_r, Y_r). The corners are taken in (X, Y) lexicographic order, so any listing of the
+    same three vertices gives the same numbers (the snapped X, Y are distinct for a triangle of
+    non-zero area)."""
+    # |X|, |Y| <= 2**29 (MAX_COORD sub-pixels): X * 2**31 + Y orders by X, then Y, in int64.
+    order = np.argsort(X * (1 << 31) + Y, axis=1)
+    Xs = np.take_along_axis(X, order, axis=1)
+    Ys = np.take_along_axis(Y, order, axis=1)
+    zs = np.take_along_axis(z, order, axis=1)
+    dx1, dx2 = Xs[:, 1] - Xs[:, 0], Xs[:, 2] - Xs[:, 0]
+    dy1, dy2 = Ys[:, 1] - Ys[:, 0], Ys[:, 2] - Ys[:, 0]
+    area = (dx1 * dy2 - dx2 * dy1).astype(np.float64)  # exact in int64, never 0 here
+    dz1, dz2 = zs[:, 1] - zs[:, 0], zs[:, 2] - zs[:, 0]
+    gx = (dz1 * dy2 - dz2 * dy1) / area
+    gy = (dz2 * dx1 - dz1 * dx2) / area
+    return gx, gy, zs[:, 0], Xs[:, 0], Ys[:, 0]
 
 
 def rasterize(
@@ -112,18 +133,18 @@ def rasterize(
     # the vertex opposite edge e is E_e / area. Top edge: horizontal, pointing +x; left edge:
     # pointing up (dy < 0) for a positively oriented triangle in y-down coordinates. Such edges
     # own the centres lying on them: the test is E + tl > 0 on integers.
-    A = np.empty((tris.size, 3), dtype=np.int64)
+    # Stored edge-major (3, T) so that one edge's coefficients are contiguous; C already holds
+    # the top-left bias (C + tl), which is all the span solver needs.
+    A = np.empty((3, tris.size), dtype=np.int64)
     B = np.empty_like(A)
     C = np.empty_like(A)
-    TL = np.empty_like(A)
     for e in range(3):
         a, b = e, (e + 1) % 3
         dx = (X[:, b] - X[:, a]) * sgn
         dy = (Y[:, b] - Y[:, a]) * sgn
-        A[:, e] = -dy
-        B[:, e] = dx
-        C[:, e] = dy * X[:, a] - dx * Y[:, a]
-        TL[:, e] = (dy < 0) | ((dy == 0) & (dx > 0))
+        A[e] = -dy
+        B[e] = dx
+        C[e] = dy * X[:, a] - dx * Y[:, a] + ((dy < 0) | ((dy == 0) & (dx > 0)))
 
     # Row spans: for every (triangle, row) the exact range of covered pixel centres, solved from
     # the three integer edge inequalities A px + K > 0 with K = B py + C + tl (floor divisions,
@@ -135,38 +156,53 @@ def rasterize(
     lo = i0[item_tri]
     hi = i1[item_tri]
     for e in range(3):
-        a = A[item_tri, e]
-        kk = B[item_tri, e] * py + C[item_tri, e] + TL[item_tri, e]
-        safe = np.where(a == 0, 1, np.abs(a))
-        lim = (kk - 1) // safe
+        a = A[e][item_tri]
+        kk = B[e][item_tri] * py + C[e][item_tri]
+        lim = (kk - 1) // np.where(a == 0, 1, np.abs(a))
         # a > 0: px >= -lim  -> i >= ceil((-lim - 128) / 256); a < 0: px <= lim -> i <= ...
-        lo = np.where(a > 0, np.maximum(lo, -((lim + HALF) // SUBPIXEL)), lo)
-        hi = np.where(a < 0, np.minimum(hi, (lim - HALF) // SUBPIXEL), hi)
-        hi = np.where((a == 0) & (kk <= 0), lo - 1, hi)
-    span = np.maximum(hi - lo + 1, 0)
-    keep = span > 0
+        np.maximum(lo, np.where(a > 0, -((lim + HALF) // SUBPIXEL), lo), out=lo)
+        np.minimum(hi, np.where(a < 0, (lim - HALF) // SUBPIXEL, hi), out=hi)
+        hi[(a == 0) & (kk <= 0)] = -1  # a horizontal edge with the row outside: nothing
+    span = hi - lo + 1
+    keep = np.flatnonzero(span > 0)
     item_tri, row, lo, span = item_tri[keep], row[keep], lo[keep], span[keep]
     if item_tri.size == 0:
         return
 
-    # Per row item everything is affine in the column offset k: weights lam_v = S_v + G_v k.
     px0 = lo * SUBPIXEL + HALF
     py = row * SUBPIXEL + HALF
-    inv_area = 1.0 / area_t[item_tri]
-    S = np.empty((item_tri.size, 3))
-    G = np.empty((item_tri.size, 3))
-    for e in range(3):
-        v = (e + 2) % 3  # the vertex opposite edge e
-        S[:, v] = (A[item_tri, e] * px0 + B[item_tri, e] * py + C[item_tri, e]) * inv_area
-        G[:, v] = (A[item_tri, e] * SUBPIXEL) * inv_area
-    # Depth relative to vertex 0: z0 + sum lam_v (z_v - z0). A triangle of constant depth then
-    # gets exactly that depth at every pixel (sum lam_v == 1 only up to rounding), so coplanar
-    # surfaces of equal depth tie exactly and the later draw wins, as the depth test intends.
-    zi = z_t[item_tri]
-    z0 = zi[:, 0]
-    dz = zi - z0[:, None]
-    dS = z0 + np.einsum("ij,ij->i", S, dz)
-    dG = np.einsum("ij,ij->i", G, dz)
+    S = G = None
+    if weights:
+        # Per row item the weights are affine in the column offset k: lam_v = S_v + G_v k, with
+        # lam_v = E_e / area for the vertex v opposite edge e (E_e without the top-left bias).
+        inv_area = 1.0 / area_t[item_tri]
+        S = np.empty((item_tri.size, 3))
+        G = np.empty((item_tri.size, 3))
+        for e in range(3):
+            v = (e + 2) % 3
+            a = A[e][item_tri]
+            tl = ((a > 0) | ((a == 0) & (B[e][item_tri] > 0))).astype(np.int64)
+            S[:, v] = (a * px0 + B[e][item_tri] * py + (C[e][item_tri] - tl)) * inv_area
+            G[:, v] = (a * SUBPIXEL) * inv_area
+        if q_t is not None:
+            # Perspective-correct: lam_v ~ (S_v + G_v k) q_v, normalised per fragment. The
+            # factor q_v is folded in per row item, once, rather than per fragment.
+            qi = q_t[item_tri]
+            S *= qi
+            G *= qi
+    # Depth: d = z_r + gx (px - X_r) + gy (py - Y_r), the plane of the triangle written from a
+    # CANONICAL corner r (the smallest (X, Y)), whatever order the mesh lists the vertices in.
+    # The same triangle drawn twice then gets bit-identical depth at every pixel (its spans are
+    # identical too: integer maxima and minima of the same three edges), so the less-or-equal
+    # test gives ties to the later draw. A constant-depth triangle has gx = gy = 0 exactly and
+    # gets exactly its depth everywhere, so coplanar surfaces of equal depth tie exactly as well.
+    gx_t, gy_t, zr_t, xr_t, yr_t = _depth_planes(X, Y, z_t)
+    dS = (
+        zr_t[item_tri]
+        + gy_t[item_tri] * (py - yr_t[item_tri])
+        + gx_t[item_tri] * (px0 - xr_t[item_tri])
+    )
+    dG = gx_t[item_tri] * SUBPIXEL
     pix0 = row * width + lo
 
     ends = np.cumsum(span)
@@ -178,15 +214,14 @@ def rasterize(
         sl = slice(start, stop)
         cnt = span[sl]
         it = np.repeat(np.arange(stop - start), cnt)
-        kcol = (np.arange(it.size) - np.repeat(np.cumsum(cnt) - cnt, cnt)).astype(np.float64)
+        kcol = np.arange(it.size) - np.repeat(np.cumsum(cnt) - cnt, cnt)
         t = item_tri[sl][it]
         d = dS[sl][it] + dG[sl][it] * kcol
-        pix = pix0[sl][it] + kcol.astype(np.int64)
+        pix = pix0[sl][it] + kcol
         lam = None
         if weights:
-            lam = S[sl][it] + G[sl][it] * kcol[:, None]
+            lam = S[sl][it] + G[sl][it] * kcol[:, None].astype(np.float64)
             if q_t is not None:
-                lam *= q_t[t]
-                lam /= lam.sum(axis=1, keepdims=True)
+                lam /= (lam[:, 0] + lam[:, 1] + lam[:, 2])[:, None]
         yield Fragments(pixel=pix, depth=d, tri=tris[t], weights=lam)
         start = stop
