@@ -354,7 +354,10 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "BRU002": (WARNING, "image file not found: a grey checker stands in"),
     "BRU003": (WARNING, "image file cannot be decoded: a grey checker stands in"),
     "BRU004": (WARNING, "network image URI refused: a grey checker stands in"),
-    "BRU005": (WARNING, "image path outside the scene's folder tree refused: a grey checker stands in"),
+    "BRU005": (
+        WARNING,
+        "image path outside the scene's folder tree refused: a grey checker stands in",
+    ),
     "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
     "ANI001": (WARNING, "animation type not evaluated (path animations, 2D targets)"),
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
