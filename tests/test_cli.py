@@ -529,3 +529,47 @@ def test_docs_cli_md_covers_every_command_and_option():
             for opt in param.opts:
                 if opt.startswith("--") and opt != "--help":
                     assert f"`{opt}" in doc or f"{opt}`" in doc or f" {opt}" in doc, (name, opt)
+
+
+def test_render_wireframe_line_options(tmp_path):
+    # Two squares one behind the other (orthographic, 1 unit = 10 px): the back square at z = -1
+    # is twice as big, so only its outline shows around the front square; its diagonal runs
+    # behind the front square. Every edge is drawn by default; --hide-hidden-lines removes the
+    # hidden part of that diagonal; --antialias-lines gives intermediate coverage.
+    back = "-2,-2,-1 2,-1.7,-1 2,2,-1 -2,2,-1"  # a slanted diagonal: partial coverage
+    front = "-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+    models = "".join(
+        f"""<GeometryModel3D><GeometryModel3D.Geometry>
+          <MeshGeometry3D Positions="{p}" TriangleIndices="{t}"/>
+        </GeometryModel3D.Geometry><GeometryModel3D.Material>
+          <DiffuseMaterial Brush="{c}"/></GeometryModel3D.Material></GeometryModel3D>"""
+        # the back square's diagonal runs the other way, so it crosses the front one
+        for p, t, c in ((back, "0 1 3 1 2 3", "Blue"), (front, "0 1 2 0 2 3", "Lime"))
+    )
+    scene = tmp_path / "two.xaml"
+    scene.write_text(
+        f"""<Viewport3D {NS} Width="50" Height="50">
+  <Viewport3D.Camera><OrthographicCamera Position="0,0,5" Width="5"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>{models}</Model3DGroup>
+  </ModelVisual3D.Content></ModelVisual3D></Viewport3D>"""
+    )
+
+    def blue_inside_front(*opts):
+        out = tmp_path / "w.png"
+        result = CliRunner().invoke(
+            main, ["render", str(scene), "-o", str(out), "--mode", "wireframe", *opts]
+        )
+        assert result.exit_code == 0, result.output
+        px = Image.open(out).convert("RGBA").load()
+        # the front square covers pixels 15..34; look strictly inside it, off its own edges
+        inside = [px[i, j] for i in range(17, 33) for j in range(17, 33)]
+        blue = [p for p in inside if p[2] > 0 and p[1] == 0]
+        partial = [p for p in inside if 0 < p[3] < 255]
+        return len(blue), len(partial)
+
+    shown, _ = blue_inside_front()
+    assert shown > 0  # the back diagonal crosses the front square
+    hidden, _ = blue_inside_front("--hide-hidden-lines")
+    assert hidden == 0
+    _, partial = blue_inside_front("--antialias-lines")
+    assert partial > 0

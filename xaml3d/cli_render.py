@@ -51,6 +51,8 @@ class RenderOptions:
     fmt: str | None
     quiet: bool
     verbose: bool
+    hide_hidden_lines: bool = False
+    antialias_lines: bool = False
 
 
 class _Failed(Exception):
@@ -154,6 +156,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             mode=opts.mode,
             background=opts.background,
             ssaa=opts.ssaa,
+            hidden_lines=not opts.hide_hidden_lines,
+            antialias_lines=opts.antialias_lines,
         )
         fresh = [with_file(d, file) for d in result.diagnostics]
         diags.extend(d for d in fresh if d.severity != ERROR)
@@ -245,6 +249,14 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     help="Drawing mode.",
 )
 @click.option(
+    "--hide-hidden-lines",
+    is_flag=True,
+    help="wireframe: draw only the edges the depth buffer shows (default: every edge).",
+)
+@click.option(
+    "--antialias-lines", is_flag=True, help="wireframe: anti-aliased (coverage-blended) lines."
+)
+@click.option(
     "--background",
     metavar="COLOR",
     callback=_parse_background,
@@ -284,6 +296,8 @@ def render_command(
     margin,
     quiet,
     verbose,
+    hide_hidden_lines,
+    antialias_lines,
 ) -> None:
     fmt = fmt.lower() if fmt else None
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
@@ -301,6 +315,8 @@ def render_command(
         fmt,
         quiet,
         verbose,
+        hide_hidden_lines,
+        antialias_lines,
     )
     if directory is not None:
         try:
