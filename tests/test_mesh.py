@@ -167,7 +167,7 @@ def test_face_normals_public_and_extreme_scales():
 
 
 def test_every_mesh_code_is_documented():
-    assert set(MESH_CODES) == {f"MSH00{i}" for i in range(1, 7)}
+    assert set(MESH_CODES) == {f"MSH00{i}" for i in range(1, 8)}
     for severity, meaning in MESH_CODES.values():
         assert severity in ("warning", "info") and meaning
 
@@ -182,3 +182,18 @@ def test_a_million_triangles_build():
     mesh, diags = build_mesh(pos, idx)
     assert mesh.triangle_count == 1_002_528 and diags == []
     assert (mesh.normals == [0, 0, 1]).all()  # every vertex of the flat grid faces +z
+
+
+def test_non_finite_positions_drop_their_triangles():
+    # Vertex 1 is NaN and vertex 4 infinite: triangles (0,1,2) and (3,4,5) are dropped, (6,7,8)
+    # stays; one MSH007 names the count and the first bad position.
+    pos = np.zeros((9, 3))
+    pos[[2, 5, 8], 0] = 1.0
+    pos[[0, 3, 6], 1] = 1.0
+    pos[1, 0] = np.nan
+    pos[4, 2] = np.inf
+    mesh, diags = build_mesh(pos)
+    assert mesh.indices.tolist() == [[6, 7, 8]]
+    [d] = [d for d in diags if d.code == "MSH007"]
+    assert "2 of 9 Positions" in d.message and "#1" in d.message and "2 triangle(s)" in d.message
+    assert np.isfinite(mesh.normals).all()

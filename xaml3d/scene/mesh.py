@@ -32,6 +32,7 @@ MESH_CODES: dict[str, tuple[str, str]] = {
     "MSH004": (WARNING, "TextureCoordinates count differs from Positions count"),
     "MSH005": (INFO, "degenerate (zero-area) triangles: they draw nothing"),
     "MSH006": (WARNING, "the mesh has no triangles to draw"),
+    "MSH007": (WARNING, "NaN or infinite positions: the triangles using them are not drawn"),
 }
 
 
@@ -181,6 +182,22 @@ def build_mesh(
 
     idx = None if indices is None else np.asarray(indices, dtype=np.int64).ravel()
     tri = _triangles(n, idx, line, diags)
+    finite = np.isfinite(p).all(axis=1)
+    if not finite.all():
+        # A NaN or infinite vertex has no place on screen (and would poison the scene's bounds
+        # and every matrix built from them): its triangles are left out, with a warning.
+        bad = ~finite[tri].all(axis=1)
+        first = int(np.flatnonzero(~finite)[0])
+        diags.append(
+            _diag(
+                "MSH007",
+                f"{int(np.count_nonzero(~finite))} of {n} Positions are NaN or infinite "
+                f"(the first is #{first}): {int(np.count_nonzero(bad))} triangle(s) using them "
+                "are not drawn",
+                line,
+            )
+        )
+        tri = tri[~bad]
     if tri.shape[0] == 0:
         diags.append(_diag("MSH006", "MeshGeometry3D has no complete triangle to draw", line))
 

@@ -397,7 +397,11 @@ class Viewport:
             p = m.mesh.positions
             if p.shape[0] == 0 or m.mesh.indices.shape[0] == 0:
                 continue
+            p = p[np.isfinite(p).all(axis=1)]  # non-finite vertices draw nothing (MSH007)
             w = p @ m.world[:3, :3].T + m.world[:3, 3]
+            w = w[np.isfinite(w).all(axis=1)]
+            if w.shape[0] == 0:
+                continue
             a, b = w.min(axis=0), w.max(axis=0)
             lo = a if lo is None else np.minimum(lo, a)
             hi = b if hi is None else np.maximum(hi, b)

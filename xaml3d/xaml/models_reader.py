@@ -144,6 +144,7 @@ _MESH_ATTRS = {
     "MSH002": "TriangleIndices",
     "MSH003": "Normals",
     "MSH004": "TextureCoordinates",
+    "MSH007": "Positions",
 }
 
 
