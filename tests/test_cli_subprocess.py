@@ -81,3 +81,30 @@ def test_camera_point_in_a_real_process(tmp_path):
     p = xaml3d("camera", "s.xaml", "--point", "0,0,0", cwd=tmp_path)
     # The image centre of the 40 x 30 viewport: (20, 15).
     assert p.returncode == 0 and b"point 0,0,0 -> pixel (20, 15)" in p.stdout
+
+
+def test_numeric_overflow_gives_diagnostics_not_numpy_warnings(tmp_path):
+    # Coordinates of 1e300 scaled by 1e300 overflow float64: the model is skipped with a
+    # diagnostic, and stderr holds diagnostic lines only (no RuntimeWarning with source lines).
+    scene = tmp_path / "huge.xaml"
+    scene.write_text(
+        """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    Width="64" Height="48">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-1e300,-1,0 1e300,-1,0 0,1e300,0"/>
+      </GeometryModel3D.Geometry>
+      <GeometryModel3D.Transform><ScaleTransform3D ScaleX="1e300" ScaleY="1e300"/>
+      </GeometryModel3D.Transform>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Lime"/></GeometryModel3D.Material>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>"""
+    )
+    for args in (["render", str(scene), "-o", str(tmp_path / "o.png")], ["validate", str(scene)]):
+        err = xaml3d(*args).stderr.decode()
+        assert "Warning" not in err and "Traceback" not in err, err
+        assert all(": " in line for line in err.splitlines()), err

@@ -30,8 +30,13 @@ Run xaml3d COMMAND --help for each command's options.
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]}, help=HELP)
 @click.version_option(__version__, prog_name="xaml3d")
-def main() -> None:
-    pass
+@click.pass_context
+def main(ctx: click.Context) -> None:
+    import numpy as np
+
+    # Numerical trouble in a scene is reported as diagnostics (CAM, MSH, RND codes); numpy's own
+    # RuntimeWarnings would only add source lines to stderr, which holds diagnostics alone.
+    ctx.with_resource(np.errstate(all="ignore"))
 
 
 main.add_command(render_command)

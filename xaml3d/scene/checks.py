@@ -171,6 +171,8 @@ def _check_visibility(vp: Viewport, file: str | None) -> list[Diagnostic]:
     from xaml3d.scene.camera_math import camera_pipeline
 
     bounds = vp.bounds()
+    if bounds is None:  # every vertex is non-finite in world space: nothing can be seen
+        return []
     try:
         pipe = camera_pipeline(vp.camera, vp.width, vp.height, bounds)
         with np.errstate(all="ignore"):
