@@ -573,3 +573,17 @@ def test_render_wireframe_line_options(tmp_path):
     assert hidden == 0
     _, partial = blue_inside_front("--antialias-lines")
     assert partial > 0
+
+
+def test_camera_point_must_be_finite_and_infinite_far_sees_beyond_the_scene(tmp_path):
+    scene = tmp_path / "sq.xaml"
+    scene.write_text(SQUARE)  # camera at (0,0,5), FarPlaneDistance Infinity (default)
+    bad = CliRunner().invoke(main, ["camera", str(scene), "--point", "nan,0,0"])
+    assert bad.exit_code == 2 and "finite" in bad.output
+    # (0,0,-100) lies far beyond the scene-fitted far plane, yet WPF's far is infinite: visible,
+    # at the image centre (20, 15) of the 40 x 30 viewport.
+    run = CliRunner().invoke(main, ["camera", str(scene), "--json", "--point", "0,0,-100"])
+    assert run.exit_code == 0, run.output
+    [p] = json.loads(run.stdout)["points"]
+    assert p["visible"] and p["reason"] is None
+    assert (p["x"], p["y"]) == pytest.approx((20.0, 15.0), abs=1e-9)

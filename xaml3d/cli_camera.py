@@ -128,11 +128,12 @@ def parse_point(ctx, param, values):
     for text in values:
         parts = [p for p in text.replace(",", " ").split() if p]
         try:
-            if len(parts) != 3:
+            point = tuple(float(p) for p in parts)
+            if len(point) != 3 or not all(math.isfinite(c) for c in point):
                 raise ValueError
-            points.append(tuple(float(p) for p in parts))
+            points.append(point)
         except ValueError:
-            raise click.BadParameter(f"{text!r} is not X,Y,Z (three numbers)") from None
+            raise click.BadParameter(f"{text!r} is not X,Y,Z (three finite numbers)") from None
     return points
 
 
@@ -146,18 +147,21 @@ def locate_points(pipe, points) -> list[dict]:
         pixels, depth, visible = pipe.project(pts)
         h = np.hstack([pts, np.ones((len(pts), 1))]) @ np.asarray(pipe.clip_matrix).T
     out = []
+    beyond_ok = bool(getattr(pipe, "far_is_infinite", False))
     for i, p in enumerate(points):
         x, y, z, w = h[i]
         if w <= 0:
             why = "behind the camera"
         elif z > 0:
             why = "behind the near plane (closer than NearPlaneDistance)"
-        elif z < -w:
+        elif z < -w and not beyond_ok:
             why = "beyond the far plane"
         elif abs(x) > w or abs(y) > w:
             why = "outside the image"
         else:
-            why = None if bool(visible[i]) else "on the edge of the view volume"
+            # With FarPlaneDistance = Infinity the effective far plane only encloses the scene;
+            # WPF draws a point beyond it, so it counts as visible here too (depth z' < -1).
+            why = None if bool(visible[i]) or beyond_ok else "on the edge of the view volume"
         item = {"point": list(p), "visible": why is None, "reason": why}
         if w > 0:
             item.update(x=float(pixels[i, 0]), y=float(pixels[i, 1]), depth=float(depth[i]))
