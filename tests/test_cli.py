@@ -587,3 +587,19 @@ def test_camera_point_must_be_finite_and_infinite_far_sees_beyond_the_scene(tmp_
     [p] = json.loads(run.stdout)["points"]
     assert p["visible"] and p["reason"] is None
     assert (p["x"], p["y"]) == pytest.approx((20.0, 15.0), abs=1e-9)
+
+
+@pytest.mark.parametrize("width", ["0", "-5"])
+def test_empty_viewport_is_an_error_unless_a_size_is_given(tmp_path, width):
+    # WPF draws nothing in a zero-size viewport (a negative one it refuses: SCN012, taken as 0);
+    # validate and render both say CAM010 and exit 1, while an explicit -W/-H still renders.
+    scene = tmp_path / "empty.xaml"
+    scene.write_text(square_scene(size=(width, 30)))
+    run = CliRunner().invoke(main, ["validate", str(scene)])
+    assert run.exit_code == 1 and "CAM010" in run.stdout
+    assert ("SCN012" in run.stdout) == (width == "-5")
+    out = tmp_path / "o.png"
+    run = CliRunner().invoke(main, ["render", str(scene), "-o", str(out)])
+    assert run.exit_code == 1 and "error CAM010" in run.stderr and not out.exists()
+    run = CliRunner().invoke(main, ["render", str(scene), "-o", str(out), "-W", "40", "-H", "30"])
+    assert run.exit_code == 0 and Image.open(out).size == (40, 30)

@@ -234,13 +234,13 @@ def camera_command(scene, viewport, width, height, scale, fit, points, resources
     try:
         sc = load_scene(scene, tuple(resources))
         vp = sc.viewport(viewport)
+        w, h = render_size(vp, width, height, scale)
     except XamlError as exc:
         click.echo(exc.with_location(file=name).format(), err=True)
         ctx.exit(1)
     except (OSError, ValueError) as exc:
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         ctx.exit(1)
-    w, h = render_size(vp, width, height, scale)
     if fit:
         from xaml3d.scene.fit import fit_viewport
 

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import click
 
-from xaml3d.errors import ERROR, INFO, Diagnostic, XamlError
+from xaml3d.errors import ERROR, INFO, CameraError, Diagnostic, XamlError
 from xaml3d.scene.types import Scene, Viewport
 
 STDIN_NAME = "<stdin>"
@@ -95,6 +95,15 @@ def render_size(
     window); one given -> the other follows the viewport's aspect; none -> the viewport's size.
     ``scale`` then multiplies both. Rounded to whole pixels, at least 1."""
     w0, h0 = float(vp.width), float(vp.height)
+    if width is None and height is None and not (w0 > 0 and h0 > 0):
+        # WPF draws nothing in an empty viewport; rendering a 1-pixel sliver would hide that.
+        raise CameraError(
+            f"viewport size {w0:g} x {h0:g} is empty: WPF draws nothing "
+            "(give -W and -H to render at another size)",
+            code="CAM010",
+            line=vp.line,
+            column=vp.column,
+        )
     if width is not None and height is not None:
         w, h = float(width), float(height)
     elif width is not None:

@@ -186,8 +186,16 @@ def _length(r: Reader, p: Props, prop: str) -> float | None:
     from xaml3d.xaml.values import parse_double
 
     v = p.value(prop, parse_double, None)
-    if v is None or not np.isfinite(v) or v <= 0:
+    if v is None or not np.isfinite(v):
         return None
+    if v < 0:
+        # WPF refuses a negative size outright; xaml3d treats it as empty (nothing drawn).
+        r.ctx.diag(
+            "SCN012", f"{p.type}.{prop} = {v:g} is negative (invalid in WPF): taken as 0", p.el,
+            attr=p.attr_keys.get(prop),
+        )  # fmt: skip
+        return 0.0
+    # A zero size is kept: WPF draws nothing there, and the camera check reports it (CAM010).
     return float(v)
 
 

@@ -350,6 +350,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "SCN009": (INFO, "Camera is {x:Null}: the viewport draws nothing"),
     "SCN010": (WARNING, "transform cannot be built: identity used"),
     "SCN011": (INFO, "GeometryModel3D without Material or BackMaterial draws nothing"),
+    "SCN012": (WARNING, "negative Width or Height (invalid in WPF): taken as 0"),
     "BRU001": (WARNING, "VisualBrush/DrawingBrush content drawn as a placeholder"),
     "BRU002": (WARNING, "image file not found: a grey checker stands in"),
     "BRU003": (WARNING, "image file cannot be decoded: a grey checker stands in"),
