@@ -603,3 +603,19 @@ def test_empty_viewport_is_an_error_unless_a_size_is_given(tmp_path, width):
     assert run.exit_code == 1 and "error CAM010" in run.stderr and not out.exists()
     run = CliRunner().invoke(main, ["render", str(scene), "-o", str(out), "-W", "40", "-H", "30"])
     assert run.exit_code == 0 and Image.open(out).size == (40, 30)
+
+
+@pytest.mark.parametrize("target", ["bg.jpg", "-"])
+def test_translucent_background_on_jpeg_is_flattened_once(tmp_path, target):
+    # --background #80FF0000 is red at alpha 128/255; JPEG has no alpha, so the background is
+    # flattened onto white: 255 * (1 - 128/255) = 127 for green and blue (JPEG may move it by 1-2).
+    scene = tmp_path / "sq.xaml"
+    scene.write_text(SQUARE)
+    out = tmp_path / "bg.jpg"
+    args = ["render", str(scene), "--background", "#80FF0000", "--format", "jpeg"]
+    run = CliRunner().invoke(main, [*args, "-o", str(out) if target != "-" else "-"])
+    assert run.exit_code == 0, run.output
+    if target == "-":
+        out.write_bytes(run.stdout_bytes)
+    r, g, b = Image.open(out).getpixel((1, 1))
+    assert r >= 250 and abs(g - 127) <= 3 and abs(b - 127) <= 3

@@ -103,14 +103,12 @@ def _plan(scenes: tuple[str, ...], output: str | None, output_dir: str | None, f
     return [(s, Path(directory) / (stem[s] + suffix)) for s in scenes], Path(directory)
 
 
-def _encode(image, fmt: str, background) -> bytes:
-    """Encode for stdout; JPEG has no alpha, so it is flattened on the background (or white)."""
-    from PIL import Image
+def _encode(image, fmt: str) -> bytes:
+    """Encode for stdout; JPEG and WebP are flattened as ``save_image`` does."""
+    from xaml3d.render.api import flatten
 
-    if fmt == "jpeg" and image.mode != "RGB":
-        bg = background or (1.0, 1.0, 1.0, 1.0)
-        base = Image.new("RGBA", image.size, tuple(round(c * 255) for c in bg[:3]) + (255,))
-        image = Image.alpha_composite(base, image.convert("RGBA")).convert("RGB")
+    if fmt in ("jpeg", "webp"):
+        image = flatten(image)
     buf = io.BytesIO()
     image.save(buf, PIL_FORMATS[fmt])
     return buf.getvalue()
@@ -168,12 +166,13 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             raise _Failed
         image = result.image()
         if target == "-":
-            data = _encode(image, opts.fmt or "png", opts.background)
+            # The render already holds --background (at its alpha): flatten onto white only.
+            data = _encode(image, opts.fmt or "png")
             out = sys.stdout.buffer
             out.write(data)
             out.flush()
         else:
-            save_image(image, target, format=opts.fmt, background=opts.background)
+            save_image(image, target, format=opts.fmt)
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)

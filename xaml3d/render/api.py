@@ -166,6 +166,21 @@ def render(scene_or_path, width: int | None = None, height: int | None = None, *
     return render_arrays(scene_or_path, width, height, **options).image()
 
 
+def flatten(image, background=None):
+    """``image`` composited onto an opaque colour, as RGB, for formats without alpha (JPEG,
+    WebP here). ``background`` is straight RGBA floats (or 0..255 ints), default white; a
+    translucent one is itself flattened onto white first ("#80FF0000" gives a light red)."""
+    from PIL import Image
+
+    bg = (1.0, 1.0, 1.0, 1.0) if background is None else tuple(background)
+    if any(isinstance(v, int) and v > 1 for v in bg):
+        bg = tuple(v / 255.0 for v in bg)
+    a = float(bg[3]) if len(bg) > 3 else 1.0
+    rgb = [float(c) * a + (1.0 - a) for c in bg[:3]]
+    base = Image.new("RGBA", image.size, tuple(int(round(v * 255)) for v in (*rgb, 1.0)))
+    return Image.alpha_composite(base, image.convert("RGBA")).convert("RGB")
+
+
 def _current_umask() -> int:
     mask = os.umask(0o022)  # reading the umask means setting it; put it straight back
     os.umask(mask)
@@ -198,16 +213,12 @@ def save_image(
     if isinstance(image, np.ndarray):
         image = Image.fromarray(image, mode="RGBA")
     if fmt != "PNG":
-        bg = (1.0, 1.0, 1.0, 1.0) if background is None else tuple(background)
-        if any(isinstance(v, int) and v > 1 for v in bg):
-            bg = tuple(v / 255.0 for v in bg)
-        base = Image.new("RGBA", image.size, tuple(int(round(v * 255)) for v in (*bg[:3], 1.0)))
-        image = Image.alpha_composite(base, image.convert("RGBA")).convert("RGB")
+        image = flatten(image, background)
     directory = path.parent if str(path.parent) else Path(".")
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
     except OSError as exc:
-        raise RenderError(f"cannot write {path}: {exc}", code="RND007") from exc
+        raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
     try:
         with os.fdopen(fd, "wb") as fh:
             if fmt == "PNG":
@@ -225,5 +236,5 @@ def save_image(
         except OSError:
             pass
         if isinstance(exc, OSError):
-            raise RenderError(f"cannot write {path}: {exc}", code="RND007") from exc
+            raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
         raise
