@@ -125,3 +125,24 @@ def test_constant_depth_is_exact_at_every_pixel():
     frags = list(rasterize(xy, depth, 64, 48, inv_w=np.array([[1.0, 0.5, 0.25]] * 2)))
     d = np.concatenate([f.depth for f in frags])
     assert d.size > 500 and (d == z).all()
+
+
+def test_row_budget_split_gives_the_same_fragments(monkeypatch):
+    # Many large overlapping triangles exceed the (triangle, row) budget and are set up in
+    # consecutive groups: the fragments must be exactly those of one pass, in the same order.
+    from xaml3d.render import raster as R  # (xaml3d.render is also the function)
+
+    rng = np.random.default_rng(3)
+    xy = rng.uniform(-5, 69, size=(40, 3, 2))
+    depth = rng.uniform(0, 1, size=(40, 3))
+    inv_w = rng.uniform(0.5, 2, size=(40, 3))
+
+    def collect():
+        frags = list(R.rasterize(xy, depth, 64, 48, inv_w))
+        return [np.concatenate([getattr(f, k) for f in frags]) for k in ("pixel", "depth", "tri")]
+
+    whole = collect()
+    monkeypatch.setattr(R, "ROW_BUDGET", 100)  # forces many groups (40 triangles, ~30 rows each)
+    split = collect()
+    for a, b in zip(whole, split, strict=True):
+        assert np.array_equal(a, b)

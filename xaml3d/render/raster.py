@@ -34,6 +34,7 @@ SUBPIXEL = 256  # 8 bits of sub-pixel precision
 HALF = SUBPIXEL // 2
 MAX_COORD = float(2**21)  # pixel coordinates beyond this would overflow the int64 edge math
 DEFAULT_BUDGET = 1 << 16  # fragments per chunk (bounds peak memory)
+ROW_BUDGET = 1 << 20  # (triangle, row) items set up at once (bounds memory under overdraw)
 
 
 @dataclass
@@ -121,6 +122,25 @@ def rasterize(
     tris = np.flatnonzero(ok)
     if tris.size == 0:
         return
+    rows = (j1 - j0 + 1)[tris]
+    if int(rows.sum()) > ROW_BUDGET:
+        # Every (triangle, row) pair is an item with several int64 arrays: many large triangles
+        # (heavy overdraw) would need gigabytes at once. Consecutive groups of triangles with a
+        # bounded row count keep memory bounded; fragments still come in triangle order.
+        group = (np.cumsum(rows) - rows) // ROW_BUDGET
+        cuts = np.flatnonzero(np.diff(group)) + 1
+        if cuts.size:
+            depth_a = np.asarray(depth, dtype=np.float64)
+            inv_a = None if inv_w is None else np.asarray(inv_w, dtype=np.float64)
+            for part in np.split(tris, cuts):
+                sub = rasterize(
+                    xy[part], depth_a[part], width, height,
+                    None if inv_a is None else inv_a[part], budget, weights,
+                )  # fmt: skip
+                for frag in sub:
+                    frag.tri = part[frag.tri]
+                    yield frag
+            return
     X, Y, i0, i1, j0, j1 = X[tris], Y[tris], i0[tris], i1[tris], j0[tris], j1[tris]
     # Negatively oriented triangles get all edge functions negated (vertex order is kept, so the
     # weights stay in input order); the fill rule then sees every edge in positive orientation.
