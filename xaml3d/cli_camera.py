@@ -16,9 +16,8 @@ import click
 import numpy as np
 
 from xaml3d.cli_common import (
-    describe_os_error,
     display_name,
-    io_error,
+    exit_on_input_error,
     load_scene,
     render_size,
     resources_option,
@@ -230,17 +229,10 @@ def camera_command(scene, viewport, width, height, scale, fit, points, resources
     from xaml3d.scene.camera_math import camera_pipeline
 
     name = display_name(scene)
-    ctx = click.get_current_context()
-    try:
+    with exit_on_input_error(name):
         sc = load_scene(scene, tuple(resources))
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
-    except XamlError as exc:
-        click.echo(exc.with_location(file=name).format(), err=True)
-        ctx.exit(1)
-    except (OSError, ValueError) as exc:
-        click.echo(io_error(name, describe_os_error(exc)), err=True)
-        ctx.exit(1)
     if fit:
         from xaml3d.scene.fit import fit_viewport
 
@@ -280,7 +272,7 @@ def camera_command(scene, viewport, width, height, scale, fit, points, resources
         click.echo("\n".join(_camera_text(vp, cam, pipe, report["points"])))
     if error is not None:
         click.echo(error.format(), err=True)
-        ctx.exit(1)
+        click.get_current_context().exit(1)
 
 
 def _camera_text(vp, cam, pipe, located) -> list[str]:

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import math
 import sys
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
 
@@ -143,3 +144,17 @@ resources_option = click.option(
     metavar="FILE",
     help="Extra resource dictionary (repeatable), like App.xaml.",
 )
+
+
+@contextmanager
+def exit_on_input_error(name: str) -> Iterator[None]:
+    """Around reading a scene: a fatal problem prints as ``file:line:col: error CODE message``
+    (or an IO001 line for a file-system problem) and exits 1, never a traceback."""
+    try:
+        yield
+    except XamlError as exc:
+        click.echo(exc.with_location(file=name).format(), err=True)
+        click.get_current_context().exit(1)
+    except (OSError, ValueError) as exc:
+        click.echo(io_error(name, describe_os_error(exc)), err=True)
+        click.get_current_context().exit(1)

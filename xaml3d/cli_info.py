@@ -9,13 +9,12 @@ from collections import Counter
 import click
 
 from xaml3d.cli_common import (
-    describe_os_error,
     display_name,
-    io_error,
+    exit_on_input_error,
     load_scene,
     resources_option,
 )
-from xaml3d.errors import SEVERITIES, XamlError
+from xaml3d.errors import SEVERITIES
 from xaml3d.scene.types import Scene
 
 
@@ -102,15 +101,8 @@ Examples:
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def info_command(scene, resources, as_json) -> None:
     name = display_name(scene)
-    ctx = click.get_current_context()
-    try:
+    with exit_on_input_error(name):
         sc = load_scene(scene, tuple(resources))
-    except XamlError as exc:
-        click.echo(exc.with_location(file=name).format(), err=True)
-        ctx.exit(1)
-    except (OSError, ValueError) as exc:
-        click.echo(io_error(name, describe_os_error(exc)), err=True)
-        ctx.exit(1)
     info = scene_info(sc, name)
     if as_json:
         click.echo(json.dumps(info, indent=2))

@@ -153,6 +153,12 @@ def _diag(code: str, message: str, line: int | None) -> Diagnostic:
     return Diagnostic(code, MESH_CODES[code][0], message, line=line)
 
 
+def _count_mismatch(code: str, what: str, have: int, n: int, fewer: str, line) -> Diagnostic:
+    """A per-vertex collection whose count differs from the Positions count."""
+    rest = fewer if have < n else f"the last {have - n} are ignored"
+    return _diag(code, f"{have} {what} for {n} Positions: {rest}", line)
+
+
 def build_mesh(
     positions,
     indices=None,
@@ -215,14 +221,7 @@ def build_mesh(
     user_n = _rows(normals, 3)
     m = user_n.shape[0]
     if m and m != n:
-        diags.append(
-            _diag(
-                "MSH003",
-                f"{m} Normals for {n} Positions: "
-                + ("the rest are generated" if m < n else f"the last {m - n} are ignored"),
-                line,
-            )
-        )
+        diags.append(_count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line))
     if m >= n:
         nrm = _normalize_rows(user_n[:n])
     else:
@@ -233,12 +232,7 @@ def build_mesh(
     k = uv.shape[0]
     if k and k != n:
         diags.append(
-            _diag(
-                "MSH004",
-                f"{k} TextureCoordinates for {n} Positions: "
-                + ("the rest are (0, 0)" if k < n else f"the last {k - n} are ignored"),
-                line,
-            )
+            _count_mismatch("MSH004", "TextureCoordinates", k, n, "the rest are (0, 0)", line)
         )
     tex = np.zeros((n, 2))
     tex[: min(k, n)] = uv[:n]

@@ -53,34 +53,36 @@ def _solve_homogeneous(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
     return frozen_array(m)
 
 
-def points_to_points_2d(p0, p1, p2, q0, q1, q2) -> np.ndarray:
-    """The 3x3 affine matrix M with M @ (pi, 1) = (qi, 1) for three non-collinear points pi."""
-    p = [_vec(x, 2, "2D point") for x in (p0, p1, p2)]
-    q = [_vec(x, 2, "2D point") for x in (q0, q1, q2)]
-    if _sine_measure([p[1] - p[0], p[2] - p[0]]) < DEGENERATE_TOL:
-        raise GeometryError(
-            "points_to_points_2d: the three source points are collinear (or coincide), "
-            "so no affine map is fixed by them",
-            code="GEO001",
-        )
+def _affine_from_points(src_pts, dst_pts, dim: int, what: str, fn: str) -> np.ndarray:
+    """The (dim+1)-square affine matrix sending each source point to its target point; refuses
+    (GEO001) source points that do not span the space (``what`` says how they fail to)."""
+    kind = "2D point" if dim == 2 else "point"
+    p = [_vec(x, dim, kind) for x in src_pts]
+    q = [_vec(x, dim, kind) for x in dst_pts]
+    if _sine_measure([x - p[0] for x in p[1:]]) < DEGENERATE_TOL:
+        raise GeometryError(f"{fn}: {what}", code="GEO001")
     src = np.array([[*x, 1.0] for x in p]).T
     dst = np.array([[*x, 1.0] for x in q]).T
     return _solve_homogeneous(src, dst)
+
+
+def points_to_points_2d(p0, p1, p2, q0, q1, q2) -> np.ndarray:
+    """The 3x3 affine matrix M with M @ (pi, 1) = (qi, 1) for three non-collinear points pi."""
+    return _affine_from_points(
+        (p0, p1, p2), (q0, q1, q2), 2,
+        "the three source points are collinear (or coincide), so no affine map is fixed by them",
+        "points_to_points_2d",
+    )  # fmt: skip
 
 
 def points_to_points(p0, p1, p2, p3, q0, q1, q2, q3) -> np.ndarray:
     """The 4x4 affine matrix M with M @ (pi, 1) = (qi, 1) for four non-coplanar points pi."""
-    p = [_vec(x, 3, "point") for x in (p0, p1, p2, p3)]
-    q = [_vec(x, 3, "point") for x in (q0, q1, q2, q3)]
-    if _sine_measure([p[1] - p[0], p[2] - p[0], p[3] - p[0]]) < DEGENERATE_TOL:
-        raise GeometryError(
-            "points_to_points: the four source points are coplanar (or coincide), "
-            "so no affine map of 3-space is fixed by them",
-            code="GEO001",
-        )
-    src = np.array([[*x, 1.0] for x in p]).T
-    dst = np.array([[*x, 1.0] for x in q]).T
-    return _solve_homogeneous(src, dst)
+    return _affine_from_points(
+        (p0, p1, p2, p3), (q0, q1, q2, q3), 3,
+        "the four source points are coplanar (or coincide), so no affine map of 3-space is "
+        "fixed by them",
+        "points_to_points",
+    )  # fmt: skip
 
 
 def point_and_vectors_to_point_and_vectors(p, u, v, w, q, u2, v2, w2) -> np.ndarray:
