@@ -53,6 +53,7 @@ class RenderOptions:
     verbose: bool
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
+    msaa: int | None = None
 
 
 class _Failed(Exception):
@@ -154,6 +155,7 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             mode=opts.mode,
             background=opts.background,
             ssaa=opts.ssaa,
+            msaa=opts.msaa,
             hidden_lines=not opts.hide_hidden_lines,
             antialias_lines=opts.antialias_lines,
         )
@@ -261,7 +263,16 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     callback=_parse_background,
     help="Fill colour, any WPF syntax (default: transparent).",
 )
-@click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
+@click.option(
+    "--ssaa",
+    type=click.IntRange(1, 4),
+    help="Supersampling factor per axis, 1..4 (every sample shaded; replaces --msaa).",
+)
+@click.option(
+    "--msaa",
+    type=click.IntRange(1, 4),
+    help="Multisampling per axis, 1..4 (shaded once per pixel; default 2, wireframe none).",
+)
 @click.option(
     "--viewport", metavar="INDEX|NAME", help="Which Viewport3D to render (default: the first)."
 )
@@ -289,6 +300,7 @@ def render_command(
     mode,
     background,
     ssaa,
+    msaa,
     viewport,
     resources,
     fit,
@@ -298,6 +310,8 @@ def render_command(
     hide_hidden_lines,
     antialias_lines,
 ) -> None:
+    if (ssaa or 1) > 1 and (msaa or 1) > 1:
+        raise click.UsageError("choose one of --ssaa and --msaa")
     fmt = fmt.lower() if fmt else None
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
     opts = RenderOptions(
@@ -316,6 +330,7 @@ def render_command(
         verbose,
         hide_hidden_lines,
         antialias_lines,
+        msaa,
     )
     if directory is not None:
         try:

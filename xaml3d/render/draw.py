@@ -59,12 +59,13 @@ class DrawContext:
     height: int
     clip_planes: list = field(default_factory=list)
     diagnostics: list = field(default_factory=list)
+    msaa: int = 1  # > 1: width x height is a multisample grid, attributes once per image pixel
 
 
-def make_context(width: int, height: int) -> DrawContext:
+def make_context(width: int, height: int, msaa: int = 1) -> DrawContext:
     # Guard band: |x/w| <= g keeps pixel coordinates within MAX_COORD / 2 (int64-safe).
     g = max(1.0, (MAX_COORD / 2) / (max(width, height) / 2.0) - 1.0)
-    return DrawContext(width, height, [NEAR_PLANE, *guard_planes(g)])
+    return DrawContext(width, height, [NEAR_PLANE, *guard_planes(g)], msaa=int(msaa))
 
 
 def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | None:
@@ -163,7 +164,8 @@ def side_fragments(
         src = tris[order_key[order]]
         piece = np.concatenate([np.full(keep.size, -1), np.arange(csrc.size)])[order]
     kw = {} if budget is None else {"budget": budget}
-    for frag in rasterize(xy, d, ctx.width, ctx.height, q, weights=weights, **kw):
+    frags = rasterize(xy, d, ctx.width, ctx.height, q, weights=weights, msaa=ctx.msaa, **kw)
+    for frag in frags:
         keep_f = frag.depth <= 1.0
         if not keep_f.all():
             frag = frag.select(keep_f)

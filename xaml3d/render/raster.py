@@ -91,6 +91,7 @@ def rasterize(
     inv_w: np.ndarray | None = None,
     budget: int = DEFAULT_BUDGET,
     weights: bool = True,
+    msaa: int = 1,
 ) -> Iterator[Fragments]:
     """Yield the fragments of triangles ``xy`` (T, 3, 2) in pixel coordinates.
 
@@ -100,6 +101,12 @@ def rasterize(
     belong to the triangle only if the edge is a top or a left edge (Direct3D's rule).
     With ``weights=False`` the fragments carry no weights (flat colours per triangle need none,
     and computing them is a large share of the per-fragment work).
+
+    ``msaa`` > 1: the pixel grid is a multisample grid of ``msaa`` x ``msaa`` samples per image
+    pixel (coverage and depth stay per sample) and the weights of every fragment are those at
+    the centre of its IMAGE pixel, so all the samples one triangle covers in one pixel get the
+    same attributes (shading once per pixel per triangle, as multisampling hardware does; for an
+    edge pixel the centre may lie outside the triangle and the weights extrapolate, as there).
     """
     xy = np.asarray(xy, dtype=np.float64)
     t_count = xy.shape[0]
@@ -135,7 +142,7 @@ def rasterize(
             for part in np.split(tris, cuts):
                 sub = rasterize(
                     xy[part], depth_a[part], width, height,
-                    None if inv_a is None else inv_a[part], budget, weights,
+                    None if inv_a is None else inv_a[part], budget, weights, msaa,
                 )  # fmt: skip
                 for frag in sub:
                     frag.tri = part[frag.tri]
@@ -192,7 +199,21 @@ def rasterize(
     px0 = lo * SUBPIXEL + HALF
     py = row * SUBPIXEL + HALF
     S = G = None
-    if weights:
+    if weights and msaa > 1:
+        # Weights at the image pixel's centre (see the docstring): per row item the centre's
+        # y is fixed, so E_e = A_e cx + Ky_e with Ky_e exact in int64; cx varies per fragment.
+        s_ = int(msaa)
+        pcy = (row // s_) * (s_ * SUBPIXEL) + s_ * HALF
+        Ay = np.empty((3, item_tri.size), dtype=np.int64)
+        Ky = np.empty_like(Ay)
+        for e in range(3):
+            a = A[e][item_tri]
+            tl = ((a > 0) | ((a == 0) & (B[e][item_tri] > 0))).astype(np.int64)
+            Ay[e] = a
+            Ky[e] = B[e][item_tri] * pcy + (C[e][item_tri] - tl)
+        scale = 1.0 / area_t[item_tri]
+        Q = None if q_t is None else q_t[item_tri] * scale[:, None]  # (items, 3) per vertex
+    elif weights:
         # Per row item the weights are affine in the column offset k: lam_v = S_v + G_v k, with
         # lam_v = E_e / area for the vertex v opposite edge e (E_e without the top-left bias).
         inv_area = 1.0 / area_t[item_tri]
@@ -239,7 +260,16 @@ def rasterize(
         d = dS[sl][it] + dG[sl][it] * kcol
         pix = pix0[sl][it] + kcol
         lam = None
-        if weights:
+        if weights and msaa > 1:
+            cx = ((lo[sl][it] + kcol) // s_) * (s_ * SUBPIXEL) + s_ * HALF
+            lam = np.empty((it.size, 3))
+            for e in range(3):
+                v = (e + 2) % 3
+                ee = (Ay[e][sl][it] * cx + Ky[e][sl][it]).astype(np.float64)
+                lam[:, v] = ee * (scale[sl][it] if Q is None else Q[sl][it, v])
+            if Q is not None:
+                lam /= (lam[:, 0] + lam[:, 1] + lam[:, 2])[:, None]
+        elif weights:
             lam = S[sl][it] + G[sl][it] * kcol[:, None].astype(np.float64)
             if q_t is not None:
                 lam /= (lam[:, 0] + lam[:, 1] + lam[:, 2])[:, None]
