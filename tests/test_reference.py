@@ -189,9 +189,13 @@ def _case_params() -> list:
 
 
 @pytest.mark.parametrize("case_path", _case_params())
-def test_reference_case(case_path: Path) -> None:
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+def test_reference_case(case_path: Path, kernels: str, monkeypatch) -> None:
+    """Every case on both renderer paths: numpy, and the compiled kernels (tests/test_kernels.py
+    checks that the two give bit-identical pictures)."""
     import xaml3d
 
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
     cid = case_id(case_path)
     expected_png = case_path.with_suffix(".png")
     actual = xaml3d.render(str(case_path)).convert("RGBA")

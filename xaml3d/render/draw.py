@@ -170,11 +170,13 @@ def side_fragments(
         if not keep_f.all():
             frag = frag.select(keep_f)
         if piece is not None and frag.weights is not None:
-            pc = piece[frag.tri]
+            pc = piece[frag.tri if frag.wtri is None else frag.wtri]
             m = pc >= 0
             if m.any():
                 frag.weights[m] = np.einsum("fk,fkv->fv", frag.weights[m], cbary[pc[m]])
         frag.tri = src[frag.tri]
+        if frag.wtri is not None:
+            frag.wtri = src[frag.wtri]
         if len(frag):
             yield frag
 
@@ -231,6 +233,10 @@ class PassShader:
     def __call__(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
             return self._c16[frag.tri].view(np.float32).reshape(-1, 4)
+        if frag.inverse is not None:
+            # Multisampling: shade each (triangle, pixel) row once, spread to its samples.
+            rows = Fragments(frag.wtri, frag.wtri, frag.wtri, frag.weights)
+            return self(rows)[frag.inverse]
         if self.flat:
             col = self.colors[frag.tri]
         else:

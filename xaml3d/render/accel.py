@@ -1,0 +1,94 @@
+"""Whether the compiled kernels (``xaml3d.render.kernels``, numba) are used, and loading them.
+
+numba costs about 0.3 s per process (import, loading the cached machine code, shutdown): more
+than a whole small render. So the kernels are loaded only when a rasterization's estimated work
+pays for it (``for_work``), once per process; from then on blending uses them too (``active``).
+Both paths give identical pictures, so mixing them within one frame is harmless.
+
+``XAML3D_KERNELS`` chooses: ``auto`` (default, as above), ``numba`` (always; an error when numba
+cannot be imported) or ``numpy`` (never). Without numba installed, ``auto`` stays on numpy.
+
+numba's on-disk cache goes to ``NUMBA_CACHE_DIR`` when set; otherwise this module sets it before
+importing numba, to ``$XDG_CACHE_HOME/xaml3d/numba`` (``~/.cache/...``) or, when that cannot be
+written, a per-user folder in the temporary directory: never beside the installed package, which
+may be read-only (numba raises at import when it finds no writable place).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+ENV = "XAML3D_KERNELS"
+MODES = ("auto", "numba", "numpy")
+# Measured on a 2-core machine: the numpy path costs about 60-100 ns per fragment, the kernels
+# a few ns; numba's 0.3 s pays from a few million fragments (or very many small triangles,
+# where numpy's per-row setup dominates).
+FRAGMENTS_WORTH = 3_000_000
+TRIANGLES_WORTH = 300_000
+
+_kernels = None
+_failed = False
+
+
+def mode() -> str:
+    value = os.environ.get(ENV, "auto").strip().lower() or "auto"
+    if value not in MODES:
+        raise ValueError(f"{ENV}={value!r}: use one of {', '.join(MODES)}")
+    return value
+
+
+def active():
+    """The kernels module if it is loaded (and allowed), else None. Never loads it."""
+    if _kernels is None or mode() == "numpy":
+        return None
+    return _kernels
+
+
+def for_work(fragments: float, triangles: int):
+    """The kernels module when the work (estimated fragments, triangles) pays for loading it,
+    or when it is already loaded; else None (the numpy path)."""
+    m = mode()
+    if m == "numpy":
+        return None
+    if _kernels is None:
+        if m == "auto" and fragments < FRAGMENTS_WORTH and triangles < TRIANGLES_WORTH:
+            return None
+        _load(required=m == "numba")
+    return _kernels
+
+
+def _load(required: bool) -> None:
+    global _kernels, _failed
+    if _failed and not required:
+        return
+    set_cache_dir()
+    try:
+        from xaml3d.render import kernels
+    except ImportError:
+        _failed = True
+        if required:
+            raise
+        return
+    _kernels = kernels
+
+
+def set_cache_dir(environ=None) -> str:
+    """Set ``NUMBA_CACHE_DIR`` (unless already set) to a writable folder; return it."""
+    env = os.environ if environ is None else environ
+    if env.get("NUMBA_CACHE_DIR"):
+        return env["NUMBA_CACHE_DIR"]
+    home = env.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    uid = os.getuid() if hasattr(os, "getuid") else "user"
+    for folder in (Path(home) / "xaml3d" / "numba", Path(tempfile.gettempdir()) / f"xaml3d-{uid}"):
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+        except OSError:
+            continue
+        if os.access(folder, os.W_OK | os.X_OK):
+            env["NUMBA_CACHE_DIR"] = str(folder)
+            return str(folder)
+    folder = tempfile.mkdtemp(prefix="xaml3d-numba-")  # last resort: a fresh private folder
+    env["NUMBA_CACHE_DIR"] = folder
+    return folder
