@@ -22,11 +22,14 @@ from pathlib import Path
 
 ENV = "XAML3D_KERNELS"
 MODES = ("auto", "numba", "numpy")
-# Measured on a 2-core machine: the numpy path costs about 60-100 ns per fragment, the kernels
-# a few ns; numba's 0.3 s pays from a few million fragments (or very many small triangles,
-# where numpy's per-row setup dominates).
-FRAGMENTS_WORTH = 3_000_000
-TRIANGLES_WORTH = 300_000
+# The work estimate is the bounding boxes' half area in samples, times the passes, times 2 when
+# weights are interpolated (see ``raster.rasterize``). Measured on this 2-core machine, warm,
+# numpy -> kernels: 1M-triangle sphere 1920x1080 flat msaa 2 (estimate 7M) 0.48 -> 0.30 s,
+# shaded (14M) 0.66 -> 0.41 s, both less than numba's ~0.35 s start-up and shutdown; two lit,
+# textured, translucent spheres (36M) 1.36 -> 0.85 s and a 200k sphere with ssaa 4 (55M)
+# 1.65 -> 0.89 s, which pay. Very many triangles pay too (numpy's per-row setup).
+FRAGMENTS_WORTH = 20_000_000
+TRIANGLES_WORTH = 2_000_000
 
 _kernels = None
 _failed = False

@@ -115,7 +115,12 @@ def _unit_rows(v: np.ndarray) -> np.ndarray:
 
 
 def side_fragments(
-    pm: PreparedModel, tris: np.ndarray, ctx: DrawContext, budget=None, weights: bool = True
+    pm: PreparedModel,
+    tris: np.ndarray,
+    ctx: DrawContext,
+    budget=None,
+    weights: bool = True,
+    passes: int = 1,
 ):
     """Fragments of the triangles ``tris`` (indices into the mesh's triangle list) in triangle
     order; ``weights`` are the perspective-correct weights on the ORIGINAL three vertices and
@@ -164,7 +169,9 @@ def side_fragments(
         src = tris[order_key[order]]
         piece = np.concatenate([np.full(keep.size, -1), np.arange(csrc.size)])[order]
     kw = {} if budget is None else {"budget": budget}
-    frags = rasterize(xy, d, ctx.width, ctx.height, q, weights=weights, msaa=ctx.msaa, **kw)
+    frags = rasterize(
+        xy, d, ctx.width, ctx.height, q, weights=weights, msaa=ctx.msaa, passes=passes, **kw
+    )
     for frag in frags:
         keep_f = frag.depth <= 1.0
         if not keep_f.all():
@@ -277,7 +284,7 @@ def draw_model(fb: Framebuffer, pm: PreparedModel, lights, ctx: DrawContext, mod
         shaders = [PassShader(pm, p, sign, lights, flat, faces, tris) for p in passes]
         # Flat colours with uniform brushes are per triangle: no weights to interpolate.
         need_weights = not (flat and all(sh.uniform for sh in shaders))
-        frags = side_fragments(pm, tris, ctx, weights=need_weights)
+        frags = side_fragments(pm, tris, ctx, weights=need_weights, passes=len(shaders))
         if len(shaders) == 1:  # stream: no need to keep the fragments
             for frag in frags:
                 _blend(fb, passes[0], frag, shaders[0](frag))

@@ -103,6 +103,7 @@ def rasterize(
     budget: int = DEFAULT_BUDGET,
     weights: bool = True,
     msaa: int = 1,
+    passes: int = 1,
 ) -> Iterator[Fragments]:
     """Yield the fragments of triangles ``xy`` (T, 3, 2) in pixel coordinates.
 
@@ -111,7 +112,8 @@ def rasterize(
     (zero snapped area) and non-finite triangles produce nothing. Pixel centres exactly on an edge
     belong to the triangle only if the edge is a top or a left edge (Direct3D's rule).
     With ``weights=False`` the fragments carry no weights (flat colours per triangle need none,
-    and computing them is a large share of the per-fragment work).
+    and computing them is a large share of the per-fragment work). ``passes``: how many material
+    passes will shade and blend the fragments (it weighs the work when choosing the kernels).
 
     ``msaa`` > 1: the pixel grid is a multisample grid of ``msaa`` x ``msaa`` samples per image
     pixel (coverage and depth stay per sample) and the weights of every fragment are those at
@@ -143,7 +145,7 @@ def rasterize(
     rows = (j1 - j0 + 1)[tris]
     # Half the bounding boxes' samples: a cheap estimate of the fragments to come.
     estimate = 0.5 * float(np.dot(rows.astype(np.float64), (i1 - i0 + 1)[tris]))
-    kernels = accel.for_work(estimate, int(tris.size))
+    kernels = accel.for_work(estimate * max(int(passes), 1) * (2 if weights else 1), tris.size)
     if kernels is None and int(rows.sum()) > ROW_BUDGET:
         # Every (triangle, row) pair is an item with several int64 arrays: many large triangles
         # (heavy overdraw) would need gigabytes at once. Consecutive groups of triangles with a
