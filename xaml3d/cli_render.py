@@ -29,6 +29,7 @@ from xaml3d.cli_common import (
     stderr_is_terminal,
     with_file,
 )
+from xaml3d.cli_jobs import default_jobs, run_ordered
 from xaml3d.errors import ERROR, XamlError
 
 FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp"}
@@ -187,6 +188,45 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
 
 
+def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]) -> bool:
+    """One scene of a parallel batch (in a worker process): True when it was rendered."""
+    try:
+        _render_one(source, target, opts, inputs)
+    except _Failed:
+        return False
+    return True
+
+
+def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
+    """Steps that print each scene's messages in batch order while worker processes render; None
+    when a serial run is as good (one scene, or stdin, which only this process can read)."""
+    if len(plan) < 2 or any(source == "-" for source, _ in plan):
+        return None
+    todo, items = [], []
+    for source, target in plan:  # the serial run's duplicate-output check, in the same order
+        key = Path(os.path.abspath(target))
+        duplicate = key in written
+        written.add(key)
+        todo.append((source, target, duplicate))
+        if not duplicate:
+            items.append((source, target, opts, inputs))
+    results = run_ordered(_render_task, items, jobs)
+
+    def step(source: str, target, duplicate: bool) -> None:
+        if duplicate:
+            msg = f"{target} is already the output of another scene of this batch"
+            click.echo(io_error(display_name(source), msg, "IO003"), err=True)
+            failed.append(display_name(source))
+            return
+        ok, text = next(results)
+        sys.stderr.write(text)
+        sys.stderr.flush()
+        if not ok:
+            failed.append(display_name(source))
+
+    return [lambda args=args: step(*args) for args in todo]
+
+
 HELP = """Render XAML 3D scene(s) to images (PNG, JPEG or WebP).
 
 SCENE is a .xaml file, or - to read the markup from stdin (relative references then resolve
@@ -287,6 +327,12 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     show_default=True,
     help="Room left around the scene by --fit, as a fraction of its size.",
 )
+@click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(1),
+    help="Worker processes for a batch of scenes (default: the number of cores).",
+)
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 def render_command(
@@ -309,6 +355,7 @@ def render_command(
     verbose,
     hide_hidden_lines,
     antialias_lines,
+    jobs,
 ) -> None:
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
         raise click.UsageError("choose one of --ssaa and --msaa")
@@ -355,15 +402,21 @@ def render_command(
         except _Failed:
             failed.append(display_name(source))
 
+    jobs = default_jobs() if jobs is None else jobs
+    steps = _parallel_steps(plan, opts, inputs, jobs, written, failed) if jobs > 1 else None
+    if steps is None:
+        steps = (
+            lambda source=source, target=target: run(source, target) for source, target in plan
+        )
     if len(plan) > 1 and stderr_is_terminal():
         with click.progressbar(
-            plan, label="rendering", file=click.get_text_stream("stderr")
+            steps, length=len(plan), label="rendering", file=click.get_text_stream("stderr")
         ) as bar:
-            for source, target in bar:
-                run(source, target)
+            for step in bar:
+                step()
     else:
-        for source, target in plan:
-            run(source, target)
+        for step in steps:
+            step()
     if len(plan) > 1:
         ok = len(plan) - len(failed)
         summary = f"xaml3d: rendered {ok} of {len(plan)} scenes"
