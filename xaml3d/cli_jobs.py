@@ -9,11 +9,9 @@ parent's modules already imported), else spawned.
 from __future__ import annotations
 
 import io
-import multiprocessing
 import os
 import sys
 from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
 
 
 def default_jobs() -> int:
@@ -41,10 +39,14 @@ def run_ordered(
 ) -> Iterator[tuple[bool, str]]:
     """Yield (result, stderr text) of ``task(*item)`` for every item, in the items' order, with
     up to ``jobs`` worker processes. ``task`` must be a module-level function (picklable)."""
+    # Imported here: a single render (the common, small case) never pays for them.
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
     workers = max(1, min(int(jobs), len(items)))
     methods = multiprocessing.get_all_start_methods()
     ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
     with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        futures: list[Future] = [pool.submit(_captured, task, args) for args in items]
+        futures = [pool.submit(_captured, task, args) for args in items]
         for future in futures:
             yield future.result()
