@@ -83,3 +83,20 @@ def test_aa_sample_budget_names_msaa(scene):
     with pytest.raises(RenderError) as e:
         render_arrays(scene, 16000, 16000, msaa=4)
     assert e.value.code == "RND001" and "msaa=4" in e.value.message
+
+
+def test_passes_rasterized_again_draw_the_same(monkeypatch):
+    """Multi-pass materials keep their fragments between passes only up to a memory bound;
+    beyond it every pass rasterizes again, with the same picture."""
+    from pathlib import Path
+
+    from xaml3d.render import draw
+
+    ref = Path(__file__).resolve().parent / "reference"
+    for case in ("material/group-order", "material/group-translucent-layer", "material/emissive"):
+        scene = load(ref / f"{case}.xaml")
+        kept = render_arrays(scene)
+        monkeypatch.setattr(draw, "KEEP_BYTES", 0)
+        again = render_arrays(scene)
+        monkeypatch.undo()
+        assert np.array_equal(kept.rgba, again.rgba) and np.array_equal(kept.depth, again.depth)

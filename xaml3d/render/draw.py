@@ -38,6 +38,7 @@ from xaml3d.scene.transforms import normal_matrix
 from xaml3d.scene.types import DiffuseMaterial, Model
 
 _EYE3 = np.eye(3)
+KEEP_BYTES = 192 << 20  # fragments kept between the passes of a multi-pass material
 
 
 @dataclass
@@ -285,14 +286,30 @@ def draw_model(fb: Framebuffer, pm: PreparedModel, lights, ctx: DrawContext, mod
         # Flat colours with uniform brushes are per triangle: no weights to interpolate.
         need_weights = not (flat and all(sh.uniform for sh in shaders))
         frags = side_fragments(pm, tris, ctx, weights=need_weights, passes=len(shaders))
-        if len(shaders) == 1:  # stream: no need to keep the fragments
-            for frag in frags:
-                _blend(fb, passes[0], frag, shaders[0](frag))
-            continue
-        kept = list(frags)  # every pass draws the same fragments, pass after pass
-        for mat, shader in zip(passes, shaders, strict=True):
-            for frag in kept:
+        # Every pass draws the same fragments, pass after pass (WPF's order: a whole pass, then
+        # the next). The first pass streams them; they are kept for the next passes while that
+        # stays within KEEP_BYTES, else rasterized again for each pass (bounded memory at
+        # high sample counts, at the cost of rasterizing again).
+        kept: list[Fragments] | None = [] if len(shaders) > 1 else None
+        size = 0
+        for frag in frags:
+            _blend(fb, passes[0], frag, shaders[0](frag))
+            if kept is not None:
+                kept.append(frag)
+                size += _nbytes(frag)
+                if size > KEEP_BYTES:
+                    kept = None
+        for mat, shader in zip(passes[1:], shaders[1:], strict=True):
+            again = kept if kept is not None else side_fragments(
+                pm, tris, ctx, weights=need_weights, passes=len(shaders)
+            )  # fmt: skip
+            for frag in again:
                 _blend(fb, mat, frag, shader(frag))
+
+
+def _nbytes(frag: Fragments) -> int:
+    arrays = (frag.pixel, frag.depth, frag.tri, frag.weights, frag.inverse, frag.wtri)
+    return sum(a.nbytes for a in arrays if a is not None)
 
 
 def draw_viewport_models(fb: Framebuffer, viewport, pipeline, ctx: DrawContext, mode: str) -> None:
