@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from xaml3d.errors import WARNING, Diagnostic, XamlError
+from xaml3d.render import accel
 from xaml3d.render.brushes import brush_average, brush_bounds, brush_is_uniform, sample_brush
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import Framebuffer
@@ -225,41 +226,57 @@ class PassShader:
             self.colors = shade_vertices(mat, pm.view_pos, pm.view_nrm * normal_sign, lights)
         brush = mat.brush
         self.uniform = brush_is_uniform(brush)
+        self.indices = np.ascontiguousarray(self.indices, dtype=np.int64)
         if self.uniform:
             self.colors = self.colors * brush_average(brush)[None, :]
         else:
             self.texcoords = pm.model.mesh.texcoords
             self.bounds = brush_bounds(self.texcoords)
+            self._uv_planes = np.ascontiguousarray(self.texcoords.T, dtype=np.float64)
         if flat and self.uniform:
             # The final float32 colour per triangle, gathered 16 bytes at a time as one
             # complex128 element (the framebuffer blends float32; see frame.py).
             c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
             self._c16 = c32.view(np.complex128).reshape(-1)
         elif not flat:
-            self._planes = np.ascontiguousarray(self.colors.T)  # (4, N): one gather per channel
+            self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)
 
     def __call__(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
             return self._c16[frag.tri].view(np.float32).reshape(-1, 4)
         if frag.inverse is not None:
-            # Multisampling: shade each (triangle, pixel) row once, spread to its samples.
+            # Multisampling: shade each (triangle, pixel) row once, spread to its samples (in
+            # float32, what blending takes: converting before the gather moves half the bytes).
             rows = Fragments(frag.wtri, frag.wtri, frag.wtri, frag.weights)
-            return self(rows)[frag.inverse]
+            return np.asarray(self(rows), dtype=np.float32)[frag.inverse]
         if self.flat:
             col = self.colors[frag.tri]
         else:
-            # sum_v w_v c_v per channel, written out: faster than einsum over a (F, 3, 4) gather.
-            ci = self.indices[frag.tri]
-            i0, i1, i2 = ci[:, 0], ci[:, 1], ci[:, 2]
-            w = frag.weights
-            w0, w1, w2 = w[:, 0], w[:, 1], w[:, 2]
-            col = np.empty((ci.shape[0], 4), dtype=np.float32 if self.uniform else np.float64)
-            for c, plane in enumerate(self._planes):
-                col[:, c] = w0 * plane[i0] + w1 * plane[i1] + w2 * plane[i2]
+            col = interpolate(self._planes, self.indices, frag.tri, frag.weights)
+            if self.uniform:
+                col = col.astype(np.float32)
         if not self.uniform:
-            uv = np.einsum("fk,fkc->fc", frag.weights, self.texcoords[self.indices[frag.tri]])
+            uv = interpolate(self._uv_planes, self.indices, frag.tri, frag.weights)
             col = col * sample_brush(self.mat.brush, uv, self.bounds)
         return col
+
+
+def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.ndarray):
+    """Vertex attributes ``planes`` (K, N) at fragments of triangles ``tri`` with weights ``w``
+    (F, 3): (F, K) float64, sum_v w_v a[i_v] per channel, written out (faster than einsum over a
+    (F, 3, K) gather, and the same arithmetic as the compiled kernel's)."""
+    kernels = accel.active()
+    if kernels is not None:
+        return kernels.interpolate(
+            planes, indices, np.ascontiguousarray(tri, dtype=np.int64), np.ascontiguousarray(w)
+        )
+    ci = indices[tri]
+    i0, i1, i2 = ci[:, 0], ci[:, 1], ci[:, 2]
+    w0, w1, w2 = w[:, 0], w[:, 1], w[:, 2]
+    out = np.empty((tri.shape[0], planes.shape[0]))
+    for c, plane in enumerate(planes):
+        out[:, c] = w0 * plane[i0] + w1 * plane[i1] + w2 * plane[i2]
+    return out
 
 
 def _blend(fb: Framebuffer, mat, frag: Fragments, col: np.ndarray) -> None:

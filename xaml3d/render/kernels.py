@@ -178,3 +178,23 @@ def blend_add(zbuf, color, pix, z, src):
                 if color[p, c] > one:
                     color[p, c] = one
     return n
+
+
+@numba.njit(cache=True, nogil=True)
+def interpolate(planes, indices, tri, w):
+    """Vertex attributes at the fragments: out[f, c] = w0 a[i0] + w1 a[i1] + w2 a[i2] with
+    a = planes[c] and (i0, i1, i2) the vertices of triangle tri[f] (``draw.interpolate``)."""
+    n = tri.shape[0]
+    k = planes.shape[0]
+    out = np.empty((n, k))
+    for f in range(n):
+        t = tri[f]
+        i0 = indices[t, 0]
+        i1 = indices[t, 1]
+        i2 = indices[t, 2]
+        w0 = w[f, 0]
+        w1 = w[f, 1]
+        w2 = w[f, 2]
+        for c in range(k):
+            out[f, c] = w0 * planes[c, i0] + w1 * planes[c, i1] + w2 * planes[c, i2]
+    return out
