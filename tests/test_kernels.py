@@ -63,9 +63,11 @@ def test_overdraw_ties_and_translucency_match(monkeypatch):
 def test_auto_mode_loads_numba_only_for_big_work(monkeypatch):
     monkeypatch.setenv(accel.ENV, "auto")
     monkeypatch.setattr(accel, "_kernels", None)
+    accel.begin_frame()
     assert accel.for_work(1000.0, 10) is None
+    assert accel.for_work(accel.FRAGMENTS_WORTH / 2, 10) is None
     assert accel.active() is None
-    assert accel.for_work(accel.FRAGMENTS_WORTH, 10) is not None
+    assert accel.for_work(accel.FRAGMENTS_WORTH / 2, 10) is not None  # the frame's work adds up
     assert accel.active() is not None
     monkeypatch.setenv(accel.ENV, "numpy")
     assert accel.active() is None and accel.for_work(1e9, 10**7) is None

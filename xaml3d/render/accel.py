@@ -23,16 +23,18 @@ from pathlib import Path
 ENV = "XAML3D_KERNELS"
 MODES = ("auto", "numba", "numpy")
 # The work estimate is the bounding boxes' half area in samples, times the passes, times 2 when
-# weights are interpolated (see ``raster.rasterize``). Measured on this 2-core machine, warm,
-# numpy -> kernels: 1M-triangle sphere 1920x1080 flat msaa 2 (estimate 7M) 0.48 -> 0.30 s,
-# shaded (14M) 0.66 -> 0.41 s, both less than numba's ~0.35 s start-up and shutdown; two lit,
-# textured, translucent spheres (36M) 1.36 -> 0.85 s and a 200k sphere with ssaa 4 (55M)
-# 1.65 -> 0.89 s, which pay. Very many triangles pay too (numpy's per-row setup).
-FRAGMENTS_WORTH = 20_000_000
+# weights are interpolated (see ``raster.rasterize``), added up over the frame. Measured on this
+# 2-core machine, warm render, numpy -> kernels: 1M-triangle sphere 1920x1080 flat msaa 2
+# (estimate 7M) 0.48 -> 0.30 s, less than numba's ~0.35 s start-up and shutdown; shaded (14M)
+# 0.66 -> 0.41 s, about even; corpus hexsphere 1024x768, 4 textured passes (28M), whole process
+# 1.09 -> 0.91 s; two lit, textured, translucent spheres (56M) 1.36 -> 0.85 s and a 200k sphere
+# with ssaa 4 (110M) 1.65 -> 0.89 s. Very many triangles pay too (numpy's per-row setup).
+FRAGMENTS_WORTH = 12_000_000
 TRIANGLES_WORTH = 2_000_000
 
 _kernels = None
 _failed = False
+_frame_work = 0.0  # estimated work of the frame being drawn so far (see ``begin_frame``)
 
 
 def mode() -> str:
@@ -49,14 +51,23 @@ def active():
     return _kernels
 
 
+def begin_frame() -> None:
+    """A new frame: the work counted by ``for_work`` starts again from zero."""
+    global _frame_work
+    _frame_work = 0.0
+
+
 def for_work(fragments: float, triangles: int):
-    """The kernels module when the work (estimated fragments, triangles) pays for loading it,
-    or when it is already loaded; else None (the numpy path)."""
+    """The kernels module when the work of the frame so far (estimated fragments, added up over
+    the calls since ``begin_frame``; or the triangles of this call) pays for loading it, or when
+    it is already loaded; else None (the numpy path)."""
+    global _frame_work
     m = mode()
     if m == "numpy":
         return None
+    _frame_work += fragments
     if _kernels is None:
-        if m == "auto" and fragments < FRAGMENTS_WORTH and triangles < TRIANGLES_WORTH:
+        if m == "auto" and _frame_work < FRAGMENTS_WORTH and triangles < TRIANGLES_WORTH:
             return None
         _load(required=m == "numba")
     return _kernels

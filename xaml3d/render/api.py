@@ -26,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError
+from xaml3d.render import accel
 from xaml3d.render.draw import draw_viewport_models, make_context
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.wireframe import draw_wireframe
@@ -152,6 +153,7 @@ def render_arrays(
     diags: list[Diagnostic] = []
     bg = _background(background, vp)
     sw, sh = w * grid, h * grid
+    accel.begin_frame()
     fb = Framebuffer(sw, sh, bg)
     ctx = make_context(sw, sh, msaa)
     try:

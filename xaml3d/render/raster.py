@@ -113,7 +113,8 @@ def rasterize(
     belong to the triangle only if the edge is a top or a left edge (Direct3D's rule).
     With ``weights=False`` the fragments carry no weights (flat colours per triangle need none,
     and computing them is a large share of the per-fragment work). ``passes``: how many material
-    passes will shade and blend the fragments (it weighs the work when choosing the kernels).
+    passes will shade and blend the fragments (it weighs the work when choosing the kernels;
+    0: the numpy path, without counting the work).
 
     ``msaa`` > 1: the pixel grid is a multisample grid of ``msaa`` x ``msaa`` samples per image
     pixel (coverage and depth stay per sample) and the weights of every fragment are those at
@@ -145,7 +146,10 @@ def rasterize(
     rows = (j1 - j0 + 1)[tris]
     # Half the bounding boxes' samples: a cheap estimate of the fragments to come.
     estimate = 0.5 * float(np.dot(rows.astype(np.float64), (i1 - i0 + 1)[tris]))
-    kernels = accel.for_work(estimate * max(int(passes), 1) * (2 if weights else 1), tris.size)
+    # passes=0: a group of a call that already chose the numpy path (below), not counted again.
+    kernels = None
+    if passes > 0:
+        kernels = accel.for_work(estimate * int(passes) * (2 if weights else 1), tris.size)
     if kernels is None and int(rows.sum()) > ROW_BUDGET:
         # Every (triangle, row) pair is an item with several int64 arrays: many large triangles
         # (heavy overdraw) would need gigabytes at once. Consecutive groups of triangles with a
@@ -158,7 +162,7 @@ def rasterize(
             for part in np.split(tris, cuts):
                 sub = rasterize(
                     xy[part], depth_a[part], width, height,
-                    None if inv_a is None else inv_a[part], budget, weights, msaa,
+                    None if inv_a is None else inv_a[part], budget, weights, msaa, 0,
                 )  # fmt: skip
                 for frag in sub:
                     frag.tri = part[frag.tri]
