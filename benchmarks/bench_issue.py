@@ -10,6 +10,7 @@ the time of the ``render_arrays`` call, one core) for the lit scenes, textured a
 
     python benchmarks/bench_issue.py                 # everything, about 3 minutes
     python benchmarks/bench_issue.py --only sphere1m-flat cube --repeat 3
+    git worktree add /tmp/before HEAD~5 && python benchmarks/bench_issue.py --base /tmp/before
 
 The machine is shared: read the min..max spread before comparing two runs.
 """
@@ -33,10 +34,16 @@ XAML3D = [sys.executable, "-m", "xaml3d"]
 FLOOR = [sys.executable, str(HERE / "floor.py")]
 
 
-def timed(cmd: list[str]) -> tuple[float, float]:
-    """Wall seconds and peak RSS (MiB) of one whole process."""
+def timed(cmd: list[str], tree: str | None = None) -> tuple[float, float]:
+    """Wall seconds and peak RSS (MiB) of one whole process (``tree``: run the xaml3d of that
+    source tree instead of the installed one)."""
+    env = None
+    if tree:
+        env = {**os.environ, "PYTHONPATH": tree}
     t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    proc = subprocess.Popen(
+        cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=tree, env=env
+    )
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - t0
     proc.returncode = os.waitstatus_to_exitcode(status)
@@ -116,7 +123,14 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--only", nargs="+", help="case names to run (default: all)")
+    ap.add_argument(
+        "--base",
+        metavar="TREE",
+        help="also time the xaml3d of another source tree (e.g. `git worktree add` of an older "
+        "commit), interleaved run by run with this one: a fair before/after on a noisy machine",
+    )
     args = ap.parse_args()
+    base = str(Path(args.base).resolve()) if args.base else None
     with tempfile.TemporaryDirectory() as tmp:
         # Written by a child: a forked child's ru_maxrss counts its parent's memory up to exec,
         # so this process stays small.
@@ -129,23 +143,35 @@ def main() -> None:
             "textured": Path(tmp, "textured-lit-translucent.xaml"),
         }
         out = f"{tmp}/out.png"
-        print(
+        head = (
             f"{'case':22}{'median s':>9}  {'min..max':13}{'floor s':>8}{'ratio':>7}{'peak MiB':>10}"
         )
+        if base:
+            head += f"{'base s':>9}  {'min..max':13}{'ratio':>6}{'MiB':>6}"
+        print(head)
         for name, cmd, floor in cases(files, out):
             if args.only and name not in args.only:
                 continue
-            runs, floors, peak = [], [], 0.0
+            runs, floors, peak, bruns, bpeak = [], [], 0.0, [], 0.0
             for _ in range(args.repeat):
                 wall, rss = timed(cmd)
                 runs.append(wall)
                 peak = max(peak, rss)
                 if floor:
                     floors.append(timed(floor)[0])
+                if base:
+                    wall, rss = timed(cmd, base)
+                    bruns.append(wall)
+                    bpeak = max(bpeak, rss)
             med = statistics.median(runs)
             fl = statistics.median(floors) if floors else float("nan")
-            print(f"{name:22}{med:>9.3f}  {min(runs):.2f}..{max(runs):<7.2f}{fl:>8.3f}"
-                  f"{med / fl:>7.2f}{peak:>10.0f}", flush=True)  # fmt: skip
+            line = (f"{name:22}{med:>9.3f}  {min(runs):.2f}..{max(runs):<7.2f}{fl:>8.3f}"
+                    f"{med / fl:>7.2f}{peak:>10.0f}")  # fmt: skip
+            if base:
+                bmed = statistics.median(bruns)
+                line += (f"{bmed:>9.3f}  {min(bruns):.2f}..{max(bruns):<7.2f}{bmed / fl:>6.2f}"
+                         f"{bpeak:>6.0f}")  # fmt: skip
+            print(line, flush=True)
         if args.only and "samples" not in args.only:
             return
         print(f"\n{'shaded samples/s (1 core)':40}{'samples':>11}  M/s median (min..max)")
