@@ -3,8 +3,10 @@
 Every case is a whole ``xaml3d`` process (interpreter start, imports, reading, rendering, PNG),
 run ``--repeat`` times (default 5) interleaved with its floor (``floor.py``: read + lxml parse +
 numpy number conversion + a blank PNG of the same size, for the same file) measured in the same
-run. Printed per case: median wall seconds with min..max, the floor's median, their ratio, and
-the peak resident memory of the case's process (``os.wait4``'s ru_maxrss, largest of the runs).
+run. Printed per case: median wall seconds with min..max, the floor's median, their ratio, the
+peak resident memory of the case's process (``os.wait4``'s ru_maxrss, largest of the runs), and
+the median CPU seconds (user + system) of the case and of the floor with their ratio: on a
+machine shared with other work, CPU time moves less than wall time.
 A last table gives shaded samples per second (samples written by the material passes divided by
 the time of the ``render_arrays`` call, one core) for the lit scenes, textured and not.
 
@@ -34,9 +36,9 @@ XAML3D = [sys.executable, "-m", "xaml3d"]
 FLOOR = [sys.executable, str(HERE / "floor.py")]
 
 
-def timed(cmd: list[str], tree: str | None = None) -> tuple[float, float]:
-    """Wall seconds and peak RSS (MiB) of one whole process (``tree``: run the xaml3d of that
-    source tree instead of the installed one)."""
+def timed(cmd: list[str], tree: str | None = None) -> tuple[float, float, float]:
+    """Wall seconds, peak RSS (MiB) and CPU seconds (user + system) of one whole process
+    (``tree``: run the xaml3d of that source tree instead of the installed one)."""
     env = None
     if tree:
         env = {**os.environ, "PYTHONPATH": tree}
@@ -51,7 +53,7 @@ def timed(cmd: list[str], tree: str | None = None) -> tuple[float, float]:
     proc.stderr.close()
     if proc.returncode not in (0,):
         raise SystemExit(f"failed ({proc.returncode}): {' '.join(cmd)}\n{err}")
-    return wall, usage.ru_maxrss / 1024.0
+    return wall, usage.ru_maxrss / 1024.0, usage.ru_utime + usage.ru_stime
 
 
 def cases(files: dict[str, Path], out: str) -> list[tuple[str, list[str], list[str] | None]]:
@@ -143,30 +145,34 @@ def main() -> None:
             "textured": Path(tmp, "textured-lit-translucent.xaml"),
         }
         out = f"{tmp}/out.png"
-        head = (
-            f"{'case':22}{'median s':>9}  {'min..max':13}{'floor s':>8}{'ratio':>7}{'peak MiB':>10}"
-        )
+        head = (f"{'case':22}{'median s':>9}  {'min..max':13}{'floor s':>8}{'ratio':>7}"
+                f"{'peak MiB':>10}{'cpu s':>7}{'floor':>6}{'ratio':>6}")  # fmt: skip
         if base:
             head += f"{'base s':>9}  {'min..max':13}{'ratio':>6}{'MiB':>6}"
         print(head)
         for name, cmd, floor in cases(files, out):
             if args.only and name not in args.only:
                 continue
-            runs, floors, peak, bruns, bpeak = [], [], 0.0, [], 0.0
+            runs, floors, peak, bruns, bpeak, cpus, fcpus = [], [], 0.0, [], 0.0, [], []
             for _ in range(args.repeat):
-                wall, rss = timed(cmd)
+                wall, rss, cpu = timed(cmd)
                 runs.append(wall)
+                cpus.append(cpu)
                 peak = max(peak, rss)
                 if floor:
-                    floors.append(timed(floor)[0])
+                    wall, _, cpu = timed(floor)
+                    floors.append(wall)
+                    fcpus.append(cpu)
                 if base:
-                    wall, rss = timed(cmd, base)
+                    wall, rss, _ = timed(cmd, base)
                     bruns.append(wall)
                     bpeak = max(bpeak, rss)
             med = statistics.median(runs)
             fl = statistics.median(floors) if floors else float("nan")
+            cpu, fcpu = statistics.median(cpus), statistics.median(fcpus) if fcpus else float("nan")
             line = (f"{name:22}{med:>9.3f}  {min(runs):.2f}..{max(runs):<7.2f}{fl:>8.3f}"
-                    f"{med / fl:>7.2f}{peak:>10.0f}")  # fmt: skip
+                    f"{med / fl:>7.2f}{peak:>10.0f}"
+                    f"{cpu:>7.2f}{fcpu:>6.2f}{cpu / fcpu:>6.2f}")  # fmt: skip
             if base:
                 bmed = statistics.median(bruns)
                 line += (f"{bmed:>9.3f}  {min(bruns):.2f}..{max(bruns):<7.2f}{bmed / fl:>6.2f}"
