@@ -136,8 +136,11 @@ def side_fragments(
     clip = pm.clip
     idx = pm.model.mesh.indices[tris]
     planes = np.stack(ctx.clip_planes)
-    vin = ((clip @ planes.T) <= 0.0).all(axis=1) & (clip[:, 3] > 0.0)
-    tin = vin[idx].all(axis=1)
+    vin = clip[:, 3] > 0.0
+    for dist in (clip @ planes.T).T:  # one plane at a time: faster than all(axis=1)
+        vin &= dist <= 0.0
+    tv = vin[idx]
+    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
     # Per-vertex screen coordinates of the vertices that need no clipping.
     wv = np.where(vin, clip[:, 3], 1.0)
     qv = 1.0 / wv

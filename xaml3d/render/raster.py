@@ -71,6 +71,15 @@ class Fragments:
         return Fragments(self.pixel[mask], self.depth[mask], self.tri[mask], w)
 
 
+def _min3(a: np.ndarray) -> np.ndarray:
+    """a.min(axis=1) of a (T, 3) array, several times faster for millions of rows."""
+    return np.minimum(np.minimum(a[:, 0], a[:, 1]), a[:, 2])
+
+
+def _max3(a: np.ndarray) -> np.ndarray:
+    return np.maximum(np.maximum(a[:, 0], a[:, 1]), a[:, 2])
+
+
 def _ceil_div(a: np.ndarray, b: int) -> np.ndarray:
     return -((-a) // b)
 
@@ -126,7 +135,10 @@ def rasterize(
     t_count = xy.shape[0]
     if t_count == 0:
         return
-    ok = np.isfinite(xy).all(axis=(1, 2)) & (np.abs(xy) <= MAX_COORD).all(axis=(1, 2))
+    # NaN fails <= too, so this is also the finiteness test. Columns are and-ed one by one:
+    # numpy reduces a 3- or 6-long axis of millions of rows many times slower.
+    inside = (np.abs(xy) <= MAX_COORD).reshape(t_count, 6)
+    ok = inside[:, 0] & inside[:, 1] & inside[:, 2] & inside[:, 3] & inside[:, 4] & inside[:, 5]
     if not ok.all():
         xy = np.where(ok[:, None, None], xy, 0.0)
     X = np.rint(xy[..., 0] * SUBPIXEL).astype(np.int64)
@@ -135,10 +147,10 @@ def rasterize(
     ok &= area != 0
 
     # Candidate pixel centres: i * 256 + 128 within [Xmin, Xmax].
-    i0 = np.maximum(_ceil_div(X.min(axis=1) - HALF, SUBPIXEL), 0)
-    i1 = np.minimum((X.max(axis=1) - HALF) // SUBPIXEL, width - 1)
-    j0 = np.maximum(_ceil_div(Y.min(axis=1) - HALF, SUBPIXEL), 0)
-    j1 = np.minimum((Y.max(axis=1) - HALF) // SUBPIXEL, height - 1)
+    i0 = np.maximum(_ceil_div(_min3(X) - HALF, SUBPIXEL), 0)
+    i1 = np.minimum((_max3(X) - HALF) // SUBPIXEL, width - 1)
+    j0 = np.maximum(_ceil_div(_min3(Y) - HALF, SUBPIXEL), 0)
+    j1 = np.minimum((_max3(Y) - HALF) // SUBPIXEL, height - 1)
     ok &= (i1 >= i0) & (j1 >= j0)
     tris = np.flatnonzero(ok)
     if tris.size == 0:
