@@ -202,9 +202,22 @@ _ALIGN = {"Left": 0.0, "Top": 0.0, "Center": 0.5, "Right": 1.0, "Bottom": 1.0}
 _EPS = 1e-9  # tolerance of the TileMode None edge test (inverse-mapped coordinates round)
 
 
+_PREMULTIPLIED: list[tuple[np.ndarray, np.ndarray]] = []  # (image, premultiplied), newest last
+
+
 def _premultiplied_image(image: np.ndarray) -> np.ndarray:
+    """The image as premultiplied float rgba. A pass samples its image once per fragment chunk:
+    the conversion (a float copy of the whole image) of read-only images is kept for the last
+    few images seen."""
+    for src, img in _PREMULTIPLIED:
+        if src is image:
+            return img
     img = np.asarray(image, dtype=np.float64) / 255.0
     img[..., :3] *= img[..., 3:4]
+    if not image.flags.writeable:  # the scene's images are read-only; others may change
+        img.setflags(write=False)
+        _PREMULTIPLIED.append((image, img))
+        del _PREMULTIPLIED[:-4]
     return img
 
 
