@@ -27,6 +27,7 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.scene.fit", "FIT_CODES", True),
     ("xaml3d.cli_common", "CLI_CODES", True),
     ("xaml3d.render.api", "RENDER_CODES", False),
+    ("xaml3d.scene.lens", "LENS_CODES", True),
     ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
 )
 

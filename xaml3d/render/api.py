@@ -39,13 +39,19 @@ _FORMATS = {".png": "PNG", ".jpg": "JPEG", ".jpeg": "JPEG", ".webp": "WEBP"}
 @dataclass
 class Rendering:
     """The result of ``render_arrays``: straight-alpha rgba (H, W, 4) uint8, depth (H, W)
-    float64 (z_ndc, +inf where empty), the size, and the diagnostics of the render."""
+    float64 (z_ndc, +inf where empty), the size, and the diagnostics of the render.
+    ``distance``: (H, W) float32 linear eye-space depth (distance from the eye plane along the
+    look direction, NaN where empty; ``xaml3d.render.buffers``); ``ids``: (H, W) int32 index
+    of the model drawn at each pixel, -1 where none (only when asked for with ``ids=True``).
+    With a stereo pair, depth, distance and ids are the pinhole (centre) camera's."""
 
     rgba: np.ndarray
     depth: np.ndarray
     width: int
     height: int
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    distance: np.ndarray | None = None
+    ids: np.ndarray | None = None
 
     def image(self):
         from PIL import Image
@@ -105,13 +111,29 @@ def render_arrays(
     antialias_lines: bool = False,
     max_size: int = 16384,
     resources=(),
+    line_width: float = 1.0,
+    aperture: float = 0.0,
+    focus: float | None = None,
+    lens_samples: int = 24,
+    stereo: str | None = None,
+    eye_separation: float | None = None,
+    progress=None,
+    ids: bool = False,
 ) -> Rendering:
     """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
 
     ``mode``: "shaded" (WPF), "flat" (per-face lighting) or "wireframe". ``ssaa``: 1..4 samples
     per side (default 2, wireframe 1). ``hidden_lines=False`` hides occluded wireframe edges;
-    ``line_color`` (straight RGBA) overrides the material colour of wireframe edges.
-    Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
+    ``line_color`` (straight RGBA) overrides the material colour of wireframe edges,
+    ``line_width`` (output pixels) sets their width.
+    Lens and stereo (``xaml3d.render.lens``, docs/lens.md): ``aperture`` (lens radius, scene
+    units; 0 = pinhole, the ordinary image bit for bit), ``focus`` (focal distance along the
+    look direction; default: to the scene's centre), ``lens_samples``, ``stereo``
+    ("anaglyph", "side-by-side", "over-under"), ``eye_separation`` (default focus / 30),
+    ``progress(done, total)`` called after each sample render. ``ids=True`` also fills
+    ``Rendering.ids``.
+    Raises RenderError (RND001 size limits, RND005 bad arguments, LNS001 lens or stereo
+    without a PerspectiveCamera) and SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
     else:
@@ -132,6 +154,16 @@ def render_arrays(
             f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or ssaa",
             code="RND001",
         )
+    if (aperture is not None and aperture != 0) or stereo is not None:
+        from xaml3d.render.lens import render_through_lens
+
+        return render_through_lens(
+            scene, w, h, viewport=vp.index, aperture=aperture, focus=focus,
+            lens_samples=lens_samples, stereo=stereo, eye_separation=eye_separation,
+            progress=progress, mode=mode, background=background, ssaa=ssaa,
+            hidden_lines=hidden_lines, line_color=line_color, line_width=line_width,
+            antialias_lines=antialias_lines, max_size=max_size, ids=ids,
+        )  # fmt: skip
     diags: list[Diagnostic] = []
     bg = _background(background, vp)
     sw, sh = w * ssaa, h * ssaa
@@ -148,7 +180,8 @@ def render_arrays(
     if pipeline is not None:
         if mode == "wireframe":
             color = None if line_color is None else _background(line_color, vp)
-            draw_wireframe(fb, vp, pipeline, ctx, color, ssaa, hidden_lines, antialias_lines)
+            draw_wireframe(fb, vp, pipeline, ctx, color, ssaa, hidden_lines, antialias_lines,
+                           line_width)  # fmt: skip
         else:
             draw_viewport_models(fb, vp, pipeline, ctx, mode)
     for d in ctx.diagnostics:
@@ -158,7 +191,14 @@ def render_arrays(
         sev = INFO if not vp.models else WARNING
         diags.append(Diagnostic("RND002", sev, "nothing was drawn in the image", scene.file))
     rgba, depth = fb.resolve(ssaa)
-    return Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
+    result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
+    if pipeline is not None:
+        from xaml3d.render.buffers import eye_depth, model_ids
+
+        result.distance = eye_depth(depth, pipeline)
+        if ids:
+            result.ids = model_ids(scene, vp, w, h)
+    return result
 
 
 def render(scene_or_path, width: int | None = None, height: int | None = None, **options):
