@@ -22,6 +22,7 @@ from xaml3d.cli_common import (
     render_size,
     resources_option,
 )
+from xaml3d.cli_render_extras import camera_lens_options, lens_report, lens_text
 from xaml3d.errors import XamlError
 from xaml3d.scene.types import MatrixCamera
 
@@ -225,7 +226,10 @@ Examples:
 )
 @resources_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
-def camera_command(scene, viewport, width, height, scale, fit, points, resources, as_json) -> None:
+@camera_lens_options
+def camera_command(
+    scene, viewport, width, height, scale, fit, points, resources, as_json, **lens
+) -> None:
     from xaml3d.scene.camera_math import camera_pipeline
 
     name = display_name(scene)
@@ -266,10 +270,17 @@ def camera_command(scene, viewport, width, height, scale, fit, points, resources
     if pipe is not None:
         report["pipeline"] = _jsonable(pipe.as_dict())
         report["points"] = locate_points(pipe, points)
+        with exit_on_input_error(name):
+            lens_info = lens_report(vp, w, h, **lens)
+        if lens_info is not None:
+            report["lens"] = lens_info
     if as_json:
         click.echo(json.dumps(report, indent=2))
     else:
-        click.echo("\n".join(_camera_text(vp, cam, pipe, report["points"])))
+        text = _camera_text(vp, cam, pipe, report["points"])
+        if "lens" in report:
+            text += lens_text(report["lens"], _matrix_lines)
+        click.echo("\n".join(text))
     if error is not None:
         click.echo(error.format(), err=True)
         click.get_current_context().exit(1)

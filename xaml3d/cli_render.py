@@ -29,10 +29,11 @@ from xaml3d.cli_common import (
     stderr_is_terminal,
     with_file,
 )
+from xaml3d.cli_render_extras import Extras, Progress, extras_options
 from xaml3d.errors import ERROR, XamlError
 
-FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp"}
-SUFFIX_FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".webp": "webp"}
+FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp", "svg": ".svg"}
+SUFFIX_FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".webp": "webp", ".svg": "svg"}
 PIL_FORMATS = {"png": "PNG", "jpeg": "JPEG", "webp": "WEBP"}
 
 
@@ -53,6 +54,7 @@ class RenderOptions:
     verbose: bool
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
+    extras: Extras = Extras()
 
 
 class _Failed(Exception):
@@ -95,7 +97,8 @@ def _plan(scenes: tuple[str, ...], output: str | None, output_dir: str | None, f
             )
         if output != "-" and fmt is None and Path(output).suffix.lower() not in SUFFIX_FORMATS:
             raise click.UsageError(
-                f"cannot tell the image format of {output!r}: use .png, .jpg, .webp or --format"
+                f"cannot tell the image format of {output!r}: use .png, .jpg, .webp, .svg or "
+                "--format"
             )
         return [(scenes[0], output if output == "-" else Path(output))], None
     suffix = FORMATS[fmt or "png"]
@@ -138,6 +141,11 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         file = scene.file or name
         diags.extend(with_file(d, file) for d in scene.diagnostics)
         _check_not_input(target, name, [Path(p) for p in scene.resources_used])
+        for extra in (opts.extras.depth, opts.extras.ids):
+            if extra:
+                _check_not_input(
+                    Path(extra), name, inputs + [Path(p) for p in scene.resources_used]
+                )
         vp = scene.viewport(opts.viewport)
         width, height = render_size(vp, opts.width, opts.height, opts.scale)
         if opts.fit:
@@ -146,17 +154,41 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             scene = replace(
                 scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports)
             )
-        result = render_arrays(
-            scene,
-            width,
-            height,
-            viewport=vp.index,
-            mode=opts.mode,
-            background=opts.background,
-            ssaa=opts.ssaa,
-            hidden_lines=not opts.hide_hidden_lines,
-            antialias_lines=opts.antialias_lines,
-        )
+        svg = (opts.fmt or SUFFIX_FORMATS.get(Path(str(target)).suffix.lower())) == "svg"
+        if svg:
+            from xaml3d.cli_render_extras import write_svg
+
+            fresh = write_svg(opts.extras, scene, vp, width, height, target, opts.background,
+                              opts.ssaa)  # fmt: skip
+            fresh = [with_file(d, file) for d in fresh]
+            diags.extend(d for d in fresh if d.severity != ERROR)
+            fatal = [d for d in fresh if d.severity == ERROR]
+            if fatal:
+                echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+                echo_diagnostics(fatal)
+                raise _Failed
+            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+            return
+        from xaml3d.cli_render_extras import lens_arguments, write_buffers
+
+        progress = Progress(f"{name}: lens samples", stderr_is_terminal())
+        try:
+            result = render_arrays(
+                scene,
+                width,
+                height,
+                viewport=vp.index,
+                mode=opts.mode,
+                background=opts.background,
+                ssaa=opts.ssaa,
+                hidden_lines=not opts.hide_hidden_lines,
+                antialias_lines=opts.antialias_lines,
+                ids=bool(opts.extras.ids),
+                progress=progress,
+                **lens_arguments(opts.extras, vp),
+            )
+        finally:
+            progress.close()
         fresh = [with_file(d, file) for d in result.diagnostics]
         diags.extend(d for d in fresh if d.severity != ERROR)
         fatal = [d for d in fresh if d.severity == ERROR]
@@ -173,6 +205,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             out.flush()
         else:
             save_image(image, target, format=opts.fmt)
+        if result.distance is not None:
+            diags.extend(write_buffers(opts.extras, result, vp, file))
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)
@@ -199,6 +233,9 @@ Examples:
   cat cube.xaml | xaml3d render - -o cube.webp
   xaml3d render scenes/*.xaml -o out/ --format jpeg --background "#FF202020"
   xaml3d render lost-camera.xaml -o fixed.png --fit
+  xaml3d render row.xaml -o dof.png --aperture 0.08 --focus 6
+  xaml3d render cube.xaml -o pair.png --stereo anaglyph --depth depth.png
+  xaml3d render cube.xaml -o cube.svg --mode wireframe --line-width 2
 
 \b
 Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
@@ -250,7 +287,9 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 @click.option(
     "--hide-hidden-lines",
     is_flag=True,
-    help="wireframe: draw only the edges the depth buffer shows (default: every edge).",
+    help="wireframe: also remove edges (and parts) hidden behind nearer surfaces. Without it, "
+    "every edge of every drawn triangle shows; back faces without a BackMaterial are culled "
+    "either way, so a lone closed convex mesh looks the same. SVG output always removes them.",
 )
 @click.option(
     "--antialias-lines", is_flag=True, help="wireframe: anti-aliased (coverage-blended) lines."
@@ -278,6 +317,7 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 )
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
+@extras_options
 def render_command(
     scenes,
     output,
@@ -297,9 +337,17 @@ def render_command(
     verbose,
     hide_hidden_lines,
     antialias_lines,
+    extras,
 ) -> None:
+    from xaml3d.cli_render_extras import check_request, check_svg
+
     fmt = fmt.lower() if fmt else None
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
+    check_request(extras, scenes, output, mode)
+    if fmt == "svg" or any(
+        t != "-" and t.suffix.lower() == ".svg" and fmt is None for _, t in plan
+    ):
+        check_svg(extras, mode)
     opts = RenderOptions(
         width,
         height,
@@ -316,6 +364,7 @@ def render_command(
         verbose,
         hide_hidden_lines,
         antialias_lines,
+        extras,
     )
     if directory is not None:
         try:

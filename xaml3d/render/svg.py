@@ -44,6 +44,17 @@ def _hex(rgba) -> tuple[str, float]:
     return "#" + "".join(f"{round(min(max(c, 0.0), 1.0) * 255):02X}" for c in (r, g, b)), a
 
 
+def position_edges(mesh, tris: np.ndarray) -> np.ndarray:
+    """Undirected edges (E, 2) of triangles ``tris``, each once BY POSITION: meshes with
+    per-face vertices (flat-shaded cubes) repeat a position under several indices, and the
+    edge two faces share must still be one stroke. Each edge names one vertex per end."""
+    _, canon = np.unique(mesh.positions, axis=0, return_inverse=True)
+    canon = canon.reshape(-1)
+    rep = np.zeros(int(canon.max()) + 1 if canon.size else 0, dtype=np.int64)
+    rep[canon] = np.arange(canon.size)
+    return rep[unique_edges(canon[mesh.indices[tris]])]
+
+
 def visible_pieces(p0, p1, d0, d1, limit, width, height):
     """Split segments p0 -> p1 (E, 2) (buffer pixels, depths d0, d1 of z_ndc) into the pieces
     that pass the depth test against ``limit`` (flat, width x height). Returns (start, end)
@@ -128,7 +139,7 @@ def wireframe_svg(
         else:  # _model_color is premultiplied
             a = float(col[3])
             stroke, opacity = _hex((*(col[:3] / a if a > 0 else col[:3]), a))
-        edges = unique_edges(pm.model.mesh.indices[tris])
+        edges = position_edges(pm.model.mesh, tris)
         parts = []
         for start in range(0, edges.shape[0], EDGE_CHUNK):
             e = edges[start : start + EDGE_CHUNK]
