@@ -433,6 +433,12 @@ def test_cli_usage_errors(tmp_path, args, message):
     assert not (tmp_path / "o.png").exists()
 
 
+def test_cli_aperture_zero_writes_the_pinhole_image(tmp_path):
+    assert xaml3d("render", ROW, "-o", tmp_path / "a.png").returncode == 0
+    assert xaml3d("render", ROW, "-o", tmp_path / "b.png", "--aperture", "0").returncode == 0
+    assert (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
+
+
 def test_cli_lens_needs_a_perspective_camera(tmp_path):
     ortho = Path(__file__).resolve().parent.parent / "samples" / "orthographic-camera.xaml"
     r = xaml3d("render", ortho, "-o", tmp_path / "o.png", "--aperture", "0.1")

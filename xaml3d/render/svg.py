@@ -3,7 +3,8 @@
 Pipeline step: the wireframe mode (``xaml3d.render.wireframe``) written as vectors instead of
 pixels. Which edges and which colour are the raster wireframe's: every edge of every triangle
 WPF would draw (front faces with a Material, back faces with a BackMaterial; back faces without
-one are culled), stroked with the model's material colour or ``line_color``.
+one are culled), each once per pair of end POSITIONS (``position_edges``), stroked with the
+model's material colour or ``line_color``.
 
 Hidden-line removal uses the raster path's own depth test: the drawn triangles go into a
 supersampled depth buffer (``ssaa`` samples per output pixel and side), each clipped edge is
