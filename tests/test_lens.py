@@ -472,3 +472,20 @@ def test_cli_camera_prints_a_sheared_lens_sample():
     data = json.loads(xaml3d("camera", ROW, "--fstop", "2", "--json").stdout)
     assert data["lens"]["aperture"] == pytest.approx(18 / t / 2 / 2 / 1000)
     assert data["lens"]["lens_sample"]["wpf_projection"][2][0] != 0
+
+
+def test_progress_bar_opens_only_when_slow(capsys):
+    from xaml3d.cli_render_extras import Progress
+
+    quiet = Progress("lens", enabled=True)
+    quiet(1, 2)
+    assert quiet.bar is None  # two samples are not slow
+    bar = Progress("lens", enabled=True)
+    for k in range(1, 9):
+        bar(k, 8)
+    assert bar.bar is not None and bar.done == 8
+    bar.close()
+    assert bar.bar is None and "lens" in capsys.readouterr().err
+    off = Progress("lens", enabled=False)
+    off(1, 100)
+    assert off.bar is None
