@@ -23,6 +23,7 @@ measured once and arranged once, so the work is linear in the number of elements
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass, field
 
 from xaml3d.layout.grid import GridLayout
@@ -103,6 +104,7 @@ class Engine:
         self.root = root
         self.measure_calls = 0
         self.arrange_calls = 0
+        self.client = (0.0, 0.0)
         self.grid = GridLayout(self)
         self._rounding: dict[int, bool] = {}
         self._frameless = root if root.kind == WINDOW else None  # a root Window's size is outer
@@ -424,12 +426,33 @@ def layout(root: Node, client: tuple[float, float] | None = None) -> LayoutResul
     """Measure and arrange the tree in the root's client area (``client`` overrides it)."""
     w, h, how = root_client(root, client)
     e = Engine(root)
+    # measure/arrange recurse a few frames per nesting level (as WPF's do); the reader bounds
+    # the depth (parser limit), so room for that depth is made rather than failing
+    depth, stack = 0, [(root, 1)]
+    while stack:
+        n, d = stack.pop()
+        depth = max(depth, d)
+        stack.extend((k, d + 1) for k in n.children)
+    old = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old, 8 * depth + 200))
+    try:
+        _run(e, root, w, h, how)
+    finally:
+        sys.setrecursionlimit(old)
+    return _result(e, root, how)
+
+
+def _run(e: Engine, root: Node, w: float, h: float, how: str) -> None:
     e.measure(root, w, h)
     if w == INF or h == INF:  # SizeToContent: the client area is the content's size
         w = root.desired[0] if w == INF else w
         h = root.desired[1] if h == INF else h
     e.arrange(root, 0.0, 0.0, w, h, how)
-    result = LayoutResult(root, (w, h), how, e.measure_calls, e.arrange_calls)
+    e.client = (w, h)
+
+
+def _result(e: Engine, root: Node, how: str) -> LayoutResult:
+    result = LayoutResult(root, e.client, how, e.measure_calls, e.arrange_calls)
     _absolute(root)
     result.viewports = [n for n in root.walk() if n.kind == VIEWPORT]
     return result
