@@ -292,7 +292,10 @@ def test_markup_gotcha_is_located_warning():
 
 
 def test_markup_control_estimate_is_info():
-    x = f"<DockPanel {NS} Width='300' Height='200'><Button DockPanel.Dock='Top'>Go</Button><Viewport3D/></DockPanel>"
+    x = (
+        f"<DockPanel {NS} Width='300' Height='200'>"
+        "<Button DockPanel.Dock='Top'>Go</Button><Viewport3D/></DockPanel>"
+    )
     s = load(x, text=True)
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 20)
     assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
