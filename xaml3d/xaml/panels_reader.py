@@ -133,7 +133,14 @@ class _Values:
             return default
 
     def attached(self, prop: str, conv, default):
-        raw = self.p.attached.get(prop) if self.p is not None else self.el.get(prop)
+        if self.p is None:
+            raw = self.el.get(prop)
+        else:
+            raw = self.p.attached.get(prop)
+            owner, _, short = prop.partition(".")
+            if raw is None and owner == self.p.type:  # Grid.Row on a Grid: read as its own
+                raw = self.p.attrs.get(short)
+                prop = self.p.attr_keys.get(short, prop)
         if raw is None or split_markup(raw) is not None:
             return default  # a {Binding} row cannot be evaluated: WPF's default
         try:
