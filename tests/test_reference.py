@@ -15,7 +15,8 @@ Comparison (per pixel, per RGBA channel, 8-bit straight alpha, both images the s
 On failure a side-by-side picture ``expected | actual | diff x8`` (transparent areas shown over a
 grey checkerboard) is written to ``tests/reference/_failures/<area>__<case>.png`` and the test
 fails with its path. Cases named ``window-*`` are ``render --window`` pictures (the root's whole
-client area, every viewport at its layout rectangle); the others render the first viewport.
+client area, every viewport at its layout rectangle) in the ``layout`` area; the others render
+the first viewport.
 
 Regenerating the expected PNGs from the current renderer::
 
@@ -203,7 +204,8 @@ def test_reference_case(case_path: Path) -> None:
 
     cid = case_id(case_path)
     expected_png = case_path.with_suffix(".png")
-    if case_path.stem.startswith("window-"):  # render --window: the whole client area
+    if case_path.parent.name == "layout" and case_path.stem.startswith("window-"):
+        # render --window: the whole client area
         actual = _window_picture(case_path)
     else:
         actual = xaml3d.render(str(case_path)).convert("RGBA")
