@@ -14,7 +14,9 @@ Comparison (per pixel, per RGBA channel, 8-bit straight alpha, both images the s
 
 On failure a side-by-side picture ``expected | actual | diff x8`` (transparent areas shown over a
 grey checkerboard) is written to ``tests/reference/_failures/<area>__<case>.png`` and the test
-fails with its path.
+fails with its path. Cases named ``window-*`` are ``render --window`` pictures (the root's whole
+client area, every viewport at its layout rectangle) in the ``layout`` area; the others render
+the first viewport.
 
 Regenerating the expected PNGs from the current renderer::
 
@@ -188,6 +190,14 @@ def _case_params() -> list:
     return params
 
 
+def _window_picture(path: Path) -> Image.Image:
+    from xaml3d.render.window import compose_window
+    from xaml3d.xaml.loader import load
+
+    rgba, _ = compose_window(load(path))
+    return Image.fromarray(rgba, mode="RGBA")
+
+
 @pytest.mark.parametrize("case_path", _case_params())
 @pytest.mark.parametrize("kernels", ["numpy", "numba"])
 def test_reference_case(case_path: Path, kernels: str, monkeypatch) -> None:
@@ -198,7 +208,11 @@ def test_reference_case(case_path: Path, kernels: str, monkeypatch) -> None:
     monkeypatch.setenv("XAML3D_KERNELS", kernels)
     cid = case_id(case_path)
     expected_png = case_path.with_suffix(".png")
-    actual = xaml3d.render(str(case_path)).convert("RGBA")
+    if case_path.parent.name == "layout" and case_path.stem.startswith("window-"):
+        # render --window: the whole client area
+        actual = _window_picture(case_path)
+    else:
+        actual = xaml3d.render(str(case_path)).convert("RGBA")
     if regenerate_requested():
         actual.save(expected_png)
         pytest.fail(

@@ -377,7 +377,9 @@ class Viewport:
     name: str | None
     width: float
     height: float
-    size_source: str  # "viewport" | "ancestor:<Type>" | "default"
+    # "layout: <chain of panels and slots>" (WPF's layout), "viewport" (a root Viewport3D's
+    # own Width/Height) or "default" (640 x 480: nothing gives a size)
+    size_source: str
     camera: Camera | None  # None: Camera="{x:Null}", WPF draws nothing
     models: tuple[Model, ...] = ()
     lights: tuple[Light, ...] = ()
@@ -385,6 +387,7 @@ class Viewport:
     clip_to_bounds: bool = True
     line: int | None = None
     column: int | None = None
+    layout_rect: tuple[float, float, float, float] | None = None  # x, y, w, h in the root
 
     @property
     def triangle_count(self) -> int:
@@ -415,6 +418,7 @@ class Scene:
     storyboards: tuple[Storyboard, ...] = ()
     diagnostics: tuple[Diagnostic, ...] = ()
     resources_used: tuple[str, ...] = ()  # files whose resources were read (App.xaml, merged...)
+    layout: object = None  # xaml3d.layout.LayoutResult of the panels (None: no layout root)
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""
