@@ -148,3 +148,23 @@ def _walk(node, parent_time: float | None, out: list) -> None:
             _walk(c, child_time, out)
     else:
         out.append((node, state))
+
+
+def _once(node):
+    """The tree with every RepeatBehavior Forever counted as one iteration."""
+    from dataclasses import replace
+
+    if isinstance(node, TimelineGroup):
+        timing = node.timing
+        if timing.repeat_behavior == "Forever":
+            timing = replace(timing, repeat_behavior=1.0)
+        return replace(node, timing=timing, children=tuple(_once(c) for c in node.children))
+    if node.repeat_behavior == "Forever":
+        return replace(node, repeat_behavior=1.0)
+    return node
+
+
+def one_cycle(root: TimelineGroup) -> float:
+    """As ``group_cycle``, Forever repeats counted once: the length of one full iteration of
+    what runs (inf only when a Duration is Forever)."""
+    return group_cycle(_once(root))

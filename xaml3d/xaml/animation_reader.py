@@ -56,7 +56,20 @@ def _ratio(p, prop: str) -> float:
     return v if 0.0 <= v <= 1.0 else 0.0  # WPF refuses others (reported by validate)
 
 
-def _timing(p) -> Timing:
+_DAY_PROPS = ("BeginTime", "Duration", "RepeatBehavior")
+
+
+def _days_warning(r, p, props=_DAY_PROPS) -> None:
+    """A TimeSpan written as a bare number counts DAYS: '5' is five days, rarely meant."""
+    for prop in props:
+        raw = p.attrs.get(prop, "").strip()
+        if raw and ":" not in raw and raw.lstrip("-").isdigit():
+            msg = f"{p.type}.{prop}={raw!r} is {raw} day(s); write 0:0:{raw} for seconds"
+            r.ctx.diag("ANIM006", msg, p.el, attr=p.attr_keys.get(prop))
+
+
+def _timing(r, p) -> Timing:
+    _days_warning(r, p)
     begin: float | None = 0.0
     if p.attrs.get("BeginTime", "").replace(" ", "") == "{x:Null}":
         begin = None  # never begins
@@ -129,7 +142,7 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
             for k in p.items("Children")
         ]
         return TimelineGroup(
-            timing=_timing(p),
+            timing=_timing(r, p),
             children=tuple(k for k in kids if k is not None),
             type=t,
             **r.ctx.position(el),
@@ -150,7 +163,7 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
             )
             if kf is not None
         )
-    tm = _timing(p)
+    tm = _timing(r, p)
     anim = Animation(
         type=t,
         target_name=target["name"],
@@ -186,6 +199,7 @@ def _key_frame(r, el, vtype: str) -> KeyFrame | None:
     if kind is None or not t.endswith("KeyFrame") or vtype not in t:
         r.ctx.diag("ANI004", f"{t} is not a {vtype} key frame: ignored", el)
         return None
+    _days_warning(r, p, ("KeyTime",))
     key_time = p.string("KeyTime")
     parsed = None
     if key_time is not None:

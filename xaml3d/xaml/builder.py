@@ -50,10 +50,19 @@ _REFERENCE = {"StaticResource", "DynamicResource"}
 class Reader:
     """Builds scene objects from elements: property access, references, dispatch."""
 
-    def __init__(self, ctx: ReadContext, resources: Resources) -> None:
+    def __init__(self, ctx: ReadContext, resources: Resources, frame=None) -> None:
         self.ctx = ctx
         self.resources = resources
         self._props: dict[int, Props] = {}
+        # an animation frame being built (xaml3d.xaml.animation_scene.Frame): animated values
+        # by (element id, property), and what earlier frames built that animation cannot change
+        self.overrides: dict = frame.overrides if frame is not None else {}
+        self.cache: dict | None = frame.cache if frame is not None else None
+
+    def animated(self, el, prop: str, value):
+        """The value of ``el``'s property ``prop`` in the frame being built."""
+        f = self.overrides.get((id(el), prop))
+        return value if f is None else f(value)
 
     def props(self, el) -> Props:
         """The element's properties (read once: diagnostics are not repeated on reuse)."""
@@ -338,8 +347,10 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
-def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> Scene:
-    r = Reader(ctx, resources)
+def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument, frame=None) -> Scene:
+    """The Scene; with ``frame`` (animation_scene.Frame) its viewports at one moment of the
+    storyboards, which are not read again."""
+    r = Reader(ctx, resources, frame)
     walk = _Walk(r)
     walk.visit(doc.root)
     viewports = tuple(build_viewport(r, el, i) for i, el in enumerate(walk.viewports))
@@ -348,10 +359,10 @@ def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> 
 
     storyboards: list = []
     begun: set[int] = set()
-    for t in walk.triggers:
+    for t in walk.triggers if frame is None else ():
         read_trigger(r, t, storyboards, begun)
     d = resources.dictionary_of(doc.root)
-    for key, entry in d.entries.items() if d else ():
+    for key, entry in d.entries.items() if d and frame is None else ():
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
 

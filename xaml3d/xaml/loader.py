@@ -51,4 +51,18 @@ def load(
         found = res.discover_app(doc.path)
         if found is not None:
             res.add_app_file(found, discovered=True)
-    return build_scene(ctx, res, doc)
+    scene = build_scene(ctx, res, doc)
+    if not scene.storyboards:
+        return scene
+    from dataclasses import replace
+
+    from xaml3d.xaml.animation_scene import SceneTimeline
+
+    timeline = SceneTimeline(ctx, res, doc, scene, build_scene)
+    diags = sorted(
+        (*scene.diagnostics, *timeline.diagnostics),
+        key=lambda g: (g.file or "", g.line or 0, g.column or 0),
+    )
+    scene = replace(scene, diagnostics=tuple(diags), timeline=timeline)
+    timeline.base = scene
+    return scene

@@ -366,8 +366,8 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "image path outside the scene's folder tree refused: a grey checker stands in",
     ),
     "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
-    "ANI001": (WARNING, "animation type not evaluated (path animations, 2D targets)"),
+    "ANI001": (WARNING, "animation type not evaluated (path animations)"),
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
-    "ANI003": (INFO, "EasingFunction ignored (linear timing used)"),
+    "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),
     "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
 }
