@@ -17,6 +17,7 @@ from pathlib import Path
 
 import click
 
+from xaml3d.cli_animate import parse_time, storyboard_option, time_option
 from xaml3d.cli_common import (
     describe_os_error,
     display_name,
@@ -53,6 +54,8 @@ class RenderOptions:
     verbose: bool
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
+    time: float | None = 0.0  # seconds after load; None: the markup's base values
+    storyboard: str | None = None
 
 
 class _Failed(Exception):
@@ -127,7 +130,7 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
 
 
 def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
-    from xaml3d.render.api import render_arrays, save_image
+    from xaml3d.render.api import render_arrays, save_image, scene_at
     from xaml3d.scene.fit import fit_viewport
 
     name = display_name(source)
@@ -135,6 +138,7 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     try:
         _check_not_input(target, name, inputs)
         scene = load_scene(source, opts.resources)
+        scene = scene_at(scene, opts.time, opts.storyboard)
         file = scene.file or name
         diags.extend(with_file(d, file) for d in scene.diagnostics)
         _check_not_input(target, name, [Path(p) for p in scene.resources_used])
@@ -156,6 +160,7 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             ssaa=opts.ssaa,
             hidden_lines=not opts.hide_hidden_lines,
             antialias_lines=opts.antialias_lines,
+            time=None,
         )
         fresh = [with_file(d, file) for d in result.diagnostics]
         diags.extend(d for d in fresh if d.severity != ERROR)
@@ -199,6 +204,7 @@ Examples:
   cat cube.xaml | xaml3d render - -o cube.webp
   xaml3d render scenes/*.xaml -o out/ --format jpeg --background "#FF202020"
   xaml3d render lost-camera.xaml -o fixed.png --fit
+  xaml3d render spin.xaml -o spin-at-1.5s.png --time 1.5
 
 \b
 Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
@@ -276,6 +282,8 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     show_default=True,
     help="Room left around the scene by --fit, as a fraction of its size.",
 )
+@time_option
+@storyboard_option
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 def render_command(
@@ -297,8 +305,11 @@ def render_command(
     verbose,
     hide_hidden_lines,
     antialias_lines,
+    at_time,
+    storyboard,
 ) -> None:
     fmt = fmt.lower() if fmt else None
+    at_time = parse_time(at_time)
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
     opts = RenderOptions(
         width,
@@ -316,6 +327,8 @@ def render_command(
         verbose,
         hide_hidden_lines,
         antialias_lines,
+        at_time,
+        storyboard,
     )
     if directory is not None:
         try:

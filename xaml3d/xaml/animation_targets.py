@@ -18,7 +18,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from xaml3d.errors import ERROR, WARNING
+from xaml3d.errors import ERROR, INFO, WARNING
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
 
@@ -49,6 +49,7 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         "animation that never has an effect (BeginTime {x:Null}, or a zero-length active period)",
     ),  # fmt: skip
     "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
+    "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
 }
 
 # the value kind (vocabulary) each animation value type may target
