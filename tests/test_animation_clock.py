@@ -304,7 +304,8 @@ def test_slerp_shortest_path_and_ends():
     # without the shortest path it goes the long way round: 270 degrees / 2 = 135 about y,
     # seen as (0, -sin 67.5, 0, cos 67.5)
     long = I.slerp(q0, neg, 0.5, shortest=False)
-    assert long == pytest.approx((0.0, -math.sin(3 * math.pi / 8), 0.0, math.cos(3 * math.pi / 8)), abs=1e-15)  # fmt: skip
+    turn = 3 * math.pi / 8
+    assert long == pytest.approx((0.0, -math.sin(turn), 0.0, math.cos(turn)), abs=1e-15)
     # a length-2 end: the length interpolates geometrically (1 * 2^0.5 at half-way)
     two = tuple(2 * c for c in q90)
     assert math.sqrt(sum(c * c for c in I.slerp(q0, two, 0.5))) == pytest.approx(math.sqrt(2))
