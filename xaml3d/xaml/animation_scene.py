@@ -68,10 +68,26 @@ class SceneTimeline:
         names = name_map(doc.root)
         mark = len(ctx.diagnostics)
         for sb in base.storyboards:
+            self._check_start(sb, base.file)
             for a in sb.animations:
                 self.targets[id(a)] = self._resolve(r, names, a, base.file)
+                if a.begin_time is None:
+                    self._diag("ANIM008", f"{a.type} has BeginTime {{x:Null}}: it never begins",
+                               base.file, a)  # fmt: skip
         del ctx.diagnostics[mark:]  # lookups repeat what loading already reported
         self._anims = {id(a): a for sb in base.storyboards for a in sb.animations}
+
+    def _diag(self, code: str, message: str, file, where) -> None:
+        sev = ANIM_CODES[code][0]
+        self.diagnostics.append(Diagnostic(code, sev, message, file, where.line, where.column))
+
+    def _check_start(self, sb: Storyboard, file) -> None:
+        label = f"storyboard {sb.name!r}" if sb.name else "a storyboard"
+        if sb.trigger is None:
+            msg = f"{label} is in resources but no trigger begins it (--storyboard starts it)"
+            self._diag("ANIM007", msg, file, sb)
+        elif sb.root is not None and sb.root.timing.begin_time is None:
+            self._diag("ANIM007", f"{label} has BeginTime {{x:Null}}: it never starts", file, sb)
 
     def _resolve(self, r, names, a: Animation, file) -> Target | None:
         if not a.evaluated:
@@ -79,11 +95,8 @@ class SceneTimeline:
         try:
             return resolve(r, names, a.target_name, a.target_property, a.value_type)
         except TargetError as exc:
-            sev = ANIM_CODES[exc.code][0]
             what = f"{a.type} -> {a.target_name}.{a.target_property}"
-            self.diagnostics.append(
-                Diagnostic(exc.code, sev, f"{what}: {exc.message}", file, a.line, a.column)
-            )
+            self._diag(exc.code, f"{what}: {exc.message}", file, a)
             return None
 
     # ----------------------------------------------------------------- what runs
