@@ -4,8 +4,8 @@
 time in whole units (milliseconds, or GIF's 10 ms) whose total is exactly the animation's
 length (rounding distributed: frame i lasts round((i+1)T/n) - round(iT/n)). ``render_frames``
 yields one ordinary render per time of ``scene.timeline`` (the renderer knows nothing of
-animation). ``save_animation`` writes GIF (one adaptive palette per frame; a transparent
-background becomes GIF transparency), APNG (.png), WebP, or numbered PNGs in a directory,
+animation). ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels
+become GIF transparency, any other pixel is opaque), APNG (.png), WebP, or numbered PNGs in a directory,
 atomically: a temporary file in the target's folder is written, fsynced and renamed, so a
 failure leaves no partial file and an existing one untouched.
 """
@@ -46,12 +46,14 @@ def render_frames(scene, times, storyboard: str | None = None, **options) -> Ite
 
 
 def _gif_frame(rgba: np.ndarray):
-    """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels."""
+    """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
+    has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
+    so translucent surfaces stay visible; only empty pixels become transparent."""
     from PIL import Image
 
     alpha = rgba[..., 3]
     rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
-    clear = alpha < 128
+    clear = alpha == 0
     if not clear.any():
         return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
     # the colours of visible pixels only choose the palette
