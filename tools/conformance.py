@@ -103,7 +103,8 @@ def report(results, corpus: Path, anims: dict) -> str:
         "first frame, Loaded storyboards applied). The animations column counts the animations "
         "running at load; a file whose storyboard only code-behind begins is animated with that "
         "storyboard begun by name (`--storyboard`). Each animated file has a GIF in "
-        "`conformance-anim/` (one cycle, at most 4 s, 160 px wide, 12 frames per second, on the contact sheet's blue-grey).",
+        "`conformance-anim/` (one cycle, at most 4 s, 160 px wide, 12 frames per second, on "
+        "the contact sheet's blue-grey).",
         "",
         "| status | files |",
         "|---|---|",

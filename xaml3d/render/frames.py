@@ -5,8 +5,8 @@ time in whole units (milliseconds, or GIF's 10 ms) whose total is exactly the an
 length (rounding distributed: frame i lasts round((i+1)T/n) - round(iT/n)). ``render_frames``
 yields one ordinary render per time of ``scene.timeline`` (the renderer knows nothing of
 animation). ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels
-become GIF transparency, any other pixel is opaque), APNG (.png), WebP, or numbered PNGs in a directory,
-atomically: a temporary file in the target's folder is written, fsynced and renamed, so a
+become GIF transparency, any other pixel is opaque), APNG (.png), WebP, or numbered PNGs in a
+directory, atomically: a temporary file in the target's folder is written, fsynced and renamed, so a
 failure leaves no partial file and an existing one untouched.
 """
 
