@@ -208,8 +208,32 @@ def test_frame_times_and_durations():
 
 
 def _cli(*args, cwd=None):
+    """The command as a real process (formats, no traceback, exit codes)."""
     return subprocess.run([sys.executable, "-m", "xaml3d", *map(str, args)], capture_output=True,
                           cwd=cwd, timeout=120)  # fmt: skip
+
+
+class _Run:
+    def __init__(self, result) -> None:
+        self.returncode = result.exit_code
+        self.stderr = result.stderr_bytes
+        self.stdout = result.stdout_bytes
+
+
+def _run(*args, cwd):
+    """The command in this process (click's runner): quicker for many small checks."""
+    import os
+
+    from click.testing import CliRunner
+
+    from xaml3d.cli import main
+
+    old = os.getcwd()
+    os.chdir(cwd)
+    try:
+        return _Run(CliRunner().invoke(main, [str(a) for a in args]))
+    finally:
+        os.chdir(old)
 
 
 ANIM = ('<DoubleAnimation Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX" '
@@ -255,14 +279,14 @@ def test_cli_animate_gif_transparency_and_frames_dir(tmp_path):
 
 def test_cli_animate_errors(tmp_path):
     (tmp_path / "s.xaml").write_text(scene(ANIM))
-    p = _cli("animate", "s.xaml", "-o", "a.gif", "--storyboard", "nope", cwd=tmp_path)
+    p = _run("animate", "s.xaml", "-o", "a.gif", "--storyboard", "nope", cwd=tmp_path)
     assert p.returncode == 1 and b"error ANIM010" in p.stderr and b"Traceback" not in p.stderr
     assert not (tmp_path / "a.gif").exists()
-    p = _cli("animate", "s.xaml", "-o", "a.bmp", cwd=tmp_path)
+    p = _run("animate", "s.xaml", "-o", "a.bmp", cwd=tmp_path)
     assert p.returncode == 1 and b"RND006" in p.stderr
-    p = _cli("animate", "s.xaml", "-o", "s.xaml", cwd=tmp_path)
+    p = _run("animate", "s.xaml", "-o", "s.xaml", cwd=tmp_path)
     assert p.returncode == 1 and b"IO002" in p.stderr
-    p = _cli("animate", "s.xaml", "-o", "a.gif", "--start", "2", "--end", "1", cwd=tmp_path)
+    p = _run("animate", "s.xaml", "-o", "a.gif", "--start", "2", "--end", "1", cwd=tmp_path)
     assert p.returncode == 2
 
 
@@ -270,19 +294,19 @@ def test_cli_render_time(tmp_path):
     (tmp_path / "s.xaml").write_text(scene(ANIM))
     cols = {}
     for t in ("0", "0:0:0.25", "none"):
-        p = _cli("render", "s.xaml", "-o", "r.png", "--time", t, cwd=tmp_path)
+        p = _run("render", "s.xaml", "-o", "r.png", "--time", t, cwd=tmp_path)
         assert p.returncode == 0, p.stderr
         a = np.array(Image.open(tmp_path / "r.png"))
         cols[t] = int(np.nonzero(a[24, :, 3])[0][0])
     # From -16 at t=0: left edge at -24; t=0.25: -8 -> -16; base OffsetX 4: -4
     assert cols == {"0": 8, "0:0:0.25": 16, "none": 28}
-    p = _cli("render", "s.xaml", "-o", "r.png", "--time", "soon", cwd=tmp_path)
+    p = _run("render", "s.xaml", "-o", "r.png", "--time", "soon", cwd=tmp_path)
     assert p.returncode == 2 and b"--time" in p.stderr
 
 
 def test_cli_info_lists_animations(tmp_path):
     (tmp_path / "s.xaml").write_text(scene(ANIM))
-    p = _cli("info", "s.xaml", cwd=tmp_path)
+    p = _run("info", "s.xaml", cwd=tmp_path)
     out = p.stdout.decode()
     assert "animations: 1 run at load (for ever)" in out
     assert "DoubleAnimation -> move.OffsetX: begin 0 s, period 1 s, repeat Forever" in out
