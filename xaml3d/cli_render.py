@@ -17,6 +17,7 @@ from pathlib import Path
 
 import click
 
+from xaml3d.cli_animate import parse_time, storyboard_option, time_option
 from xaml3d.cli_common import (
     describe_os_error,
     display_name,
@@ -59,6 +60,8 @@ class RenderOptions:
     window_size: tuple[float, float] | None = None
     window: bool = False
     outline_controls: bool = False
+    time: float | None = 0.0  # seconds after load; None: the markup's base values
+    storyboard: str | None = None
 
 
 class _Failed(Exception):
@@ -154,6 +157,7 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list):
         msaa=opts.msaa,
         hidden_lines=not opts.hide_hidden_lines,
         antialias_lines=opts.antialias_lines,
+        time=None,  # the scene is already the one at --time
     )
     return _checked(result.diagnostics, result.image, file, opts, diags)
 
@@ -183,6 +187,7 @@ def _render_window(scene, file: str, opts: RenderOptions, diags: list):
         msaa=opts.msaa,
         background=opts.background,
         outline_controls=opts.outline_controls,
+        time=None,  # the scene is already the one at --time
     )
     return _checked(fresh, lambda: Image.fromarray(rgba, mode="RGBA"), file, opts, diags)
 
@@ -193,13 +198,14 @@ def _viewport_target(target: Path, vp) -> Path:
 
 
 def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
-    from xaml3d.render.api import save_image
+    from xaml3d.render.api import save_image, scene_at
 
     name = display_name(source)
     diags = []
     try:
         _check_not_input(target, name, inputs)
         scene = load_scene(source, opts.resources, opts.window_size)
+        scene = scene_at(scene, opts.time, opts.storyboard)
         file = scene.file or name
         diags.extend(with_file(d, file) for d in scene.diagnostics)
         _check_not_input(target, name, [Path(p) for p in scene.resources_used])
@@ -323,6 +329,7 @@ Examples:
   cat cube.xaml | xaml3d render - -o cube.webp
   xaml3d render scenes/*.xaml -o out/ --format jpeg --background "#FF202020"
   xaml3d render lost-camera.xaml -o fixed.png --fit
+  xaml3d render spin.xaml -o spin-at-1.5s.png --time 1.5
   xaml3d render views.xaml -o out.png --viewport all      # out-<name or index>.png each
   xaml3d render app.xaml -o win.png --window --window-size 1024x768
 
@@ -431,6 +438,8 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     type=click.IntRange(1),
     help="Worker processes for a batch of scenes (default: the number of cores).",
 )
+@time_option
+@storyboard_option
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 def render_command(
@@ -457,7 +466,10 @@ def render_command(
     window,
     outline_controls,
     window_size,
+    at_time,
+    storyboard,
 ) -> None:
+    at_time = parse_time(at_time)
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
         raise click.UsageError("choose one of --ssaa and --msaa")
     fmt = fmt.lower() if fmt else None
@@ -483,6 +495,8 @@ def render_command(
         window_size,
         window,
         outline_controls,
+        at_time,
+        storyboard,
     )
     if directory is not None:
         try:

@@ -12,6 +12,10 @@ Depth in ``Rendering.depth`` is WPF's normalized device depth z_ndc = -z' (0 on 
 1 on the (effective) far plane; non-linear in distance for perspective cameras), the nearest
 sample of each supersampling block, +inf where nothing was drawn.
 
+Time: the scene as it is ``time`` seconds after load (default 0: WPF's first frame, with the
+storyboards begun by Loaded triggers applied; ``storyboard`` names one more to begin at 0);
+``time=None`` draws the base values written in markup. ``scene_at`` gives that Scene itself.
+
 Background: the ``background`` argument (straight RGBA floats 0..1, or 0..255 ints) when given,
 else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, is not drawn).
 """
@@ -93,6 +97,21 @@ def _background(bg, vp) -> tuple[float, float, float, float]:
     return tuple(float(min(max(v, 0.0), 1.0)) for v in vals)
 
 
+def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = None) -> Scene:
+    """The scene ``time`` seconds after load (None: the base values). Raises SceneError when
+    ``storyboard`` names no storyboard, ValueError for a time that is not finite."""
+    if time is None:
+        return scene
+    if scene.timeline is None:
+        if storyboard is not None:
+            from xaml3d.errors import SceneError
+
+            raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
+                             code="ANIM010", file=scene.file)  # fmt: skip
+        return scene
+    return scene.timeline.at(float(time), storyboard)
+
+
 def render_arrays(
     scene_or_path,
     width: int | None = None,
@@ -108,6 +127,8 @@ def render_arrays(
     antialias_lines: bool = False,
     max_size: int = 16384,
     resources=(),
+    time: float | None = 0.0,
+    storyboard: str | None = None,
 ) -> Rendering:
     """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
 
@@ -118,6 +139,7 @@ def render_arrays(
     ssaa 1). Giving ``ssaa`` alone turns multisampling off; both above 1 is an error.
     ``hidden_lines=False`` hides occluded wireframe edges; ``line_color`` (straight RGBA)
     overrides the material colour of wireframe edges.
+    ``time``/``storyboard``: which moment of the animations (see ``scene_at``).
     Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
@@ -125,6 +147,7 @@ def render_arrays(
         from xaml3d.xaml.loader import load
 
         scene = load(scene_or_path, resources=resources)
+    scene = scene_at(scene, time, storyboard)
     if mode not in MODES:
         raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
     if ssaa is None and msaa is None:
