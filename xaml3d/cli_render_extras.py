@@ -35,6 +35,7 @@ class Extras:
     ids: str | None = None
     line_color: tuple | None = None
     line_width: float | None = None
+    progress: bool = False  # not an option: a lens progress bar is shown for a single scene
 
     @property
     def lens(self) -> bool:
@@ -121,8 +122,13 @@ def extras_options(func):
     return wrapper
 
 
-def check_request(ex: Extras, scenes, output, mode: str) -> None:
-    """Usage errors that need no scene (click.UsageError, exit 2)."""
+def check_request(
+    ex: Extras, scenes, output, mode: str, several: bool = False, window: bool = False
+) -> None:
+    """Usage errors that need no scene (click.UsageError, exit 2). ``several``: the command
+    draws several pictures per scene (--window, --viewport all)."""
+    if window and ex.lens:
+        raise click.UsageError("--aperture, --fstop and --stereo render one viewport, not --window")
     if ex.aperture is not None and ex.fstop is not None:
         raise click.UsageError("give either --aperture or --fstop, not both")
     if ex.focal_length is not None and ex.fstop is None:
@@ -136,8 +142,10 @@ def check_request(ex: Extras, scenes, output, mode: str) -> None:
     for opt, value in (("--depth", ex.depth), ("--ids", ex.ids)):
         if value is None:
             continue
-        if len(scenes) > 1:
-            raise click.UsageError(f"{opt} writes one file: render one scene at a time")
+        if len(scenes) > 1 or several:
+            raise click.UsageError(
+                f"{opt} writes one file: render one scene and one viewport at a time"
+            )
         suffixes = DEPTH_SUFFIXES if opt == "--depth" else (".png",)
         if Path(value).suffix.lower() not in suffixes:
             raise click.UsageError(f"{opt} {value!r}: use {' or '.join(suffixes)}")
@@ -147,8 +155,10 @@ def check_request(ex: Extras, scenes, output, mode: str) -> None:
         raise click.UsageError("--depth and --ids name the same file")
 
 
-def check_svg(ex: Extras, mode: str) -> None:
+def check_svg(ex: Extras, mode: str, window: bool = False) -> None:
     """An SVG output draws vectors: only the wireframe mode, no lens, no stereo."""
+    if window:
+        raise click.UsageError("--window draws a raster picture: use .png, .jpg or .webp")
     if mode != "wireframe":
         raise click.UsageError("an SVG output needs --mode wireframe (vector edges)")
     if ex.lens:
