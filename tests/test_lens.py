@@ -489,3 +489,17 @@ def test_progress_bar_opens_only_when_slow(capsys):
     off = Progress("lens", enabled=False)
     off(1, 100)
     assert off.bar is None
+
+
+def test_cli_animate_takes_the_lens_options(tmp_path):
+    spin = Path(__file__).resolve().parent.parent / "samples" / "spinning-cube.xaml"
+    out = tmp_path / "pair.png"
+    r = xaml3d("animate", spin, "-o", out, "--duration", "0.2", "--fps", "10", "-W", "80",
+               "--stereo", "side-by-side", "--aperture", "0.05", "--lens-samples", "2")  # fmt: skip
+    assert r.returncode == 0, r.stderr
+    img = Image.open(out)
+    assert img.size[0] == 160 and img.n_frames == 2
+    ortho = Path(__file__).resolve().parent.parent / "samples" / "orthographic-camera.xaml"
+    r = xaml3d("animate", ortho, "-o", tmp_path / "o.gif", "--aperture", "0.1")
+    assert r.returncode == 2 and b"need a PerspectiveCamera" in r.stderr
+    assert not (tmp_path / "o.gif").exists()

@@ -27,6 +27,7 @@ from xaml3d.cli_common import (
     stderr_is_terminal,
     with_file,
 )
+from xaml3d.cli_render_extras import animate_lens_options
 from xaml3d.errors import ERROR, XamlError
 
 DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
@@ -114,10 +115,14 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @resources_option
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
+@animate_lens_options
 def animate_command(scene, output, fps, start, end, duration, loop, storyboard, width, height,
                     mode, background, ssaa, viewport, resources, quiet,
-                    verbose) -> None:  # fmt: skip
+                    verbose, extras) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
+    from xaml3d.cli_render_extras import check_request, lens_arguments
+
+    check_request(extras, (scene,), output, mode)
 
     bg = _parse_background(None, None, background)
     name = display_name(scene)
@@ -148,6 +153,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
         w, h = render_size(vp, width, height)
         times = frame_times(start, end, fps)
         opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa)
+        opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         frames = []
         it = render_frames(sc, times, storyboard, width=w, height=h, **opts)
         if stderr_is_terminal() and not quiet:

@@ -260,6 +260,25 @@ def write_svg(ex: Extras, scene, vp, width, height, target, background, ssaa) ->
     return diags
 
 
+# --------------------------------------------------------------------------- xaml3d animate
+
+
+def animate_lens_options(func):
+    """The lens, stereo and line options for ``xaml3d animate`` (no --depth/--ids there); the
+    function receives them as ``extras``."""
+    names = ("depth", "ids", "progress")
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        fields = [n for n in Extras.__dataclass_fields__ if n not in names]
+        kwargs["extras"] = Extras(**{n: kwargs.pop(n) for n in fields})
+        return func(*args, **kwargs)
+
+    for option in reversed(_OPTIONS[:7] + _OPTIONS[9:]):
+        wrapper = option(wrapper)
+    return wrapper
+
+
 # --------------------------------------------------------------------------- xaml3d camera
 
 
