@@ -503,3 +503,16 @@ def test_cli_animate_takes_the_lens_options(tmp_path):
     r = xaml3d("animate", ortho, "-o", tmp_path / "o.gif", "--aperture", "0.1")
     assert r.returncode == 2 and b"need a PerspectiveCamera" in r.stderr
     assert not (tmp_path / "o.gif").exists()
+
+
+def test_lens_and_ids_keep_the_moment_drawn():
+    spin = load(Path(__file__).resolve().parent.parent / "samples" / "spinning-cube.xaml")
+    assert spin.timeline is not None
+    for time in (None, 0.4):
+        pin = render_arrays(spin, 96, 72, time=time, ssaa=1)
+        near = render_arrays(spin, 96, 72, time=time, ssaa=1, aperture=1e-9, lens_samples=2,
+                             ids=True)  # fmt: skip
+        assert np.abs(near.rgba.astype(int) - pin.rgba).max() <= 1
+        assert np.array_equal(near.ids >= 0, pin.rgba[..., 3] > 0)
+    moved = render_arrays(spin, 96, 72, time=0.4, ssaa=1)
+    assert not np.array_equal(moved.rgba, render_arrays(spin, 96, 72, time=None, ssaa=1).rgba)

@@ -69,7 +69,8 @@ def model_ids(scene, vp, width: int, height: int) -> np.ndarray:
     """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel, -1 where none."""
     from xaml3d.render.api import render_arrays
 
-    r = render_arrays(id_scene(scene, vp), width, height, viewport=vp.index, ssaa=1)
+    # time=None: ``scene`` is already the moment drawn; its timeline would rebuild the models
+    r = render_arrays(id_scene(scene, vp), width, height, viewport=vp.index, ssaa=1, time=None)
     rgb = r.rgba[..., :3].astype(np.int64)
     code = (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
     return np.where(r.rgba[..., 3] > 0, code - 1, -1).astype(np.int32)

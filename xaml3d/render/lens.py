@@ -41,12 +41,14 @@ def linear_to_srgb(c: np.ndarray) -> np.ndarray:
     )
 
 
+_LINEAR8 = srgb_to_linear(np.arange(256) / 255.0)  # every 8-bit sRGB value, decoded once
+
+
 def to_linear_premultiplied(rgba: np.ndarray) -> np.ndarray:
-    """(H, W, 4) uint8 straight sRGB -> float64 premultiplied linear RGBA."""
-    f = rgba.astype(np.float64) / 255.0
-    out = np.empty_like(f)
-    out[..., 3] = f[..., 3]
-    out[..., :3] = srgb_to_linear(f[..., :3]) * f[..., 3:4]
+    """(H, W, 4) uint8 straight sRGB -> float64 premultiplied linear RGBA (a table lookup)."""
+    out = np.empty(rgba.shape, dtype=np.float64)
+    out[..., 3] = rgba[..., 3] / 255.0
+    out[..., :3] = _LINEAR8[rgba[..., :3]] * out[..., 3:4]
     return out
 
 
@@ -115,6 +117,7 @@ def render_through_lens(
         raise RenderError(
             f"eye separation must be finite and >= 0, got {eye_separation!r}", code="RND005"
         )
+    options["time"] = None  # the scene is already the moment asked for
     pinhole = render_arrays(scene, width, height, viewport=vp.index, **options)
     plan = eye_offsets(float(aperture), lens_samples, stereo, float(eye_separation))
     total = sum(len(offsets) for _, offsets in plan)
