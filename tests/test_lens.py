@@ -516,3 +516,21 @@ def test_lens_and_ids_keep_the_moment_drawn():
         assert np.array_equal(near.ids >= 0, pin.rgba[..., 3] > 0)
     moved = render_arrays(spin, 96, 72, time=0.4, ssaa=1)
     assert not np.array_equal(moved.rgba, render_arrays(spin, 96, 72, time=None, ssaa=1).rgba)
+
+
+@pytest.mark.parametrize(
+    ("camera", "code"),
+    [
+        (PerspectiveCamera(field_of_view=0.0), "CAM004"),
+        (PerspectiveCamera(look_direction=(0.0, 0.0, 0.0)), "CAM001"),
+    ],
+)
+def test_lens_on_a_camera_that_cannot_draw_reports_like_the_pinhole(camera, code):
+    scene = load(ROW)
+    scene = replace(scene, viewports=(replace(scene.viewport(), camera=camera),))
+    plain = render_arrays(scene)
+    for kwargs in ({"aperture": 0.1}, {"stereo": "anaglyph"}):
+        r = render_arrays(scene, **kwargs)
+        assert [d.code for d in r.diagnostics] == [d.code for d in plain.diagnostics]
+        assert code in [d.code for d in r.diagnostics if d.severity == "error"]
+        assert not r.rgba.any()

@@ -21,8 +21,9 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.errors import RenderError
+from xaml3d.errors import ERROR, RenderError
 from xaml3d.scene.lens import STEREO_FRACTION, STEREO_MODES, lens_frame, lens_pattern
+from xaml3d.scene.types import PerspectiveCamera
 
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # Rec. 709 / sRGB primaries, linear light
 
@@ -110,6 +111,12 @@ def render_through_lens(
     if not (aperture >= 0 and np.isfinite(aperture)):
         raise RenderError(f"aperture must be finite and >= 0, got {aperture!r}", code="RND005")
     vp = scene.viewport(viewport)
+    if not isinstance(vp.camera, PerspectiveCamera):
+        lens_frame(vp.camera, width, height, focus)  # raises LNS001
+    options["time"] = None  # the scene is already the moment asked for
+    pinhole = render_arrays(scene, width, height, viewport=vp.index, **options)
+    if any(d.severity == ERROR for d in pinhole.diagnostics):
+        return pinhole  # a camera that cannot produce an image: WPF draws nothing
     frame = lens_frame(vp.camera, width, height, focus, vp.bounds())
     if eye_separation is None:
         eye_separation = frame.focus * STEREO_FRACTION
@@ -117,8 +124,6 @@ def render_through_lens(
         raise RenderError(
             f"eye separation must be finite and >= 0, got {eye_separation!r}", code="RND005"
         )
-    options["time"] = None  # the scene is already the moment asked for
-    pinhole = render_arrays(scene, width, height, viewport=vp.index, **options)
     plan = eye_offsets(float(aperture), lens_samples, stereo, float(eye_separation))
     total = sum(len(offsets) for _, offsets in plan)
     options = {k: v for k, v in options.items() if k != "ids"}

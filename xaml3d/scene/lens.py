@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from xaml3d.errors import ERROR, INFO, RenderError
-from xaml3d.scene.camera_math import camera_frame, effective_far
+from xaml3d.scene.camera_math import camera_frame, camera_pipeline
 from xaml3d.scene.types import MatrixCamera, PerspectiveCamera, frozen_array
 
 LENS_CODES: dict[str, tuple[str, str]] = {
@@ -157,16 +157,14 @@ def lens_frame(camera, width: float, height: float, focus: float | None, bounds=
             f"a lens aperture or stereo pair needs a PerspectiveCamera; the viewport has {kind}",
             code="LNS001",
         )
-    camera_frame(camera.look_direction, camera.up_direction)  # raises on a degenerate frame
+    # The pinhole's own pipeline: CameraError (with the camera's line) for every camera that
+    # cannot produce an image, and the near / effective far planes the renderer uses.
+    pipe = camera_pipeline(camera, width, height, bounds=bounds)
     if focus is None:
         focus = default_focus(camera, bounds)
     if not (focus > 0 and math.isfinite(focus)):
         raise RenderError(f"focal distance must be finite and > 0, got {focus!r}", code="RND005")
-    near = float(camera.near_plane_distance)
-    far = effective_far(
-        camera_view(camera), near, float(camera.far_plane_distance), "perspective", bounds
-    )
-    return LensFrame(camera, float(width) / float(height), float(focus), near, far)
+    return LensFrame(camera, float(width) / float(height), float(focus), pipe.near, pipe.far)
 
 
 def eye_distance(z_ndc, near: float, far: float, kind: str = "perspective") -> np.ndarray:
