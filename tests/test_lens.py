@@ -182,6 +182,18 @@ def test_depth_of_field_row_sharp_at_focus_blurrier_away():
     check_reference(dof.rgba, "row-dof.png")
 
 
+def test_fstop_argument_gives_the_same_picture_as_its_aperture():
+    t = math.tan(math.radians(30))
+    a = render_arrays(ROW, 160, 60, fstop=1.4, focal_length=85.0, focus=7.0, lens_samples=4)
+    b = render_arrays(ROW, 160, 60, aperture=85 / 1.4 / 2000, focus=7.0, lens_samples=4)
+    assert np.array_equal(a.rgba, b.rgba)
+    c = render_arrays(ROW, 160, 60, fstop=0.1, focus=7.0, lens_samples=4)  # F from FieldOfView
+    d = render_arrays(ROW, 160, 60, aperture=18 / t / 0.1 / 2000, focus=7.0, lens_samples=4)
+    assert np.array_equal(c.rgba, d.rgba)
+    with pytest.raises(RenderError):
+        render_arrays(ROW, 160, 60, fstop=2.0, aperture=0.1)
+
+
 def test_lens_on_orthographic_camera_is_an_error():
     scene = load(ROW)
     vp = scene.viewport()

@@ -170,8 +170,6 @@ def check_svg(ex: Extras, mode: str, window: bool = False) -> None:
 def lens_arguments(ex: Extras, vp) -> dict:
     """The ``render_arrays`` arguments of the options for viewport ``vp``; a lens or stereo
     pair on another camera than a PerspectiveCamera is a usage error (exit 2)."""
-    from xaml3d.scene.lens import aperture_of_fstop, focal_length_of_fov
-
     args: dict = {"line_color": ex.line_color, "line_width": ex.line_width or 1.0}
     if not ex.lens:
         return args
@@ -182,12 +180,10 @@ def lens_arguments(ex: Extras, vp) -> dict:
             f"--aperture, --fstop and --stereo need a PerspectiveCamera; viewport {vp.index} "
             f"has {kind}"
         )
-    aperture = ex.aperture or 0.0
-    if ex.fstop is not None:
-        focal = ex.focal_length or focal_length_of_fov(float(cam.field_of_view))
-        aperture = aperture_of_fstop(ex.fstop, focal)
     args.update(
-        aperture=aperture,
+        aperture=ex.aperture or 0.0,
+        fstop=ex.fstop,
+        focal_length=ex.focal_length,
         focus=ex.focus,
         lens_samples=ex.lens_samples,
         stereo=ex.stereo,
@@ -292,7 +288,7 @@ def camera_lens_options(func):
 def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_length) -> dict | None:
     """The pinhole and one lens sample's (the rim point +A u) WPF matrices, for
     ``xaml3d camera --aperture``; None when no lens option was given."""
-    from xaml3d.scene.lens import focal_length_of_fov, lens_frame
+    from xaml3d.scene.lens import aperture_of_fstop, focal_length_of_fov, lens_frame
 
     ex = Extras(aperture=aperture, focus=focus, fstop=fstop, focal_length=focal_length)
     if not (ex.aperture is not None or ex.fstop is not None):
@@ -302,7 +298,8 @@ def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_lengt
     check_request(ex, ("scene",), None, "shaded")
     args = lens_arguments(ex, vp)
     frame = lens_frame(vp.camera, width, height, args["focus"], vp.bounds())
-    a = float(args["aperture"])
+    focal = focal_length or focal_length_of_fov(float(vp.camera.field_of_view))
+    a = aperture_of_fstop(fstop, focal) if fstop is not None else float(args["aperture"])
     pin, rim = frame.eye_camera(0.0, 0.0), frame.eye_camera(a, 0.0)
 
     def mats(cam) -> dict:
@@ -315,9 +312,7 @@ def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_lengt
         "aperture": a,
         "focus": frame.focus,
         "fstop": fstop,
-        "focal_length_mm": (focal_length or focal_length_of_fov(vp.camera.field_of_view))
-        if fstop is not None
-        else None,
+        "focal_length_mm": focal if fstop is not None else None,
         "sample": [a, 0.0],
         "near": frame.near,
         "far": frame.far,

@@ -138,6 +138,8 @@ def render_arrays(
     line_width: float = 1.0,
     aperture: float = 0.0,
     focus: float | None = None,
+    fstop: float | None = None,
+    focal_length: float | None = None,
     lens_samples: int = 24,
     stereo: str | None = None,
     eye_separation: float | None = None,
@@ -156,7 +158,9 @@ def render_arrays(
     ``time``/``storyboard``: which moment of the animations (see ``scene_at``).
     Lens and stereo (``xaml3d.render.lens``, docs/lens.md): ``aperture`` (lens radius, scene
     units; 0 = pinhole, the ordinary image bit for bit), ``focus`` (focal distance along the
-    look direction; default: to the scene's centre), ``lens_samples``, ``stereo``
+    look direction; default: to the scene's centre), or ``fstop`` with ``focal_length`` (mm of
+    a 35 mm frame; default from the FieldOfView) instead of ``aperture``, ``lens_samples``,
+    ``stereo``
     ("anaglyph", "side-by-side", "over-under"), ``eye_separation`` (default focus / 30),
     ``progress(done, total)`` called after each sample render. ``ids=True`` also fills
     ``Rendering.ids``.
@@ -194,12 +198,13 @@ def render_arrays(
             f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or the ssaa/msaa factor",
             code="RND001",
         )
-    if (aperture is not None and aperture != 0) or stereo is not None:
+    if (aperture is not None and aperture != 0) or stereo is not None or fstop is not None:
         from xaml3d.render.lens import render_through_lens
 
         return render_through_lens(
-            scene, w, h, viewport=vp.index, aperture=aperture, focus=focus,
-            lens_samples=lens_samples, stereo=stereo, eye_separation=eye_separation,
+            scene, w, h, viewport=vp.index, aperture=aperture, focus=focus, fstop=fstop,
+            focal_length=focal_length, lens_samples=lens_samples, stereo=stereo,
+            eye_separation=eye_separation,
             progress=progress, mode=mode, background=background, ssaa=ssaa if ssaa > 1 else None,
             msaa=msaa if ssaa == 1 else None, hidden_lines=hidden_lines, line_color=line_color,
             line_width=line_width, antialias_lines=antialias_lines, max_size=max_size, ids=ids,

@@ -22,7 +22,14 @@ from dataclasses import replace
 import numpy as np
 
 from xaml3d.errors import ERROR, RenderError
-from xaml3d.scene.lens import STEREO_FRACTION, STEREO_MODES, lens_frame, lens_pattern
+from xaml3d.scene.lens import (
+    STEREO_FRACTION,
+    STEREO_MODES,
+    aperture_of_fstop,
+    focal_length_of_fov,
+    lens_frame,
+    lens_pattern,
+)
 from xaml3d.scene.types import PerspectiveCamera
 
 LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # Rec. 709 / sRGB primaries, linear light
@@ -88,6 +95,8 @@ def render_through_lens(
     viewport=None,
     aperture: float = 0.0,
     focus: float | None = None,
+    fstop: float | None = None,
+    focal_length: float | None = None,
     lens_samples: int = 24,
     stereo: str | None = None,
     eye_separation: float | None = None,
@@ -97,10 +106,11 @@ def render_through_lens(
     """Depth of field and/or a stereo pair of one viewport (module docstring).
 
     ``width`` x ``height`` is the size of ONE eye's image. ``progress(done, total)`` is called
-    after every sample render. Returns a ``Rendering`` whose rgba is the combined picture
-    (side-by-side: 2W x H; over-under: W x 2H) and whose depth, distance and ids are the
-    pinhole camera's. Raises RenderError (LNS001: not a PerspectiveCamera; RND005: bad
-    argument)."""
+    after every sample render. ``fstop``/``focal_length``: the aperture as an f-number
+    (``xaml3d.scene.lens.aperture_of_fstop``). Returns a ``Rendering`` whose rgba is the
+    combined picture (side-by-side: 2W x H; over-under: W x 2H) and whose depth, distance
+    and ids are the pinhole camera's. Raises RenderError (LNS001: not a PerspectiveCamera;
+    RND005: bad argument)."""
     from xaml3d.render.api import render_arrays
 
     if stereo is not None and stereo not in STEREO_MODES:
@@ -118,6 +128,11 @@ def render_through_lens(
     if any(d.severity == ERROR for d in pinhole.diagnostics):
         return pinhole  # a camera that cannot produce an image: WPF draws nothing
     frame = lens_frame(vp.camera, width, height, focus, vp.bounds())
+    if fstop is not None:
+        if aperture:
+            raise RenderError("give either aperture or fstop, not both", code="RND005")
+        focal = focal_length or focal_length_of_fov(float(vp.camera.field_of_view))
+        aperture = aperture_of_fstop(fstop, focal)
     if eye_separation is None:
         eye_separation = frame.focus * STEREO_FRACTION
     if not (eye_separation >= 0 and np.isfinite(eye_separation)):
