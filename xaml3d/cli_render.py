@@ -27,9 +27,10 @@ from xaml3d.cli_common import (
     resources_option,
     same_file,
     stderr_is_terminal,
-    with_file,
 )
-from xaml3d.errors import ERROR, XamlError
+from xaml3d.errors import ERROR, CameraError, XamlError
+from xaml3d.findings import has_errors, scene_findings, sort_findings, with_file
+from xaml3d.findings import lenient as lenient_findings
 
 FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp"}
 SUFFIX_FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".webp": "webp"}
@@ -53,6 +54,7 @@ class RenderOptions:
     verbose: bool
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
+    lenient: bool = False
 
 
 class _Failed(Exception):
@@ -114,6 +116,31 @@ def _encode(image, fmt: str) -> bytes:
     return buf.getvalue()
 
 
+def _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_lines, aa_lines) -> None:
+    """OPT001: an option given on the command line that has no effect with the others."""
+    ctx = click.get_current_context()
+
+    def given(param: str) -> bool:
+        source = ctx.get_parameter_source(param)
+        return source is not None and source.name == "COMMANDLINE"
+
+    idle = []
+    if given("margin") and not fit:
+        idle.append("--margin has no effect without --fit")
+    if mode != "wireframe":
+        for option, on in (("--hide-hidden-lines", hide_lines), ("--antialias-lines", aa_lines)):
+            if on:
+                idle.append(f"{option} applies to --mode wireframe only")
+    if fmt and output not in (None, "-") and not _is_dir_target(output):
+        implied = SUFFIX_FORMATS.get(Path(output).suffix.lower())
+        if implied is not None and implied != fmt:
+            idle.append(f"--format {fmt} disagrees with the suffix of {output!r}: {fmt} is written")
+    if quiet and verbose:
+        idle.append("-q and -v together: -q wins, only errors are printed")
+    for msg in idle:
+        click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+
+
 def _check_not_input(target, name: str, inputs: list[Path]) -> None:
     if target == "-":
         return
@@ -126,26 +153,52 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
             raise _Failed
 
 
+def _size_for_checks(opts: RenderOptions):
+    """The size each viewport's camera is checked at: its render size (an empty viewport keeps
+    its own size, which the camera check reports as CAM010)."""
+
+    def size_of(vp):
+        try:
+            return render_size(vp, opts.width, opts.height, opts.scale)
+        except (CameraError, click.UsageError):
+            return (vp.width, vp.height)
+
+    return size_of
+
+
 def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
     from xaml3d.render.api import render_arrays, save_image
     from xaml3d.scene.fit import fit_viewport
 
     name = display_name(source)
-    diags = []
+    diags: list = []
     try:
         _check_not_input(target, name, inputs)
         scene = load_scene(source, opts.resources)
         file = scene.file or name
-        diags.extend(with_file(d, file) for d in scene.diagnostics)
-        _check_not_input(target, name, [Path(p) for p in scene.resources_used])
-        vp = scene.viewport(opts.viewport)
-        width, height = render_size(vp, opts.width, opts.height, opts.scale)
-        if opts.fit:
+        _check_not_input(target, name, [Path(p) for p in scene_files_read(scene)])
+        vp = scene.viewport(opts.viewport) if scene.viewports else None
+        notes: list = []
+        if vp is not None and opts.fit:
+            width, height = render_size(vp, opts.width, opts.height, opts.scale)
             fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
-            diags.extend(notes)
             scene = replace(
                 scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports)
             )
+            vp = fitted
+        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings).
+        diags = sort_findings([*scene_findings(scene, _size_for_checks(opts), name), *notes])
+        if has_errors(diags):
+            if not opts.lenient or vp is None:
+                echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+                if vp is not None:
+                    msg = f"{name}: not rendered: the scene has errors (--lenient renders it)"
+                    click.echo(msg, err=True)
+                raise _Failed
+            diags = lenient_findings(diags)
+        if vp is None:
+            scene.viewport(opts.viewport)  # raises SCN001: nothing to render
+        width, height = render_size(vp, opts.width, opts.height, opts.scale)
         result = render_arrays(
             scene,
             width,
@@ -157,13 +210,9 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             hidden_lines=not opts.hide_hidden_lines,
             antialias_lines=opts.antialias_lines,
         )
-        fresh = [with_file(d, file) for d in result.diagnostics]
-        diags.extend(d for d in fresh if d.severity != ERROR)
-        fatal = [d for d in fresh if d.severity == ERROR]
-        if fatal:  # e.g. a camera that cannot produce an image: WPF would draw nothing
-            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
-            echo_diagnostics(fatal)
-            raise _Failed
+        # A camera error render_arrays meets is the camera check's, already in the findings
+        # (reported as a warning under --lenient, where the picture stays empty as in WPF).
+        diags.extend(with_file(d, file) for d in result.diagnostics if d.severity != ERROR)
         image = result.image()
         if target == "-":
             # The render already holds --background (at its alpha): flatten onto white only.
@@ -176,6 +225,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)
+        if exc.code == "RND001" and "limit" in exc.message:
+            exc.message += " (lower it with -W/-H or --scale, or --ssaa)"
         click.echo(exc.format(), err=True)
         raise _Failed from None
     except (OSError, ValueError) as exc:
@@ -183,6 +234,12 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         raise _Failed from None
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+
+
+def scene_files_read(scene) -> list[str]:
+    """Every file a render of ``scene`` reads besides the scene itself: resource dictionaries,
+    App.xaml and the images its ImageBrushes load. None of them may be an output."""
+    return [*scene.resources_used, *scene.images_used]
 
 
 HELP = """Render XAML 3D scene(s) to images (PNG, JPEG or WebP).
@@ -276,6 +333,12 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     show_default=True,
     help="Room left around the scene by --fit, as a fraction of its size.",
 )
+@click.option(
+    "--lenient",
+    is_flag=True,
+    help="Render a scene with errors anyway: each error is reported as a warning and WPF's "
+    "default is used for what could not be read.",
+)
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 def render_command(
@@ -297,6 +360,7 @@ def render_command(
     verbose,
     hide_hidden_lines,
     antialias_lines,
+    lenient,
 ) -> None:
     fmt = fmt.lower() if fmt else None
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
@@ -316,8 +380,14 @@ def render_command(
         verbose,
         hide_hidden_lines,
         antialias_lines,
+        lenient,
     )
+    _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_hidden_lines, antialias_lines)
     if directory is not None:
+        if directory.exists() and not directory.is_dir():
+            msg = f"{directory} is a file, not a directory: it cannot hold the outputs"
+            click.echo(io_error(str(directory), msg), err=True)
+            click.get_current_context().exit(1)
         try:
             directory.mkdir(parents=True, exist_ok=True)
         except OSError as exc:

@@ -14,7 +14,7 @@ from __future__ import annotations
 import importlib
 
 from xaml3d import errors
-from xaml3d.errors import ERROR, WARNING
+from xaml3d.errors import ERROR, INFO, WARNING
 
 # (module, table name, required): a missing required table is a bug; an optional one is merged
 # when its module exports it.
@@ -40,7 +40,8 @@ EXTRA_CODES: dict[str, tuple[str, str]] = {
     "GEO003": (ERROR, "singular matrix: it cannot be inverted"),
     "GEO004": (ERROR, "a Matrix3D does not have 16 numbers / is not 4x4"),
     "RND001": (ERROR, "image size over the limit (pixels per side or supersampled samples)"),
-    "RND002": (WARNING, "nothing was drawn in the image (info when the viewport has no models)"),
+    "RND002": (WARNING, "nothing was drawn in the image, though the viewport holds models"),
+    "RND003": (INFO, "nothing was drawn: the viewport holds no models"),
     "RND004": (
         WARNING,
         "model skipped by the renderer: singular transform or non-finite coordinates",

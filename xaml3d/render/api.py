@@ -154,9 +154,13 @@ def render_arrays(
     for d in ctx.diagnostics:
         diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
                                                  d.line, d.column))  # fmt: skip
-    if fb.fragments_drawn == 0:
-        sev = INFO if not vp.models else WARNING
-        diags.append(Diagnostic("RND002", sev, "nothing was drawn in the image", scene.file))
+    if fb.fragments_drawn == 0 and pipeline is not None:  # a camera error says why already
+        if vp.models:
+            msg = "nothing was drawn in the image"
+            diags.append(Diagnostic("RND002", WARNING, msg, scene.file))
+        else:
+            msg = "the viewport holds no models: nothing to draw"
+            diags.append(Diagnostic("RND003", INFO, msg, scene.file))
     rgba, depth = fb.resolve(ssaa)
     return Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
 

@@ -415,6 +415,7 @@ class Scene:
     storyboards: tuple[Storyboard, ...] = ()
     diagnostics: tuple[Diagnostic, ...] = ()
     resources_used: tuple[str, ...] = ()  # files whose resources were read (App.xaml, merged...)
+    images_used: tuple[str, ...] = ()  # image files the ImageBrushes read
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""

@@ -194,6 +194,7 @@ def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None,
             r.ctx.diag("BRU002", msg, el, attr=attr)
             return str(path), None
         path = alt
+    r.ctx.images_used.append(str(path))
     try:
         from PIL import Image
 

@@ -32,6 +32,7 @@ from xaml3d.xaml.context import (
     ReadContext,
     element_name,
     is_presentation,
+    namespace_typo,
     qname,
     split_markup,
     x_attr,
@@ -68,7 +69,12 @@ class Reader:
         skipping (with one diagnostic) elements of unknown namespaces."""
         ns, local = qname(el.tag)
         if not is_presentation(ns):
-            self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
+            wpf = namespace_typo(ns)
+            if wpf is not None:
+                msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
+                self.ctx.diag("XAML018", msg, el)
+            else:
+                self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
             return default
         if local in _REFERENCE:
             key = el.get("ResourceKey")
@@ -288,8 +294,13 @@ class _Walk:
         r = self.r
         ns, local = qname(el.tag)
         if not is_presentation(ns):
-            msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
-            r.ctx.diag("XAML001", msg, el, once=(ns, local))
+            wpf = namespace_typo(ns)
+            if wpf is not None:
+                msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
+                r.ctx.diag("XAML018", msg, el, once=ns)
+            else:
+                msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
+                r.ctx.diag("XAML001", msg, el, once=(ns, local))
             if x_attr(el, "Class") is not None:
                 msg = f"x:Class={x_attr(el, 'Class')!r}: code-behind is not run"
                 r.ctx.diag("XAML007", msg, el, attr=f"{{{XAML_NS}}}Class")
@@ -307,8 +318,12 @@ class _Walk:
             return
         et = voc.lookup(local)
         if et is None:
+            # The framework (2D) vocabulary is not closed: an unknown name there is a WPF type
+            # xaml3d does not list as often as a typo, unless it misspells a 3D type.
+            near = voc.suggest(local, voc.closed_types())
             hint = voc.did_you_mean(local, voc.known_types())
-            r.ctx.diag("XAML003", f"unknown element {local!r}{hint}", el)
+            code = "XAML003" if near is not None else "XAML017"
+            r.ctx.diag(code, f"unknown element {local!r}{hint}", el)
         elif et.kind not in ("framework", "resource"):
             return  # 3D/brush objects outside a Viewport3D (resources, effects...)
         p = r.props(el)
@@ -344,7 +359,12 @@ def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> 
     walk.visit(doc.root)
     viewports = tuple(build_viewport(r, el, i) for i, el in enumerate(walk.viewports))
     if not viewports:
-        ctx.diag("SCN001", "the document holds no Viewport3D", doc.root)
+        root = qname(doc.root.tag)[1]
+        if root in ("ResourceDictionary", "Application"):  # a valid WPF file, not a scene
+            msg = f"a {root} holds no Viewport3D: nothing to render (use it with -r)"
+            ctx.diag("SCN013", msg, doc.root)
+        else:
+            ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
 
     storyboards: list = []
     begun: set[int] = set()
@@ -362,4 +382,5 @@ def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> 
         storyboards=tuple(storyboards),
         diagnostics=tuple(diags),
         resources_used=tuple(dict.fromkeys(ctx.files_used)),
+        images_used=tuple(dict.fromkeys(ctx.images_used)),
     )

@@ -271,6 +271,9 @@ class Resources:
                 from_el,
                 attr=attr,
             )
+        elif dynamic:  # WPF keeps the default and waits for the key to appear: no load error
+            msg = f"DynamicResource {key!r} not found: the property keeps its default"
+            self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            self.ctx.diag("RES001", f"resource {key!r} not found", from_el, attr=attr)
+            self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
         return None
