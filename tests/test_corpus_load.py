@@ -4,7 +4,7 @@ and reports the diagnostics its content calls for."""
 from __future__ import annotations
 
 import pytest
-from conftest import CORPUS
+from conftest import CORPUS, needs_corpus
 
 from xaml3d.xaml.loader import load
 from xaml3d.xaml.vocabulary import READER_CODES
@@ -62,6 +62,7 @@ def test_corpus_file_loads(path):
         assert "XAML001" in got
 
 
+@needs_corpus
 def test_corpus_without_companion_reports_missing_keys():
     path = next(CORPUS.glob("006_*.xaml"))
     scene = load(path, discover_app=False)
