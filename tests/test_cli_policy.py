@@ -89,3 +89,19 @@ def test_size_limit_names_the_options_that_lower_it(tmp_path):
     r = render(scene, "-o", tmp_path / "o.png", "-W", "9000", "-H", "9000", "--ssaa", "4")
     assert r.exit_code == 1 and "RND001" in r.stderr
     assert "-W/-H" in r.stderr and "--ssaa" in r.stderr
+
+
+def test_res006_says_where_app_xaml_was_found(tmp_path):
+    from xaml3d.xaml.loader import load
+
+    (tmp_path / "App.xaml").write_text(
+        f'<Application {NS} {NSX}><Application.Resources><SolidColorBrush x:Key="Paint" '
+        'Color="Red"/></Application.Resources></Application>'
+    )
+    (tmp_path / "a" / "b").mkdir(parents=True)
+    for folder, where in ((tmp_path, "found in the scene's folder"),
+                          (tmp_path / "a" / "b", "found 2 folders above the scene's")):  # fmt: skip
+        scene = folder / "s.xaml"
+        scene.write_text(square_scene(brush='Brush="{StaticResource Paint}"'))
+        notes = [d.message for d in load(scene).diagnostics if d.code == "RES006"]
+        assert len(notes) == 1 and str(tmp_path / "App.xaml") in notes[0] and where in notes[0]
