@@ -76,19 +76,33 @@ def _resolve_size(vp, width, height, max_size: int) -> tuple[int, int]:
     return w, h
 
 
-def _background(bg, vp) -> tuple[float, float, float, float]:
+def _rgba(value, name: str) -> tuple[float, float, float, float]:
+    """A colour argument (``background``, ``line_color``) as straight RGBA floats in 0..1.
+
+    3 (RGB, alpha 1) or 4 (RGBA) numbers: floats/ints in 0..1, or 0..255 when any component is
+    above 1 (so ``(1, 1, 1)`` is white and ``(255, 0, 0)`` red). Raises RND005 naming ``name``."""
+    try:
+        vals = tuple(value)
+    except TypeError:
+        vals = ()
+    ok = len(vals) in (3, 4) and all(
+        isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
+        for v in vals
+    )
+    if not ok or not all(np.isfinite(float(v)) for v in vals):
+        raise RenderError(
+            f"{name} must be 3 (RGB) or 4 (RGBA) finite numbers, in 0..1 or 0..255; got {value!r}",
+            code="RND005",
+        )
+    scale = 255.0 if any(float(v) > 1.0 for v in vals) else 1.0
+    rgba = [float(v) / scale for v in vals] + ([1.0] if len(vals) == 3 else [])
+    return tuple(float(min(max(v, 0.0), 1.0)) for v in rgba)
+
+
+def _background(bg) -> tuple[float, float, float, float]:
     # Transparent by default (wpf3d.md section 2): the 3D content is composited over whatever
     # 2D lies beneath it, which is not ours to draw; the caller chooses a fill.
-    if bg is None:
-        return (0.0, 0.0, 0.0, 0.0)
-    vals = tuple(bg)
-    if len(vals) == 3:
-        vals = (*vals, 1.0 if all(isinstance(v, float) for v in vals) else 255)
-    if len(vals) != 4:
-        raise RenderError(f"background must be an RGBA tuple, got {bg!r}", code="RND005")
-    if any(isinstance(v, int) and not isinstance(v, bool) and v > 1 for v in vals):
-        vals = tuple(v / 255.0 for v in vals)
-    return tuple(float(min(max(v, 0.0), 1.0)) for v in vals)
+    return (0.0, 0.0, 0.0, 0.0) if bg is None else _rgba(bg, "background")
 
 
 def render_arrays(
@@ -110,7 +124,9 @@ def render_arrays(
 
     ``mode``: "shaded" (WPF), "flat" (per-face lighting) or "wireframe". ``ssaa``: 1..4 samples
     per side (default 2, wireframe 1). ``hidden_lines=False`` hides occluded wireframe edges;
-    ``line_color`` (straight RGBA) overrides the material colour of wireframe edges.
+    ``line_color`` overrides the material colour of wireframe edges. Colours (``background``,
+    ``line_color``) are 3 (RGB, alpha 1) or 4 (straight RGBA) numbers in 0..1, or in 0..255
+    when any is above 1.
     Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
@@ -124,6 +140,8 @@ def render_arrays(
         ssaa = 1 if mode == "wireframe" else 2
     if not (isinstance(ssaa, int) and 1 <= ssaa <= 4):
         raise RenderError(f"ssaa must be an integer from 1 to 4, got {ssaa!r}", code="RND005")
+    bg = _background(background)
+    line_rgba = None if line_color is None else _rgba(line_color, "line_color")
     vp = scene.viewport(viewport)
     w, h = _resolve_size(vp, width, height, max_size)
     if w * h * ssaa * ssaa > MAX_SUPERSAMPLED_PIXELS:
@@ -133,7 +151,6 @@ def render_arrays(
             code="RND001",
         )
     diags: list[Diagnostic] = []
-    bg = _background(background, vp)
     sw, sh = w * ssaa, h * ssaa
     fb = Framebuffer(sw, sh, bg)
     ctx = make_context(sw, sh)
@@ -147,8 +164,7 @@ def render_arrays(
         pipeline = None
     if pipeline is not None:
         if mode == "wireframe":
-            color = None if line_color is None else _background(line_color, vp)
-            draw_wireframe(fb, vp, pipeline, ctx, color, ssaa, hidden_lines, antialias_lines)
+            draw_wireframe(fb, vp, pipeline, ctx, line_rgba, ssaa, hidden_lines, antialias_lines)
         else:
             draw_viewport_models(fb, vp, pipeline, ctx, mode)
     for d in ctx.diagnostics:
