@@ -449,6 +449,8 @@ def test_camera_points(runner, scene):
     assert located[4]["reason"] == "beyond the far plane"  # 25 from the eye > 10
     assert located[5]["reason"] == "outside the image"
     assert [p["visible"] for p in located] == [True, True, False, False, False, False]
+    for clipped in located[2:]:  # a clipped point lands on no pixel (docs/cli.md)
+        assert (clipped["x"], clipped["y"], clipped["depth"]) == (None, None, None)
     text = run(runner, "camera", path, "--point", "1,0,0", "--point", "0,0,9").stdout
     assert "point 1,0,0 -> pixel (60, 25)" in text
     assert "point 0,0,9 -> clipped: behind the camera" in text
