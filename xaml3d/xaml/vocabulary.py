@@ -60,6 +60,7 @@ UI_PROPS = {
     "InputBindings": "object", "CommandBindings": "object", "ContextMenu": "object",
     "BitmapEffect": "object", "AllowDrop": _B, "ForceCursor": _B, "Language": _S,
     "OverridesDefaultStyle": _B, "Loaded": "event", "Unloaded": "event",
+    "IsManipulationEnabled": _B, "BindingGroup": "object", "InputScope": "object",
 }  # fmt: skip
 _TRANSFORMABLE = {"Transform": "transform3d"}
 _TIMELINE = {
