@@ -70,7 +70,7 @@ def lenient(diags: Iterable[Diagnostic]) -> list[Diagnostic]:
     out = []
     for d in diags:
         if d.severity == ERROR:
-            msg = f"{d.message} [error in WPF; rendered with WPF's default: --lenient]"
+            msg = f"{d.message} [an error, rendered anyway: --lenient]"
             d = Diagnostic(d.code, WARNING, msg, d.file, d.line, d.column)
         out.append(d)
     return out
