@@ -105,3 +105,12 @@ def test_res006_says_where_app_xaml_was_found(tmp_path):
         scene.write_text(square_scene(brush='Brush="{StaticResource Paint}"'))
         notes = [d.message for d in load(scene).diagnostics if d.code == "RES006"]
         assert len(notes) == 1 and str(tmp_path / "App.xaml") in notes[0] and where in notes[0]
+
+
+def test_batch_never_writes_over_what_an_earlier_scene_read(tmp_path):
+    scene, tex = _textured(tmp_path)  # quad.xaml reads img/tex.png
+    (tmp_path / "tex.xaml").write_text(SQUARE)  # its batch output would be img/tex.png
+    before = tex.read_bytes()
+    r = render(scene, tmp_path / "tex.xaml", "-o", f"{tmp_path / 'img'}/")
+    assert r.exit_code == 1 and "IO002" in r.stderr and "rendered 1 of 2 scenes" in r.stderr
+    assert tex.read_bytes() == before

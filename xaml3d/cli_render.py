@@ -176,7 +176,9 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         _check_not_input(target, name, inputs)
         scene = load_scene(source, opts.resources)
         file = scene.file or name
-        _check_not_input(target, name, [Path(p) for p in scene_files_read(scene)])
+        read = [Path(p) for p in scene_files_read(scene)]
+        inputs.extend(read)  # a batch: no later scene may write over what this one read
+        _check_not_input(target, name, read)
         vp = scene.viewport(opts.viewport) if scene.viewports else None
         notes: list = []
         if vp is not None and opts.fit:
