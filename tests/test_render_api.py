@@ -196,3 +196,10 @@ def test_bad_colour_arguments_name_the_argument(bad):
     with pytest.raises(RenderError) as exc:
         render(scene(), ssaa=1, background=bad)
     assert exc.value.message.startswith("background must be")
+
+
+@pytest.mark.parametrize(("arg", "value"), [("width", "640"), ("height", 0), ("width", 2.5)])
+def test_bad_size_arguments_name_the_argument(arg, value):
+    with pytest.raises(RenderError) as exc:
+        render(scene(), ssaa=1, **{arg: value})
+    assert exc.value.code == "RND005" and exc.value.message.startswith(f"{arg} must be")

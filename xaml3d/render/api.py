@@ -134,6 +134,11 @@ def render_arrays(
         from xaml3d.xaml.loader import load
 
         scene = load(scene_or_path, resources=resources)
+    for arg, value in (("width", width), ("height", height), ("max_size", max_size)):
+        if value is not None and not (
+            isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value >= 1
+        ):
+            raise RenderError(f"{arg} must be a whole number >= 1, got {value!r}", code="RND005")
     if mode not in MODES:
         raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
     if ssaa is None:
