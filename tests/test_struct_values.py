@@ -126,3 +126,40 @@ def test_unknown_member_and_bad_number_are_errors_at_the_attribute():
     point, directional = s.viewports[0].lights
     assert tuple(point.position) == (0.0, 0.0, 0.0)  # the property keeps its default
     assert tuple(directional.direction) == (0.0, 0.0, -1.0)
+
+
+def test_gradient_points_as_elements():
+    brush = """<DiffuseMaterial><DiffuseMaterial.Brush><LinearGradientBrush>
+      <LinearGradientBrush.StartPoint><Point X="0.25" Y="1"/></LinearGradientBrush.StartPoint>
+      <LinearGradientBrush.EndPoint><Point Y="0.5"/></LinearGradientBrush.EndPoint>
+      <GradientStop Color="Red" Offset="0"/><GradientStop Color="Blue" Offset="1"/>
+    </LinearGradientBrush></DiffuseMaterial.Brush></DiffuseMaterial>"""
+    mesh = '<MeshGeometry3D Positions="0,0,0 1,0,0 0,1,0" TriangleIndices="0 1 2"/>'
+    s = scene(
+        models=f"<GeometryModel3D><GeometryModel3D.Geometry>{mesh}</GeometryModel3D.Geometry>"
+        f"<GeometryModel3D.Material>{brush}</GeometryModel3D.Material></GeometryModel3D>"
+    )
+    b = s.viewports[0].models[0].material[0].brush
+    assert (b.start_point, b.end_point) == ((0.25, 1.0), (0.0, 0.5))
+    assert errors(s) == []
+
+
+@pytest.mark.parametrize(
+    ("xml", "text"),
+    [
+        ('<Size3D X="1" Z="3"/>', "1.0,0.0,3.0"),
+        ('<Rect3D X="1" SizeX="2" SizeY="3" SizeZ="4"/>', "1.0,0.0,0.0,2.0,3.0,4.0"),
+        ('<Point4D X="1"/>', "1.0,0.0,0.0,0.0"),
+        ('<Quaternion Z="1"/>', "0.0,0.0,1.0,1.0"),  # unset W keeps the identity's 1
+        ('<Color A="128" G="255"/>', "#8000FF00"),
+        ('<Color ScA="1" ScB="0.5"/>', "sc#1.0,0.0,0.0,0.5"),
+    ],
+)
+def test_struct_text(xml, text):
+    from lxml import etree
+
+    from xaml3d.xaml.context import ReadContext
+    from xaml3d.xaml.struct_values import struct_text
+
+    el = etree.fromstring(xml.replace(" ", f" {NS} ", 1))
+    assert struct_text(ReadContext(), el) == text
