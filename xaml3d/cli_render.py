@@ -227,8 +227,10 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)
-        if exc.code == "RND001" and "limit" in exc.message:
-            exc.message += " (lower it with -W/-H or --scale, or --ssaa)"
+        if exc.code == "RND001":  # the API names its arguments; say which options they are
+            exc.message = exc.message.replace(
+                "lower the size or ssaa", "lower -W/-H (or --scale) or --ssaa"
+            ).replace("(raise max_size to allow it)", "(lower -W/-H or --scale)")
         click.echo(exc.format(), err=True)
         raise _Failed from None
     except (OSError, ValueError) as exc:
