@@ -1,9 +1,10 @@
 """``xaml3d validate``: every problem the reader, the camera check and the scene checks know.
 
-Collects, per file: a fatal reading error (XML, values, resources...) if any, else the reader's
-recoverable diagnostics (``Scene.diagnostics``), ``check_camera`` for every viewport (with its
-size and the scene's bounds), and ``check_scene`` (``xaml3d.scene.checks``). The findings are the
-command's data, so they go to stdout (text lines or JSON); a one-line summary goes to stderr.
+Collects, per file, a fatal reading error (XML, unreadable file...) if any, else the findings of
+``xaml3d.findings.scene_findings``: the reader's diagnostics, ``check_camera`` for every viewport
+(at -W/-H when given) and ``check_scene``, exactly the list ``xaml3d render`` prints and refuses a
+scene for. The findings are the command's data, so they go to stdout (text lines or JSON); a
+one-line summary goes to stderr.
 """
 
 from __future__ import annotations

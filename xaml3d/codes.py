@@ -5,6 +5,13 @@ command line); this module merges them into one mapping for ``docs/diagnostics.m
 A code listed by two tables keeps the first entry (the stage that emits it as a diagnostic); the
 exception classes' default codes (``xaml3d.errors``) only fill in codes no table lists.
 
+A code's severity is WPF's verdict (docs/diagnostics.md) and is defined once, in its table:
+emitters take it from there (``ReadContext.diag`` and ``ReadContext.error`` look it up, the
+scene checks build their diagnostics from their tables), and ``tests/test_severity.py`` checks
+that every diagnostic emitted over the reference cases, samples and corpus carries it. Where one
+situation has two verdicts (an unknown name among 3D types or among framework elements; a
+missing StaticResource or DynamicResource key), there are two codes.
+
 Codes emitted by modules that keep no table of their own (transforms: GEO; renderer: RND; scene
 selection: SCN002) are listed here in ``EXTRA_CODES``, until their modules export one.
 """
