@@ -92,3 +92,9 @@ def test_resource_lookups_as_wpf_does():
     late = viewport(attrs=NS, brush="{StaticResource Late}").replace("</Viewport3D>", "") + res
     assert found(late + "</Viewport3D>")["RES002"] == "error"
     assert found(viewport(attrs=NS, brush="{StaticResource")).get("XAML016") == "error"
+
+
+def test_attribute_in_a_misspelt_xaml_namespace_is_an_error():
+    text = viewport(attrs=NS.replace('winfx/2006/xaml"', 'winfx/2006/xam"') + ' x:Name="v"')
+    diag = [d for d in load(text, text=True).diagnostics if d.code == "XAML018"]
+    assert len(diag) == 1 and diag[0].severity == "error" and "winfx/2006/xaml'?" in diag[0].message

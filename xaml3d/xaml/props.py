@@ -24,6 +24,7 @@ from xaml3d.xaml.context import (
     ignorable_namespaces,
     is_presentation,
     markup_key,
+    namespace_typo,
     qname,
     split_markup,
 )
@@ -97,8 +98,15 @@ class Props:
                     ignorable = ignorable_namespaces(self.el)
                 if ns in ignorable or ns == "http://www.w3.org/XML/1998/namespace":
                     continue
-                msg = f"attribute {local!r} from namespace {ns!r} ignored"
-                ctx.diag("XAML002", msg, self.el, attr=name)
+                wpf = namespace_typo(ns)
+                if wpf is not None:
+                    msg = (
+                        f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} ignored"
+                    )
+                    ctx.diag("XAML018", msg, self.el, attr=name)
+                else:
+                    msg = f"attribute {local!r} from namespace {ns!r} ignored"
+                    ctx.diag("XAML002", msg, self.el, attr=name)
                 continue
             if "." in local:
                 owner, _, prop = local.rpartition(".")
