@@ -111,6 +111,7 @@ def test_batch_never_writes_over_what_an_earlier_scene_read(tmp_path):
     scene, tex = _textured(tmp_path)  # quad.xaml reads img/tex.png
     (tmp_path / "tex.xaml").write_text(SQUARE)  # its batch output would be img/tex.png
     before = tex.read_bytes()
-    r = render(scene, tmp_path / "tex.xaml", "-o", f"{tmp_path / 'img'}/")
+    # (a serial batch: worker processes of a parallel one know only their own scene's reads)
+    r = render(scene, tmp_path / "tex.xaml", "-o", f"{tmp_path / 'img'}/", "-j", "1")
     assert r.exit_code == 1 and "IO002" in r.stderr and "rendered 1 of 2 scenes" in r.stderr
     assert tex.read_bytes() == before

@@ -18,6 +18,7 @@ selection: SCN002) are listed here in ``EXTRA_CODES``, until their modules expor
 
 from __future__ import annotations
 
+import functools
 import importlib
 
 from xaml3d import errors
@@ -28,6 +29,7 @@ from xaml3d.errors import ERROR, INFO, WARNING
 TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.xaml.vocabulary", "READER_CODES", True),
     ("xaml3d.xaml.values", "VALUE_CODES", True),
+    ("xaml3d.layout.gotchas", "LAYOUT_CODES", True),
     ("xaml3d.scene.mesh", "MESH_CODES", True),
     ("xaml3d.scene.camera_check", "CAMERA_CODES", True),
     ("xaml3d.scene.checks", "CHECK_CODES", True),
@@ -35,6 +37,7 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.cli_common", "CLI_CODES", True),
     ("xaml3d.render.api", "RENDER_CODES", False),
     ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
+    ("xaml3d.xaml.animation_targets", "ANIM_CODES", True),
 )
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {
@@ -87,3 +90,13 @@ def all_codes() -> dict[str, tuple[str, str]]:
     for code, entry in _error_defaults().items():
         merged.setdefault(code, entry)
     return dict(sorted(merged.items()))
+
+
+@functools.cache
+def _severities() -> dict[str, str]:
+    return {code: entry[0] for code, entry in all_codes().items()}
+
+
+def severity(code: str) -> str:
+    """The severity of ``code`` in its table (KeyError for a code no table lists)."""
+    return _severities()[code]

@@ -17,17 +17,15 @@ from lxml import etree
 
 from xaml3d.errors import Diagnostic, XamlError
 from xaml3d.xaml.parser import MC_NS, PRESENTATION_NAMESPACES, XAML_NS, ParsedDocument
-from xaml3d.xaml.values import VALUE_CODES
-from xaml3d.xaml.vocabulary import READER_CODES
-
-# The reader's codes and the value converters' (raised as ValueSyntaxError, reported here):
-# a code's severity is its entry in the table, never chosen where it is emitted.
-_CODES = {**VALUE_CODES, **READER_CODES}
 
 
 def severity_of(code: str) -> str:
-    """The table severity of a reader or value code (KeyError for an uncatalogued code)."""
-    return _CODES[code][0]
+    """The table severity of a code the reader reports (its own, the value converters', the
+    animation and layout stages'): a severity is never chosen where a code is emitted. KeyError
+    for an uncatalogued code."""
+    from xaml3d.codes import severity  # codes.py merges every stage's table, this one's too
+
+    return severity(code)
 
 
 def qname(el_or_attr: str) -> tuple[str | None, str]:
