@@ -35,7 +35,7 @@ CASES = {
     "element-wrong-case": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
     "namespace-typo": ("XAML018", 1, 1, "did you mean 'http://schemas.microsoft.com/winfx/2006"),
     "property-set-twice": ("XAML012", 15, 15, "set both"),
-    "model3d-among-visuals": ("SCN008", 20, 3, "ModelVisual3D around it"),
+    "model3d-among-visuals": ("SCN008", 20, 18, "ModelVisual3D around it"),
     "static-resource-missing": ("RES001", 14, 30, "'Paint'"),
     "material-for-brush": ("XAML013", 14, 53, "not a Brush"),
     "camera-up-parallel": ("CAM003", 3, 5, "parallel"),
