@@ -154,7 +154,7 @@ class Engine:
         self.arrange_calls += 1
         n.slot = slot
         if n.visibility == "Collapsed":
-            n.size, n.offset, n.arranged = (0.0, 0.0), (x, y), False
+            n.size, n.ink, n.offset, n.arranged = (0.0, 0.0), (0.0, 0.0), (x, y), False
             return
         n.arranged = True
         rounding = self.rounds(n)
@@ -176,6 +176,7 @@ class Engine:
             rw, rh = _round(rw), _round(rh)
         n.size = (rw, rh)
         iw, ih = min(rw, hi_w), min(rh, hi_h)
+        n.ink = (iw, ih)  # WPF clips a larger render to the element's Max/explicit size
         cw, ch = max(0.0, w - mw), max(0.0, h - mh)
         ox = _align(n.h_align, cw, iw, "Right") + x + ml
         oy = _align(n.v_align, ch, ih, "Bottom") + y + mt
@@ -459,13 +460,13 @@ def _result(e: Engine, root: Node, how: str) -> LayoutResult:
 
 
 def _absolute(root: Node) -> None:
-    """Every node's rectangle in the root's client area (offsets accumulated, Viewbox scales
-    applied), parents first."""
+    """Every node's visible rectangle in the root's client area (offsets accumulated, Viewbox
+    scales applied), parents first."""
     frame = {id(root): (0.0, 0.0, 1.0, 1.0)}  # origin x, y and scale of a node's parent space
     for n in root.walk():
         px, py, sx, sy = frame[id(n)]
         x, y = px + sx * n.offset[0], py + sy * n.offset[1]
-        n.rect = (x, y, sx * n.size[0], sy * n.size[1])
+        n.rect = (x, y, sx * n.ink[0], sy * n.ink[1])
         cx, cy = n.child_scale
         for k in n.children:
             frame[id(k)] = (x, y, sx * cx, sy * cy)

@@ -116,9 +116,10 @@ class Node:
     desired: tuple[float, float] = (0.0, 0.0)  # including the margin, as WPF's DesiredSize
     unclipped: tuple[float, float] = (0.0, 0.0)  # without the margin, before Max clipping
     size: tuple[float, float] = (0.0, 0.0)  # RenderSize
+    ink: tuple[float, float] = (0.0, 0.0)  # RenderSize within Max/explicit size: what shows
     offset: tuple[float, float] = (0.0, 0.0)  # in the parent's coordinates
     child_scale: tuple[float, float] = (1.0, 1.0)  # Viewbox: the scale applied to its child
-    rect: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # x, y, w, h in the root
+    rect: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # ink box in the root
     slot: str = ""  # how the parent placed it ("row 1 (Auto), column 0 (*)", "Dock=Top" ...)
     arranged: bool = False  # False: collapsed, or never reached by arrange
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange

@@ -61,8 +61,8 @@ def _band(n: Node):
     """The BorderThickness band of a Border, as a mask over element coordinates."""
     left, top, right, bottom = n.border
     w, h = n.rect[2], n.rect[3]
-    sx = w / n.size[0] if n.size[0] else 1.0  # a Viewbox scales the band too
-    sy = h / n.size[1] if n.size[1] else 1.0
+    sx = w / n.ink[0] if n.ink[0] else 1.0  # a Viewbox scales the band too
+    sy = h / n.ink[1] if n.ink[1] else 1.0
 
     def mask(px, py):
         inner = (
