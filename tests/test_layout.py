@@ -299,3 +299,63 @@ def test_markup_control_estimate_is_info():
     s = load(x, text=True)
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 20)
     assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
+
+
+def test_auto_row_sized_by_a_cell_in_a_star_column():
+    # the TextBlock (an Auto row, star column: WPF's last measure group) still sizes the row
+    text = Node(L.CONTROL, "TextBlock", estimate=(30, 16), col=1)
+    v = vp(row=1, col_span=2)
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"), D("*")), columns=(D("*"), D("*")),
+                children=[text, v], width=200, height=100)  # fmt: skip
+    layout(grid)
+    assert text.rect == (100, 0, 100, 16)
+    assert v.rect == (0, 16, 200, 84)
+
+
+def test_star_rows_act_as_auto_with_unlimited_height():
+    # a Grid in a vertical StackPanel: its star row gets the content's height, here 0
+    v, w = vp(row=0), vp(row=1, height=30)
+    grid = Node(L.GRID, "Grid", rows=(D("*"), D("*")), children=[v, w])
+    layout(window(Node(L.STACK, "StackPanel", children=[grid])))
+    assert v.rect[3] == 0 and w.rect == (0, 0, 784, 30)
+    assert "vertical StackPanel" in viewport_notes([v])[0].message
+
+
+def test_markup_roots_page_user_control_size_to_content():
+    page = f"<Page {NS} WindowWidth='416' WindowHeight='339'><Grid><Viewport3D/></Grid></Page>"
+    assert size(page) == (400, 300)
+    uc = (
+        f"<UserControl {NS} xmlns:mc='http://schemas.openxmlformats.org/markup-compatibility/2006'"
+        " xmlns:d='http://schemas.microsoft.com/expression/blend/2008' mc:Ignorable='d'"
+        " d:DesignWidth='300' d:DesignHeight='200'><Viewport3D/></UserControl>"
+    )
+    assert size(uc) == (300, 200)
+    stc = (
+        f"<Window {NS} SizeToContent='WidthAndHeight'><Border Padding='5'>"
+        "<Viewport3D Width='100' Height='50'/></Border></Window>"
+    )
+    s = load(stc, text=True)
+    assert s.layout.client == (110, 60) and (s.viewports[0].width, s.viewports[0].height) == (
+        100,
+        50,
+    )
+
+
+def test_markup_rounding_and_fractions():
+    cols = "<Grid.ColumnDefinitions><ColumnDefinition/><ColumnDefinition/><ColumnDefinition/>"
+    x = (
+        f"<Grid {NS} Width='100' Height='30' UseLayoutRounding='{{r}}'>{cols}"
+        "</Grid.ColumnDefinitions><Viewport3D Grid.Column='1'/></Grid>"
+    )
+    assert size(x.replace("{r}", "False"))[0] == pytest.approx(100 / 3)
+    assert size(x.replace("{r}", "True"))[0] in (33, 34)
+
+
+def test_markup_viewport_in_a_custom_control_and_a_button():
+    x = (
+        f"<Grid {NS} xmlns:h='clr-namespace:H' Width='200' Height='100'>"
+        "<h:View Margin='10'><Button><Viewport3D/></Button></h:View></Grid>"
+    )
+    s = load(x, text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (180, 80)
+    assert {"LAY004"} <= {d.code for d in s.diagnostics}
