@@ -108,3 +108,15 @@ def test_empty_viewport_in_all_is_an_error_the_others_render(tmp_path):
     assert not (tmp_path / "v-0.png").exists()
     with Image.open(tmp_path / "v-1.png") as im:
         assert im.size == (40, 20)
+
+
+def test_validate_reports_an_empty_layout_as_a_warning(tmp_path):
+    (tmp_path / "s.xaml").write_text(
+        '<StackPanel xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'Width="40" Height="40"><Viewport3D/></StackPanel>'
+    )
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    found = p.stdout.decode()  # validate prints its findings as data
+    assert p.returncode == 0 and "warning LAY001" in found and "CAM010" not in found
+    p = xaml3d("validate", "s.xaml", "--strict", cwd=tmp_path)
+    assert p.returncode == 1

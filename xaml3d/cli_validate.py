@@ -44,6 +44,9 @@ def collect_findings(
     file = scene.file or name
     found: list[Diagnostic] = list(scene.diagnostics)
     for vp in scene.viewports:
+        if not (width or height) and vp.size_source.startswith("layout: "):
+            if not (vp.width > 0 and vp.height > 0):
+                continue  # laid out empty: LAY001/LAY002 say why WPF draws nothing (a warning)
         w, h = render_size(vp, width, height) if (width or height) else (vp.width, vp.height)
         found.extend(check_camera(vp.camera, w, h, vp.bounds()))
     found.extend(check_scene(scene))
