@@ -83,9 +83,9 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
 
 
 def unreached(r, el) -> ViewportLayout:
-    from xaml3d.xaml.panels_reader import _Values, parse_length
+    from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
-    v = _Values(r, el)
+    v = ElementValues(r, el)
     w, h = v.get("Width", parse_length, math.nan), v.get("Height", parse_length, math.nan)
     if w == w and h == h and w >= 0 and h >= 0:
         return ViewportLayout(w, h, None, "viewport")

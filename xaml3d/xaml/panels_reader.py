@@ -113,7 +113,7 @@ def parse_grid_length(s: str) -> tuple[str, float]:
     return "pixel", v
 
 
-class _Values:
+class ElementValues:
     """Property values of one element, through Props (presentation elements) or, for custom
     elements, their plain attributes with bad values ignored."""
 
@@ -209,7 +209,7 @@ class PanelsReader:
             return None
         ns, local = qname(el.tag)
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
-        v = _Values(self.r, el)
+        v = ElementValues(self.r, el)
         self._framework(n, v)
         if kind == L.VIEWPORT:
             n.viewport = self.index[id(el)]
@@ -229,7 +229,7 @@ class PanelsReader:
                 n.children.append(k)
         return n
 
-    def _framework(self, n: L.Node, v: _Values) -> None:
+    def _framework(self, n: L.Node, v: ElementValues) -> None:
         for prop in ("Width", "Height"):
             x = v.get(prop, parse_length, math.nan)
             if x == x and x < 0:
@@ -257,7 +257,7 @@ class PanelsReader:
         for side in ("Left", "Top", "Right", "Bottom"):
             setattr(n, side.lower(), v.attached(f"Canvas.{side}", parse_length, math.nan))
 
-    def _panel(self, n: L.Node, v: _Values, el) -> None:
+    def _panel(self, n: L.Node, v: ElementValues, el) -> None:
         kind = n.kind
         bars = ("Disabled", "Auto", "Hidden", "Visible")
         if kind == L.WINDOW:
@@ -308,14 +308,14 @@ class PanelsReader:
                 "ColumnDefinition",
             ):
                 continue
-            dv = _Values(self.r, d)
+            dv = ElementValues(self.r, d)
             unit, value = dv.get(size, parse_grid_length, ("star", 1.0))
             lo = _finite(dv.get(f"Min{size}", parse_length, 0.0), 0.0)
             hi = _nonneg(dv.get(f"Max{size}", parse_length, math.inf), math.inf)
             out.append(L.Definition(unit, value, lo, hi))
         return tuple(out)
 
-    def _estimate(self, n: L.Node, v: _Values, el) -> None:
+    def _estimate(self, n: L.Node, v: ElementValues, el) -> None:
         local = n.type
         if local in _SHAPES or not is_presentation(qname(el.tag)[0]):
             n.estimate = (0.0, 0.0)  # shapes and images without a size: nothing to measure
