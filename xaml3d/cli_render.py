@@ -17,6 +17,7 @@ from pathlib import Path
 
 import click
 
+from xaml3d.cli_animate import parse_time, storyboard_option, time_option
 from xaml3d.cli_common import (
     describe_os_error,
     display_name,
@@ -30,6 +31,7 @@ from xaml3d.cli_common import (
     window_size_option,
     with_file,
 )
+from xaml3d.cli_jobs import default_jobs, run_ordered
 from xaml3d.errors import ERROR, XamlError
 
 FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp"}
@@ -54,9 +56,12 @@ class RenderOptions:
     verbose: bool
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
+    msaa: int | None = None
     window_size: tuple[float, float] | None = None
     window: bool = False
     outline_controls: bool = False
+    time: float | None = 0.0  # seconds after load; None: the markup's base values
+    storyboard: str | None = None
 
 
 class _Failed(Exception):
@@ -149,8 +154,10 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list):
         mode=opts.mode,
         background=opts.background,
         ssaa=opts.ssaa,
+        msaa=opts.msaa,
         hidden_lines=not opts.hide_hidden_lines,
         antialias_lines=opts.antialias_lines,
+        time=None,  # the scene is already the one at --time
     )
     return _checked(result.diagnostics, result.image, file, opts, diags)
 
@@ -177,8 +184,10 @@ def _render_window(scene, file: str, opts: RenderOptions, diags: list):
         scene,
         mode=opts.mode,
         ssaa=opts.ssaa,
+        msaa=opts.msaa,
         background=opts.background,
         outline_controls=opts.outline_controls,
+        time=None,  # the scene is already the one at --time
     )
     return _checked(fresh, lambda: Image.fromarray(rgba, mode="RGBA"), file, opts, diags)
 
@@ -189,13 +198,14 @@ def _viewport_target(target: Path, vp) -> Path:
 
 
 def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
-    from xaml3d.render.api import save_image
+    from xaml3d.render.api import save_image, scene_at
 
     name = display_name(source)
     diags = []
     try:
         _check_not_input(target, name, inputs)
         scene = load_scene(source, opts.resources, opts.window_size)
+        scene = scene_at(scene, opts.time, opts.storyboard)
         file = scene.file or name
         diags.extend(with_file(d, file) for d in scene.diagnostics)
         _check_not_input(target, name, [Path(p) for p in scene.resources_used])
@@ -250,6 +260,45 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
 
 
+def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]) -> bool:
+    """One scene of a parallel batch (in a worker process): True when it was rendered."""
+    try:
+        _render_one(source, target, opts, inputs)
+    except _Failed:
+        return False
+    return True
+
+
+def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
+    """Steps that print each scene's messages in batch order while worker processes render; None
+    when a serial run is as good (one scene, or stdin, which only this process can read)."""
+    if len(plan) < 2 or any(source == "-" for source, _ in plan):
+        return None
+    todo, items = [], []
+    for source, target in plan:  # the serial run's duplicate-output check, in the same order
+        key = Path(os.path.abspath(target))
+        duplicate = key in written
+        written.add(key)
+        todo.append((source, target, duplicate))
+        if not duplicate:
+            items.append((source, target, opts, inputs))
+    results = run_ordered(_render_task, items, jobs)
+
+    def step(source: str, target, duplicate: bool) -> None:
+        if duplicate:
+            msg = f"{target} is already the output of another scene of this batch"
+            click.echo(io_error(display_name(source), msg, "IO003"), err=True)
+            failed.append(display_name(source))
+            return
+        ok, text = next(results)
+        sys.stderr.write(text)
+        sys.stderr.flush()
+        if not ok:
+            failed.append(display_name(source))
+
+    return [lambda args=args: step(*args) for args in todo]
+
+
 def _check_layout_options(window, outline, viewport, width, height, scale, fit, output) -> None:
     if outline and not window:
         raise click.UsageError("--outline-controls draws on the --window picture: add --window")
@@ -280,6 +329,7 @@ Examples:
   cat cube.xaml | xaml3d render - -o cube.webp
   xaml3d render scenes/*.xaml -o out/ --format jpeg --background "#FF202020"
   xaml3d render lost-camera.xaml -o fixed.png --fit
+  xaml3d render spin.xaml -o spin-at-1.5s.png --time 1.5
   xaml3d render views.xaml -o out.png --viewport all      # out-<name or index>.png each
   xaml3d render app.xaml -o win.png --window --window-size 1024x768
 
@@ -344,7 +394,16 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     callback=_parse_background,
     help="Fill colour, any WPF syntax (default: transparent).",
 )
-@click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
+@click.option(
+    "--ssaa",
+    type=click.IntRange(1, 4),
+    help="Supersampling factor per axis, 1..4 (every sample shaded; replaces --msaa).",
+)
+@click.option(
+    "--msaa",
+    type=click.IntRange(1, 4),
+    help="Multisampling per axis, 1..4 (shaded once per pixel; default 2, wireframe none).",
+)
 @click.option(
     "--viewport",
     metavar="INDEX|NAME|all",
@@ -373,6 +432,14 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     show_default=True,
     help="Room left around the scene by --fit, as a fraction of its size.",
 )
+@click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(1),
+    help="Worker processes for a batch of scenes (default: the number of cores).",
+)
+@time_option
+@storyboard_option
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 def render_command(
@@ -386,6 +453,7 @@ def render_command(
     mode,
     background,
     ssaa,
+    msaa,
     viewport,
     resources,
     fit,
@@ -394,10 +462,16 @@ def render_command(
     verbose,
     hide_hidden_lines,
     antialias_lines,
+    jobs,
     window,
     outline_controls,
     window_size,
+    at_time,
+    storyboard,
 ) -> None:
+    at_time = parse_time(at_time)
+    if (ssaa or 1) > 1 and (msaa or 1) > 1:
+        raise click.UsageError("choose one of --ssaa and --msaa")
     fmt = fmt.lower() if fmt else None
     _check_layout_options(window, outline_controls, viewport, width, height, scale, fit, output)
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
@@ -417,9 +491,12 @@ def render_command(
         verbose,
         hide_hidden_lines,
         antialias_lines,
+        msaa,
         window_size,
         window,
         outline_controls,
+        at_time,
+        storyboard,
     )
     if directory is not None:
         try:
@@ -444,15 +521,21 @@ def render_command(
         except _Failed:
             failed.append(display_name(source))
 
+    jobs = default_jobs() if jobs is None else jobs
+    steps = _parallel_steps(plan, opts, inputs, jobs, written, failed) if jobs > 1 else None
+    if steps is None:
+        steps = (
+            lambda source=source, target=target: run(source, target) for source, target in plan
+        )
     if len(plan) > 1 and stderr_is_terminal():
         with click.progressbar(
-            plan, label="rendering", file=click.get_text_stream("stderr")
+            steps, length=len(plan), label="rendering", file=click.get_text_stream("stderr")
         ) as bar:
-            for source, target in bar:
-                run(source, target)
+            for step in bar:
+                step()
     else:
-        for source, target in plan:
-            run(source, target)
+        for step in steps:
+            step()
     if len(plan) > 1:
         ok = len(plan) - len(failed)
         summary = f"xaml3d: rendered {ok} of {len(plan)} scenes"

@@ -29,6 +29,7 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.cli_common", "CLI_CODES", True),
     ("xaml3d.render.api", "RENDER_CODES", False),
     ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
+    ("xaml3d.xaml.animation_targets", "ANIM_CODES", True),
 )
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {

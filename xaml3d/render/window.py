@@ -92,12 +92,18 @@ def compose_window(
     *,
     mode: str = "shaded",
     ssaa: int | None = None,
+    msaa: int | None = None,
     background=None,
     outline_controls: bool = False,
+    time: float | None = 0.0,
+    storyboard: str | None = None,
 ) -> tuple[np.ndarray, list[Diagnostic]]:
     """(straight-alpha rgba uint8 (H, W, 4), diagnostics) of the scene's whole client area.
-    ``background`` (straight RGBA floats) fills the picture first (default transparent)."""
-    from xaml3d.render.api import render_arrays
+    ``background`` (straight RGBA floats) fills the picture first (default transparent);
+    ``time``/``storyboard``: the moment drawn, as for ``render_arrays``."""
+    from xaml3d.render.api import render_arrays, scene_at
+
+    scene = scene_at(scene, time, storyboard)
 
     result = scene.layout
     W = max(1, round(result.client[0]))
@@ -123,7 +129,9 @@ def compose_window(
         if n.kind == VIEWPORT:
             w, h = round(n.rect[2]), round(n.rect[3])
             if w >= 1 and h >= 1:
-                r = render_arrays(scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa)
+                r = render_arrays(
+                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None
+                )
                 diags.extend(r.diagnostics)
                 premul = r.rgba.astype(np.float32) / 255.0
                 premul[..., :3] *= premul[..., 3:4]

@@ -50,10 +50,19 @@ _REFERENCE = {"StaticResource", "DynamicResource"}
 class Reader:
     """Builds scene objects from elements: property access, references, dispatch."""
 
-    def __init__(self, ctx: ReadContext, resources: Resources) -> None:
+    def __init__(self, ctx: ReadContext, resources: Resources, frame=None) -> None:
         self.ctx = ctx
         self.resources = resources
         self._props: dict[int, Props] = {}
+        # an animation frame being built (xaml3d.xaml.animation_scene.Frame): animated values
+        # by (element id, property), and what earlier frames built that animation cannot change
+        self.overrides: dict = frame.overrides if frame is not None else {}
+        self.cache: dict | None = frame.cache if frame is not None else None
+
+    def animated(self, el, prop: str, value):
+        """The value of ``el``'s property ``prop`` in the frame being built."""
+        f = self.overrides.get((id(el), prop))
+        return value if f is None else f(value)
 
     def props(self, el) -> Props:
         """The element's properties (read once: diagnostics are not repeated on reuse)."""
@@ -286,9 +295,12 @@ class _Walk:
 
 
 def build_scene(
-    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
+    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None, frame=None
 ) -> Scene:
-    r = Reader(ctx, resources)
+    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size;
+    with ``frame`` (animation_scene.Frame) its viewports at one moment of the storyboards,
+    which are not read again."""
+    r = Reader(ctx, resources, frame)
     walk = _Walk(r)
     walk.visit(doc.root)
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
@@ -298,10 +310,10 @@ def build_scene(
 
     storyboards: list = []
     begun: set[int] = set()
-    for t in walk.triggers:
+    for t in walk.triggers if frame is None else ():
         read_trigger(r, t, storyboards, begun)
     d = resources.dictionary_of(doc.root)
-    for key, entry in d.entries.items() if d else ():
+    for key, entry in d.entries.items() if d and frame is None else ():
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
 

@@ -193,7 +193,11 @@ class Props:
         return ("default", None)
 
     def value(self, prop: str, conv: Callable[[str], object], default=None):
-        """A value-type property (numbers, vectors, colours, collections...)."""
+        """A value-type property (numbers, vectors, colours, collections...); while a frame of
+        an animation is built, its animated value."""
+        return self.r.animated(self.el, prop, self._value(prop, conv, default))
+
+    def _value(self, prop: str, conv: Callable[[str], object], default=None):
         if prop in self.attrs:
             kind, payload = self.markup(prop, self.attrs[prop])
             attr = self.attr_keys.get(prop)
@@ -227,7 +231,12 @@ class Props:
 
     def obj(self, prop: str, build: Callable, default=None, *, from_string=None):
         """An object property built from an element (or resource); ``from_string`` converts a
-        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None."""
+        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None.
+        While a frame of an animation is built, its animated value (a Rotation)."""
+        built = self._obj(prop, build, default, from_string=from_string)
+        return self.r.animated(self.el, prop, built)
+
+    def _obj(self, prop: str, build: Callable, default=None, *, from_string=None):
         if prop in self.attrs:
             kind, payload = self.markup(prop, self.attrs[prop])
             if kind == "null":

@@ -206,15 +206,15 @@ _t(
     "Actions",
 )
 _ANIM_VALUE = {"Double": _D, "Point3D": _P3, "Vector3D": _V3, "Quaternion": "quaternion",
-               "Rotation3D": "rotation3d", "Color": "color", "Point": "point"}  # fmt: skip
+               "Rotation3D": "rotation3d", "Color": "color", "Point": "point",
+               "Size": "size"}  # fmt: skip
 _FROM_TO = {"IsAdditive": _B, "IsCumulative": _B, "EasingFunction": "object"}
 for _v, _k in _ANIM_VALUE.items():
-    ok = _v != "Point"  # 2D point animations have no 3D target
     _t(f"{_v}Animation", "animation",
        {"From": _k, "To": _k, "By": _k, "UseShortestPath": _B},
-       base=(_TIMELINE, _FROM_TO), supported=ok)  # fmt: skip
+       base=(_TIMELINE, _FROM_TO))  # fmt: skip
     _t(f"{_v}AnimationUsingKeyFrames", "animation", {"KeyFrames": "keyframe[]"}, "KeyFrames",
-       base=(_TIMELINE, _FROM_TO), supported=ok)  # fmt: skip
+       base=(_TIMELINE, _FROM_TO))  # fmt: skip
     for _kind in ("Linear", "Discrete", "Spline", "Easing"):
         _t(f"{_kind}{_v}KeyFrame", "keyframe",
            {"KeyTime": "keytime", "Value": _k, "KeySpline": "keyspline",
@@ -228,6 +228,12 @@ for _c in ("DoubleAnimationUsingPath", "PointAnimationUsingPath", "MatrixAnimati
         supported=False,
         note="path animations are not evaluated",
     )
+_EASINGS = {"Back": ("Amplitude",), "Bounce": ("Bounces", "Bounciness"), "Circle": (),
+            "Cubic": (), "Elastic": ("Oscillations", "Springiness"), "Exponential": ("Exponent",),
+            "Power": ("Power",), "Quadratic": (), "Quartic": (), "Quintic": (),
+            "Sine": ()}  # fmt: skip
+for _e, _ps in _EASINGS.items():
+    _t(f"{_e}Ease", "easing", {"EasingMode": _S, **{_p: _D for _p in _ps}})
 _KEYFRAME_COLLECTIONS = [f"{v}KeyFrameCollection" for v in _ANIM_VALUE]
 for _c in _KEYFRAME_COLLECTIONS:
     _t(_c, "collection", content="Children")
@@ -360,8 +366,8 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "image path outside the scene's folder tree refused: a grey checker stands in",
     ),
     "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
-    "ANI001": (WARNING, "animation type not evaluated (path animations, 2D targets)"),
+    "ANI001": (WARNING, "animation type not evaluated (path animations)"),
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
-    "ANI003": (INFO, "EasingFunction ignored (linear timing used)"),
+    "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),
     "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
 }
