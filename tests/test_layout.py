@@ -359,3 +359,15 @@ def test_markup_viewport_in_a_custom_control_and_a_button():
     s = load(x, text=True)
     assert (s.viewports[0].width, s.viewports[0].height) == (180, 80)
     assert {"LAY004"} <= {d.code for d in s.diagnostics}
+
+
+def test_rounding_rounds_margin_sums_not_offsets_and_border_not_padding():
+    v = vp(margin=(0.3, 0.3, 0.3, 0.3))
+    layout(Node(L.GRID, "Grid", width=100, height=100, rounding=True, children=[v]))
+    assert v.rect == (0, 0, 99, 99)  # margins 0.6 round to 1; the 0.3 offset rounds to 0
+    w = vp()
+    b = Node(L.BORDER, "Border", border=(1.4, 1.4, 1.4, 1.4), padding=(0.5, 0, 0, 0),
+             children=[w], rounding=True)  # fmt: skip
+    layout(Node(L.GRID, "Grid", width=100, height=100, children=[b]))
+    # thickness 1.4 -> 1 on each side, padding 0.5 kept: the child's 97.5 rounds to 98 (even)
+    assert w.rect[0] == 2 and w.rect[2] == 98

@@ -124,9 +124,15 @@ class Engine:
         return min_max(n)
 
     def _margin(self, n: Node):
+        """(left, top, width, height) of the margin; with layout rounding the sums are rounded
+        (as WPF does), the left and top offsets are not."""
         if n is self._frameless:
-            return (0.0, 0.0, 0.0, 0.0)
-        return _thick(n.margin, self.rounds(n))
+            return 0.0, 0.0, 0.0, 0.0
+        ml, mt, mr, mb = n.margin
+        mw, mh = ml + mr, mt + mb
+        if self.rounds(n):
+            mw, mh = _round(mw), _round(mh)
+        return ml, mt, mw, mh
 
     # ----------------------------------------------------------------- measure
     def measure(self, n: Node, aw: float, ah: float) -> None:
@@ -135,19 +141,28 @@ class Engine:
             n.desired = n.unclipped = (0.0, 0.0)
             return
         rounding = self.rounds(n)
-        ml, mt, mr, mb = self._margin(n)
-        mw, mh = ml + mr, mt + mb
+        _, _, mw, mh = self._margin(n)
         lo_w, hi_w, lo_h, hi_h = self._limits(n)
         fw = max(lo_w, min(max(aw - mw, 0.0), hi_w))
         fh = max(lo_h, min(max(ah - mh, 0.0), hi_h))
-        dw, dh = _MEASURE[n.kind](self, n, fw, fh)
-        dw, dh = max(dw, lo_w), max(dh, lo_h)
         if rounding:
-            dw, dh = _round(dw), _round(dh)
-        n.unclipped = (dw, dh)
-        dw, dh = min(dw, hi_w), min(dh, hi_h)
-        cw, ch = min(dw + mw, aw), min(dh + mh, ah)
+            fw, fh = _round(fw), _round(fh)
+        dw, dh = _MEASURE[n.kind](self, n, fw, fh)
+        uw, uh = max(dw, lo_w), max(dh, lo_h)
+        dw, dh = min(uw, hi_w), min(uh, hi_h)
+        clipped = dw < uw or dh < uh
+        cw, ch = dw + mw, dh + mh
+        if cw > aw or ch > ah:
+            cw, ch, clipped = min(cw, aw), min(ch, ah), True
+        if rounding:
+            cw, ch = _round(cw), _round(ch)
         n.desired = (max(0.0, cw), max(0.0, ch))
+        # the size arrange never goes below: kept as measured when clipped, else (like WPF,
+        # which does not store it then) recovered from the desired size
+        if clipped or cw < 0 or ch < 0:
+            n.unclipped = (uw, uh)
+        else:
+            n.unclipped = (max(0.0, cw - mw), max(0.0, ch - mh))
 
     # ----------------------------------------------------------------- arrange
     def arrange(self, n: Node, x: float, y: float, w: float, h: float, slot: str = "") -> None:
@@ -158,8 +173,7 @@ class Engine:
             return
         n.arranged = True
         rounding = self.rounds(n)
-        ml, mt, mr, mb = self._margin(n)
-        mw, mh = ml + mr, mt + mb
+        ml, mt, mw, mh = self._margin(n)
         aw, ah = max(0.0, w - mw), max(0.0, h - mh)
         uw, uh = n.unclipped
         aw, ah = max(aw, uw), max(ah, uh)  # never below the desired size (it is clipped)
@@ -168,16 +182,19 @@ class Engine:
         if n.v_align != "Stretch":
             ah = uh
         lo_w, hi_w, lo_h, hi_h = self._limits(n)
+        if rounding:
+            hi_w, hi_h = _round(hi_w), _round(hi_h)
         aw, ah = min(aw, max(uw, hi_w)), min(ah, max(uh, hi_h))
         if rounding:
             aw, ah = _round(aw), _round(ah)
         rw, rh = _ARRANGE[n.kind](self, n, aw, ah)
-        if rounding:
-            rw, rh = _round(rw), _round(rh)
-        n.size = (rw, rh)
         iw, ih = min(rw, hi_w), min(rh, hi_h)
-        n.ink = (iw, ih)  # WPF clips a larger render to the element's Max/explicit size
         cw, ch = max(0.0, w - mw), max(0.0, h - mh)
+        if rounding:
+            rw, rh, iw, ih = _round(rw), _round(rh), _round(iw), _round(ih)
+            cw, ch = _round(cw), _round(ch)
+        n.size = (rw, rh)
+        n.ink = (iw, ih)  # WPF clips a larger render to the element's Max/explicit size
         ox = _align(n.h_align, cw, iw, "Right") + x + ml
         oy = _align(n.v_align, ch, ih, "Bottom") + y + mt
         if rounding:
@@ -188,10 +205,15 @@ class Engine:
 # --------------------------------------------------------------------------- panel rules
 
 
+def _inset(e: Engine, n: Node) -> tuple[float, float, float, float]:
+    """BorderThickness (rounded with layout rounding, as Border does) plus Padding (never)."""
+    b = _thick(n.border, e.rounds(n))
+    return tuple(a + p for a, p in zip(b, n.padding, strict=True))
+
+
 def _content_measure(e: Engine, n: Node, w: float, h: float):
     """Border and every single-content element: content inside BorderThickness + Padding."""
-    r = e.rounds(n)
-    bl, bt, br, bb = (a + b for a, b in zip(_thick(n.border, r), _thick(n.padding, r), strict=True))
+    bl, bt, br, bb = _inset(e, n)
     cw, ch = max(0.0, w - bl - br), max(0.0, h - bt - bb)
     dw = dh = 0.0
     for k in n.children:
@@ -201,8 +223,7 @@ def _content_measure(e: Engine, n: Node, w: float, h: float):
 
 
 def _content_arrange(e: Engine, n: Node, w: float, h: float):
-    r = e.rounds(n)
-    bl, bt, br, bb = (a + b for a, b in zip(_thick(n.border, r), _thick(n.padding, r), strict=True))
+    bl, bt, br, bb = _inset(e, n)
     for k in n.children:
         e.arrange(k, bl, bt, max(0.0, w - bl - br), max(0.0, h - bt - bb), "content")
     return w, h
