@@ -371,3 +371,31 @@ def test_rounding_rounds_margin_sums_not_offsets_and_border_not_padding():
     layout(Node(L.GRID, "Grid", width=100, height=100, children=[b]))
     # thickness 1.4 -> 1 on each side, padding 0.5 kept: the child's 97.5 rounds to 98 (even)
     assert w.rect[0] == 2 and w.rect[2] == 98
+
+
+def test_fractional_layout_size_keeps_its_exact_aspect_ratio():
+    from xaml3d.render.api import render_arrays
+
+    # a Viewport3D 100 x 33.4 (a third of 100.2): the image is 100 x 33, the projection keeps
+    # 100 / 33.4, so an orthographic camera of Width 100 shows 33.4 units over the 33 rows and
+    # a quad 33 units high leaves the top and bottom rows partly covered
+    x = (
+        f"<Grid {NS} Width='100' Height='100.2'><Grid.RowDefinitions><RowDefinition/>"
+        "<RowDefinition/><RowDefinition/></Grid.RowDefinitions><Viewport3D>"
+        "<Viewport3D.Camera><OrthographicCamera Position='0,0,5' LookDirection='0,0,-1'"
+        " Width='100'/></Viewport3D.Camera><ModelVisual3D><ModelVisual3D.Content>"
+        "<Model3DGroup><AmbientLight/><GeometryModel3D><GeometryModel3D.Geometry>"
+        "<MeshGeometry3D Positions='-60,-16.5,0 60,-16.5,0 60,16.5,0 -60,16.5,0'"
+        " TriangleIndices='0 1 2 0 2 3'/></GeometryModel3D.Geometry><GeometryModel3D.Material>"
+        "<DiffuseMaterial Brush='White'/></GeometryModel3D.Material></GeometryModel3D>"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D></Grid>"
+    )
+    s = load(x, text=True)
+    vp0 = s.viewports[0]
+    assert vp0.height == pytest.approx(33.4)
+    r = render_arrays(s, ssaa=4)
+    assert (r.width, r.height) == (100, 33)
+    alpha = r.rgba[:, 50, 3]
+    assert alpha[16] == 255 and 0 < alpha[0] < 255 and 0 < alpha[32] < 255
+    exact = render_arrays(s, 100, 33, ssaa=4)  # both sizes given: the image's own aspect
+    assert exact.rgba[0, 50, 3] == 255 and exact.rgba[32, 50, 3] == 255

@@ -129,6 +129,7 @@ def render_arrays(
     resources=(),
     time: float | None = 0.0,
     storyboard: str | None = None,
+    aspect: float | None = None,
 ) -> Rendering:
     """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
 
@@ -139,7 +140,9 @@ def render_arrays(
     ssaa 1). Giving ``ssaa`` alone turns multisampling off; both above 1 is an error.
     ``hidden_lines=False`` hides occluded wireframe edges; ``line_color`` (straight RGBA)
     overrides the material colour of wireframe edges.
-    ``time``/``storyboard``: which moment of the animations (see ``scene_at``).
+    ``time``/``storyboard``: which moment of the animations (see ``scene_at``). ``aspect``: the
+    projection's aspect ratio (default: the viewport's exact, possibly fractional, laid-out
+    size when width or height is left to it, else the image's width / height).
     Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
@@ -166,6 +169,8 @@ def render_arrays(
     grid = max(ssaa, msaa)  # samples per side of the framebuffer's grid
     vp = scene.viewport(viewport)
     w, h = _resolve_size(vp, width, height, max_size)
+    if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
+        aspect = float(vp.width) / float(vp.height)  # the image is the size rounded
     if w * h * grid * grid > MAX_SUPERSAMPLED_PIXELS:
         aa = f"ssaa={ssaa}" if ssaa > 1 else f"msaa={msaa}"
         raise RenderError(
@@ -182,7 +187,7 @@ def render_arrays(
     try:
         from xaml3d.scene.camera_math import camera_pipeline
 
-        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds())
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds(), aspect=aspect)
     except CameraError as exc:
         exc.with_location(file=scene.file)
         diags.append(exc.as_diagnostic())

@@ -142,8 +142,9 @@ def compose_window(
             w, h = round(n.rect[2]), round(n.rect[3])
             if w >= 1 and h >= 1:
                 r = render_arrays(
-                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None
-                )
+                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None,
+                    aspect=n.rect[2] / n.rect[3],  # the exact laid-out aspect ratio
+                )  # fmt: skip
                 diags.extend(r.diagnostics)
                 premul = r.rgba.astype(np.float32) / 255.0
                 premul[..., :3] *= premul[..., 3:4]
