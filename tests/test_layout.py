@@ -399,3 +399,26 @@ def test_fractional_layout_size_keeps_its_exact_aspect_ratio():
     assert alpha[16] == 255 and 0 < alpha[0] < 255 and 0 < alpha[32] < 255
     exact = render_arrays(s, 100, 33, ssaa=4)  # both sizes given: the image's own aspect
     assert exact.rgba[0, 50, 3] == 255 and exact.rgba[32, 50, 3] == 255
+
+
+def test_uniform_grid_cells_and_first_column():
+    kids = [vp() for _ in range(3)]
+    layout(Node(L.UNIFORM, "UniformGrid", width=200, height=100, children=kids))
+    # 3 children: 2 x 2 cells of 100 x 50
+    assert [k.rect for k in kids] == [(0, 0, 100, 50), (100, 0, 100, 50), (0, 50, 100, 50)]
+    kids = [vp() for _ in range(3)]
+    layout(Node(L.UNIFORM, "UniformGrid", uniform=(0, 3, 1), width=300, height=100, children=kids))
+    assert [k.rect[:2] for k in kids] == [(100, 0), (200, 0), (0, 50)]
+    x = (
+        f"<UniformGrid {NS} Columns='2' Width='200' Height='80' xmlns:x="
+        "'http://schemas.microsoft.com/winfx/2006/xaml'><Viewport3D/><Viewport3D/></UniformGrid>"
+    )
+    assert size(x, 1) == (100, 80)
+
+
+def test_scrollviewer_auto_bar_only_when_the_content_overflows():
+    small, tall = vp(height=100), vp(height=1000)
+    layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[small])))
+    assert small.rect[2] == 784
+    layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[tall])))
+    assert tall.rect[2] == 784 - 17

@@ -13,7 +13,8 @@ Padding; several children of an unknown container overlap), Grid (grid.py), Dock
 StackPanel, Canvas (children at their own size, at Left/Top/Right/Bottom), Viewbox (its child
 at its own size, scaled by Stretch/StretchDirection), ScrollViewer (content measured with
 infinite room in each scrolling direction, arranged at least as large as the view; a Visible
-scroll bar takes 17 px), Viewport3D (no content size of its own: 0 x 0 unless sized), controls
+scroll bar takes 17 px, an Auto one when the content overflows), UniformGrid (equal cells),
+Viewport3D (no content size of its own: 0 x 0 unless sized), controls
 (their estimated content size). UseLayoutRounding (inherited) rounds margins, desired sizes,
 arranged sizes and offsets to whole pixels as WPF does at 96 dpi.
 
@@ -23,6 +24,7 @@ measured once and arranged once, so the work is linear in the number of elements
 
 from __future__ import annotations
 
+import math
 import sys
 from dataclasses import dataclass, field
 
@@ -40,6 +42,7 @@ from xaml3d.layout.tree import (
     SCROLL,
     SCROLLBAR,
     STACK,
+    UNIFORM,
     USER_CONTROL,
     VIEWBOX,
     VIEWPORT,
@@ -355,10 +358,17 @@ def _viewbox_arrange(e: Engine, n: Node, w: float, h: float):
     return sx * dw, sy * dh
 
 
-def _scroll_bars(n: Node) -> tuple[float, float]:
-    """(width taken by the vertical bar, height taken by the horizontal bar)."""
-    return (SCROLLBAR if n.scroll_v == "Visible" else 0.0,
-            SCROLLBAR if n.scroll_h == "Visible" else 0.0)  # fmt: skip
+def _scroll_bars(n: Node, content=None, view=None) -> tuple[float, float]:
+    """(width taken by the vertical bar, height taken by the horizontal bar): a Visible bar
+    always, an Auto one when the content (its desired size, at arrange) overflows the view."""
+    vb = SCROLLBAR if n.scroll_v == "Visible" else 0.0
+    hb = SCROLLBAR if n.scroll_h == "Visible" else 0.0
+    if content is not None:
+        if n.scroll_v == "Auto" and content[1] > view[1] - hb:
+            vb = SCROLLBAR
+        if n.scroll_h == "Auto" and content[0] > view[0] - vb:
+            hb = SCROLLBAR
+    return vb, hb
 
 
 def _scroll_measure(e: Engine, n: Node, w: float, h: float):
@@ -369,15 +379,63 @@ def _scroll_measure(e: Engine, n: Node, w: float, h: float):
     for k in n.children:
         e.measure(k, cw, ch)
         dw, dh = max(dw, k.desired[0]), max(dh, k.desired[1])
-    return dw + vb, dh + hb
+    # the view never wants more than it is offered: the content scrolls inside it
+    return min(dw + vb, w), min(dh + hb, h)
 
 
 def _scroll_arrange(e: Engine, n: Node, w: float, h: float):
-    vb, hb = _scroll_bars(n)
+    dw = max((k.desired[0] for k in n.children), default=0.0)
+    dh = max((k.desired[1] for k in n.children), default=0.0)
+    vb, hb = _scroll_bars(n, (dw, dh), (w, h))
     vw, vh = max(0.0, w - vb), max(0.0, h - hb)
+    if (vb, hb) != _scroll_bars(n):  # an Auto bar appeared: measure again beside it, as WPF does
+        for k in n.children:
+            e.measure(k, vw if n.scroll_h == "Disabled" else INF,
+                      vh if n.scroll_v == "Disabled" else INF)  # fmt: skip
     for k in n.children:
-        cw, ch = max(k.desired[0], vw), max(k.desired[1], vh)
+        # a direction that does not scroll (Disabled) gives the content the view's size (WPF
+        # measures it again when an Auto bar appears); one that scrolls, at least that size
+        cw = vw if n.scroll_h == "Disabled" else max(k.desired[0], vw)
+        ch = vh if n.scroll_v == "Disabled" else max(k.desired[1], vh)
         e.arrange(k, 0.0, 0.0, cw, ch, "ScrollViewer content (at least the view's size)")
+    return w, h
+
+
+def _uniform_shape(n: Node) -> tuple[int, int, int]:
+    """(rows, columns, first column) of a UniformGrid, as WPF completes unset ones."""
+    rows, cols, first = n.uniform
+    count = sum(1 for k in n.children if k.visibility != "Collapsed")
+    first = first if cols > 0 and first < cols else 0
+    if rows <= 0 and cols <= 0:
+        rows = math.isqrt(count)
+        rows += rows * rows < count
+        cols = rows
+    elif rows <= 0:
+        rows = (count + first + cols - 1) // cols
+    elif cols <= 0:
+        cols = (count + rows - 1) // rows
+    return max(rows, 1), max(cols, 1), first
+
+
+def _uniform_measure(e: Engine, n: Node, w: float, h: float):
+    rows, cols, _ = _uniform_shape(n)
+    dw = dh = 0.0
+    for k in n.children:
+        e.measure(k, w / cols, h / rows)
+        dw, dh = max(dw, k.desired[0]), max(dh, k.desired[1])
+    return dw * cols, dh * rows
+
+
+def _uniform_arrange(e: Engine, n: Node, w: float, h: float):
+    rows, cols, first = _uniform_shape(n)
+    cw, ch = w / cols, h / rows
+    col, row = first, 0
+    for k in n.children:
+        e.arrange(k, col * cw, row * ch, cw, ch, f"UniformGrid cell {row}, {col}")
+        if k.visibility != "Collapsed":
+            col += 1
+            if col >= cols:  # next row
+                col, row = 0, row + 1
     return w, h
 
 
@@ -395,6 +453,7 @@ _MEASURE = {
     GRID: lambda e, n, w, h: e.grid.measure(n, w, h), DOCK: _dock_measure,
     STACK: _stack_measure, CANVAS: _canvas_measure, VIEWBOX: _viewbox_measure,
     SCROLL: _scroll_measure, VIEWPORT: _leaf_measure, CONTROL: _leaf_measure,
+    UNIFORM: _uniform_measure,
 }  # fmt: skip
 _ARRANGE = {
     WINDOW: _content_arrange, PAGE: _content_arrange, USER_CONTROL: _content_arrange,
@@ -402,6 +461,7 @@ _ARRANGE = {
     GRID: lambda e, n, w, h: e.grid.arrange(n, w, h), DOCK: _dock_arrange,
     STACK: _stack_arrange, CANVAS: _canvas_arrange, VIEWBOX: _viewbox_arrange,
     SCROLL: _scroll_arrange, VIEWPORT: _leaf_arrange, CONTROL: _leaf_arrange,
+    UNIFORM: _uniform_arrange,
 }  # fmt: skip
 
 

@@ -27,8 +27,9 @@ VIEWBOX, SCROLL, VIEWPORT, CONTROL, CONTAINER = (
     "control",
     "container",
 )
+UNIFORM = "uniform"
 KINDS = (WINDOW, PAGE, USER_CONTROL, GRID, DOCK, STACK, BORDER, CANVAS, VIEWBOX, SCROLL,
-         VIEWPORT, CONTROL, CONTAINER)  # fmt: skip
+         VIEWPORT, CONTROL, CONTAINER, UNIFORM)  # fmt: skip
 
 # The Windows 10/11 default theme's window frame at 96 dpi: a Window's Width/Height are its
 # OUTER size; its client area (where the content is laid out) is smaller by these amounts
@@ -98,6 +99,7 @@ class Node:
     last_child_fill: bool = True
     border: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # BorderThickness
     padding: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    uniform: tuple[int, int, int] = (0, 0, 0)  # UniformGrid Rows, Columns, FirstColumn
     stretch: str = "Uniform"
     stretch_direction: str = "Both"
     size_to_content: str = "Manual"  # Window: Manual | Width | Height | WidthAndHeight

@@ -13,11 +13,11 @@ from dataclasses import dataclass
 from xaml3d.errors import Diagnostic
 from xaml3d.layout import layout
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
-from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, VIEWBOX, Node
+from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
 from xaml3d.xaml.panels_reader import read_layout
 
 DEFAULT_SIZE = (640.0, 480.0)
-_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL)
+_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM)
 
 
 @dataclass(frozen=True)
