@@ -198,8 +198,16 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list):
         hidden_lines=not opts.hide_hidden_lines,
         antialias_lines=opts.antialias_lines,
         time=None,  # the scene is already the one at --time
+        # the laid-out size may be fractional: the projection keeps its exact aspect ratio
+        # unless -W and -H both choose another (docs/layout.md)
+        aspect=None if (opts.width and opts.height) else _exact_aspect(vp),
     )
     return _checked(result.diagnostics, result.image, file, opts, diags)
+
+
+def _exact_aspect(vp) -> float | None:
+    w, h = float(vp.width), float(vp.height)
+    return w / h if w > 0 and h > 0 else None
 
 
 def _checked(fresh, make_image, file: str, opts: RenderOptions, diags: list):

@@ -39,6 +39,9 @@ def scene_findings(scene: Scene, size_of: SizeOf = _own_size, file: str | None =
     found: list[Diagnostic] = list(scene.diagnostics)
     for vp in scene.viewports:
         w, h = size_of(vp)
+        if vp.size_source.startswith("layout: ") and not (w > 0 and h > 0):
+            if (w, h) == (vp.width, vp.height):
+                continue  # laid out empty: LAY001/LAY002 say why WPF draws nothing (a warning)
         found.extend(check_camera(vp.camera, w, h, vp.bounds()))
     found.extend(check_scene(scene))
     file = scene.file or file

@@ -143,6 +143,7 @@ def render_arrays(
     resources=(),
     time: float | None = 0.0,
     storyboard: str | None = None,
+    aspect: float | None = None,
 ) -> Rendering:
     """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
 
@@ -155,6 +156,9 @@ def render_arrays(
     material colour of wireframe edges. Colours (``background``, ``line_color``) are 3 (RGB,
     alpha 1) or 4 (straight RGBA) numbers in 0..1, or in 0..255 when any is above 1.
     ``time``/``storyboard``: which moment of the animations (see ``scene_at``).
+    ``aspect``: the projection's aspect ratio (default: the viewport's exact, possibly
+    fractional, laid-out size when width or height is left to it, else the image's width /
+    height).
     Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
@@ -188,6 +192,8 @@ def render_arrays(
     line_rgba = None if line_color is None else _rgba(line_color, "line_color")
     vp = scene.viewport(viewport)
     w, h = _resolve_size(vp, width, height, max_size)
+    if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
+        aspect = float(vp.width) / float(vp.height)  # the image is the size rounded
     if w * h * grid * grid > MAX_SUPERSAMPLED_PIXELS:
         aa = f"ssaa={ssaa}" if ssaa > 1 else f"msaa={msaa}"
         raise RenderError(
@@ -203,7 +209,7 @@ def render_arrays(
     try:
         from xaml3d.scene.camera_math import camera_pipeline
 
-        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds())
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds(), aspect=aspect)
     except CameraError as exc:
         exc.with_location(file=scene.file)
         diags.append(exc.as_diagnostic())

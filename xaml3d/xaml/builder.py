@@ -2,10 +2,10 @@
 
 Covers finding every Viewport3D (in document order, whatever the root: Window, Page,
 UserControl, a custom control, a bare Viewport3D; not those inside templates and styles), the
-viewport's size (own Width/Height, else the nearest ancestor with both, else 640 x 480:
-wpf3d.md section 2), camera (WPF's default PerspectiveCamera when none is given), background (the
-nearest ancestor's Background brush) and ClipToBounds; the model tree flattened in draw order
-(ModelVisual3D: Content before Children) with each model's and light's world matrix
+viewport's size and rectangle from WPF's layout of the panels around it (layout_step.py,
+docs/layout.md), camera (WPF's default PerspectiveCamera when none is given), background (the
+nearest laid-out ancestor's Background brush) and ClipToBounds; the model tree flattened in
+draw order (ModelVisual3D: Content before Children) with each model's and light's world matrix
 (p_world = p_local * M_model * M_group... * M_visual... in WPF row terms); ModelUIElement3D,
 ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards.
 """
