@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import os
 import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -107,7 +107,17 @@ def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = No
             raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
                              code="ANIM010", file=scene.file)  # fmt: skip
         return scene
-    return scene.timeline.at(float(time), storyboard)
+    from xaml3d.errors import SceneError
+
+    try:
+        frame = scene.timeline.at(float(time), storyboard)
+    except SceneError as exc:
+        exc.file = scene.file  # the name the caller knows the scene by (stdin...)
+        raise
+    # the caller's scene keeps its own file name and diagnostics (stdin renames them)
+    return (
+        scene if frame.viewports is scene.viewports else replace(scene, viewports=frame.viewports)
+    )
 
 
 def render_arrays(
