@@ -310,3 +310,14 @@ def test_cli_info_lists_animations(tmp_path):
     out = p.stdout.decode()
     assert "animations: 1 run at load (for ever)" in out
     assert "DoubleAnimation -> move.OffsetX: begin 0 s, period 1 s, repeat Forever" in out
+
+
+def test_cli_validate_reports_animation_targets(tmp_path):
+    bad = ('<DoubleAnimation Storyboard.TargetName="cam" Storyboard.TargetProperty="Position" '
+           'To="1" Duration="5"/>')  # fmt: skip
+    (tmp_path / "s.xaml").write_text(scene(bad))
+    p = _run("validate", "s.xaml", cwd=tmp_path)
+    err = p.stderr.decode() + p.stdout.decode()
+    assert p.returncode == 1
+    assert "error ANIM003 DoubleAnimation -> cam.Position" in err
+    assert "warning ANIM006 DoubleAnimation.Duration='5' is 5 day(s)" in err
