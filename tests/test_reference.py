@@ -14,7 +14,9 @@ Comparison (per pixel, per RGBA channel, 8-bit straight alpha, both images the s
 
 On failure a side-by-side picture ``expected | actual | diff x8`` (transparent areas shown over a
 grey checkerboard) is written to ``tests/reference/_failures/<area>__<case>.png`` and the test
-fails with its path.
+fails with its path. Cases named ``window-*`` are ``render --window`` pictures (the root's whole
+client area, every viewport at its layout rectangle) in the ``layout`` area; the others render
+the first viewport.
 
 Regenerating the expected PNGs from the current renderer::
 
@@ -188,6 +190,20 @@ def _case_params() -> list:
     return params
 
 
+def _picture(path: Path, t: float) -> Image.Image:
+    """The case drawn at ``t``: one viewport, or for ``layout/window-*`` cases the whole client
+    area as ``render --window`` draws it."""
+    import xaml3d
+
+    if path.parent.name == "layout" and path.stem.startswith("window-"):
+        from xaml3d.render.window import compose_window
+        from xaml3d.xaml.loader import load
+
+        rgba, _ = compose_window(load(path), time=t)
+        return Image.fromarray(rgba, mode="RGBA")
+    return xaml3d.render(str(path), time=t).convert("RGBA")
+
+
 _TIMES = re.compile(r"TIMES:((?:\s+[0-9.]+)+)")
 
 
@@ -203,14 +219,17 @@ def time_png(path: Path, t: float) -> Path:
 
 
 @pytest.mark.parametrize("case_path", _case_params())
-def test_reference_case(case_path: Path) -> None:
-    import xaml3d
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+def test_reference_case(case_path: Path, kernels: str, monkeypatch) -> None:
+    """Every case on both renderer paths: numpy, and the compiled kernels (tests/test_kernels.py
+    checks that the two give bit-identical pictures)."""
 
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
     cid = case_id(case_path)
     shots = [(case_path.with_suffix(".png"), cid, 0.0)]
     shots += [(time_png(case_path, t), f"{cid}@{t:g}s", t) for t in case_times(case_path)]
     for expected_png, sid, t in shots:
-        actual = xaml3d.render(str(case_path), time=t).convert("RGBA")
+        actual = _picture(case_path, t)
         if regenerate_requested():
             actual.save(expected_png)
             continue

@@ -21,6 +21,7 @@ from xaml3d.cli_common import (
     load_scene,
     render_size,
     resources_option,
+    window_size_option,
 )
 from xaml3d.errors import XamlError
 from xaml3d.scene.types import MatrixCamera
@@ -224,13 +225,16 @@ Examples:
     help="World point to locate (repeatable).",
 )
 @resources_option
+@window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
-def camera_command(scene, viewport, width, height, scale, fit, points, resources, as_json) -> None:
+def camera_command(
+    scene, viewport, width, height, scale, fit, points, resources, window_size, as_json
+) -> None:
     from xaml3d.scene.camera_math import camera_pipeline
 
     name = display_name(scene)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources))
+        sc = load_scene(scene, tuple(resources), window_size)
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
     if fit:

@@ -45,16 +45,17 @@ def display_name(source: str) -> str:
     return STDIN_NAME if source == "-" else source
 
 
-def load_scene(source: str, resources: Iterable[str] = ()) -> Scene:
+def load_scene(source: str, resources: Iterable[str] = (), window_size=None) -> Scene:
     """Load a scene from a path, or from stdin (as bytes) when ``source`` is ``-``: its
-    relative references then resolve against the current directory."""
+    relative references then resolve against the current directory. ``window_size`` (client
+    width, height) lays the root out at that size (``--window-size``)."""
     from xaml3d.xaml.loader import load
 
     if source != "-":
-        return load(source, tuple(resources))
+        return load(source, tuple(resources), window_size=window_size)
     data = sys.stdin.buffer.read()
     try:
-        scene = load(data, tuple(resources), text=True)
+        scene = load(data, tuple(resources), text=True, window_size=window_size)
     except XamlError as exc:
         if exc.file in (None, TEXT_NAME):
             exc.file = STDIN_NAME
@@ -143,6 +144,28 @@ resources_option = click.option(
     multiple=True,
     metavar="FILE",
     help="Extra resource dictionary (repeatable), like App.xaml.",
+)
+
+
+def _parse_window_size(ctx, param, value):
+    if value is None:
+        return None
+    w, sep, h = value.lower().partition("x")
+    try:
+        size = (float(w), float(h)) if sep else None
+    except ValueError:
+        size = None
+    if size is None or not all(math.isfinite(v) and v > 0 for v in size):
+        raise click.BadParameter(f"{value!r} is not a size WIDTHxHEIGHT in pixels (e.g. 800x600)")
+    return size
+
+
+# The client size the root is laid out at (docs/layout.md), instead of its markup size.
+window_size_option = click.option(
+    "--window-size",
+    metavar="WxH",
+    callback=_parse_window_size,
+    help="Lay the root out at this client size (e.g. 1024x768) instead of its markup size.",
 )
 
 

@@ -14,6 +14,7 @@ from xaml3d.cli_common import (
     exit_on_input_error,
     load_scene,
     resources_option,
+    window_size_option,
 )
 from xaml3d.errors import SEVERITIES
 from xaml3d.scene.types import Scene
@@ -32,6 +33,7 @@ def scene_info(scene: Scene, name: str | None = None) -> dict:
                 "width": vp.width,
                 "height": vp.height,
                 "size_source": vp.size_source,
+                "layout_rect": None if vp.layout_rect is None else list(vp.layout_rect),
                 "camera": None if cam is None else type(cam).__name__,
                 "camera_is_default": bool(getattr(cam, "is_default", False)),
                 "models": len(vp.models),
@@ -101,6 +103,11 @@ def _text(info: dict) -> list[str]:
             f"  viewport {v['index']}{name}: {v['width']:g} x {v['height']:g} "
             f"(size from {v['size_source']})"
         )
+        if v["layout_rect"] is not None:
+            x, y, w, h = v["layout_rect"]
+            lines.append(
+                f"    layout rect: x {x:g}, y {y:g}, {w:g} x {h:g} in the root's client area"
+            )
         cam = v["camera"] or "none (Camera={x:Null})"
         lines.append(f"    camera: {cam}" + (" (WPF's default)" if v["camera_is_default"] else ""))
         kinds = ", ".join(f"{n} {k}" for k, n in v["light_kinds"].items())
@@ -160,11 +167,12 @@ Examples:
 @click.command("info", help=HELP, short_help="Summarize what a scene holds.")
 @click.argument("scene", metavar="SCENE")
 @resources_option
+@window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def info_command(scene, resources, as_json) -> None:
+def info_command(scene, resources, window_size, as_json) -> None:
     name = display_name(scene)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources))
+        sc = load_scene(scene, tuple(resources), window_size)
     info = scene_info(sc, name)
     if as_json:
         click.echo(json.dumps(info, indent=2))

@@ -28,8 +28,10 @@ from xaml3d.cli_common import (
     resources_option,
     same_file,
     stderr_is_terminal,
+    window_size_option,
     with_file,
 )
+from xaml3d.cli_jobs import default_jobs, run_ordered
 from xaml3d.errors import ERROR, XamlError
 
 FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp"}
@@ -54,6 +56,10 @@ class RenderOptions:
     verbose: bool
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
+    msaa: int | None = None
+    window_size: tuple[float, float] | None = None
+    window: bool = False
+    outline_controls: bool = False
     time: float | None = 0.0  # seconds after load; None: the markup's base values
     storyboard: str | None = None
 
@@ -129,55 +135,119 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
             raise _Failed
 
 
-def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
-    from xaml3d.render.api import render_arrays, save_image, scene_at
+def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list):
+    """One viewport as an image at its (laid-out or -W/-H) size; raises _Failed after printing
+    the error when the camera cannot produce an image."""
+    from xaml3d.render.api import render_arrays
     from xaml3d.scene.fit import fit_viewport
+
+    width, height = render_size(vp, opts.width, opts.height, opts.scale)
+    if opts.fit:
+        fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
+        diags.extend(notes)
+        scene = replace(scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports))
+    result = render_arrays(
+        scene,
+        width,
+        height,
+        viewport=vp.index,
+        mode=opts.mode,
+        background=opts.background,
+        ssaa=opts.ssaa,
+        msaa=opts.msaa,
+        hidden_lines=not opts.hide_hidden_lines,
+        antialias_lines=opts.antialias_lines,
+        time=None,  # the scene is already the one at --time
+    )
+    return _checked(result.diagnostics, result.image, file, opts, diags)
+
+
+def _checked(fresh, make_image, file: str, opts: RenderOptions, diags: list):
+    fresh = [with_file(d, file) for d in fresh]
+    diags.extend(d for d in fresh if d.severity != ERROR)
+    fatal = [d for d in fresh if d.severity == ERROR]
+    if fatal:  # e.g. a camera that cannot produce an image: WPF would draw nothing
+        echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+        echo_diagnostics(fatal)
+        diags.clear()
+        raise _Failed
+    return make_image()
+
+
+def _render_window(scene, file: str, opts: RenderOptions, diags: list):
+    from PIL import Image
+
+    from xaml3d.render.window import compose_window
+
+    scene.viewport()  # SCN001 when there is nothing to lay out
+    rgba, fresh = compose_window(
+        scene,
+        mode=opts.mode,
+        ssaa=opts.ssaa,
+        msaa=opts.msaa,
+        background=opts.background,
+        outline_controls=opts.outline_controls,
+        time=None,  # the scene is already the one at --time
+    )
+    return _checked(fresh, lambda: Image.fromarray(rgba, mode="RGBA"), file, opts, diags)
+
+
+def _viewport_target(target: Path, vp) -> Path:
+    label = vp.name or str(vp.index)
+    return target.with_name(f"{target.stem}-{label}{target.suffix}")
+
+
+def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
+    from xaml3d.render.api import save_image, scene_at
 
     name = display_name(source)
     diags = []
     try:
         _check_not_input(target, name, inputs)
-        scene = load_scene(source, opts.resources)
+        scene = load_scene(source, opts.resources, opts.window_size)
         scene = scene_at(scene, opts.time, opts.storyboard)
         file = scene.file or name
         diags.extend(with_file(d, file) for d in scene.diagnostics)
         _check_not_input(target, name, [Path(p) for p in scene.resources_used])
-        vp = scene.viewport(opts.viewport)
-        width, height = render_size(vp, opts.width, opts.height, opts.scale)
-        if opts.fit:
-            fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
-            diags.extend(notes)
-            scene = replace(
-                scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports)
-            )
-        result = render_arrays(
-            scene,
-            width,
-            height,
-            viewport=vp.index,
-            mode=opts.mode,
-            background=opts.background,
-            ssaa=opts.ssaa,
-            hidden_lines=not opts.hide_hidden_lines,
-            antialias_lines=opts.antialias_lines,
-            time=None,
-        )
-        fresh = [with_file(d, file) for d in result.diagnostics]
-        diags.extend(d for d in fresh if d.severity != ERROR)
-        fatal = [d for d in fresh if d.severity == ERROR]
-        if fatal:  # e.g. a camera that cannot produce an image: WPF would draw nothing
-            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
-            echo_diagnostics(fatal)
-            raise _Failed
-        image = result.image()
-        if target == "-":
-            # The render already holds --background (at its alpha): flatten onto white only.
-            data = _encode(image, opts.fmt or "png")
-            out = sys.stdout.buffer
-            out.write(data)
-            out.flush()
+        if opts.window:
+            jobs = [(None, target)]
+        elif opts.viewport == "all":
+            scene.viewport()  # SCN001 when there is none
+            jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
+            for _, t in jobs:
+                _check_not_input(t, name, inputs + [Path(p) for p in scene.resources_used])
         else:
-            save_image(image, target, format=opts.fmt)
+            jobs = [(scene.viewport(opts.viewport), target)]
+        failed = False
+        for vp, out in jobs:
+            try:
+                if vp is None:
+                    image = _render_window(scene, file, opts, diags)
+                else:
+                    image = _render_viewport(scene, vp, file, opts, diags)
+            except _Failed:
+                failed = True
+                continue
+            except XamlError as exc:
+                if len(jobs) == 1:
+                    raise
+                # one viewport of several cannot be drawn (an empty layout...): the others are
+                echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+                diags.clear()
+                click.echo(exc.with_location(file=name).format(), err=True)
+                failed = True
+                continue
+            if out == "-":
+                # The render already holds --background (at its alpha): flatten onto white only.
+                data = _encode(image, opts.fmt or "png")
+                stream = sys.stdout.buffer
+                stream.write(data)
+                stream.flush()
+            else:
+                save_image(image, out, format=opts.fmt)
+        if failed:
+            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+            raise _Failed
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)
@@ -188,6 +258,61 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         raise _Failed from None
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+
+
+def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]) -> bool:
+    """One scene of a parallel batch (in a worker process): True when it was rendered."""
+    try:
+        _render_one(source, target, opts, inputs)
+    except _Failed:
+        return False
+    return True
+
+
+def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
+    """Steps that print each scene's messages in batch order while worker processes render; None
+    when a serial run is as good (one scene, or stdin, which only this process can read)."""
+    if len(plan) < 2 or any(source == "-" for source, _ in plan):
+        return None
+    todo, items = [], []
+    for source, target in plan:  # the serial run's duplicate-output check, in the same order
+        key = Path(os.path.abspath(target))
+        duplicate = key in written
+        written.add(key)
+        todo.append((source, target, duplicate))
+        if not duplicate:
+            items.append((source, target, opts, inputs))
+    results = run_ordered(_render_task, items, jobs)
+
+    def step(source: str, target, duplicate: bool) -> None:
+        if duplicate:
+            msg = f"{target} is already the output of another scene of this batch"
+            click.echo(io_error(display_name(source), msg, "IO003"), err=True)
+            failed.append(display_name(source))
+            return
+        ok, text = next(results)
+        sys.stderr.write(text)
+        sys.stderr.flush()
+        if not ok:
+            failed.append(display_name(source))
+
+    return [lambda args=args: step(*args) for args in todo]
+
+
+def _check_layout_options(window, outline, viewport, width, height, scale, fit, output) -> None:
+    if outline and not window:
+        raise click.UsageError("--outline-controls draws on the --window picture: add --window")
+    if window and viewport is not None:
+        raise click.UsageError("--window draws every viewport: drop --viewport")
+    many = "--window" if window else "--viewport all" if viewport == "all" else None
+    if many and (width is not None or height is not None):
+        raise click.UsageError(
+            f"-W/-H size one viewport; with {many} use --window-size (the root's client size)"
+        )
+    if window and (scale is not None or fit):
+        raise click.UsageError("--scale and --fit apply to one viewport, not to --window")
+    if many and output == "-":
+        raise click.UsageError(f"{many} writes files: give -o FILE or a directory")
 
 
 HELP = """Render XAML 3D scene(s) to images (PNG, JPEG or WebP).
@@ -205,6 +330,8 @@ Examples:
   xaml3d render scenes/*.xaml -o out/ --format jpeg --background "#FF202020"
   xaml3d render lost-camera.xaml -o fixed.png --fit
   xaml3d render spin.xaml -o spin-at-1.5s.png --time 1.5
+  xaml3d render views.xaml -o out.png --viewport all      # out-<name or index>.png each
+  xaml3d render app.xaml -o win.png --window --window-size 1024x768
 
 \b
 Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
@@ -267,10 +394,33 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     callback=_parse_background,
     help="Fill colour, any WPF syntax (default: transparent).",
 )
-@click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
 @click.option(
-    "--viewport", metavar="INDEX|NAME", help="Which Viewport3D to render (default: the first)."
+    "--ssaa",
+    type=click.IntRange(1, 4),
+    help="Supersampling factor per axis, 1..4 (every sample shaded; replaces --msaa).",
 )
+@click.option(
+    "--msaa",
+    type=click.IntRange(1, 4),
+    help="Multisampling per axis, 1..4 (shaded once per pixel; default 2, wireframe none).",
+)
+@click.option(
+    "--viewport",
+    metavar="INDEX|NAME|all",
+    help="Which Viewport3D to render (default: the first); all: each to OUT-<name or index>.",
+)
+@click.option(
+    "--window",
+    is_flag=True,
+    help="Draw the root's whole client area: every viewport at its layout rectangle over the "
+    "panels' backgrounds.",
+)
+@click.option(
+    "--outline-controls",
+    is_flag=True,
+    help="--window: outline the layout box of each 2D control (they are not drawn).",
+)
+@window_size_option
 @resources_option
 @click.option(
     "--fit", is_flag=True, help="Move the camera (same direction) so the whole scene is framed."
@@ -281,6 +431,12 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     default=0.05,
     show_default=True,
     help="Room left around the scene by --fit, as a fraction of its size.",
+)
+@click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(1),
+    help="Worker processes for a batch of scenes (default: the number of cores).",
 )
 @time_option
 @storyboard_option
@@ -297,6 +453,7 @@ def render_command(
     mode,
     background,
     ssaa,
+    msaa,
     viewport,
     resources,
     fit,
@@ -305,11 +462,18 @@ def render_command(
     verbose,
     hide_hidden_lines,
     antialias_lines,
+    jobs,
+    window,
+    outline_controls,
+    window_size,
     at_time,
     storyboard,
 ) -> None:
-    fmt = fmt.lower() if fmt else None
     at_time = parse_time(at_time)
+    if (ssaa or 1) > 1 and (msaa or 1) > 1:
+        raise click.UsageError("choose one of --ssaa and --msaa")
+    fmt = fmt.lower() if fmt else None
+    _check_layout_options(window, outline_controls, viewport, width, height, scale, fit, output)
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
     opts = RenderOptions(
         width,
@@ -327,6 +491,10 @@ def render_command(
         verbose,
         hide_hidden_lines,
         antialias_lines,
+        msaa,
+        window_size,
+        window,
+        outline_controls,
         at_time,
         storyboard,
     )
@@ -353,15 +521,21 @@ def render_command(
         except _Failed:
             failed.append(display_name(source))
 
+    jobs = default_jobs() if jobs is None else jobs
+    steps = _parallel_steps(plan, opts, inputs, jobs, written, failed) if jobs > 1 else None
+    if steps is None:
+        steps = (
+            lambda source=source, target=target: run(source, target) for source, target in plan
+        )
     if len(plan) > 1 and stderr_is_terminal():
         with click.progressbar(
-            plan, label="rendering", file=click.get_text_stream("stderr")
+            steps, length=len(plan), label="rendering", file=click.get_text_stream("stderr")
         ) as bar:
-            for source, target in bar:
-                run(source, target)
+            for step in bar:
+                step()
     else:
-        for source, target in plan:
-            run(source, target)
+        for step in steps:
+            step()
     if len(plan) > 1:
         ok = len(plan) - len(failed)
         summary = f"xaml3d: rendered {ok} of {len(plan)} scenes"

@@ -21,6 +21,7 @@ from xaml3d.errors import ERROR, WARNING
 TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.xaml.vocabulary", "READER_CODES", True),
     ("xaml3d.xaml.values", "VALUE_CODES", True),
+    ("xaml3d.layout.gotchas", "LAYOUT_CODES", True),
     ("xaml3d.scene.mesh", "MESH_CODES", True),
     ("xaml3d.scene.camera_check", "CAMERA_CODES", True),
     ("xaml3d.scene.checks", "CHECK_CODES", True),

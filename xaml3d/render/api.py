@@ -30,12 +30,14 @@ from pathlib import Path
 import numpy as np
 
 from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError
+from xaml3d.render import accel
 from xaml3d.render.draw import draw_viewport_models, make_context
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.wireframe import draw_wireframe
 from xaml3d.scene.types import Scene
 
 MODES = ("shaded", "flat", "wireframe")
+DEFAULT_MSAA = 2  # 2 x 2 samples per pixel, shaded once per pixel per triangle
 MAX_SUPERSAMPLED_PIXELS = 1 << 26  # ~67 M samples: about 1.6 GB of colour + depth buffers
 _FORMATS = {".png": "PNG", ".jpg": "JPEG", ".jpeg": "JPEG", ".webp": "WEBP"}
 
@@ -129,6 +131,7 @@ def render_arrays(
     mode: str = "shaded",
     background=None,
     ssaa: int | None = None,
+    msaa: int | None = None,
     hidden_lines: bool = True,
     line_color=None,
     antialias_lines: bool = False,
@@ -139,9 +142,13 @@ def render_arrays(
 ) -> Rendering:
     """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
 
-    ``mode``: "shaded" (WPF), "flat" (per-face lighting) or "wireframe". ``ssaa``: 1..4 samples
-    per side (default 2, wireframe 1). ``hidden_lines=False`` hides occluded wireframe edges;
-    ``line_color`` (straight RGBA) overrides the material colour of wireframe edges.
+    ``mode``: "shaded" (WPF), "flat" (per-face lighting) or "wireframe". Anti-aliasing:
+    ``msaa`` 1..4 samples per side with coverage and depth per sample but shading once per
+    pixel per triangle (multisampling, WPF's hardware way; the default is msaa 2 for shaded and
+    flat), or ``ssaa`` 1..4 samples per side each shaded (supersampling; wireframe's default is
+    ssaa 1). Giving ``ssaa`` alone turns multisampling off; both above 1 is an error.
+    ``hidden_lines=False`` hides occluded wireframe edges; ``line_color`` (straight RGBA)
+    overrides the material colour of wireframe edges.
     ``time``/``storyboard``: which moment of the animations (see ``scene_at``).
     Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
     if isinstance(scene_or_path, Scene):
@@ -153,23 +160,35 @@ def render_arrays(
     scene = scene_at(scene, time, storyboard)
     if mode not in MODES:
         raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
-    if ssaa is None:
-        ssaa = 1 if mode == "wireframe" else 2
-    if not (isinstance(ssaa, int) and 1 <= ssaa <= 4):
-        raise RenderError(f"ssaa must be an integer from 1 to 4, got {ssaa!r}", code="RND005")
+    if ssaa is None and msaa is None:
+        msaa = 1 if mode == "wireframe" else DEFAULT_MSAA
+    ssaa = 1 if ssaa is None else ssaa
+    msaa = 1 if msaa is None or mode == "wireframe" else msaa
+    for name, value in (("ssaa", ssaa), ("msaa", msaa)):
+        if not (isinstance(value, int) and 1 <= value <= 4):
+            raise RenderError(
+                f"{name} must be an integer from 1 to 4, got {value!r}", code="RND005"
+            )  # fmt: skip
+    if ssaa > 1 and msaa > 1:
+        raise RenderError(
+            f"choose one anti-aliasing: ssaa={ssaa} and msaa={msaa} were both given", code="RND005"
+        )
+    grid = max(ssaa, msaa)  # samples per side of the framebuffer's grid
     vp = scene.viewport(viewport)
     w, h = _resolve_size(vp, width, height, max_size)
-    if w * h * ssaa * ssaa > MAX_SUPERSAMPLED_PIXELS:
+    if w * h * grid * grid > MAX_SUPERSAMPLED_PIXELS:
+        aa = f"ssaa={ssaa}" if ssaa > 1 else f"msaa={msaa}"
         raise RenderError(
-            f"image size {w} x {h} with ssaa={ssaa} needs {w * h * ssaa * ssaa} samples, over the "
-            f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or ssaa",
+            f"image size {w} x {h} with {aa} needs {w * h * grid * grid} samples, over the "
+            f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or the ssaa/msaa factor",
             code="RND001",
         )
     diags: list[Diagnostic] = []
     bg = _background(background, vp)
-    sw, sh = w * ssaa, h * ssaa
+    sw, sh = w * grid, h * grid
+    accel.begin_frame()
     fb = Framebuffer(sw, sh, bg)
-    ctx = make_context(sw, sh)
+    ctx = make_context(sw, sh, msaa)
     try:
         from xaml3d.scene.camera_math import camera_pipeline
 
@@ -181,7 +200,7 @@ def render_arrays(
     if pipeline is not None:
         if mode == "wireframe":
             color = None if line_color is None else _background(line_color, vp)
-            draw_wireframe(fb, vp, pipeline, ctx, color, ssaa, hidden_lines, antialias_lines)
+            draw_wireframe(fb, vp, pipeline, ctx, color, grid, hidden_lines, antialias_lines)
         else:
             draw_viewport_models(fb, vp, pipeline, ctx, mode)
     for d in ctx.diagnostics:
@@ -190,7 +209,7 @@ def render_arrays(
     if fb.fragments_drawn == 0:
         sev = INFO if not vp.models else WARNING
         diags.append(Diagnostic("RND002", sev, "nothing was drawn in the image", scene.file))
-    rgba, depth = fb.resolve(ssaa)
+    rgba, depth = fb.resolve(grid)
     return Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
 
 

@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from xaml3d.errors import WARNING, Diagnostic, XamlError
+from xaml3d.render import accel
 from xaml3d.render.brushes import brush_average, brush_bounds, brush_is_uniform, sample_brush
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import Framebuffer
@@ -38,6 +39,7 @@ from xaml3d.scene.transforms import normal_matrix
 from xaml3d.scene.types import DiffuseMaterial, Model
 
 _EYE3 = np.eye(3)
+KEEP_BYTES = 192 << 20  # fragments kept between the passes of a multi-pass material
 
 
 @dataclass
@@ -59,12 +61,13 @@ class DrawContext:
     height: int
     clip_planes: list = field(default_factory=list)
     diagnostics: list = field(default_factory=list)
+    msaa: int = 1  # > 1: width x height is a multisample grid, attributes once per image pixel
 
 
-def make_context(width: int, height: int) -> DrawContext:
+def make_context(width: int, height: int, msaa: int = 1) -> DrawContext:
     # Guard band: |x/w| <= g keeps pixel coordinates within MAX_COORD / 2 (int64-safe).
     g = max(1.0, (MAX_COORD / 2) / (max(width, height) / 2.0) - 1.0)
-    return DrawContext(width, height, [NEAR_PLANE, *guard_planes(g)])
+    return DrawContext(width, height, [NEAR_PLANE, *guard_planes(g)], msaa=int(msaa))
 
 
 def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | None:
@@ -114,7 +117,12 @@ def _unit_rows(v: np.ndarray) -> np.ndarray:
 
 
 def side_fragments(
-    pm: PreparedModel, tris: np.ndarray, ctx: DrawContext, budget=None, weights: bool = True
+    pm: PreparedModel,
+    tris: np.ndarray,
+    ctx: DrawContext,
+    budget=None,
+    weights: bool = True,
+    passes: int = 1,
 ):
     """Fragments of the triangles ``tris`` (indices into the mesh's triangle list) in triangle
     order; ``weights`` are the perspective-correct weights on the ORIGINAL three vertices and
@@ -163,16 +171,21 @@ def side_fragments(
         src = tris[order_key[order]]
         piece = np.concatenate([np.full(keep.size, -1), np.arange(csrc.size)])[order]
     kw = {} if budget is None else {"budget": budget}
-    for frag in rasterize(xy, d, ctx.width, ctx.height, q, weights=weights, **kw):
+    frags = rasterize(
+        xy, d, ctx.width, ctx.height, q, weights=weights, msaa=ctx.msaa, passes=passes, **kw
+    )
+    for frag in frags:
         keep_f = frag.depth <= 1.0
         if not keep_f.all():
             frag = frag.select(keep_f)
         if piece is not None and frag.weights is not None:
-            pc = piece[frag.tri]
+            pc = piece[frag.tri if frag.wtri is None else frag.wtri]
             m = pc >= 0
             if m.any():
                 frag.weights[m] = np.einsum("fk,fkv->fv", frag.weights[m], cbary[pc[m]])
         frag.tri = src[frag.tri]
+        if frag.wtri is not None:
+            frag.wtri = src[frag.wtri]
         if len(frag):
             yield frag
 
@@ -213,11 +226,13 @@ class PassShader:
             self.colors = shade_vertices(mat, pm.view_pos, pm.view_nrm * normal_sign, lights)
         brush = mat.brush
         self.uniform = brush_is_uniform(brush)
+        self.indices = np.ascontiguousarray(self.indices, dtype=np.int64)
         if self.uniform:
             self.colors = self.colors * brush_average(brush)[None, :]
         else:
             self.texcoords = pm.model.mesh.texcoords
             self.bounds = brush_bounds(self.texcoords)
+            self._uv_planes = np.ascontiguousarray(self.texcoords.T, dtype=np.float64)
         if flat and self.uniform:
             # The final float32 colour per triangle, gathered 16 bytes at a time as one
             # complex128 element (the framebuffer blends float32; see frame.py).
@@ -225,26 +240,44 @@ class PassShader:
                 c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
             self._c16 = c32.view(np.complex128).reshape(-1)
         elif not flat:
-            self._planes = np.ascontiguousarray(self.colors.T)  # (4, N): one gather per channel
+            self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)
 
     def __call__(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
             return self._c16[frag.tri].view(np.float32).reshape(-1, 4)
+        if frag.inverse is not None:
+            # Multisampling: shade each (triangle, pixel) row once, spread to its samples (in
+            # float32, what blending takes: converting before the gather moves half the bytes).
+            rows = Fragments(frag.wtri, frag.wtri, frag.wtri, frag.weights)
+            return np.asarray(self(rows), dtype=np.float32)[frag.inverse]
         if self.flat:
             col = self.colors[frag.tri]
         else:
-            # sum_v w_v c_v per channel, written out: faster than einsum over a (F, 3, 4) gather.
-            ci = self.indices[frag.tri]
-            i0, i1, i2 = ci[:, 0], ci[:, 1], ci[:, 2]
-            w = frag.weights
-            w0, w1, w2 = w[:, 0], w[:, 1], w[:, 2]
-            col = np.empty((ci.shape[0], 4), dtype=np.float32 if self.uniform else np.float64)
-            for c, plane in enumerate(self._planes):
-                col[:, c] = w0 * plane[i0] + w1 * plane[i1] + w2 * plane[i2]
+            col = interpolate(self._planes, self.indices, frag.tri, frag.weights)
+            if self.uniform:
+                col = col.astype(np.float32)
         if not self.uniform:
-            uv = np.einsum("fk,fkc->fc", frag.weights, self.texcoords[self.indices[frag.tri]])
+            uv = interpolate(self._uv_planes, self.indices, frag.tri, frag.weights)
             col = col * sample_brush(self.mat.brush, uv, self.bounds)
         return col
+
+
+def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.ndarray):
+    """Vertex attributes ``planes`` (K, N) at fragments of triangles ``tri`` with weights ``w``
+    (F, 3): (F, K) float64, sum_v w_v a[i_v] per channel, written out (faster than einsum over a
+    (F, 3, K) gather, and the same arithmetic as the compiled kernel's)."""
+    kernels = accel.active()
+    if kernels is not None:
+        return kernels.interpolate(
+            planes, indices, np.ascontiguousarray(tri, dtype=np.int64), np.ascontiguousarray(w)
+        )
+    ci = indices[tri]
+    i0, i1, i2 = ci[:, 0], ci[:, 1], ci[:, 2]
+    w0, w1, w2 = w[:, 0], w[:, 1], w[:, 2]
+    out = np.empty((tri.shape[0], planes.shape[0]))
+    for c, plane in enumerate(planes):
+        out[:, c] = w0 * plane[i0] + w1 * plane[i1] + w2 * plane[i2]
+    return out
 
 
 def _blend(fb: Framebuffer, mat, frag: Fragments, col: np.ndarray) -> None:
@@ -270,15 +303,31 @@ def draw_model(fb: Framebuffer, pm: PreparedModel, lights, ctx: DrawContext, mod
         shaders = [PassShader(pm, p, sign, lights, flat, faces, tris) for p in passes]
         # Flat colours with uniform brushes are per triangle: no weights to interpolate.
         need_weights = not (flat and all(sh.uniform for sh in shaders))
-        frags = side_fragments(pm, tris, ctx, weights=need_weights)
-        if len(shaders) == 1:  # stream: no need to keep the fragments
-            for frag in frags:
-                _blend(fb, passes[0], frag, shaders[0](frag))
-            continue
-        kept = list(frags)  # every pass draws the same fragments, pass after pass
-        for mat, shader in zip(passes, shaders, strict=True):
-            for frag in kept:
+        frags = side_fragments(pm, tris, ctx, weights=need_weights, passes=len(shaders))
+        # Every pass draws the same fragments, pass after pass (WPF's order: a whole pass, then
+        # the next). The first pass streams them; they are kept for the next passes while that
+        # stays within KEEP_BYTES, else rasterized again for each pass (bounded memory at
+        # high sample counts, at the cost of rasterizing again).
+        kept: list[Fragments] | None = [] if len(shaders) > 1 else None
+        size = 0
+        for frag in frags:
+            _blend(fb, passes[0], frag, shaders[0](frag))
+            if kept is not None:
+                kept.append(frag)
+                size += _nbytes(frag)
+                if size > KEEP_BYTES:
+                    kept = None
+        for mat, shader in zip(passes[1:], shaders[1:], strict=True):
+            again = kept if kept is not None else side_fragments(
+                pm, tris, ctx, weights=need_weights, passes=len(shaders)
+            )  # fmt: skip
+            for frag in again:
                 _blend(fb, mat, frag, shader(frag))
+
+
+def _nbytes(frag: Fragments) -> int:
+    arrays = (frag.pixel, frag.depth, frag.tri, frag.weights, frag.inverse, frag.wtri)
+    return sum(a.nbytes for a in arrays if a is not None)
 
 
 def draw_viewport_models(fb: Framebuffer, viewport, pipeline, ctx: DrawContext, mode: str) -> None:

@@ -36,6 +36,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from xaml3d.render import accel
+
 DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = empty
 
 
@@ -78,6 +80,12 @@ class Framebuffer:
             return
         src = np.asarray(src, dtype=np.float32)
         z = np.asarray(d, dtype=np.float64) - DEPTH_OFFSET
+        kernels = accel.active()
+        if kernels is not None:  # the same result, one fragment after the other
+            src = np.ascontiguousarray(src)
+            pix = np.ascontiguousarray(pix, dtype=np.int64)
+            self.fragments_drawn += kernels.blend_over(self.zbuf, self.color, pix, z, src)
+            return
         if bool((src[:, 3] >= 1.0).all()):
             self._over_opaque(pix, z, src)
         else:
@@ -138,13 +146,23 @@ class Framebuffer:
             ok = z[idx] <= self.zbuf[p]
             idx, p = idx[ok], p[ok]
             s = src[idx]
-            self._put(p, s + (1.0 - s[:, 3:4]) * self._get(p))
+            # alpha >= 1 replaces (as the opaque path does), whatever else the call holds: the
+            # result of a fragment never depends on how fragments are grouped into calls.
+            a = s[:, 3:4]
+            self._put(p, np.where(a >= 1.0, s, s + (1.0 - a) * self._get(p)))
             self.zbuf[p] = z[idx]
             self.fragments_drawn += int(idx.size)
 
     def add(self, pix: np.ndarray, d: np.ndarray, src: np.ndarray) -> None:
         """Specular / emissive blending: depth test <=, dst + src, no depth write, clamp at 1."""
         if pix.size == 0:
+            return
+        kernels = accel.active()
+        if kernels is not None:
+            z = np.asarray(d, dtype=np.float64) - DEPTH_OFFSET
+            s = np.ascontiguousarray(src, dtype=np.float32)
+            pix = np.ascontiguousarray(pix, dtype=np.int64)
+            self.fragments_drawn += kernels.blend_add(self.zbuf, self.color, pix, z, s)
             return
         ok = np.asarray(d, dtype=np.float64) - DEPTH_OFFSET <= self.zbuf[pix]
         p = pix[ok]

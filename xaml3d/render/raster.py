@@ -30,6 +30,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xaml3d.render import accel
+
 SUBPIXEL = 256  # 8 bits of sub-pixel precision
 HALF = SUBPIXEL // 2
 MAX_COORD = float(2**21)  # pixel coordinates beyond this would overflow the int64 edge math
@@ -51,11 +53,20 @@ class Fragments:
     depth: np.ndarray
     tri: np.ndarray
     weights: np.ndarray | None  # None when the caller asked for none (nothing to interpolate)
+    # Multisampling: ``weights`` has one row per (triangle, image pixel) rather than per
+    # fragment; ``inverse`` (F,) gives each fragment's row and ``wtri`` each row's triangle, so
+    # a pass shades every row once and spreads the colours with ``colors[inverse]``.
+    inverse: np.ndarray | None = None
+    wtri: np.ndarray | None = None
 
     def __len__(self) -> int:
         return int(self.pixel.shape[0])
 
     def select(self, mask: np.ndarray) -> Fragments:
+        if self.inverse is not None:  # the rows stay; some may no longer be used
+            inv = self.inverse[mask]
+            return Fragments(self.pixel[mask], self.depth[mask], self.tri[mask], self.weights,
+                             inv, self.wtri)  # fmt: skip
         w = None if self.weights is None else self.weights[mask]
         return Fragments(self.pixel[mask], self.depth[mask], self.tri[mask], w)
 
@@ -91,6 +102,8 @@ def rasterize(
     inv_w: np.ndarray | None = None,
     budget: int = DEFAULT_BUDGET,
     weights: bool = True,
+    msaa: int = 1,
+    passes: int = 1,
 ) -> Iterator[Fragments]:
     """Yield the fragments of triangles ``xy`` (T, 3, 2) in pixel coordinates.
 
@@ -99,7 +112,15 @@ def rasterize(
     (zero snapped area) and non-finite triangles produce nothing. Pixel centres exactly on an edge
     belong to the triangle only if the edge is a top or a left edge (Direct3D's rule).
     With ``weights=False`` the fragments carry no weights (flat colours per triangle need none,
-    and computing them is a large share of the per-fragment work).
+    and computing them is a large share of the per-fragment work). ``passes``: how many material
+    passes will shade and blend the fragments (it weighs the work when choosing the kernels;
+    0: the numpy path, without counting the work).
+
+    ``msaa`` > 1: the pixel grid is a multisample grid of ``msaa`` x ``msaa`` samples per image
+    pixel (coverage and depth stay per sample) and the weights of every fragment are those at
+    the centre of its IMAGE pixel, so all the samples one triangle covers in one pixel get the
+    same attributes (shading once per pixel per triangle, as multisampling hardware does; for an
+    edge pixel the centre may lie outside the triangle and the weights extrapolate, as there).
     """
     xy = np.asarray(xy, dtype=np.float64)
     t_count = xy.shape[0]
@@ -123,7 +144,13 @@ def rasterize(
     if tris.size == 0:
         return
     rows = (j1 - j0 + 1)[tris]
-    if int(rows.sum()) > ROW_BUDGET:
+    # Half the bounding boxes' samples: a cheap estimate of the fragments to come.
+    estimate = 0.5 * float(np.dot(rows.astype(np.float64), (i1 - i0 + 1)[tris]))
+    # passes=0: a group of a call that already chose the numpy path (below), not counted again.
+    kernels = None
+    if passes > 0:
+        kernels = accel.for_work(estimate * int(passes) * (2 if weights else 1), tris.size)
+    if kernels is None and int(rows.sum()) > ROW_BUDGET:
         # Every (triangle, row) pair is an item with several int64 arrays: many large triangles
         # (heavy overdraw) would need gigabytes at once. Consecutive groups of triangles with a
         # bounded row count keep memory bounded; fragments still come in triangle order.
@@ -135,7 +162,7 @@ def rasterize(
             for part in np.split(tris, cuts):
                 sub = rasterize(
                     xy[part], depth_a[part], width, height,
-                    None if inv_a is None else inv_a[part], budget, weights,
+                    None if inv_a is None else inv_a[part], budget, weights, msaa, 0,
                 )  # fmt: skip
                 for frag in sub:
                     frag.tri = part[frag.tri]
@@ -165,6 +192,12 @@ def rasterize(
         A[e] = -dy
         B[e] = dx
         C[e] = dy * X[:, a] - dx * Y[:, a] + ((dy < 0) | ((dy == 0) & (dx > 0)))
+    if kernels is not None:
+        yield from _compiled(
+            kernels, tris, X, Y, z_t, q_t, area_t, A, B, C, (i0, i1, j0, j1),
+            width, height, budget, weights, msaa,
+        )  # fmt: skip
+        return
 
     # Row spans: for every (triangle, row) the exact range of covered pixel centres, solved from
     # the three integer edge inequalities A px + K > 0 with K = B py + C + tl (floor divisions,
@@ -192,7 +225,23 @@ def rasterize(
     px0 = lo * SUBPIXEL + HALF
     py = row * SUBPIXEL + HALF
     S = G = None
-    if weights:
+    if weights and msaa > 1:
+        # Weights at the image pixel's centre (see the docstring): per row item the centre's
+        # y is fixed, so E_e = A_e cx + Ky_e with Ky_e exact in int64; cx varies per fragment.
+        s_ = int(msaa)
+        pcy = (row // s_) * (s_ * SUBPIXEL) + s_ * HALF
+        Ay = np.empty((3, item_tri.size), dtype=np.int64)
+        Ky = np.empty_like(Ay)
+        for e in range(3):
+            a = A[e][item_tri]
+            tl = ((a > 0) | ((a == 0) & (B[e][item_tri] > 0))).astype(np.int64)
+            Ay[e] = a
+            Ky[e] = B[e][item_tri] * pcy + (C[e][item_tri] - tl)
+        scale = 1.0 / area_t[item_tri]
+        img_w = width // s_
+        pix_count = img_w * (height // s_ + 1)  # above any pixel index: keys stay apart
+        Q = None if q_t is None else q_t[item_tri] * scale[:, None]  # (items, 3) per vertex
+    elif weights:
         # Per row item the weights are affine in the column offset k: lam_v = S_v + G_v k, with
         # lam_v = E_e / area for the vertex v opposite edge e (E_e without the top-left bias).
         inv_area = 1.0 / area_t[item_tri]
@@ -238,10 +287,72 @@ def rasterize(
         t = item_tri[sl][it]
         d = dS[sl][it] + dG[sl][it] * kcol
         pix = pix0[sl][it] + kcol
-        lam = None
-        if weights:
+        lam = inverse = None
+        if weights and msaa > 1:
+            # One weights row per (triangle, image pixel): the fragments of one triangle in one
+            # pixel share the centre's weights, so they are computed (and shaded) once.
+            col = lo[sl][it] + kcol
+            key = t * pix_count + (row[sl][it] // s_) * img_w + col // s_
+            _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+            it1 = it[first]
+            cx = (col[first] // s_) * (s_ * SUBPIXEL) + s_ * HALF
+            lam = np.empty((first.size, 3))
+            for e in range(3):
+                v = (e + 2) % 3
+                ee = (Ay[e][sl][it1] * cx + Ky[e][sl][it1]).astype(np.float64)
+                lam[:, v] = ee * (scale[sl][it1] if Q is None else Q[sl][it1, v])
+            if Q is not None:
+                lam /= (lam[:, 0] + lam[:, 1] + lam[:, 2])[:, None]
+            yield Fragments(pix, d, tris[t], lam, inverse.reshape(-1), tris[t[first]])
+            start = stop
+            continue
+        elif weights:
             lam = S[sl][it] + G[sl][it] * kcol[:, None].astype(np.float64)
             if q_t is not None:
                 lam /= (lam[:, 0] + lam[:, 1] + lam[:, 2])[:, None]
         yield Fragments(pixel=pix, depth=d, tri=tris[t], weights=lam)
         start = stop
+
+
+def _compiled(kernels, tris, X, Y, z_t, q_t, area_t, A, B, C, box, width, height, budget,
+              weights, msaa) -> Iterator[Fragments]:  # fmt: skip
+    """The same fragments as the numpy code above, from ``kernels.raster_chunk``: chunks of
+    about ``budget`` fragments (whole rows), in triangle order."""
+    i0, i1, j0, j1 = (np.ascontiguousarray(b, dtype=np.int64) for b in box)
+    # One layout and dtype per argument: numba's cache then holds one compiled version.
+    gx, gy, zr, xr, yr = (np.ascontiguousarray(a) for a in _depth_planes(X, Y, z_t))
+    persp = q_t is not None
+    q = np.ascontiguousarray(q_t if persp else np.zeros((1, 3)), dtype=np.float64)
+    inv_area = np.ascontiguousarray(1.0 / area_t, dtype=np.float64)
+    A, B, C = (np.ascontiguousarray(e, dtype=np.int64) for e in (A, B, C))
+    msaa = int(msaa)
+    mode = kernels.NO_WEIGHTS
+    if weights:
+        mode = kernels.PER_PIXEL if msaa > 1 else kernels.PER_FRAGMENT
+    cap = max(int(budget), 1)  # the numpy path's chunks exactly (a longer row goes alone)
+    size = cap + int(width)  # a chunk never exceeds cap by more than one row (no bounds checks)
+    pix = np.empty(size, dtype=np.int64)
+    dep = np.empty(size)
+    tri = np.empty(size, dtype=np.int64)
+    w = np.empty((size if weights else 1, 3))
+    inv = np.empty(size if mode == kernels.PER_PIXEL else 1, dtype=np.int64)
+    wtri = np.empty_like(inv)
+    n_img = (width // msaa) * (height // msaa) if mode == kernels.PER_PIXEL else 1
+    owner = np.full(n_img, -1, dtype=np.int64)
+    rowidx = np.empty(n_img, dtype=np.int64)
+    t, j, chunk = 0, -1, 0
+    while t < tris.size:
+        stamp = chunk * (tris.size + 1)
+        n, nrows, t, j = kernels.raster_chunk(
+            A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, mode, msaa,
+            int(width), t, j, cap, stamp, pix, dep, tri, w, inv, wtri, owner, rowidx,
+        )  # fmt: skip
+        chunk += 1
+        if n == 0:
+            continue
+        if mode == kernels.PER_PIXEL:
+            yield Fragments(pix[:n].copy(), dep[:n].copy(), tris[tri[:n]], w[:nrows].copy(),
+                            inv[:n].copy(), tris[wtri[:nrows]])  # fmt: skip
+        else:
+            lam = w[:n].copy() if mode == kernels.PER_FRAGMENT else None
+            yield Fragments(pix[:n].copy(), dep[:n].copy(), tris[tri[:n]], lam)

@@ -439,7 +439,9 @@ class Viewport:
     name: str | None
     width: float
     height: float
-    size_source: str  # "viewport" | "ancestor:<Type>" | "default"
+    # "layout: <chain of panels and slots>" (WPF's layout), "viewport" (a root Viewport3D's
+    # own Width/Height) or "default" (640 x 480: nothing gives a size)
+    size_source: str
     camera: Camera | None  # None: Camera="{x:Null}", WPF draws nothing
     models: tuple[Model, ...] = ()
     lights: tuple[Light, ...] = ()
@@ -447,6 +449,7 @@ class Viewport:
     clip_to_bounds: bool = True
     line: int | None = None
     column: int | None = None
+    layout_rect: tuple[float, float, float, float] | None = None  # x, y, w, h in the root
 
     @property
     def triangle_count(self) -> int:
@@ -477,6 +480,9 @@ class Scene:
     storyboards: tuple[Storyboard, ...] = ()
     diagnostics: tuple[Diagnostic, ...] = ()
     resources_used: tuple[str, ...] = ()  # files whose resources were read (App.xaml, merged...)
+    layout: object = field(
+        default=None, compare=False, repr=False
+    )  # xaml3d.layout.LayoutResult of the panels (None: no layout root)
     # What evaluates the storyboards: an object with ``at(t, storyboard=None) -> Scene`` (the
     # scene at t seconds, Loaded storyboards begun at 0), ``running(storyboard=None)`` (the
     # animations that run) and ``cycle(storyboard=None)`` (seconds of one full cycle, or

@@ -164,12 +164,11 @@ class SceneTimeline:
         ctx = self._ctx
         mark, kept = len(ctx.diagnostics), len(ctx._keep)
         try:
-            frame = self._build(ctx, self._res, self._doc, Frame(overrides, self._cache))
+            frame = self._build(ctx, self._res, self._doc, frame=Frame(overrides, self._cache))
         finally:
             # a frame's build repeats the load's diagnostics: they stay the load's alone
             del ctx.diagnostics[mark:]
             del ctx._keep[kept:]
-        return replace(
-            self.base,
-            viewports=frame.viewports,
-        )
+        # the frame is a finished moment: rendering it again at the default time must not
+        # evaluate the storyboards a second time (from the base values, at t = 0)
+        return replace(self.base, viewports=frame.viewports, timeline=None)

@@ -27,7 +27,7 @@ from xaml3d.scene.types import (
 )
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
-from xaml3d.xaml.brushes_reader import brush_property, material
+from xaml3d.xaml.brushes_reader import material
 from xaml3d.xaml.context import (
     ReadContext,
     element_name,
@@ -36,12 +36,12 @@ from xaml3d.xaml.context import (
     split_markup,
     x_attr,
 )
+from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
 from xaml3d.xaml.parser import XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
 
-DEFAULT_SIZE = (640.0, 480.0)
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "HierarchicalDataTemplate"}  # fmt: skip
 _REFERENCE = {"StaticResource", "DynamicResource"}
@@ -187,58 +187,11 @@ def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
 # --------------------------------------------------------------------------- viewports
 
 
-def _length(r: Reader, p: Props, prop: str) -> float | None:
-    """A Width/Height that is a usable number (not Auto, NaN, a Binding...)."""
-    raw = p.attrs.get(prop)
-    if raw is None or raw.strip().lower() == "auto":
-        return None
-    from xaml3d.xaml.values import parse_double
-
-    v = p.value(prop, parse_double, None)
-    if v is None or not np.isfinite(v):
-        return None
-    if v < 0:
-        # WPF refuses a negative size outright; xaml3d treats it as empty (nothing drawn).
-        r.ctx.diag(
-            "SCN012", f"{p.type}.{prop} = {v:g} is negative (invalid in WPF): taken as 0", p.el,
-            attr=p.attr_keys.get(prop),
-        )  # fmt: skip
-        return 0.0
-    # A zero size is kept: WPF draws nothing there, and the camera check reports it (CAM010).
-    return float(v)
-
-
-def _framework_ancestors(el):
-    node = el.getparent()
-    while node is not None:
-        ns, local = qname(node.tag)
-        if is_presentation(ns) and "." not in local:
-            yield node
-        elif not is_presentation(ns):
-            yield node
-        node = node.getparent()
-
-
-def build_viewport(r: Reader, el, index: int) -> Viewport:
+def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     p = r.props(el)
-    w, h = _length(r, p, "Width"), _length(r, p, "Height")
-    source = "viewport"
-    if w is None or h is None:
-        w = h = None
-        for anc in _framework_ancestors(el):
-            if not is_presentation(qname(anc.tag)[0]):
-                continue
-            ap = r.props(anc)
-            aw, ah = _length(r, ap, "Width"), _length(r, ap, "Height")
-            if aw is not None and ah is not None:
-                w, h, source = aw, ah, f"ancestor:{ap.type}"
-                break
-        if w is None:
-            w, h = DEFAULT_SIZE
-            source = "default"
-    how = {"viewport": "its own Width/Height", "default": "the default size"}.get(
-        source, f"the nearest sized ancestor ({source.split(':', 1)[-1]})"
-    )
+    lay = lay or unreached(r, el)
+    w, h, source = lay.width, lay.height, lay.source
+    how = {"viewport": "its own Width/Height", "default": "the default size"}.get(source, source)
     r.ctx.diag("SCN003", f"Viewport3D #{index} size {w:g} x {h:g} from {how}", el)
 
     if p.has("Camera"):
@@ -253,14 +206,7 @@ def build_viewport(r: Reader, el, index: int) -> Viewport:
         cam = PerspectiveCamera(is_default=True)
         r.ctx.diag("SCN004", "no Camera: WPF's default PerspectiveCamera is used", el)
 
-    background = None
-    for anc in _framework_ancestors(el):
-        if not is_presentation(qname(anc.tag)[0]):
-            continue
-        ap = r.props(anc)
-        if ap.has("Background"):
-            background = brush_property(r, ap, "Background")
-            break
+    background = lay.background
 
     from xaml3d.xaml.values import parse_bool
 
@@ -273,6 +219,7 @@ def build_viewport(r: Reader, el, index: int) -> Viewport:
         width=w,
         height=h,
         size_source=source,
+        layout_rect=lay.rect,
         camera=cam,
         models=tuple(acc.models),
         lights=tuple(acc.lights),
@@ -347,13 +294,17 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
-def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument, frame=None) -> Scene:
-    """The Scene; with ``frame`` (animation_scene.Frame) its viewports at one moment of the
-    storyboards, which are not read again."""
+def build_scene(
+    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None, frame=None
+) -> Scene:
+    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size;
+    with ``frame`` (animation_scene.Frame) its viewports at one moment of the storyboards,
+    which are not read again."""
     r = Reader(ctx, resources, frame)
     walk = _Walk(r)
     walk.visit(doc.root)
-    viewports = tuple(build_viewport(r, el, i) for i, el in enumerate(walk.viewports))
+    lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
+    viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
         ctx.diag("SCN001", "the document holds no Viewport3D", doc.root)
 
@@ -373,4 +324,5 @@ def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument, fra
         storyboards=tuple(storyboards),
         diagnostics=tuple(diags),
         resources_used=tuple(dict.fromkeys(ctx.files_used)),
+        layout=laid_out,
     )

@@ -349,7 +349,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "RES008": (WARNING, "resource of the wrong type for this property"),
     "RES009": (ERROR, "resource file named by the user cannot be read (fatal)"),
     "SCN001": (WARNING, "the document holds no Viewport3D"),
-    "SCN003": (INFO, "viewport size source (own, ancestor or default)"),
+    "SCN003": (INFO, "viewport size and how the layout derived it (docs/layout.md)"),
     "SCN004": (INFO, "no camera given: WPF's default PerspectiveCamera is used"),
     "SCN005": (WARNING, "GeometryModel3D without a Geometry skipped"),
     "SCN006": (WARNING, "geometry that is not a MeshGeometry3D skipped"),

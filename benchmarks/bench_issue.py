@@ -1,0 +1,163 @@
+"""The speed figures of the renderer, each as a whole process against the Python floor.
+
+Every case is a whole ``xaml3d`` process (interpreter start, imports, reading, rendering, PNG),
+run ``--repeat`` times (default 5) interleaved with its floor (``floor.py``: read + lxml parse +
+numpy number conversion + a blank PNG of the same size, for the same file) measured in the same
+run. Printed per case: median wall seconds with min..max, the floor's median, their ratio, and
+the peak resident memory of the case's process (``os.wait4``'s ru_maxrss, largest of the runs).
+A last table gives shaded samples per second (samples written by the material passes divided by
+the time of the ``render_arrays`` call, one core) for the lit scenes, textured and not.
+
+    python benchmarks/bench_issue.py                 # everything, about 3 minutes
+    python benchmarks/bench_issue.py --only sphere1m-flat cube --repeat 3
+
+The machine is shared: read the min..max spread before comparing two runs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+CORPUS_002 = ROOT.parent / "shared/corpus/002_wpfsamples-hexsphere.xaml"
+XAML3D = [sys.executable, "-m", "xaml3d"]
+FLOOR = [sys.executable, str(HERE / "floor.py")]
+
+
+def timed(cmd: list[str]) -> tuple[float, float]:
+    """Wall seconds and peak RSS (MiB) of one whole process."""
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    err = proc.stderr.read().decode() if proc.stderr else ""
+    proc.stderr.close()
+    if proc.returncode not in (0,):
+        raise SystemExit(f"failed ({proc.returncode}): {' '.join(cmd)}\n{err}")
+    return wall, usage.ru_maxrss / 1024.0
+
+
+def cases(files: dict[str, Path], out: str) -> list[tuple[str, list[str], list[str] | None]]:
+    s1m, s200k, tex = files["sphere1m"], files["sphere200k"], files["textured"]
+    hd = [out, "1920", "1080"]
+    found = [
+        ("sphere1m-flat", [*XAML3D, "render", "--mode", "flat", str(s1m), "-o", out],
+         [*FLOOR, str(s1m), *hd]),
+        ("sphere1m-flat-ssaa1", [*XAML3D, "render", "--mode", "flat", "--ssaa", "1", str(s1m),
+                                 "-o", out], [*FLOOR, str(s1m), *hd]),
+        ("sphere1m-shaded", [*XAML3D, "render", str(s1m), "-o", out], [*FLOOR, str(s1m), *hd]),
+        ("sphere1m-info", [*XAML3D, "info", str(s1m)], [*FLOOR, str(s1m), "-"]),
+        ("sphere1m-validate", [*XAML3D, "validate", str(s1m)], [*FLOOR, str(s1m), "-"]),
+        ("sphere200k-default", [*XAML3D, "render", str(s200k), "-o", out],
+         [*FLOOR, str(s200k), *hd]),
+        ("sphere200k-ssaa4", [*XAML3D, "render", "--ssaa", "4", str(s200k), "-o", out],
+         [*FLOOR, str(s200k), *hd]),
+        ("textured-default", [*XAML3D, "render", str(tex), "-o", out], [*FLOOR, str(tex), *hd]),
+        ("textured-ssaa4", [*XAML3D, "render", "--ssaa", "4", str(tex), "-o", out],
+         [*FLOOR, str(tex), *hd]),
+        ("cube", [*XAML3D, "render", str(ROOT / "samples/cube.xaml"), "-o", out],
+         [*FLOOR, str(ROOT / "samples/cube.xaml"), out, "640", "480"]),
+    ]  # fmt: skip
+    if CORPUS_002.is_file():
+        found.insert(
+            5,
+            ("corpus002-hexsphere", [*XAML3D, "render", str(CORPUS_002), "-o", out],
+             [*FLOOR, str(CORPUS_002), out, "1024", "768"]),
+        )  # fmt: skip
+    return found
+
+
+SAMPLES_CHILD = """
+import json, sys, time
+from xaml3d.render import frame
+made = []
+class Counting(frame.Framebuffer):
+    def __init__(self, *a, **k):
+        super().__init__(*a, **k)
+        made.append(self)
+from xaml3d.render import api
+api.Framebuffer = Counting
+from xaml3d.xaml.loader import load
+scene = load(sys.argv[1])
+opts = json.loads(sys.argv[2])
+api.render_arrays(scene, **opts)  # warm: imports, caches
+made.clear()
+t0 = time.perf_counter()
+api.render_arrays(scene, **opts)
+dt = time.perf_counter() - t0
+print(json.dumps({"samples": sum(f.fragments_drawn for f in made), "seconds": dt}))
+"""
+
+
+def shaded_rate(path: Path, opts: dict) -> tuple[int, list[float]]:
+    rates, samples = [], 0
+    for _ in range(3):
+        out = subprocess.run(
+            [sys.executable, "-c", SAMPLES_CHILD, str(path), json.dumps(opts)],
+            capture_output=True, text=True, check=True,
+        )  # fmt: skip
+        r = json.loads(out.stdout.strip().splitlines()[-1])
+        samples = r["samples"]
+        rates.append(r["samples"] / r["seconds"] / 1e6)
+    return samples, rates
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--only", nargs="+", help="case names to run (default: all)")
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        # Written by a child: a forked child's ru_maxrss counts its parent's memory up to exec,
+        # so this process stays small.
+        subprocess.run(
+            [sys.executable, str(HERE / "scenes.py"), tmp], check=True, stdout=subprocess.DEVNULL
+        )
+        files = {
+            "sphere1m": Path(tmp, "sphere-1m.xaml"),
+            "sphere200k": Path(tmp, "sphere-200k.xaml"),
+            "textured": Path(tmp, "textured-lit-translucent.xaml"),
+        }
+        out = f"{tmp}/out.png"
+        print(
+            f"{'case':22}{'median s':>9}  {'min..max':13}{'floor s':>8}{'ratio':>7}{'peak MiB':>10}"
+        )
+        for name, cmd, floor in cases(files, out):
+            if args.only and name not in args.only:
+                continue
+            runs, floors, peak = [], [], 0.0
+            for _ in range(args.repeat):
+                wall, rss = timed(cmd)
+                runs.append(wall)
+                peak = max(peak, rss)
+                if floor:
+                    floors.append(timed(floor)[0])
+            med = statistics.median(runs)
+            fl = statistics.median(floors) if floors else float("nan")
+            print(f"{name:22}{med:>9.3f}  {min(runs):.2f}..{max(runs):<7.2f}{fl:>8.3f}"
+                  f"{med / fl:>7.2f}{peak:>10.0f}", flush=True)  # fmt: skip
+        if args.only and "samples" not in args.only:
+            return
+        print(f"\n{'shaded samples/s (1 core)':40}{'samples':>11}  M/s median (min..max)")
+        for label, path, opts in (
+            ("textured+lit+translucent, default AA", files["textured"], {}),
+            ("textured+lit+translucent, ssaa 1", files["textured"], {"ssaa": 1}),
+            ("lit sphere 200k shaded, default AA", files["sphere200k"], {}),
+        ):
+            samples, rates = shaded_rate(path, opts)
+            print(f"{label:40}{samples:>11}  {statistics.median(rates):.1f} "
+                  f"({min(rates):.1f}..{max(rates):.1f})", flush=True)  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
