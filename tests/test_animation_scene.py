@@ -321,3 +321,13 @@ def test_cli_validate_reports_animation_targets(tmp_path):
     assert p.returncode == 1
     assert "error ANIM003 DoubleAnimation -> cam.Position" in err
     assert "warning ANIM006 DoubleAnimation.Duration='5' is 5 day(s)" in err
+
+
+def test_a_frame_is_a_finished_moment():
+    s = xaml3d.load(scene(ANIM), text=True)
+    f = xaml3d.scene_at(s, 0.25)
+    assert f.timeline is None and f.diagnostics == s.diagnostics
+    assert f.viewports[0].models[0].world[0, 3] == -8.0
+    # rendering the frame at the default time keeps it (no second evaluation at t = 0)
+    left = int(np.nonzero(np.array(xaml3d.render(f))[24, :, 3])[0][0])
+    assert left == 32 - 16

@@ -116,10 +116,11 @@ def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = No
     except SceneError as exc:
         exc.file = scene.file  # the name the caller knows the scene by (stdin...)
         raise
-    # the caller's scene keeps its own file name and diagnostics (stdin renames them)
-    return (
-        scene if frame.viewports is scene.viewports else replace(scene, viewports=frame.viewports)
-    )
+    if frame is scene.timeline.base:
+        return scene  # nothing animates at that time
+    # the caller's scene keeps its own file name and diagnostics (stdin renames them); the
+    # frame is a finished moment: rendering it again must not evaluate the storyboards again
+    return replace(scene, viewports=frame.viewports, timeline=None)
 
 
 def render_arrays(
