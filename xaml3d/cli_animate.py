@@ -110,16 +110,19 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("--background", metavar="COLOR", help="Fill colour, any WPF syntax "
               "(default: transparent).")  # fmt: skip
 @click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
+@click.option("--msaa", type=click.IntRange(1, 4), help="Multisampling per axis, 1..4 (default 2).")
 @click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
 @resources_option
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 def animate_command(scene, output, fps, start, end, duration, loop, storyboard, width, height,
-                    mode, background, ssaa, viewport, resources, quiet,
+                    mode, background, ssaa, msaa, viewport, resources, quiet,
                     verbose) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
 
     bg = _parse_background(None, None, background)
+    if (ssaa or 1) > 1 and (msaa or 1) > 1:
+        raise click.UsageError("choose one of --ssaa and --msaa")
     name = display_name(scene)
     to_dir = output.endswith(("/", "\\")) or Path(output).is_dir()
     ctx = click.get_current_context()
@@ -147,7 +150,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height)
         times = frame_times(start, end, fps)
-        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa)
+        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
         frames = []
         it = render_frames(sc, times, storyboard, width=w, height=h, **opts)
         if stderr_is_terminal() and not quiet:
