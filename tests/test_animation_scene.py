@@ -154,8 +154,8 @@ def test_two_animations_of_one_storyboard_compose():
         ('Storyboard.TargetName="visual" Storyboard.TargetProperty="Content.Children[5].Transform"',
          "ANIM002"),
         ('Storyboard.TargetName="cam" Storyboard.TargetProperty="Position"', "ANIM003"),
-        ('Storyboard.TargetName="quad" '
-         'Storyboard.TargetProperty="(GeometryModel3D.Material).(DiffuseMaterial.Brush).Opacity"',
+        ('Storyboard.TargetName="quad" Storyboard.TargetProperty="(GeometryModel3D.Material).'
+         '(DiffuseMaterial.Brush).(Brush.RelativeTransform).(ScaleTransform.ScaleX)"',
          "ANIM004"),
         ('Storyboard.TargetName="move"', "ANIM005"),
     ],
@@ -331,3 +331,17 @@ def test_a_frame_is_a_finished_moment():
     # rendering the frame at the default time keeps it (no second evaluation at t = 0)
     left = int(np.nonzero(np.array(xaml3d.render(f))[24, :, 3])[0][0])
     assert left == 32 - 16
+
+
+def test_brush_made_from_a_string_animates_its_color_and_opacity():
+    # WPF's storyboard animates a copy of the frozen brush Brush="Lime" makes
+    anims = """
+      <ColorAnimation Storyboard.TargetName="quad" To="Blue" Duration="0:0:1"
+        Storyboard.TargetProperty="(GeometryModel3D.Material).(DiffuseMaterial.Brush).(SolidColorBrush.Color)"/>
+      <DoubleAnimation Storyboard.TargetName="quad" To="0" Duration="0:0:1"
+        Storyboard.TargetProperty="Material.Brush.Opacity"/>"""
+    s = xaml3d.load(scene(anims), text=True)
+    assert not [c for c in codes(s) if c.startswith("ANIM")]
+    brush = s.timeline.at(1.0).viewports[0].models[0].material[0].brush
+    assert brush.color == (0.0, 0.0, 1.0, 1.0) and brush.opacity == 0.0
+    assert s.viewports[0].models[0].material[0].brush.color == (0.0, 1.0, 0.0, 1.0)

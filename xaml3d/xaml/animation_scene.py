@@ -53,6 +53,17 @@ def _wrap(anim_states: list, vtype: str):
     return value
 
 
+def _on_field(f, field: str):
+    """Apply a value function to one field of the built object (a brush from a string)."""
+
+    def value(obj):
+        if obj is None or not hasattr(obj, field):
+            return obj
+        return replace(obj, **{field: f(getattr(obj, field))})
+
+    return value
+
+
 class SceneTimeline:
     """Evaluates a loaded scene's storyboards (the ``Scene.timeline`` protocol)."""
 
@@ -152,7 +163,15 @@ class SceneTimeline:
                     owner, chain = n, []
                 chain.append((anim, state))
                 per_prop[target.key] = (owner, chain)
-        return {key: _wrap(chain, chain[0][0].value_type) for key, (_, chain) in per_prop.items()}
+        out: dict = {}
+        for (el_id, prop, field), (_, chain) in per_prop.items():
+            f = _wrap(chain, chain[0][0].value_type)
+            if field is not None:
+                f = _on_field(f, field)
+            prev = out.get((el_id, prop))
+            # two fields of one brush (Color and Opacity): both apply, one after the other
+            out[el_id, prop] = f if prev is None else (lambda v, a=prev, b=f: b(a(v)))
+        return out
 
     def at(self, t: float, storyboard: str | None = None) -> Scene:
         """The scene at ``t`` seconds after load (math.isfinite(t) required)."""
