@@ -345,3 +345,12 @@ def test_brush_made_from_a_string_animates_its_color_and_opacity():
     brush = s.timeline.at(1.0).viewports[0].models[0].material[0].brush
     assert brush.color == (0.0, 0.0, 1.0, 1.0) and brush.opacity == 0.0
     assert s.viewports[0].models[0].material[0].brush.color == (0.0, 1.0, 0.0, 1.0)
+
+
+def test_loop_counts_are_plays(tmp_path):
+    frames = [np.full((4, 4, 4), (40 * i, 0, 0, 255), np.uint8) for i in range(3)]
+    for loop, gif_count in ((0, 0), (1, None), (3, 2)):  # GIF counts repeats after the first
+        xaml3d.save_animation(frames, tmp_path / "l.gif", 0.3, loop=loop)
+        xaml3d.save_animation(frames, tmp_path / "l.png", 0.3, loop=loop)
+        with Image.open(tmp_path / "l.gif") as g, Image.open(tmp_path / "l.png") as p:
+            assert g.info.get("loop") == gif_count and p.info.get("loop") == loop
