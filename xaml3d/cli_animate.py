@@ -147,6 +147,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
         from xaml3d.render.frames import frame_times, render_frames, save_animation
 
+        if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
+            slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
+            diags.append(_note(file, slow + "viewers (use --fps 50 or less)", "ANIM012"))
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height)
         times = frame_times(start, end, fps)
@@ -200,7 +203,8 @@ def _default_length(sc, storyboard) -> tuple[float, str | None]:
     return whole, None
 
 
-def _note(file: str, message: str):
-    from xaml3d.errors import INFO, Diagnostic
+def _note(file: str, message: str, code: str = "ANIM011"):
+    from xaml3d.errors import Diagnostic
+    from xaml3d.xaml.animation_targets import ANIM_CODES
 
-    return Diagnostic("ANIM011", INFO, message, file)
+    return Diagnostic(code, ANIM_CODES[code][0], message, file)

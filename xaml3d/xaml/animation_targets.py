@@ -52,6 +52,10 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
     ),  # fmt: skip
     "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
+    "ANIM012": (
+        WARNING,
+        "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",
+    ),  # fmt: skip
 }
 
 # the value kind (vocabulary) each animation value type may target
