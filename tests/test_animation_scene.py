@@ -354,3 +354,18 @@ def test_loop_counts_are_plays(tmp_path):
         xaml3d.save_animation(frames, tmp_path / "l.png", 0.3, loop=loop)
         with Image.open(tmp_path / "l.gif") as g, Image.open(tmp_path / "l.png") as p:
             assert g.info.get("loop") == gif_count and p.info.get("loop") == loop
+
+
+def test_handoff_compose_builds_on_the_earlier_storyboard():
+    first = ('<DoubleAnimation Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX" '
+             'To="10" Duration="0:0:1"/>')  # fmt: skip
+    second = """<EventTrigger RoutedEvent="FrameworkElement.Loaded"><BeginStoryboard
+        HandoffBehavior="Compose"><Storyboard><DoubleAnimation Storyboard.TargetName="move"
+        Storyboard.TargetProperty="OffsetX" By="2" Duration="0:0:1"/></Storyboard>
+        </BeginStoryboard></EventTrigger>"""
+    s = xaml3d.load(scene(first, second), text=True)
+    assert s.storyboards[1].handoff == "Compose"
+    assert offset_x(s, 1.0) == 12.0  # 10 from the first, + 2 on top
+    replaced = xaml3d.load(scene(first, second.replace("Compose", "SnapshotAndReplace")),
+                           text=True)  # fmt: skip
+    assert offset_x(replaced, 1.0) == 6.0  # only the second: base 4 + 2

@@ -424,6 +424,7 @@ class Storyboard:
     starts_at_load: bool = False
     name: str | None = None
     root: TimelineGroup | None = None  # the clock tree (None: read without its timing)
+    handoff: str = "SnapshotAndReplace"  # BeginStoryboard.HandoffBehavior, or "Compose"
     line: int | None = None
     column: int | None = None
 

@@ -2,8 +2,8 @@
 Animation / KeyFrame.
 
 Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline or
-``{StaticResource}`` storyboard), Storyboard and ParallelTimeline as a tree of clocks (each
-keeps its own timing: BeginTime, Duration, RepeatBehavior, AutoReverse, FillBehavior,
+``{StaticResource}`` storyboard; its HandoffBehavior), Storyboard and ParallelTimeline as a
+tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior, AutoReverse, FillBehavior,
 SpeedRatio, Acceleration/DecelerationRatio), Storyboard.TargetName / TargetProperty inherited
 down the tree, the From/To/By animations of Double, Point3D, Vector3D, Quaternion, Rotation3D,
 Color, Point and Size with IsAdditive, IsCumulative, UseShortestPath and an EasingFunction
@@ -16,6 +16,8 @@ the models (``animation_scene.py`` evaluates the storyboards).
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
@@ -258,13 +260,18 @@ def read_trigger(r, trigger_el, out: list, begun: set) -> None:
                 r.ctx.diag("ANI004", f"{ap.type} is not a trigger action: ignored", action)
             continue
         name = element_name(action)
+        handoff = ap.value(
+            "HandoffBehavior", lambda s: V.parse_enum(s, ("SnapshotAndReplace", "Compose")),
+            "SnapshotAndReplace",
+        )  # fmt: skip
 
-        def build(sb, ev=event, nm=name):
+        def build(sb, ev=event, nm=name, hb=handoff):
             begun.add(id(r.ctx.keep(sb)))
             if qname(sb.tag)[1] != "Storyboard":
                 r.ctx.diag("ANI004", f"{qname(sb.tag)[1]} is not a Storyboard: ignored", sb)
                 return None
-            return read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
+            story = read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
+            return replace(story, handoff=hb)
 
         sb = ap.obj("Storyboard", build, None)
         if sb is not None:
