@@ -3,8 +3,8 @@ Animation / KeyFrame.
 
 Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline or
 ``{StaticResource}`` storyboard; its HandoffBehavior), Storyboard and ParallelTimeline as a
-tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior, AutoReverse, FillBehavior,
-SpeedRatio, Acceleration/DecelerationRatio), Storyboard.TargetName / TargetProperty inherited
+tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior, AutoReverse,
+FillBehavior, SpeedRatio, Acceleration/DecelerationRatio), Storyboard.TargetName / TargetProperty inherited
 down the tree, the From/To/By animations of Double, Point3D, Vector3D, Quaternion, Rotation3D,
 Color, Point and Size with IsAdditive, IsCumulative, UseShortestPath and an EasingFunction
 (BackEase ... SineEase with EasingMode), their *UsingKeyFrames forms with Linear, Discrete,
