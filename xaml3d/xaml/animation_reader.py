@@ -1,18 +1,19 @@
 """Reading storyboards and animations (wpf3d.md section 8) into Storyboard / TimelineGroup /
 Animation / KeyFrame.
 
-Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline or
-``{StaticResource}`` storyboard; its HandoffBehavior), Storyboard and ParallelTimeline as a
-tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior, AutoReverse,
-FillBehavior, SpeedRatio, Acceleration/DecelerationRatio), Storyboard.TargetName / TargetProperty inherited
-down the tree, the From/To/By animations of Double, Point3D, Vector3D, Quaternion, Rotation3D,
-Color, Point and Size with IsAdditive, IsCumulative, UseShortestPath and an EasingFunction
-(BackEase ... SineEase with EasingMode), their *UsingKeyFrames forms with Linear, Discrete,
-Spline and Easing key frames, DoubleAnimationUsingPath and PointAnimationUsingPath (their
-PathGeometry's Figures, path_data.py). Rotation3D values are read as quaternions (x, y, z, w).
-Storyboards kept in resources that no trigger begins are listed with ``trigger=None`` (code
-behind starts them, if anything). The static scene keeps the base values: nothing here changes
-the models (``animation_scene.py`` evaluates the storyboards).
+Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline
+or ``{StaticResource}`` storyboard; its HandoffBehavior), Storyboard and ParallelTimeline as
+a tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior,
+AutoReverse, FillBehavior, SpeedRatio, Acceleration/DecelerationRatio),
+Storyboard.TargetName / TargetProperty inherited down the tree, the From/To/By animations of
+Double, Point3D, Vector3D, Quaternion, Rotation3D, Color, Point and Size with IsAdditive,
+IsCumulative, UseShortestPath and an EasingFunction (BackEase ... SineEase with EasingMode),
+their *UsingKeyFrames forms with Linear, Discrete, Spline and Easing key frames,
+DoubleAnimationUsingPath and PointAnimationUsingPath (their PathGeometry's Figures,
+path_data.py). Rotation3D values are read as quaternions (x, y, z, w). Storyboards kept in
+resources that no trigger begins are listed with ``trigger=None`` (code behind starts them,
+if anything). The static scene keeps the base values: nothing here changes the models
+(``animation_scene.py`` evaluates the storyboards).
 """
 
 from __future__ import annotations
