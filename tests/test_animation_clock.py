@@ -89,6 +89,11 @@ def test_repeat_forever_and_time_span():
     assert (s.progress, s.iteration, s.filling) == (0.5, 51, False)
     # RepeatBehavior 0:0:5 of a 2 s timeline: 2.5 iterations, ends at progress 0.5
     assert active_duration(Timing(duration=2.0, repeat_behavior=("time", 5.0)), 1.0) == 5.0
+    # the span is parent time: SpeedRatio does not scale it; a zero Duration ignores repeats
+    assert active_duration(Timing(duration=2.0, repeat_behavior=("time", 5.0), speed_ratio=4.0),
+                           1.0) == 5.0  # fmt: skip
+    for rb in (("time", 5.0), "Forever", 3.0):
+        assert active_duration(Timing(duration=0.0, repeat_behavior=rb), 1.0) == 0.0
     s = state(7.0, duration=2.0, repeat_behavior=("time", 5.0))
     assert (s.progress, s.iteration, s.filling) == (0.5, 3, True)
 
