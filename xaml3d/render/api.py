@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import os
 import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -123,7 +123,18 @@ def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = No
             raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
                              code="ANIM010", file=scene.file)  # fmt: skip
         return scene
-    return scene.timeline.at(float(time), storyboard)
+    from xaml3d.errors import SceneError
+
+    try:
+        frame = scene.timeline.at(float(time), storyboard)
+    except SceneError as exc:
+        exc.file = scene.file  # the name the caller knows the scene by (stdin...)
+        raise
+    if frame is scene.timeline.base:
+        return scene  # nothing animates at that time
+    # the caller's scene keeps its own file name and diagnostics (stdin renames them); the
+    # frame is a finished moment: rendering it again must not evaluate the storyboards again
+    return replace(scene, viewports=frame.viewports, timeline=None)
 
 
 def render_arrays(

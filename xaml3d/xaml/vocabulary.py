@@ -220,15 +220,17 @@ for _v, _k in _ANIM_VALUE.items():
         _t(f"{_kind}{_v}KeyFrame", "keyframe",
            {"KeyTime": "keytime", "Value": _k, "KeySpline": "keyspline",
             "EasingFunction": "object"}, "Value")  # fmt: skip
-for _c in ("DoubleAnimationUsingPath", "PointAnimationUsingPath", "MatrixAnimationUsingPath"):
-    _t(
-        _c,
-        "animation",
-        {"PathGeometry": "object", "Source": _S},
-        base=(_TIMELINE, _FROM_TO),
-        supported=False,
-        note="path animations are not evaluated",
-    )
+for _c in ("DoubleAnimationUsingPath", "PointAnimationUsingPath"):
+    _t(_c, "animation", {"PathGeometry": "object", "Source": _S}, base=(_TIMELINE, _FROM_TO))
+_t(
+    "MatrixAnimationUsingPath",
+    "animation",
+    {"PathGeometry": "object", "DoesRotateWithTangent": _B, "IsAngleCumulative": _B,
+     "IsOffsetCumulative": _B},
+    base=(_TIMELINE, _FROM_TO),
+    supported=False,
+    note="2D matrix path animations are not evaluated",
+)  # fmt: skip
 _EASINGS = {"Back": ("Amplitude",), "Bounce": ("Bounces", "Bounciness"), "Circle": (),
             "Cubic": (), "Elastic": ("Oscillations", "Springiness"), "Exponential": ("Exponent",),
             "Power": ("Power",), "Quadratic": (), "Quartic": (), "Quintic": (),
@@ -383,7 +385,10 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "image path outside the scene's folder tree refused: a grey checker stands in",
     ),
     "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
-    "ANI001": (WARNING, "animation type not evaluated (path animations)"),
+    "ANI001": (
+        WARNING,
+        "animation not evaluated (MatrixAnimationUsingPath, a path without Figures)",
+    ),
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
     "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),
     "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
