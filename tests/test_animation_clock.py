@@ -89,6 +89,11 @@ def test_repeat_forever_and_time_span():
     assert (s.progress, s.iteration, s.filling) == (0.5, 51, False)
     # RepeatBehavior 0:0:5 of a 2 s timeline: 2.5 iterations, ends at progress 0.5
     assert active_duration(Timing(duration=2.0, repeat_behavior=("time", 5.0)), 1.0) == 5.0
+    # the span is parent time: SpeedRatio does not scale it; a zero Duration ignores repeats
+    assert active_duration(Timing(duration=2.0, repeat_behavior=("time", 5.0), speed_ratio=4.0),
+                           1.0) == 5.0  # fmt: skip
+    for rb in (("time", 5.0), "Forever", 3.0):
+        assert active_duration(Timing(duration=0.0, repeat_behavior=rb), 1.0) == 0.0
     s = state(7.0, duration=2.0, repeat_behavior=("time", 5.0))
     assert (s.progress, s.iteration, s.filling) == (0.5, 3, True)
 
@@ -319,3 +324,37 @@ def test_rotation_animation_value():
                      to_value=(h, 0.0, 0.0, h), value_type="Rotation3D")  # fmt: skip
     v = animation_value(anim, ClockState(0.5, 0.5, 1), (0.0, 0.0, 0.0, 1.0))
     assert v == pytest.approx((math.sin(math.pi / 8), 0.0, 0.0, math.cos(math.pi / 8)))
+
+
+# --------------------------------------------------------------------------- paths
+
+
+def test_path_figures_and_points_along_them():
+    from xaml3d.animation.path import point_at_fraction, tangent_angle
+    from xaml3d.xaml.path_data import parse_path_figures
+
+    # an L: 30 right, then 10 down (y down): 40 long
+    (f,) = parse_path_figures("M 0,0 h30 v10")
+    assert f.tolist() == [[0, 0], [30, 0], [30, 10]]
+    assert point_at_fraction((f,), 0.25) == (10.0, 0.0, 0.0)
+    assert point_at_fraction((f,), 0.875) == (30.0, 5.0, 90.0)  # 35 along: going down (+y)
+    assert point_at_fraction((f,), 1.0) == (30.0, 10.0, 90.0)
+    assert tangent_angle(0.0, -1.0) == 270.0 and tangent_angle(-1.0, 0.0) == 180.0
+    # two figures: the jump between them counts nothing; Z closes a figure
+    a, b = parse_path_figures("M0,0 L10,0 M0,5 l0,10 z")
+    assert b.tolist() == [[0, 5], [0, 15], [0, 5]]
+    assert point_at_fraction((a, b), 0.5)[:2] == (0.0, 10.0)  # 15 of 30: 5 into the second
+    # a cubic Bezier ends where it says; S mirrors the previous control point
+    (c,) = parse_path_figures("M 10,100 C35,0 135,0 160,100 S285,200 310,100")
+    assert c[0].tolist() == [10, 100] and c[32].tolist() == [160, 100]
+    assert c[-1].tolist() == [310, 100]
+    assert c[48] == pytest.approx([235.0, 175.0])  # S's mid-point: (160+3*185+3*285+310)/8, ...
+
+
+def test_path_syntax_errors():
+    from xaml3d.errors import ValueSyntaxError
+    from xaml3d.xaml.path_data import parse_path_figures
+
+    for bad in ("M 0,0 A 5,5 0 0 1 10,10", "L 1,2", "M 0", "M 0,0 Q 1"):
+        with pytest.raises(ValueSyntaxError):
+            parse_path_figures(bad)

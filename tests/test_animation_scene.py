@@ -154,8 +154,8 @@ def test_two_animations_of_one_storyboard_compose():
         ('Storyboard.TargetName="visual" Storyboard.TargetProperty="Content.Children[5].Transform"',
          "ANIM002"),
         ('Storyboard.TargetName="cam" Storyboard.TargetProperty="Position"', "ANIM003"),
-        ('Storyboard.TargetName="quad" '
-         'Storyboard.TargetProperty="(GeometryModel3D.Material).(DiffuseMaterial.Brush).Opacity"',
+        ('Storyboard.TargetName="quad" Storyboard.TargetProperty="(GeometryModel3D.Material).'
+         '(DiffuseMaterial.Brush).(Brush.RelativeTransform).(ScaleTransform.ScaleX)"',
          "ANIM004"),
         ('Storyboard.TargetName="move"', "ANIM005"),
     ],
@@ -310,3 +310,62 @@ def test_cli_info_lists_animations(tmp_path):
     out = p.stdout.decode()
     assert "animations: 1 run at load (for ever)" in out
     assert "DoubleAnimation -> move.OffsetX: begin 0 s, period 1 s, repeat Forever" in out
+
+
+def test_cli_validate_reports_animation_targets(tmp_path):
+    bad = ('<DoubleAnimation Storyboard.TargetName="cam" Storyboard.TargetProperty="Position" '
+           'To="1" Duration="5"/>')  # fmt: skip
+    (tmp_path / "s.xaml").write_text(scene(bad))
+    p = _run("validate", "s.xaml", cwd=tmp_path)
+    err = p.stderr.decode() + p.stdout.decode()
+    assert p.returncode == 1
+    assert "error ANIM003 DoubleAnimation -> cam.Position" in err
+    assert "warning ANIM006 DoubleAnimation.Duration='5' is 5 day(s)" in err
+
+
+def test_a_frame_is_a_finished_moment():
+    s = xaml3d.load(scene(ANIM), text=True)
+    f = xaml3d.scene_at(s, 0.25)
+    assert f.timeline is None and f.diagnostics == s.diagnostics
+    assert f.viewports[0].models[0].world[0, 3] == -8.0
+    # rendering the frame at the default time keeps it (no second evaluation at t = 0)
+    left = int(np.nonzero(np.array(xaml3d.render(f))[24, :, 3])[0][0])
+    assert left == 32 - 16
+
+
+def test_brush_made_from_a_string_animates_its_color_and_opacity():
+    # WPF's storyboard animates a copy of the frozen brush Brush="Lime" makes
+    anims = """
+      <ColorAnimation Storyboard.TargetName="quad" To="Blue" Duration="0:0:1"
+        Storyboard.TargetProperty="(GeometryModel3D.Material).(DiffuseMaterial.Brush).(SolidColorBrush.Color)"/>
+      <DoubleAnimation Storyboard.TargetName="quad" To="0" Duration="0:0:1"
+        Storyboard.TargetProperty="Material.Brush.Opacity"/>"""
+    s = xaml3d.load(scene(anims), text=True)
+    assert not [c for c in codes(s) if c.startswith("ANIM")]
+    brush = s.timeline.at(1.0).viewports[0].models[0].material[0].brush
+    assert brush.color == (0.0, 0.0, 1.0, 1.0) and brush.opacity == 0.0
+    assert s.viewports[0].models[0].material[0].brush.color == (0.0, 1.0, 0.0, 1.0)
+
+
+def test_loop_counts_are_plays(tmp_path):
+    frames = [np.full((4, 4, 4), (40 * i, 0, 0, 255), np.uint8) for i in range(3)]
+    for loop, gif_count in ((0, 0), (1, None), (3, 2)):  # GIF counts repeats after the first
+        xaml3d.save_animation(frames, tmp_path / "l.gif", 0.3, loop=loop)
+        xaml3d.save_animation(frames, tmp_path / "l.png", 0.3, loop=loop)
+        with Image.open(tmp_path / "l.gif") as g, Image.open(tmp_path / "l.png") as p:
+            assert g.info.get("loop") == gif_count and p.info.get("loop") == loop
+
+
+def test_handoff_compose_builds_on_the_earlier_storyboard():
+    first = ('<DoubleAnimation Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX" '
+             'To="10" Duration="0:0:1"/>')  # fmt: skip
+    second = """<EventTrigger RoutedEvent="FrameworkElement.Loaded"><BeginStoryboard
+        HandoffBehavior="Compose"><Storyboard><DoubleAnimation Storyboard.TargetName="move"
+        Storyboard.TargetProperty="OffsetX" By="2" Duration="0:0:1"/></Storyboard>
+        </BeginStoryboard></EventTrigger>"""
+    s = xaml3d.load(scene(first, second), text=True)
+    assert s.storyboards[1].handoff == "Compose"
+    assert offset_x(s, 1.0) == 12.0  # 10 from the first, + 2 on top
+    replaced = xaml3d.load(scene(first, second.replace("Compose", "SnapshotAndReplace")),
+                           text=True)  # fmt: skip
+    assert offset_x(replaced, 1.0) == 6.0  # only the second: base 4 + 2

@@ -277,7 +277,11 @@ def test_several_viewports_by_index_and_name():
 def test_no_viewport_is_not_fatal():
     s = load(f"<ResourceDictionary {NS}><SolidColorBrush x:Key='k' Color='Red'/>"
              "</ResourceDictionary>", text=True)  # fmt: skip
-    assert s.viewports == () and "SCN001" in codes(s)
+    assert s.viewports == () and "SCN013" in codes(s)  # a dictionary: info, not an error
+    s = load(f"<Grid {NS}><Button/></Grid>", text=True)
+    assert s.viewports == () and ("SCN001", "error") in {
+        (d.code, d.severity) for d in s.diagnostics
+    }
 
 
 def test_templates_not_instantiated():

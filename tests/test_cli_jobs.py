@@ -7,7 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from test_cli import BAD, SQUARE, TYPO
+from test_cli import BAD, SQUARE, WARN
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -25,7 +25,7 @@ def _batch(tmp_path: Path, jobs: str, out: str) -> subprocess.CompletedProcess:
 
 def test_parallel_batch_equals_serial(tmp_path):
     (tmp_path / "ok.xaml").write_text(SQUARE)
-    (tmp_path / "typo.xaml").write_text(TYPO)
+    (tmp_path / "typo.xaml").write_text(WARN)  # a warning: rendered
     (tmp_path / "bad.xaml").write_text(BAD)
     (tmp_path / "sub").mkdir()
     (tmp_path / "sub/ok.xaml").write_text(SQUARE)  # same output name: IO003 in both runs

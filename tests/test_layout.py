@@ -299,3 +299,126 @@ def test_markup_control_estimate_is_info():
     s = load(x, text=True)
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 20)
     assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
+
+
+def test_auto_row_sized_by_a_cell_in_a_star_column():
+    # the TextBlock (an Auto row, star column: WPF's last measure group) still sizes the row
+    text = Node(L.CONTROL, "TextBlock", estimate=(30, 16), col=1)
+    v = vp(row=1, col_span=2)
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"), D("*")), columns=(D("*"), D("*")),
+                children=[text, v], width=200, height=100)  # fmt: skip
+    layout(grid)
+    assert text.rect == (100, 0, 100, 16)
+    assert v.rect == (0, 16, 200, 84)
+
+
+def test_star_rows_act_as_auto_with_unlimited_height():
+    # a Grid in a vertical StackPanel: its star row gets the content's height, here 0
+    v, w = vp(row=0), vp(row=1, height=30)
+    grid = Node(L.GRID, "Grid", rows=(D("*"), D("*")), children=[v, w])
+    layout(window(Node(L.STACK, "StackPanel", children=[grid])))
+    assert v.rect[3] == 0 and w.rect == (0, 0, 784, 30)
+    assert "vertical StackPanel" in viewport_notes([v])[0].message
+
+
+def test_markup_roots_page_user_control_size_to_content():
+    page = f"<Page {NS} WindowWidth='416' WindowHeight='339'><Grid><Viewport3D/></Grid></Page>"
+    assert size(page) == (400, 300)
+    uc = (
+        f"<UserControl {NS} xmlns:mc='http://schemas.openxmlformats.org/markup-compatibility/2006'"
+        " xmlns:d='http://schemas.microsoft.com/expression/blend/2008' mc:Ignorable='d'"
+        " d:DesignWidth='300' d:DesignHeight='200'><Viewport3D/></UserControl>"
+    )
+    assert size(uc) == (300, 200)
+    stc = (
+        f"<Window {NS} SizeToContent='WidthAndHeight'><Border Padding='5'>"
+        "<Viewport3D Width='100' Height='50'/></Border></Window>"
+    )
+    s = load(stc, text=True)
+    assert s.layout.client == (110, 60) and (s.viewports[0].width, s.viewports[0].height) == (
+        100,
+        50,
+    )
+
+
+def test_markup_rounding_and_fractions():
+    cols = "<Grid.ColumnDefinitions><ColumnDefinition/><ColumnDefinition/><ColumnDefinition/>"
+    x = (
+        f"<Grid {NS} Width='100' Height='30' UseLayoutRounding='{{r}}'>{cols}"
+        "</Grid.ColumnDefinitions><Viewport3D Grid.Column='1'/></Grid>"
+    )
+    assert size(x.replace("{r}", "False"))[0] == pytest.approx(100 / 3)
+    assert size(x.replace("{r}", "True"))[0] in (33, 34)
+
+
+def test_markup_viewport_in_a_custom_control_and_a_button():
+    x = (
+        f"<Grid {NS} xmlns:h='clr-namespace:H' Width='200' Height='100'>"
+        "<h:View Margin='10'><Button><Viewport3D/></Button></h:View></Grid>"
+    )
+    s = load(x, text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (180, 80)
+    assert {"LAY004"} <= {d.code for d in s.diagnostics}
+
+
+def test_rounding_rounds_margin_sums_not_offsets_and_border_not_padding():
+    v = vp(margin=(0.3, 0.3, 0.3, 0.3))
+    layout(Node(L.GRID, "Grid", width=100, height=100, rounding=True, children=[v]))
+    assert v.rect == (0, 0, 99, 99)  # margins 0.6 round to 1; the 0.3 offset rounds to 0
+    w = vp()
+    b = Node(L.BORDER, "Border", border=(1.4, 1.4, 1.4, 1.4), padding=(0.5, 0, 0, 0),
+             children=[w], rounding=True)  # fmt: skip
+    layout(Node(L.GRID, "Grid", width=100, height=100, children=[b]))
+    # thickness 1.4 -> 1 on each side, padding 0.5 kept: the child's 97.5 rounds to 98 (even)
+    assert w.rect[0] == 2 and w.rect[2] == 98
+
+
+def test_fractional_layout_size_keeps_its_exact_aspect_ratio():
+    from xaml3d.render.api import render_arrays
+
+    # a Viewport3D 100 x 33.4 (a third of 100.2): the image is 100 x 33, the projection keeps
+    # 100 / 33.4, so an orthographic camera of Width 100 shows 33.4 units over the 33 rows and
+    # a quad 33 units high leaves the top and bottom rows partly covered
+    x = (
+        f"<Grid {NS} Width='100' Height='100.2'><Grid.RowDefinitions><RowDefinition/>"
+        "<RowDefinition/><RowDefinition/></Grid.RowDefinitions><Viewport3D>"
+        "<Viewport3D.Camera><OrthographicCamera Position='0,0,5' LookDirection='0,0,-1'"
+        " Width='100'/></Viewport3D.Camera><ModelVisual3D><ModelVisual3D.Content>"
+        "<Model3DGroup><AmbientLight/><GeometryModel3D><GeometryModel3D.Geometry>"
+        "<MeshGeometry3D Positions='-60,-16.5,0 60,-16.5,0 60,16.5,0 -60,16.5,0'"
+        " TriangleIndices='0 1 2 0 2 3'/></GeometryModel3D.Geometry><GeometryModel3D.Material>"
+        "<DiffuseMaterial Brush='White'/></GeometryModel3D.Material></GeometryModel3D>"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D></Grid>"
+    )
+    s = load(x, text=True)
+    vp0 = s.viewports[0]
+    assert vp0.height == pytest.approx(33.4)
+    r = render_arrays(s, ssaa=4)
+    assert (r.width, r.height) == (100, 33)
+    alpha = r.rgba[:, 50, 3]
+    assert alpha[16] == 255 and 0 < alpha[0] < 255 and 0 < alpha[32] < 255
+    exact = render_arrays(s, 100, 33, ssaa=4)  # both sizes given: the image's own aspect
+    assert exact.rgba[0, 50, 3] == 255 and exact.rgba[32, 50, 3] == 255
+
+
+def test_uniform_grid_cells_and_first_column():
+    kids = [vp() for _ in range(3)]
+    layout(Node(L.UNIFORM, "UniformGrid", width=200, height=100, children=kids))
+    # 3 children: 2 x 2 cells of 100 x 50
+    assert [k.rect for k in kids] == [(0, 0, 100, 50), (100, 0, 100, 50), (0, 50, 100, 50)]
+    kids = [vp() for _ in range(3)]
+    layout(Node(L.UNIFORM, "UniformGrid", uniform=(0, 3, 1), width=300, height=100, children=kids))
+    assert [k.rect[:2] for k in kids] == [(100, 0), (200, 0), (0, 50)]
+    x = (
+        f"<UniformGrid {NS} Columns='2' Width='200' Height='80' xmlns:x="
+        "'http://schemas.microsoft.com/winfx/2006/xaml'><Viewport3D/><Viewport3D/></UniformGrid>"
+    )
+    assert size(x, 1) == (100, 80)
+
+
+def test_scrollviewer_auto_bar_only_when_the_content_overflows():
+    small, tall = vp(height=100), vp(height=1000)
+    layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[small])))
+    assert small.rect[2] == 784
+    layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[tall])))
+    assert tall.rect[2] == 784 - 17

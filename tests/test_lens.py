@@ -431,18 +431,34 @@ def test_cli_depth_ids_and_svg(tmp_path):
     ("args", "message"),
     [
         (["--aperture", "0.1", "--fstop", "2"], "either --aperture or --fstop"),
-        (["--focal-length", "50"], "--focal-length needs --fstop"),
-        (["--focus", "3"], "--focus needs"),
-        (["--eye-separation", "0.1"], "--eye-separation needs --stereo"),
-        (["--line-width", "2"], "need --mode wireframe"),
         (["--depth", "d.tiff"], ".png or .npy"),
         (["--depth", "o.png"], "also the output image"),
+        (["--depth", "d.png", "--ids", "d.png"], "name the same file"),
+        (["--window", "--aperture", "0.1"], "not --window"),
+        (["--viewport", "all", "--depth", "d.png"], "one viewport at a time"),
     ],
 )
 def test_cli_usage_errors(tmp_path, args, message):
     r = xaml3d("render", ROW, "-o", "o.png", *args, cwd=tmp_path)
     assert r.returncode == 2 and message in r.stderr.decode(), r.stderr
     assert not (tmp_path / "o.png").exists()
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--focal-length", "50"], "--focal-length has no effect without --fstop"),
+        (["--focus", "3"], "--focus has no effect without"),
+        (["--eye-separation", "0.1"], "--eye-separation has no effect without --stereo"),
+        (["--line-width", "2"], "--line-color and --line-width apply to --mode wireframe only"),
+    ],
+)
+def test_cli_idle_lens_options_are_warned_about(tmp_path, args, message):
+    r = xaml3d("render", ROW, "-o", "o.png", *args, cwd=tmp_path)
+    assert r.returncode == 0 and f"warning OPT001 {message}" in r.stderr.decode(), r.stderr
+    plain = tmp_path / "p.png"
+    assert xaml3d("render", ROW, "-o", plain, cwd=tmp_path).returncode == 0
+    assert (tmp_path / "o.png").read_bytes() == plain.read_bytes()
 
 
 def test_cli_aperture_zero_writes_the_pinhole_image(tmp_path):

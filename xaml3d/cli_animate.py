@@ -111,13 +111,14 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("--background", metavar="COLOR", help="Fill colour, any WPF syntax "
               "(default: transparent).")  # fmt: skip
 @click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
+@click.option("--msaa", type=click.IntRange(1, 4), help="Multisampling per axis, 1..4 (default 2).")
 @click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
 @resources_option
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @animate_lens_options
 def animate_command(scene, output, fps, start, end, duration, loop, storyboard, width, height,
-                    mode, background, ssaa, viewport, resources, quiet,
+                    mode, background, ssaa, msaa, viewport, resources, quiet,
                     verbose, extras) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
     from xaml3d.cli_render_extras import check_request, lens_arguments
@@ -125,6 +126,8 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
     check_request(extras, (scene,), output, mode)
 
     bg = _parse_background(None, None, background)
+    if (ssaa or 1) > 1 and (msaa or 1) > 1:
+        raise click.UsageError("choose one of --ssaa and --msaa")
     name = display_name(scene)
     to_dir = output.endswith(("/", "\\")) or Path(output).is_dir()
     ctx = click.get_current_context()
@@ -149,10 +152,13 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
         from xaml3d.render.frames import frame_times, render_frames, save_animation
 
+        if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
+            slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
+            diags.append(_note(file, slow + "viewers (use --fps 50 or less)", "ANIM012"))
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height)
         times = frame_times(start, end, fps)
-        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa)
+        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
         opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         frames = []
         it = render_frames(sc, times, storyboard, width=w, height=h, **opts)
@@ -203,7 +209,8 @@ def _default_length(sc, storyboard) -> tuple[float, str | None]:
     return whole, None
 
 
-def _note(file: str, message: str):
-    from xaml3d.errors import INFO, Diagnostic
+def _note(file: str, message: str, code: str = "ANIM011"):
+    from xaml3d.errors import Diagnostic
+    from xaml3d.xaml.animation_targets import ANIM_CODES
 
-    return Diagnostic("ANIM011", INFO, message, file)
+    return Diagnostic(code, ANIM_CODES[code][0], message, file)

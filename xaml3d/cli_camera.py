@@ -164,7 +164,9 @@ def locate_points(pipe, points) -> list[dict]:
             # WPF draws a point beyond it, so it counts as visible here too (depth z' < -1).
             why = None if bool(visible[i]) or beyond_ok else "on the edge of the view volume"
         item = {"point": list(p), "visible": why is None, "reason": why}
-        if w > 0:
+        # A clipped point lands on no pixel: x, y and depth are null (docs/cli.md).
+        item.update(x=None, y=None, depth=None)
+        if why is None:
             item.update(x=float(pixels[i, 0]), y=float(pixels[i, 1]), depth=float(depth[i]))
         out.append(item)
     return out

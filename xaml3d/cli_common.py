@@ -16,7 +16,8 @@ from pathlib import Path
 
 import click
 
-from xaml3d.errors import ERROR, INFO, CameraError, Diagnostic, XamlError
+from xaml3d.errors import ERROR, INFO, WARNING, CameraError, Diagnostic, XamlError
+from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
 from xaml3d.scene.types import Scene, Viewport
 
 STDIN_NAME = "<stdin>"
@@ -26,6 +27,7 @@ CLI_CODES: dict[str, tuple[str, str]] = {
     "IO001": (ERROR, "a file could not be read or written (missing, unreadable, bad path)"),
     "IO002": (ERROR, "the output would overwrite an input file: refused"),
     "IO003": (ERROR, "two scenes of a batch would write the same output file"),
+    "OPT001": (WARNING, "a command-line option has no effect with the others given"),
 }
 
 
@@ -66,13 +68,6 @@ def load_scene(source: str, resources: Iterable[str] = (), window_size=None) -> 
         replace(d, file=STDIN_NAME) if d.file in (None, TEXT_NAME) else d for d in scene.diagnostics
     )
     return replace(scene, file=STDIN_NAME, diagnostics=diags)
-
-
-def with_file(diag: Diagnostic, file: str | None) -> Diagnostic:
-    """The diagnostic with ``file`` filled in when the producer did not know it."""
-    if diag.file is not None or file is None:
-        return diag
-    return Diagnostic(diag.code, diag.severity, diag.message, file, diag.line, diag.column)
 
 
 def echo_diagnostics(

@@ -90,7 +90,7 @@ def animation_info(scene: Scene) -> dict:
             })  # fmt: skip
         out.append({"name": sb.name, "trigger": sb.trigger, "at_load": sb.starts_at_load,
                     "animations": anims, "line": sb.line})  # fmt: skip
-    cycle = None if tl is None else _seconds(tl.cycle())
+    cycle = 0.0 if tl is None else _seconds(tl.cycle())
     running = 0 if tl is None else len(tl.running_animations())
     return {"running_at_load": running, "cycle": cycle, "storyboards": out}
 

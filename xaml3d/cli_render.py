@@ -29,11 +29,12 @@ from xaml3d.cli_common import (
     same_file,
     stderr_is_terminal,
     window_size_option,
-    with_file,
 )
 from xaml3d.cli_jobs import default_jobs, run_ordered
 from xaml3d.cli_render_extras import Extras, Progress, extras_options
-from xaml3d.errors import ERROR, XamlError
+from xaml3d.errors import ERROR, CameraError, XamlError
+from xaml3d.findings import has_errors, scene_findings, with_file
+from xaml3d.findings import lenient as lenient_findings
 
 FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp", "svg": ".svg"}
 SUFFIX_FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".webp": "webp", ".svg": "svg"}
@@ -63,6 +64,7 @@ class RenderOptions:
     outline_controls: bool = False
     time: float | None = 0.0  # seconds after load; None: the markup's base values
     storyboard: str | None = None
+    lenient: bool = False
     extras: Extras = Extras()  # lens, stereo, depth/id images, line style (cli_render_extras)
 
 
@@ -126,6 +128,31 @@ def _encode(image, fmt: str) -> bytes:
     return buf.getvalue()
 
 
+def _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_lines, aa_lines) -> None:
+    """OPT001: an option given on the command line that has no effect with the others."""
+    ctx = click.get_current_context()
+
+    def given(param: str) -> bool:
+        source = ctx.get_parameter_source(param)
+        return source is not None and source.name == "COMMANDLINE"
+
+    idle = []
+    if given("margin") and not fit:
+        idle.append("--margin has no effect without --fit")
+    if mode != "wireframe":
+        for option, on in (("--hide-hidden-lines", hide_lines), ("--antialias-lines", aa_lines)):
+            if on:
+                idle.append(f"{option} applies to --mode wireframe only")
+    if fmt and output not in (None, "-") and not _is_dir_target(output):
+        implied = SUFFIX_FORMATS.get(Path(output).suffix.lower())
+        if implied is not None and implied != fmt:
+            idle.append(f"--format {fmt} disagrees with the suffix of {output!r}: {fmt} is written")
+    if quiet and verbose:
+        idle.append("-q and -v together: -q wins, only errors are printed")
+    for msg in idle:
+        click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+
+
 def _check_not_input(target, name: str, inputs: list[Path]) -> None:
     if target == "-":
         return
@@ -136,6 +163,19 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
                 err=True,
             )
             raise _Failed
+
+
+def _size_for_checks(opts: RenderOptions):
+    """The size each viewport's camera is checked at: its render size (an empty viewport keeps
+    its own size, which the camera check reports as CAM010)."""
+
+    def size_of(vp):
+        try:
+            return render_size(vp, opts.width, opts.height, opts.scale)
+        except (CameraError, click.UsageError):
+            return (vp.width, vp.height)
+
+    return size_of
 
 
 def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg_target=None):
@@ -150,11 +190,14 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
         fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
         diags.extend(notes)
         scene = replace(scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports))
+    # the laid-out size may be fractional: the projection keeps its exact aspect ratio
+    # unless -W and -H both choose another (docs/layout.md)
+    aspect = None if (opts.width and opts.height) else _exact_aspect(vp)
     if svg_target is not None:
         from xaml3d.cli_render_extras import write_svg
 
         fresh = write_svg(opts.extras, scene, vp, width, height, svg_target, opts.background,
-                          opts.ssaa)  # fmt: skip
+                          opts.ssaa, aspect)  # fmt: skip
         return _checked(fresh, lambda: None, file, opts, diags)
     from xaml3d.cli_render_extras import lens_arguments, write_buffers
 
@@ -172,6 +215,7 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
             hidden_lines=not opts.hide_hidden_lines,
             antialias_lines=opts.antialias_lines,
             time=None,  # the scene is already the one at --time
+            aspect=aspect,
             ids=bool(opts.extras.ids),
             progress=progress,
             **lens_arguments(opts.extras, vp),
@@ -184,11 +228,18 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
     return image
 
 
+def _exact_aspect(vp) -> float | None:
+    w, h = float(vp.width), float(vp.height)
+    return w / h if w > 0 and h > 0 else None
+
+
 def _checked(fresh, make_image, file: str, opts: RenderOptions, diags: list):
     fresh = [with_file(d, file) for d in fresh]
     diags.extend(d for d in fresh if d.severity != ERROR)
     fatal = [d for d in fresh if d.severity == ERROR]
-    if fatal:  # e.g. a camera that cannot produce an image: WPF would draw nothing
+    # Under --lenient a camera that cannot produce an image was already reported by the camera
+    # check (as a warning): the picture stays empty, as WPF draws nothing.
+    if fatal and not opts.lenient:  # e.g. a camera that cannot produce an image
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         echo_diagnostics(fatal)
         diags.clear()
@@ -229,20 +280,30 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         scene = load_scene(source, opts.resources, opts.window_size)
         scene = scene_at(scene, opts.time, opts.storyboard)
         file = scene.file or name
-        diags.extend(with_file(d, file) for d in scene.diagnostics)
-        _check_not_input(target, name, [Path(p) for p in scene.resources_used])
+        read = [Path(p) for p in scene_files_read(scene)]
+        inputs.extend(read)  # a (serial) batch: no later scene may write over what this one read
+        _check_not_input(target, name, read)
         for extra in (opts.extras.depth, opts.extras.ids):
             if extra:
-                _check_not_input(
-                    Path(extra), name, inputs + [Path(p) for p in scene.resources_used]
-                )
+                _check_not_input(Path(extra), name, inputs)
+        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings).
+        findings = scene_findings(scene, _size_for_checks(opts), name)
+        if has_errors(findings):
+            if not opts.lenient or not scene.viewports:
+                echo_diagnostics(findings, quiet=opts.quiet, verbose=opts.verbose)
+                if scene.viewports:
+                    msg = f"{name}: not rendered: the scene has errors (--lenient renders it)"
+                    click.echo(msg, err=True)
+                raise _Failed
+            findings = lenient_findings(findings)
+        diags.extend(findings)
         if opts.window:
             jobs = [(None, target)]
         elif opts.viewport == "all":
             scene.viewport()  # SCN001 when there is none
             jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
             for _, t in jobs:
-                _check_not_input(t, name, inputs + [Path(p) for p in scene.resources_used])
+                _check_not_input(t, name, inputs)
         else:
             jobs = [(scene.viewport(opts.viewport), target)]
         failed = False
@@ -281,6 +342,11 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)
+        if exc.code == "RND001":  # the API names its arguments; say which options they are
+            exc.message = exc.message.replace(
+                "lower the size or the ssaa/msaa factor",
+                "lower -W/-H (or --scale), --ssaa or --msaa",
+            ).replace("(raise max_size to allow it)", "(lower -W/-H or --scale)")
         click.echo(exc.format(), err=True)
         raise _Failed from None
     except (OSError, ValueError) as exc:
@@ -288,6 +354,12 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         raise _Failed from None
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+
+
+def scene_files_read(scene) -> list[str]:
+    """Every file a render of ``scene`` reads besides the scene itself: resource dictionaries,
+    App.xaml and the images its ImageBrushes load. None of them may be an output."""
+    return [*scene.resources_used, *scene.images_used]
 
 
 def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]) -> bool:
@@ -475,6 +547,12 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 )
 @time_option
 @storyboard_option
+@click.option(
+    "--lenient",
+    is_flag=True,
+    help="Render a scene with errors anyway: each error is reported as a warning and WPF's "
+    "default is used for what could not be read.",
+)
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @extras_options
@@ -504,6 +582,7 @@ def render_command(
     window_size,
     at_time,
     storyboard,
+    lenient,
     extras,
 ) -> None:
     from xaml3d.cli_render_extras import check_request, check_svg
@@ -540,9 +619,15 @@ def render_command(
         outline_controls,
         at_time,
         storyboard,
+        lenient,
         extras,
     )
+    _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_hidden_lines, antialias_lines)
     if directory is not None:
+        if directory.exists() and not directory.is_dir():
+            msg = f"{directory} is a file, not a directory: it cannot hold the outputs"
+            click.echo(io_error(str(directory), msg), err=True)
+            click.get_current_context().exit(1)
         try:
             directory.mkdir(parents=True, exist_ok=True)
         except OSError as exc:

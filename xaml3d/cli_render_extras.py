@@ -131,14 +131,18 @@ def check_request(
         raise click.UsageError("--aperture, --fstop and --stereo render one viewport, not --window")
     if ex.aperture is not None and ex.fstop is not None:
         raise click.UsageError("give either --aperture or --fstop, not both")
+    # Options without effect with the others given: warned about (OPT001), as render does.
+    idle = []
     if ex.focal_length is not None and ex.fstop is None:
-        raise click.UsageError("--focal-length needs --fstop")
+        idle.append("--focal-length has no effect without --fstop")
     if ex.focus is not None and not ex.lens:
-        raise click.UsageError("--focus needs --aperture, --fstop or --stereo")
+        idle.append("--focus has no effect without --aperture, --fstop or --stereo")
     if ex.eye_separation is not None and ex.stereo is None:
-        raise click.UsageError("--eye-separation needs --stereo")
+        idle.append("--eye-separation has no effect without --stereo")
     if (ex.line_color is not None or ex.line_width is not None) and mode != "wireframe":
-        raise click.UsageError("--line-color and --line-width need --mode wireframe")
+        idle.append("--line-color and --line-width apply to --mode wireframe only")
+    for msg in idle:
+        click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
     for opt, value in (("--depth", ex.depth), ("--ids", ex.ids)):
         if value is None:
             continue
@@ -236,7 +240,7 @@ def write_buffers(ex: Extras, result, vp, file: str) -> list[Diagnostic]:
     return notes
 
 
-def write_svg(ex: Extras, scene, vp, width, height, target, background, ssaa) -> list:
+def write_svg(ex: Extras, scene, vp, width, height, target, background, ssaa, aspect=None) -> list:
     """Render the SVG wireframe; write it to ``target`` (a Path, or '-' for stdout)."""
     import sys
 
@@ -245,7 +249,7 @@ def write_svg(ex: Extras, scene, vp, width, height, target, background, ssaa) ->
 
     text, diags = wireframe_svg(
         scene, width, height, viewport=vp.index, line_color=ex.line_color,
-        line_width=ex.line_width or 1.0, ssaa=ssaa or 2, background=background,
+        line_width=ex.line_width or 1.0, ssaa=ssaa or 2, background=background, aspect=aspect,
     )  # fmt: skip
     if not any(d.severity == "error" for d in diags):
         if target == "-":
@@ -293,7 +297,8 @@ def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_lengt
     ex = Extras(aperture=aperture, focus=focus, fstop=fstop, focal_length=focal_length)
     if not (ex.aperture is not None or ex.fstop is not None):
         if focus is not None or focal_length is not None:
-            raise click.UsageError("--focus and --focal-length need --aperture or --fstop")
+            msg = "--focus and --focal-length have no effect without --aperture or --fstop"
+            click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
         return None
     check_request(ex, ("scene",), None, "shaded")
     args = lens_arguments(ex, vp)

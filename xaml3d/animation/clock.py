@@ -47,10 +47,12 @@ def active_duration(timing: Timing, natural: float) -> float:
     """How long the timeline is active, in its parent's time (inf: forever)."""
     d = iteration_duration(timing, natural)
     rb = timing.repeat_behavior
-    if isinstance(rb, tuple):  # ("time", seconds): a span of the parent's time
+    if d == 0.0:
+        return 0.0  # WPF: a zero duration ignores any RepeatBehavior
+    if isinstance(rb, tuple):  # ("time", seconds): a span of the parent's time, not scaled
         return float(rb[1])
     if rb == "Forever":
-        return 0.0 if d == 0.0 else math.inf
+        return math.inf
     period = d * (2.0 if timing.auto_reverse else 1.0)
     if period == 0.0 or rb == 0.0:
         return 0.0

@@ -3,7 +3,8 @@ GetCurrentValue of the From/To/By and key-frame animations).
 
 From/To/By: From and To animate between them; From alone goes to the base value; To alone
 from the base value; By alone from the base to base + By; From and By from From to From + By;
-none of them from base to base. IsAdditive adds the base value to From/To/By forms that do
+none of them from base to base. Path animations take the path's point (or X, Y, tangent angle)
+at the progress. IsAdditive adds the base value to From/To/By forms that do
 not already start from it (and to key-frame values), IsCumulative adds (To - From) or the last
 key frame's value once per completed iteration. The animation's EasingFunction reshapes the
 clock's progress. Several animations on one property compose in order: each one's base is the
@@ -25,6 +26,8 @@ def animation_value(anim: Animation, state: ClockState | None, base):
         return base
     vt = anim.value_type
     shortest = anim.use_shortest_path
+    if anim.path is not None:
+        return _path_value(anim, state, base)
     if anim.key_frames:
         duration = iteration_duration(anim.timing, natural_duration(anim))
         origin = I.zero(vt) if anim.is_additive else base
@@ -59,3 +62,22 @@ def animation_value(anim: Animation, state: ClockState | None, base):
         step = I.subtract(vt, end, start)
         value = I.add(vt, value, I.scale(vt, step, state.iteration - 1))
     return value if foundation is None else I.add(vt, foundation, value)
+
+
+def _path_value(anim: Animation, state: ClockState, base):
+    """*AnimationUsingPath: the point (or its X, Y, tangent Angle) at the clock's progress of
+    the path's length; IsCumulative adds (end - start) per finished iteration."""
+    from xaml3d.animation.path import point_at_fraction
+
+    def at(f: float):
+        x, y, angle = point_at_fraction(anim.path, f)
+        if anim.value_type == "Point":
+            return (x, y)
+        return {"X": x, "Y": y, "Angle": angle}[anim.path_source]
+
+    vt = anim.value_type
+    value = at(state.progress)
+    if anim.is_cumulative and state.iteration > 1:
+        step = I.subtract(vt, at(1.0), at(0.0))
+        value = I.add(vt, value, I.scale(vt, step, state.iteration - 1))
+    return I.add(vt, base, value) if anim.is_additive else value

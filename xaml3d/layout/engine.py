@@ -13,7 +13,8 @@ Padding; several children of an unknown container overlap), Grid (grid.py), Dock
 StackPanel, Canvas (children at their own size, at Left/Top/Right/Bottom), Viewbox (its child
 at its own size, scaled by Stretch/StretchDirection), ScrollViewer (content measured with
 infinite room in each scrolling direction, arranged at least as large as the view; a Visible
-scroll bar takes 17 px), Viewport3D (no content size of its own: 0 x 0 unless sized), controls
+scroll bar takes 17 px, an Auto one when the content overflows), UniformGrid (equal cells),
+Viewport3D (no content size of its own: 0 x 0 unless sized), controls
 (their estimated content size). UseLayoutRounding (inherited) rounds margins, desired sizes,
 arranged sizes and offsets to whole pixels as WPF does at 96 dpi.
 
@@ -23,6 +24,7 @@ measured once and arranged once, so the work is linear in the number of elements
 
 from __future__ import annotations
 
+import math
 import sys
 from dataclasses import dataclass, field
 
@@ -40,6 +42,7 @@ from xaml3d.layout.tree import (
     SCROLL,
     SCROLLBAR,
     STACK,
+    UNIFORM,
     USER_CONTROL,
     VIEWBOX,
     VIEWPORT,
@@ -124,9 +127,15 @@ class Engine:
         return min_max(n)
 
     def _margin(self, n: Node):
+        """(left, top, width, height) of the margin; with layout rounding the sums are rounded
+        (as WPF does), the left and top offsets are not."""
         if n is self._frameless:
-            return (0.0, 0.0, 0.0, 0.0)
-        return _thick(n.margin, self.rounds(n))
+            return 0.0, 0.0, 0.0, 0.0
+        ml, mt, mr, mb = n.margin
+        mw, mh = ml + mr, mt + mb
+        if self.rounds(n):
+            mw, mh = _round(mw), _round(mh)
+        return ml, mt, mw, mh
 
     # ----------------------------------------------------------------- measure
     def measure(self, n: Node, aw: float, ah: float) -> None:
@@ -135,31 +144,39 @@ class Engine:
             n.desired = n.unclipped = (0.0, 0.0)
             return
         rounding = self.rounds(n)
-        ml, mt, mr, mb = self._margin(n)
-        mw, mh = ml + mr, mt + mb
+        _, _, mw, mh = self._margin(n)
         lo_w, hi_w, lo_h, hi_h = self._limits(n)
         fw = max(lo_w, min(max(aw - mw, 0.0), hi_w))
         fh = max(lo_h, min(max(ah - mh, 0.0), hi_h))
-        dw, dh = _MEASURE[n.kind](self, n, fw, fh)
-        dw, dh = max(dw, lo_w), max(dh, lo_h)
         if rounding:
-            dw, dh = _round(dw), _round(dh)
-        n.unclipped = (dw, dh)
-        dw, dh = min(dw, hi_w), min(dh, hi_h)
-        cw, ch = min(dw + mw, aw), min(dh + mh, ah)
+            fw, fh = _round(fw), _round(fh)
+        dw, dh = _MEASURE[n.kind](self, n, fw, fh)
+        uw, uh = max(dw, lo_w), max(dh, lo_h)
+        dw, dh = min(uw, hi_w), min(uh, hi_h)
+        clipped = dw < uw or dh < uh
+        cw, ch = dw + mw, dh + mh
+        if cw > aw or ch > ah:
+            cw, ch, clipped = min(cw, aw), min(ch, ah), True
+        if rounding:
+            cw, ch = _round(cw), _round(ch)
         n.desired = (max(0.0, cw), max(0.0, ch))
+        # the size arrange never goes below: kept as measured when clipped, else (like WPF,
+        # which does not store it then) recovered from the desired size
+        if clipped or cw < 0 or ch < 0:
+            n.unclipped = (uw, uh)
+        else:
+            n.unclipped = (max(0.0, cw - mw), max(0.0, ch - mh))
 
     # ----------------------------------------------------------------- arrange
     def arrange(self, n: Node, x: float, y: float, w: float, h: float, slot: str = "") -> None:
         self.arrange_calls += 1
         n.slot = slot
         if n.visibility == "Collapsed":
-            n.size, n.offset, n.arranged = (0.0, 0.0), (x, y), False
+            n.size, n.ink, n.offset, n.arranged = (0.0, 0.0), (0.0, 0.0), (x, y), False
             return
         n.arranged = True
         rounding = self.rounds(n)
-        ml, mt, mr, mb = self._margin(n)
-        mw, mh = ml + mr, mt + mb
+        ml, mt, mw, mh = self._margin(n)
         aw, ah = max(0.0, w - mw), max(0.0, h - mh)
         uw, uh = n.unclipped
         aw, ah = max(aw, uw), max(ah, uh)  # never below the desired size (it is clipped)
@@ -168,15 +185,19 @@ class Engine:
         if n.v_align != "Stretch":
             ah = uh
         lo_w, hi_w, lo_h, hi_h = self._limits(n)
+        if rounding:
+            hi_w, hi_h = _round(hi_w), _round(hi_h)
         aw, ah = min(aw, max(uw, hi_w)), min(ah, max(uh, hi_h))
         if rounding:
             aw, ah = _round(aw), _round(ah)
         rw, rh = _ARRANGE[n.kind](self, n, aw, ah)
-        if rounding:
-            rw, rh = _round(rw), _round(rh)
-        n.size = (rw, rh)
         iw, ih = min(rw, hi_w), min(rh, hi_h)
         cw, ch = max(0.0, w - mw), max(0.0, h - mh)
+        if rounding:
+            rw, rh, iw, ih = _round(rw), _round(rh), _round(iw), _round(ih)
+            cw, ch = _round(cw), _round(ch)
+        n.size = (rw, rh)
+        n.ink = (iw, ih)  # WPF clips a larger render to the element's Max/explicit size
         ox = _align(n.h_align, cw, iw, "Right") + x + ml
         oy = _align(n.v_align, ch, ih, "Bottom") + y + mt
         if rounding:
@@ -187,10 +208,15 @@ class Engine:
 # --------------------------------------------------------------------------- panel rules
 
 
+def _inset(e: Engine, n: Node) -> tuple[float, float, float, float]:
+    """BorderThickness (rounded with layout rounding, as Border does) plus Padding (never)."""
+    b = _thick(n.border, e.rounds(n))
+    return tuple(a + p for a, p in zip(b, n.padding, strict=True))
+
+
 def _content_measure(e: Engine, n: Node, w: float, h: float):
     """Border and every single-content element: content inside BorderThickness + Padding."""
-    r = e.rounds(n)
-    bl, bt, br, bb = (a + b for a, b in zip(_thick(n.border, r), _thick(n.padding, r), strict=True))
+    bl, bt, br, bb = _inset(e, n)
     cw, ch = max(0.0, w - bl - br), max(0.0, h - bt - bb)
     dw = dh = 0.0
     for k in n.children:
@@ -200,8 +226,7 @@ def _content_measure(e: Engine, n: Node, w: float, h: float):
 
 
 def _content_arrange(e: Engine, n: Node, w: float, h: float):
-    r = e.rounds(n)
-    bl, bt, br, bb = (a + b for a, b in zip(_thick(n.border, r), _thick(n.padding, r), strict=True))
+    bl, bt, br, bb = _inset(e, n)
     for k in n.children:
         e.arrange(k, bl, bt, max(0.0, w - bl - br), max(0.0, h - bt - bb), "content")
     return w, h
@@ -333,10 +358,17 @@ def _viewbox_arrange(e: Engine, n: Node, w: float, h: float):
     return sx * dw, sy * dh
 
 
-def _scroll_bars(n: Node) -> tuple[float, float]:
-    """(width taken by the vertical bar, height taken by the horizontal bar)."""
-    return (SCROLLBAR if n.scroll_v == "Visible" else 0.0,
-            SCROLLBAR if n.scroll_h == "Visible" else 0.0)  # fmt: skip
+def _scroll_bars(n: Node, content=None, view=None) -> tuple[float, float]:
+    """(width taken by the vertical bar, height taken by the horizontal bar): a Visible bar
+    always, an Auto one when the content (its desired size, at arrange) overflows the view."""
+    vb = SCROLLBAR if n.scroll_v == "Visible" else 0.0
+    hb = SCROLLBAR if n.scroll_h == "Visible" else 0.0
+    if content is not None:
+        if n.scroll_v == "Auto" and content[1] > view[1] - hb:
+            vb = SCROLLBAR
+        if n.scroll_h == "Auto" and content[0] > view[0] - vb:
+            hb = SCROLLBAR
+    return vb, hb
 
 
 def _scroll_measure(e: Engine, n: Node, w: float, h: float):
@@ -347,15 +379,63 @@ def _scroll_measure(e: Engine, n: Node, w: float, h: float):
     for k in n.children:
         e.measure(k, cw, ch)
         dw, dh = max(dw, k.desired[0]), max(dh, k.desired[1])
-    return dw + vb, dh + hb
+    # the view never wants more than it is offered: the content scrolls inside it
+    return min(dw + vb, w), min(dh + hb, h)
 
 
 def _scroll_arrange(e: Engine, n: Node, w: float, h: float):
-    vb, hb = _scroll_bars(n)
+    dw = max((k.desired[0] for k in n.children), default=0.0)
+    dh = max((k.desired[1] for k in n.children), default=0.0)
+    vb, hb = _scroll_bars(n, (dw, dh), (w, h))
     vw, vh = max(0.0, w - vb), max(0.0, h - hb)
+    if (vb, hb) != _scroll_bars(n):  # an Auto bar appeared: measure again beside it, as WPF does
+        for k in n.children:
+            e.measure(k, vw if n.scroll_h == "Disabled" else INF,
+                      vh if n.scroll_v == "Disabled" else INF)  # fmt: skip
     for k in n.children:
-        cw, ch = max(k.desired[0], vw), max(k.desired[1], vh)
+        # a direction that does not scroll (Disabled) gives the content the view's size (WPF
+        # measures it again when an Auto bar appears); one that scrolls, at least that size
+        cw = vw if n.scroll_h == "Disabled" else max(k.desired[0], vw)
+        ch = vh if n.scroll_v == "Disabled" else max(k.desired[1], vh)
         e.arrange(k, 0.0, 0.0, cw, ch, "ScrollViewer content (at least the view's size)")
+    return w, h
+
+
+def _uniform_shape(n: Node) -> tuple[int, int, int]:
+    """(rows, columns, first column) of a UniformGrid, as WPF completes unset ones."""
+    rows, cols, first = n.uniform
+    count = sum(1 for k in n.children if k.visibility != "Collapsed")
+    first = first if cols > 0 and first < cols else 0
+    if rows <= 0 and cols <= 0:
+        rows = math.isqrt(count)
+        rows += rows * rows < count
+        cols = rows
+    elif rows <= 0:
+        rows = (count + first + cols - 1) // cols
+    elif cols <= 0:
+        cols = (count + rows - 1) // rows
+    return max(rows, 1), max(cols, 1), first
+
+
+def _uniform_measure(e: Engine, n: Node, w: float, h: float):
+    rows, cols, _ = _uniform_shape(n)
+    dw = dh = 0.0
+    for k in n.children:
+        e.measure(k, w / cols, h / rows)
+        dw, dh = max(dw, k.desired[0]), max(dh, k.desired[1])
+    return dw * cols, dh * rows
+
+
+def _uniform_arrange(e: Engine, n: Node, w: float, h: float):
+    rows, cols, first = _uniform_shape(n)
+    cw, ch = w / cols, h / rows
+    col, row = first, 0
+    for k in n.children:
+        e.arrange(k, col * cw, row * ch, cw, ch, f"UniformGrid cell {row}, {col}")
+        if k.visibility != "Collapsed":
+            col += 1
+            if col >= cols:  # next row
+                col, row = 0, row + 1
     return w, h
 
 
@@ -373,6 +453,7 @@ _MEASURE = {
     GRID: lambda e, n, w, h: e.grid.measure(n, w, h), DOCK: _dock_measure,
     STACK: _stack_measure, CANVAS: _canvas_measure, VIEWBOX: _viewbox_measure,
     SCROLL: _scroll_measure, VIEWPORT: _leaf_measure, CONTROL: _leaf_measure,
+    UNIFORM: _uniform_measure,
 }  # fmt: skip
 _ARRANGE = {
     WINDOW: _content_arrange, PAGE: _content_arrange, USER_CONTROL: _content_arrange,
@@ -380,6 +461,7 @@ _ARRANGE = {
     GRID: lambda e, n, w, h: e.grid.arrange(n, w, h), DOCK: _dock_arrange,
     STACK: _stack_arrange, CANVAS: _canvas_arrange, VIEWBOX: _viewbox_arrange,
     SCROLL: _scroll_arrange, VIEWPORT: _leaf_arrange, CONTROL: _leaf_arrange,
+    UNIFORM: _uniform_arrange,
 }  # fmt: skip
 
 
@@ -459,13 +541,13 @@ def _result(e: Engine, root: Node, how: str) -> LayoutResult:
 
 
 def _absolute(root: Node) -> None:
-    """Every node's rectangle in the root's client area (offsets accumulated, Viewbox scales
-    applied), parents first."""
+    """Every node's visible rectangle in the root's client area (offsets accumulated, Viewbox
+    scales applied), parents first."""
     frame = {id(root): (0.0, 0.0, 1.0, 1.0)}  # origin x, y and scale of a node's parent space
     for n in root.walk():
         px, py, sx, sy = frame[id(n)]
         x, y = px + sx * n.offset[0], py + sy * n.offset[1]
-        n.rect = (x, y, sx * n.size[0], sy * n.size[1])
+        n.rect = (x, y, sx * n.ink[0], sy * n.ink[1])
         cx, cy = n.child_scale
         for k in n.children:
             frame[id(k)] = (x, y, sx * cx, sy * cy)

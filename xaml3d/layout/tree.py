@@ -27,8 +27,9 @@ VIEWBOX, SCROLL, VIEWPORT, CONTROL, CONTAINER = (
     "control",
     "container",
 )
+UNIFORM = "uniform"
 KINDS = (WINDOW, PAGE, USER_CONTROL, GRID, DOCK, STACK, BORDER, CANVAS, VIEWBOX, SCROLL,
-         VIEWPORT, CONTROL, CONTAINER)  # fmt: skip
+         VIEWPORT, CONTROL, CONTAINER, UNIFORM)  # fmt: skip
 
 # The Windows 10/11 default theme's window frame at 96 dpi: a Window's Width/Height are its
 # OUTER size; its client area (where the content is laid out) is smaller by these amounts
@@ -98,6 +99,7 @@ class Node:
     last_child_fill: bool = True
     border: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # BorderThickness
     padding: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    uniform: tuple[int, int, int] = (0, 0, 0)  # UniformGrid Rows, Columns, FirstColumn
     stretch: str = "Uniform"
     stretch_direction: str = "Both"
     size_to_content: str = "Manual"  # Window: Manual | Width | Height | WidthAndHeight
@@ -116,9 +118,10 @@ class Node:
     desired: tuple[float, float] = (0.0, 0.0)  # including the margin, as WPF's DesiredSize
     unclipped: tuple[float, float] = (0.0, 0.0)  # without the margin, before Max clipping
     size: tuple[float, float] = (0.0, 0.0)  # RenderSize
+    ink: tuple[float, float] = (0.0, 0.0)  # RenderSize within Max/explicit size: what shows
     offset: tuple[float, float] = (0.0, 0.0)  # in the parent's coordinates
     child_scale: tuple[float, float] = (1.0, 1.0)  # Viewbox: the scale applied to its child
-    rect: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # x, y, w, h in the root
+    rect: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # ink box in the root
     slot: str = ""  # how the parent placed it ("row 1 (Auto), column 0 (*)", "Dock=Top" ...)
     arranged: bool = False  # False: collapsed, or never reached by arrange
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange

@@ -65,12 +65,14 @@ def id_scene(scene, vp):
     return replace(scene, viewports=tuple(new_vp if v is vp else v for v in scene.viewports))
 
 
-def model_ids(scene, vp, width: int, height: int) -> np.ndarray:
+def model_ids(scene, vp, width: int, height: int, aspect: float | None = None) -> np.ndarray:
     """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel, -1 where none."""
     from xaml3d.render.api import render_arrays
 
     # time=None: ``scene`` is already the moment drawn; its timeline would rebuild the models
-    r = render_arrays(id_scene(scene, vp), width, height, viewport=vp.index, ssaa=1, time=None)
+    r = render_arrays(
+        id_scene(scene, vp), width, height, viewport=vp.index, ssaa=1, time=None, aspect=aspect
+    )
     rgb = r.rgba[..., :3].astype(np.int64)
     code = (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
     return np.where(r.rgba[..., 3] > 0, code - 1, -1).astype(np.int32)

@@ -124,10 +124,13 @@ def save_animation(
         durations = [10 * d for d in frame_durations(len(frames), total, 0.01)]
         transparent = any(p[1] is not None for p in pairs)
         extra = {"transparency": 255, "disposal": 2} if transparent else {}
+        # GIF's loop count is the number of REPEATS (0: for ever); no count plays once
+        if loop != 1:
+            extra["loop"] = 0 if loop == 0 else loop - 1
 
         def write(fh):
             images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
-                           duration=durations, loop=loop, optimize=False, **extra)  # fmt: skip
+                           duration=durations, optimize=False, **extra)  # fmt: skip
     else:
         images = [Image.fromarray(f, mode="RGBA") for f in frames]
         durations = frame_durations(len(frames), total, 0.001)

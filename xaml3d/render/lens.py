@@ -101,6 +101,7 @@ def render_through_lens(
     stereo: str | None = None,
     eye_separation: float | None = None,
     progress=None,
+    aspect: float | None = None,
     **options,
 ):
     """Depth of field and/or a stereo pair of one viewport (module docstring).
@@ -124,10 +125,11 @@ def render_through_lens(
     if not isinstance(vp.camera, PerspectiveCamera):
         lens_frame(vp.camera, width, height, focus)  # raises LNS001
     options["time"] = None  # the scene is already the moment asked for
+    options["aspect"] = aspect
     pinhole = render_arrays(scene, width, height, viewport=vp.index, **options)
     if any(d.severity == ERROR for d in pinhole.diagnostics):
         return pinhole  # a camera that cannot produce an image: WPF draws nothing
-    frame = lens_frame(vp.camera, width, height, focus, vp.bounds())
+    frame = lens_frame(vp.camera, width, height, focus, vp.bounds(), aspect)
     if fstop is not None:
         if aperture:
             raise RenderError("give either aperture or fstop, not both", code="RND005")

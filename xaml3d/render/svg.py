@@ -95,14 +95,18 @@ def wireframe_svg(
     ssaa: int = 2,
     background=None,
     max_size: int = 16384,
+    aspect: float | None = None,
 ) -> tuple[str, list[Diagnostic]]:
     """The SVG document (text) of ``viewport``'s visible edges, and the diagnostics.
-    ``line_color``/``background`` straight RGBA (floats 0..1 or 0..255 ints)."""
-    from xaml3d.render.api import _background, _resolve_size
+    ``line_color``/``background`` straight RGBA (floats 0..1 or 0..255 ints); size and
+    ``aspect`` as ``render_arrays`` takes them."""
+    from xaml3d.render.api import _background, _resolve_size, _rgba
     from xaml3d.scene.camera_math import camera_pipeline
 
     vp = scene.viewport(viewport)
     w, h = _resolve_size(vp, width, height, max_size)
+    if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
+        aspect = float(vp.width) / float(vp.height)  # as render_arrays: the size is rounded
     sw, sh = w * ssaa, h * ssaa
     diags: list[Diagnostic] = []
     head = (
@@ -110,10 +114,10 @@ def wireframe_svg(
     )
     lines = ['<?xml version="1.0" encoding="UTF-8"?>', head]
     if background is not None:
-        fill, alpha = _hex(_background(background, vp))
+        fill, alpha = _hex(_background(background))
         lines.append(f'<rect width="{w}" height="{h}" fill="{fill}" fill-opacity="{_num(alpha)}"/>')
     try:
-        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds())
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds(), aspect=aspect)
     except CameraError as exc:
         exc.with_location(file=scene.file)
         diags.append(exc.as_diagnostic())
@@ -127,7 +131,7 @@ def wireframe_svg(
         for frag in side_fragments(pm, _drawn_triangles(pm), ctx, weights=False):
             fb.depth_only(frag.pixel, frag.depth)
     limit = _dilate_max(fb.depth, sw, sh, ssaa) + 1e-9
-    fixed = None if line_color is None else _background(line_color, vp)
+    fixed = None if line_color is None else _rgba(line_color, "line_color")
     scale = np.array([sw / 2.0, -sh / 2.0])
     shift = np.array([sw / 2.0, sh / 2.0])
     for index, pm in prepared:

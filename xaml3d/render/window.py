@@ -3,7 +3,8 @@
 Paints, in WPF's order (parents before children, children in document order): the Window's
 background (WPF's default is the system window colour, white), every panel's and Border's
 Background (solid, gradient and image brushes, in the element's own coordinates: a brush's
-relative units refer to the element's box), each Border's BorderBrush band of BorderThickness,
+relative units refer to the element's box; a Border's Background fills, and maps to, the box
+inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
 and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
 ratio (``render_arrays``), composited over what lies beneath. 2D controls are not drawn;
 ``outline_controls`` draws a one-pixel outline of each control's layout box. Hidden and
@@ -61,8 +62,8 @@ def _band(n: Node):
     """The BorderThickness band of a Border, as a mask over element coordinates."""
     left, top, right, bottom = n.border
     w, h = n.rect[2], n.rect[3]
-    sx = w / n.size[0] if n.size[0] else 1.0  # a Viewbox scales the band too
-    sy = h / n.size[1] if n.size[1] else 1.0
+    sx = w / n.ink[0] if n.ink[0] else 1.0  # a Viewbox scales the band too
+    sy = h / n.ink[1] if n.ink[1] else 1.0
 
     def mask(px, py):
         inner = (
@@ -71,6 +72,16 @@ def _band(n: Node):
         return (~inner).astype(np.float32)
 
     return mask
+
+
+def _inner(n: Node):
+    """A Border's rectangle less its BorderThickness (scaled like the element)."""
+    left, top, right, bottom = n.border
+    x, y, w, h = n.rect
+    sx = w / n.ink[0] if n.ink[0] else 1.0
+    sy = h / n.ink[1] if n.ink[1] else 1.0
+    return (x + left * sx, y + top * sy, max(0.0, w - (left + right) * sx),
+            max(0.0, h - (top + bottom) * sy))  # fmt: skip
 
 
 def _outline(canvas: np.ndarray, rect) -> None:
@@ -122,16 +133,18 @@ def compose_window(
         brush = n.background
         if brush is None and n.kind == WINDOW and n is result.root:
             brush = WINDOW_BACKGROUND
-        if brush is not None:
-            _fill(canvas, n.rect, brush)
         if n.kind == BORDER and n.border_brush is not None and any(n.border):
             _fill(canvas, n.rect, n.border_brush, _band(n))
+        if brush is not None:
+            # a Border paints its Background inside the border band (its brush maps there)
+            _fill(canvas, _inner(n) if n.kind == BORDER else n.rect, brush)
         if n.kind == VIEWPORT:
             w, h = round(n.rect[2]), round(n.rect[3])
             if w >= 1 and h >= 1:
                 r = render_arrays(
-                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None
-                )
+                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None,
+                    aspect=n.rect[2] / n.rect[3],  # the exact laid-out aspect ratio
+                )  # fmt: skip
                 diags.extend(r.diagnostics)
                 premul = r.rgba.astype(np.float32) / 255.0
                 premul[..., :3] *= premul[..., 3:4]

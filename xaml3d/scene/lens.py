@@ -147,8 +147,11 @@ class LensFrame:
         )
 
 
-def lens_frame(camera, width: float, height: float, focus: float | None, bounds=None) -> LensFrame:
-    """The shared frame of a lens or stereo pair for ``camera`` rendering ``width`` x ``height``.
+def lens_frame(
+    camera, width: float, height: float, focus: float | None, bounds=None, aspect=None
+) -> LensFrame:
+    """The shared frame of a lens or stereo pair for ``camera`` rendering ``width`` x ``height``
+    (``aspect``: the projection's aspect ratio as ``camera_pipeline`` takes it).
     Only a PerspectiveCamera has a lens: others raise RenderError LNS001. ``focus`` None: the
     distance to the scene's centre (``default_focus``)."""
     if not isinstance(camera, PerspectiveCamera):
@@ -159,12 +162,12 @@ def lens_frame(camera, width: float, height: float, focus: float | None, bounds=
         )
     # The pinhole's own pipeline: CameraError (with the camera's line) for every camera that
     # cannot produce an image, and the near / effective far planes the renderer uses.
-    pipe = camera_pipeline(camera, width, height, bounds=bounds)
+    pipe = camera_pipeline(camera, width, height, bounds=bounds, aspect=aspect)
     if focus is None:
         focus = default_focus(camera, bounds)
     if not (focus > 0 and math.isfinite(focus)):
         raise RenderError(f"focal distance must be finite and > 0, got {focus!r}", code="RND005")
-    return LensFrame(camera, float(width) / float(height), float(focus), pipe.near, pipe.far)
+    return LensFrame(camera, pipe.aspect, float(focus), pipe.near, pipe.far)
 
 
 def eye_distance(z_ndc, near: float, far: float, kind: str = "perspective") -> np.ndarray:

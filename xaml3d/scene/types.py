@@ -388,6 +388,10 @@ class Animation:
     is_cumulative: bool = False
     use_shortest_path: bool = True  # QuaternionAnimation.UseShortestPath
     easing: Easing | None = None
+    # *AnimationUsingPath: the flattened PathGeometry (figures of (N, 2) points) and which of
+    # its values a DoubleAnimationUsingPath takes ("X", "Y" or "Angle")
+    path: tuple | None = field(default=None, compare=False)
+    path_source: str = "X"
     value_type: str = "Double"
     evaluated: bool = True  # False: a type xaml3d reads but does not evaluate (path animations)
     line: int | None = None
@@ -420,6 +424,7 @@ class Storyboard:
     starts_at_load: bool = False
     name: str | None = None
     root: TimelineGroup | None = None  # the clock tree (None: read without its timing)
+    handoff: str = "SnapshotAndReplace"  # BeginStoryboard.HandoffBehavior, or "Compose"
     line: int | None = None
     column: int | None = None
 
@@ -476,6 +481,7 @@ class Scene:
     storyboards: tuple[Storyboard, ...] = ()
     diagnostics: tuple[Diagnostic, ...] = ()
     resources_used: tuple[str, ...] = ()  # files whose resources were read (App.xaml, merged...)
+    images_used: tuple[str, ...] = ()  # image files the ImageBrushes read
     layout: object = field(
         default=None, compare=False, repr=False
     )  # xaml3d.layout.LayoutResult of the panels (None: no layout root)

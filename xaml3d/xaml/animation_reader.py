@@ -1,20 +1,24 @@
 """Reading storyboards and animations (wpf3d.md section 8) into Storyboard / TimelineGroup /
 Animation / KeyFrame.
 
-Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline or
-``{StaticResource}`` storyboard), Storyboard and ParallelTimeline as a tree of clocks (each
-keeps its own timing: BeginTime, Duration, RepeatBehavior, AutoReverse, FillBehavior,
-SpeedRatio, Acceleration/DecelerationRatio), Storyboard.TargetName / TargetProperty inherited
-down the tree, the From/To/By animations of Double, Point3D, Vector3D, Quaternion, Rotation3D,
-Color, Point and Size with IsAdditive, IsCumulative, UseShortestPath and an EasingFunction
-(BackEase ... SineEase with EasingMode), their *UsingKeyFrames forms with Linear, Discrete,
-Spline and Easing key frames. Rotation3D values are read as quaternions (x, y, z, w).
-Storyboards kept in resources that no trigger begins are listed with ``trigger=None`` (code
-behind starts them, if anything). The static scene keeps the base values: nothing here changes
-the models (``animation_scene.py`` evaluates the storyboards).
+Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline
+or ``{StaticResource}`` storyboard; its HandoffBehavior), Storyboard and ParallelTimeline as
+a tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior,
+AutoReverse, FillBehavior, SpeedRatio, Acceleration/DecelerationRatio),
+Storyboard.TargetName / TargetProperty inherited down the tree, the From/To/By animations of
+Double, Point3D, Vector3D, Quaternion, Rotation3D, Color, Point and Size with IsAdditive,
+IsCumulative, UseShortestPath and an EasingFunction (BackEase ... SineEase with EasingMode),
+their *UsingKeyFrames forms with Linear, Discrete, Spline and Easing key frames,
+DoubleAnimationUsingPath and PointAnimationUsingPath (their PathGeometry's Figures,
+path_data.py). Rotation3D values are read as quaternions (x, y, z, w). Storyboards kept in
+resources that no trigger begins are listed with ``trigger=None`` (code behind starts them,
+if anything). The static scene keeps the base values: nothing here changes the models
+(``animation_scene.py`` evaluates the storyboards).
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
@@ -164,6 +168,8 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
             if kf is not None
         )
     tm = _timing(r, p)
+    path, source = (_path(r, p) if t.endswith("UsingPath") and p.etype.supported
+                    else (None, "X"))  # fmt: skip
     anim = Animation(
         type=t,
         target_name=target["name"],
@@ -184,12 +190,33 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
         is_cumulative=p.value("IsCumulative", V.parse_bool, False),
         use_shortest_path=p.value("UseShortestPath", V.parse_bool, True),
         easing=read_easing(r, p),
+        path=path,
+        path_source=source,
         value_type=vtype,
-        evaluated=p.etype.supported,
+        evaluated=p.etype.supported and (path is not None or not t.endswith("UsingPath")),
         **r.ctx.position(el),
     )
     out.append(anim)
     return anim
+
+
+def _path(r, p) -> tuple[tuple | None, str]:
+    """PathGeometry (its Figures string) and Source of an *AnimationUsingPath."""
+    from xaml3d.xaml.path_data import parse_path_figures
+
+    def build(el):
+        gp = r.props(el)
+        if gp.type != "PathGeometry" or not gp.has("Figures"):
+            msg = f"{gp.type}: only a PathGeometry with a Figures string is followed"
+            r.ctx.diag("ANI001", msg, el)
+            return None
+        return gp.value("Figures", parse_path_figures, None)
+
+    source = p.value("Source", lambda s: V.parse_enum(s, ("X", "Y", "Angle")), "X")
+    figures = p.obj("PathGeometry", build, None)
+    if figures is None:
+        r.ctx.diag("ANI001", f"{p.type} without a usable PathGeometry: not evaluated", p.el)
+    return figures, source
 
 
 def _key_frame(r, el, vtype: str) -> KeyFrame | None:
@@ -234,13 +261,18 @@ def read_trigger(r, trigger_el, out: list, begun: set) -> None:
                 r.ctx.diag("ANI004", f"{ap.type} is not a trigger action: ignored", action)
             continue
         name = element_name(action)
+        handoff = ap.value(
+            "HandoffBehavior", lambda s: V.parse_enum(s, ("SnapshotAndReplace", "Compose")),
+            "SnapshotAndReplace",
+        )  # fmt: skip
 
-        def build(sb, ev=event, nm=name):
+        def build(sb, ev=event, nm=name, hb=handoff):
             begun.add(id(r.ctx.keep(sb)))
             if qname(sb.tag)[1] != "Storyboard":
                 r.ctx.diag("ANI004", f"{qname(sb.tag)[1]} is not a Storyboard: ignored", sb)
                 return None
-            return read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
+            story = read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
+            return replace(story, handoff=hb)
 
         sb = ap.obj("Storyboard", build, None)
         if sb is not None:

@@ -4,10 +4,11 @@
 element, property) pair (animation_targets.py) and keeps the parsed markup. ``at(t)`` asks the
 clock (xaml3d.animation, pure functions) for each running animation's state at t, turns the
 animations of each property into one function of the property's base value (composed in
-order, a later storyboard replacing an earlier one's animations of the same property: WPF's
-SnapshotAndReplace) and builds the viewports again from the already-parsed tree with those
-values in place. Meshes and decoded images are built once and reused by every frame (nothing
-animates them), so a frame costs little more than its render.
+order; a later storyboard replaces an earlier one's animations of the same property, WPF's
+SnapshotAndReplace, or builds on them when its BeginStoryboard says HandoffBehavior Compose)
+and builds the viewports again from the already-parsed tree with those values in place.
+Meshes and decoded images are built once and reused by every frame (nothing animates them),
+so a frame costs little more than its render.
 
 What runs: every storyboard begun by a Loaded trigger, at t = 0; ``storyboard=NAME`` adds one
 more (a click-started or resource storyboard) begun at t = 0 too.
@@ -49,6 +50,17 @@ def _wrap(anim_states: list, vtype: str):
         if vtype == "Rotation3D":
             return ("quat", v)
         return v
+
+    return value
+
+
+def _on_field(f, field: str):
+    """Apply a value function to one field of the built object (a brush from a string)."""
+
+    def value(obj):
+        if obj is None or not hasattr(obj, field):
+            return obj
+        return replace(obj, **{field: f(getattr(obj, field))})
 
     return value
 
@@ -148,11 +160,19 @@ class SceneTimeline:
                 if target is None:
                     continue
                 owner, chain = per_prop.get(target.key, (n, []))
-                if owner != n:  # a later storyboard replaces the earlier one's animations
-                    owner, chain = n, []
+                if owner != n and sb.handoff != "Compose":
+                    owner, chain = n, []  # a later storyboard replaces the earlier's animations
                 chain.append((anim, state))
                 per_prop[target.key] = (owner, chain)
-        return {key: _wrap(chain, chain[0][0].value_type) for key, (_, chain) in per_prop.items()}
+        out: dict = {}
+        for (el_id, prop, field), (_, chain) in per_prop.items():
+            f = _wrap(chain, chain[0][0].value_type)
+            if field is not None:
+                f = _on_field(f, field)
+            prev = out.get((el_id, prop))
+            # two fields of one brush (Color and Opacity): both apply, one after the other
+            out[el_id, prop] = f if prev is None else (lambda v, a=prev, b=f: b(a(v)))
+        return out
 
     def at(self, t: float, storyboard: str | None = None) -> Scene:
         """The scene at ``t`` seconds after load (math.isfinite(t) required)."""

@@ -7,8 +7,10 @@ owner-qualified chain such as
 ``(ModelVisual3D.Transform).(RotateTransform3D.Rotation).(AxisAngleRotation3D.Angle)``,
 dotted names (``Transform.Rotation.Angle``), indexers into collections
 (``(Transform3DGroup.Children)[1]``, ``Children[0]``). Each step but the last must lead to an
-object written as an element (or a ``{StaticResource}``): an object made from a string (a brush
-from ``Fill="Red"``) is frozen and WPF refuses to animate it. The last step must be a property
+object written as an element (or a ``{StaticResource}``), or be a brush made from a colour
+string (``Brush="Red"``): WPF's storyboard animates a copy of such a frozen brush, so its Color
+or Opacity animates (the target is then that field of the built brush); any other object made
+from a string cannot be animated. The last step must be a property
 of the element's type whose value type is the animation's (a DoubleAnimation on a Point3D
 property is WPF's error). Problems are ANIM codes, reported by ``validate``.
 """
@@ -50,6 +52,10 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
     ),  # fmt: skip
     "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
+    "ANIM012": (
+        WARNING,
+        "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",
+    ),  # fmt: skip
 }
 
 # the value kind (vocabulary) each animation value type may target
@@ -73,10 +79,11 @@ class Target:
     element: object  # lxml element (kept alive: overrides are keyed by its id)
     prop: str
     kind: str  # the property's value kind in the vocabulary
+    field: str | None = None  # a field of the object the property holds (a string-made brush)
 
     @property
-    def key(self) -> tuple[int, str]:
-        return (id(self.element), self.prop)
+    def key(self) -> tuple[int, str, str | None]:
+        return (id(self.element), self.prop, self.field)
 
 
 class TargetError(Exception):
@@ -132,6 +139,22 @@ def _follow(r, el):
     return el
 
 
+_STRING_BRUSH_FIELDS = {"Color": ("color", "color"), "Opacity": ("opacity", "double")}
+
+
+def _string_brush(el, prop: str, rest: list, vtype: str) -> Target | None:
+    """``Brush="Red"`` then ``(SolidColorBrush.Color)`` / ``Opacity``: that field of the brush."""
+    if len(rest) != 1 or rest[0][2]:
+        return None
+    name, owner, _ = rest[0]
+    if owner not in (None, "SolidColorBrush", "Brush") or name not in _STRING_BRUSH_FIELDS:
+        return None
+    field, kind = _STRING_BRUSH_FIELDS[name]
+    if kind not in _KINDS.get(vtype, ()):
+        raise TargetError("ANIM003", f"{vtype} animation on SolidColorBrush.{name}, a {kind}")
+    return Target(el, prop, kind, field)
+
+
 def _step_objects(r, el, prop: str) -> list:
     p = r.props(el)
     if prop in p.attrs:
@@ -170,6 +193,12 @@ def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: st
                     f"{vtype} animation on {tname}.{prop}, a {kind} property",
                 )
             return Target(el, prop, kind)
+        if not indices and (et.property_kind(prop) or "").startswith("brush"):
+            attr = r.props(el).attrs.get(prop)
+            if attr is not None and split_markup(attr) is None:
+                hit = _string_brush(el, prop, steps[n + 1 :], vtype)
+                if hit is not None:
+                    return hit
         objs = _step_objects(r, el, prop)
         if indices:
             i = indices[0]

@@ -206,6 +206,7 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
             r.ctx.diag("BRU002", msg, el, attr=attr)
             return str(path), None
         path = alt
+    r.ctx.images_used.append(str(path))
     try:
         from PIL import Image
 

@@ -2,10 +2,10 @@
 
 Covers finding every Viewport3D (in document order, whatever the root: Window, Page,
 UserControl, a custom control, a bare Viewport3D; not those inside templates and styles), the
-viewport's size (own Width/Height, else the nearest ancestor with both, else 640 x 480:
-wpf3d.md section 2), camera (WPF's default PerspectiveCamera when none is given), background (the
-nearest ancestor's Background brush) and ClipToBounds; the model tree flattened in draw order
-(ModelVisual3D: Content before Children) with each model's and light's world matrix
+viewport's size and rectangle from WPF's layout of the panels around it (layout_step.py,
+docs/layout.md), camera (WPF's default PerspectiveCamera when none is given), background (the
+nearest laid-out ancestor's Background brush) and ClipToBounds; the model tree flattened in
+draw order (ModelVisual3D: Content before Children) with each model's and light's world matrix
 (p_world = p_local * M_model * M_group... * M_visual... in WPF row terms); ModelUIElement3D,
 ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards.
 """
@@ -32,6 +32,7 @@ from xaml3d.xaml.context import (
     ReadContext,
     element_name,
     is_presentation,
+    namespace_typo,
     qname,
     split_markup,
     x_attr,
@@ -77,7 +78,12 @@ class Reader:
         skipping (with one diagnostic) elements of unknown namespaces."""
         ns, local = qname(el.tag)
         if not is_presentation(ns):
-            self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
+            wpf = namespace_typo(ns)
+            if wpf is not None:
+                msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
+                self.ctx.diag("XAML018", msg, el)
+            else:
+                self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
             return default
         if local in _REFERENCE:
             key = el.get("ResourceKey")
@@ -244,8 +250,13 @@ class _Walk:
         r = self.r
         ns, local = qname(el.tag)
         if not is_presentation(ns):
-            msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
-            r.ctx.diag("XAML001", msg, el, once=(ns, local))
+            wpf = namespace_typo(ns)
+            if wpf is not None:
+                msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
+                r.ctx.diag("XAML018", msg, el, once=ns)
+            else:
+                msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
+                r.ctx.diag("XAML001", msg, el, once=(ns, local))
             if x_attr(el, "Class") is not None:
                 msg = f"x:Class={x_attr(el, 'Class')!r}: code-behind is not run"
                 r.ctx.diag("XAML007", msg, el, attr=f"{{{XAML_NS}}}Class")
@@ -263,8 +274,12 @@ class _Walk:
             return
         et = voc.lookup(local)
         if et is None:
+            # The framework (2D) vocabulary is not closed: an unknown name there is a WPF type
+            # xaml3d does not list as often as a typo, unless it misspells a 3D type.
+            near = voc.suggest(local, voc.closed_types())
             hint = voc.did_you_mean(local, voc.known_types())
-            r.ctx.diag("XAML003", f"unknown element {local!r}{hint}", el)
+            code = "XAML003" if near is not None else "XAML017"
+            r.ctx.diag(code, f"unknown element {local!r}{hint}", el)
         elif et.kind not in ("framework", "resource"):
             return  # 3D/brush objects outside a Viewport3D (resources, effects...)
         p = r.props(el)
@@ -306,7 +321,12 @@ def build_scene(
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
     viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
-        ctx.diag("SCN001", "the document holds no Viewport3D", doc.root)
+        root = qname(doc.root.tag)[1]
+        if root in ("ResourceDictionary", "Application"):  # a valid WPF file, not a scene
+            msg = f"a {root} holds no Viewport3D: nothing to render (use it with -r)"
+            ctx.diag("SCN013", msg, doc.root)
+        else:
+            ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
 
     storyboards: list = []
     begun: set[int] = set()
@@ -324,5 +344,6 @@ def build_scene(
         storyboards=tuple(storyboards),
         diagnostics=tuple(diags),
         resources_used=tuple(dict.fromkeys(ctx.files_used)),
+        images_used=tuple(dict.fromkeys(ctx.images_used)),
         layout=laid_out,
     )

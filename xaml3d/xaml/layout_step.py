@@ -13,11 +13,11 @@ from dataclasses import dataclass
 from xaml3d.errors import Diagnostic
 from xaml3d.layout import layout
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
-from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, VIEWBOX, Node
+from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
 from xaml3d.xaml.panels_reader import read_layout
 
 DEFAULT_SIZE = (640.0, 480.0)
-_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL)
+_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM)
 
 
 @dataclass(frozen=True)
@@ -83,9 +83,9 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
 
 
 def unreached(r, el) -> ViewportLayout:
-    from xaml3d.xaml.panels_reader import _Values, parse_length
+    from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
-    v = _Values(r, el)
+    v = ElementValues(r, el)
     w, h = v.get("Width", parse_length, math.nan), v.get("Height", parse_length, math.nan)
     if w == w and h == h and w >= 0 and h >= 0:
         return ViewportLayout(w, h, None, "viewport")

@@ -52,7 +52,7 @@ def load(
     if discover_app and doc.path is not None and not resources:
         found = res.discover_app(doc.path)
         if found is not None:
-            res.add_app_file(found, discovered=True)
+            res.add_app_file(found, discovered=doc.path)
     scene = build_scene(ctx, res, doc, window_size)
     if not scene.storyboards:
         return scene

@@ -66,8 +66,9 @@ def transform3d(r, el) -> np.ndarray | None:
             ]
             return T.compose(*[m for m in parts if m is not None])
     except GeometryError as exc:
-        r.ctx.error(exc, el)
-        r.ctx.diag("SCN010", f"{t} cannot be built: identity used", el)
+        # WPF loads a degenerate transform (it draws nothing or garbage): a warning, not the
+        # GEO error the same problem is when a user asks for the transformation directly.
+        r.ctx.diag("SCN010", f"{t} cannot be built ({exc.message}): identity used", el)
         return T.identity()
     r.ctx.diag("XAML013", f"{t} is not a Transform3D: ignored", el)
     return None

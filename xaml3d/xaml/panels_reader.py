@@ -2,7 +2,8 @@
 
 Covers, for every element from the document's root down to the Viewport3Ds: Window (and
 NavigationWindow), Page, UserControl, Grid (RowDefinitions/ColumnDefinitions: pixel, Auto,
-star, Min/Max), DockPanel, StackPanel, Border, Canvas, Viewbox, ScrollViewer, Viewport3D, the
+star, Min/Max), DockPanel, StackPanel, Border, Canvas, Viewbox, ScrollViewer, UniformGrid
+(Rows, Columns, FirstColumn), Viewport3D, the
 content controls and decorators a viewport can sit in, and the 2D controls beside them (sized by
 Width/Height, else by an estimate: LAY003). Per element: Width/Height (``Auto``, ``px``, ``in``,
 ``cm``, ``pt``), Min/Max sizes, Margin, Padding, BorderThickness, alignments, Visibility,
@@ -31,6 +32,7 @@ _KINDS = {
     "UserControl": L.USER_CONTROL, "Grid": L.GRID, "DockPanel": L.DOCK,
     "StackPanel": L.STACK, "Border": L.BORDER, "Canvas": L.CANVAS, "InkCanvas": L.CANVAS,
     "Viewbox": L.VIEWBOX, "ScrollViewer": L.SCROLL, "Viewport3D": L.VIEWPORT,
+    "UniformGrid": L.UNIFORM,
 }  # fmt: skip
 # Elements that simply hold their content (no chrome of their own): laid out as a Border.
 _PLAIN = {"ContentControl", "ContentPresenter", "Decorator", "AdornerDecorator", "Frame"}
@@ -39,7 +41,7 @@ _CONTROLS = set("""
 Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox ComboBoxItem ListBox
 ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline Menu MenuItem
 Separator Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar
-MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox UniformGrid WrapPanel GridSplitter
+MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox WrapPanel GridSplitter
 StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Thumb Track ScrollBar ResizeGrip
 HeaderedContentControl Calendar DatePicker DataGrid TreeView TreeViewItem
 """.split())  # fmt: skip
@@ -62,7 +64,7 @@ _NOT_CONTENT = ("Resources", "Triggers", "MergedDictionaries", "RowDefinitions",
                 "Effect", "RenderTransform", "LayoutTransform", "OpacityMask", "Clip",
                 "ItemTemplate", "ItemsPanel", "DataContext", "Camera", "Header")  # fmt: skip
 _PAINTED = (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.BORDER, L.CANVAS,
-            L.CONTAINER, L.SCROLL)  # fmt: skip
+            L.CONTAINER, L.SCROLL, L.UNIFORM)  # fmt: skip
 _UNITS = {"px": 1.0, "in": 96.0, "cm": 96.0 / 2.54, "pt": 96.0 / 72.0}
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -113,7 +115,7 @@ def parse_grid_length(s: str) -> tuple[str, float]:
     return "pixel", v
 
 
-class _Values:
+class ElementValues:
     """Property values of one element, through Props (presentation elements) or, for custom
     elements, their plain attributes with bad values ignored."""
 
@@ -209,7 +211,7 @@ class PanelsReader:
             return None
         ns, local = qname(el.tag)
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
-        v = _Values(self.r, el)
+        v = ElementValues(self.r, el)
         self._framework(n, v)
         if kind == L.VIEWPORT:
             n.viewport = self.index[id(el)]
@@ -229,7 +231,7 @@ class PanelsReader:
                 n.children.append(k)
         return n
 
-    def _framework(self, n: L.Node, v: _Values) -> None:
+    def _framework(self, n: L.Node, v: ElementValues) -> None:
         for prop in ("Width", "Height"):
             x = v.get(prop, parse_length, math.nan)
             if x == x and x < 0:
@@ -257,7 +259,7 @@ class PanelsReader:
         for side in ("Left", "Top", "Right", "Bottom"):
             setattr(n, side.lower(), v.attached(f"Canvas.{side}", parse_length, math.nan))
 
-    def _panel(self, n: L.Node, v: _Values, el) -> None:
+    def _panel(self, n: L.Node, v: ElementValues, el) -> None:
         kind = n.kind
         bars = ("Disabled", "Auto", "Hidden", "Visible")
         if kind == L.WINDOW:
@@ -270,6 +272,10 @@ class PanelsReader:
         if kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.BORDER, L.CONTAINER, L.SCROLL):
             n.padding = v.get("Padding", parse_thickness, n.padding)
             n.border = v.get("BorderThickness", parse_thickness, n.border)
+        if kind == L.UNIFORM:
+            n.uniform = tuple(
+                max(0, v.get(p, V.parse_int, 0)) for p in ("Rows", "Columns", "FirstColumn")
+            )
         if kind == L.STACK:
             n.orientation = v.get("Orientation", _enum(("Vertical", "Horizontal")), "Vertical")
         if kind == L.DOCK:
@@ -308,14 +314,14 @@ class PanelsReader:
                 "ColumnDefinition",
             ):
                 continue
-            dv = _Values(self.r, d)
+            dv = ElementValues(self.r, d)
             unit, value = dv.get(size, parse_grid_length, ("star", 1.0))
             lo = _finite(dv.get(f"Min{size}", parse_length, 0.0), 0.0)
             hi = _nonneg(dv.get(f"Max{size}", parse_length, math.inf), math.inf)
             out.append(L.Definition(unit, value, lo, hi))
         return tuple(out)
 
-    def _estimate(self, n: L.Node, v: _Values, el) -> None:
+    def _estimate(self, n: L.Node, v: ElementValues, el) -> None:
         local = n.type
         if local in _SHAPES or not is_presentation(qname(el.tag)[0]):
             n.estimate = (0.0, 0.0)  # shapes and images without a size: nothing to measure
