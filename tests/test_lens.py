@@ -562,3 +562,18 @@ def test_lens_on_a_camera_that_cannot_draw_reports_like_the_pinhole(camera, code
         assert [d.code for d in r.diagnostics] == [d.code for d in plain.diagnostics]
         assert code in [d.code for d in r.diagnostics if d.severity == "error"]
         assert not r.rgba.any()
+
+
+def test_lens_samples_reuse_the_loaded_scene(monkeypatch):
+    import xaml3d.xaml.loader as loader
+
+    calls = []
+    real = loader.load
+
+    def counting(*args, **kwargs):
+        calls.append(args[0])
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(loader, "load", counting)
+    render_arrays(str(ROW), 80, 30, aperture=0.1, lens_samples=6, stereo="anaglyph", ids=True)
+    assert calls == [str(ROW)]  # read once; 12 samples, the pinhole and the ids reuse it
