@@ -577,3 +577,13 @@ def test_lens_samples_reuse_the_loaded_scene(monkeypatch):
     monkeypatch.setattr(loader, "load", counting)
     render_arrays(str(ROW), 80, 30, aperture=0.1, lens_samples=6, stereo="anaglyph", ids=True)
     assert calls == [str(ROW)]  # read once; 12 samples, the pinhole and the ids reuse it
+
+
+def test_cli_wireframe_depth_is_the_surfaces(tmp_path):
+    npy = tmp_path / "d.npy"
+    r = xaml3d("render", PLANE, "-o", tmp_path / "w.png", "--mode", "wireframe", "--depth", npy)
+    assert r.returncode == 0, r.stderr
+    arr = np.load(npy)
+    exp = _plane_expected()
+    assert np.array_equal(np.isnan(arr), np.isnan(exp))
+    assert np.allclose(arr[34:48], exp[34:48], rtol=2e-7)

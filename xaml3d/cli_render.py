@@ -224,7 +224,14 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
         progress.close()
     image = _checked(result.diagnostics, result.image, file, opts, diags)
     if result.distance is not None:
-        diags.extend(write_buffers(opts.extras, result, vp, file))
+        surfaces = None
+        if opts.mode == "wireframe" and not opts.hide_hidden_lines:
+            from xaml3d.render.buffers import surface_buffers
+
+            def surfaces():
+                return surface_buffers(scene, vp, width, height, aspect)[1]
+
+        diags.extend(write_buffers(opts.extras, result, vp, file, surfaces))
     return image
 
 

@@ -9,7 +9,7 @@ The work itself lives in ``xaml3d.render.lens``, ``xaml3d.render.buffers`` and
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import click
@@ -219,11 +219,15 @@ class Progress:
             self.bar = None
 
 
-def write_buffers(ex: Extras, result, vp, file: str) -> list[Diagnostic]:
-    """Write --depth and --ids from a ``Rendering``; returns the LNS002 range note."""
+def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diagnostic]:
+    """Write --depth and --ids from a ``Rendering``; returns the LNS002 range note.
+    ``surfaces``: a function giving the surfaces' distance, used instead of the render's own
+    (wireframe mode: its depth buffer holds no surfaces unless hidden lines are removed)."""
     from xaml3d.render.buffers import depth_npy, depth_png, ids_png, write_atomic
 
     notes = []
+    if ex.depth and surfaces is not None:
+        result = replace(result, distance=surfaces())
     if ex.depth:
         if Path(ex.depth).suffix.lower() == ".npy":
             write_atomic(ex.depth, depth_npy(result.distance))

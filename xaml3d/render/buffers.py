@@ -65,8 +65,11 @@ def id_scene(scene, vp):
     return replace(scene, viewports=tuple(new_vp if v is vp else v for v in scene.viewports))
 
 
-def model_ids(scene, vp, width: int, height: int, aspect: float | None = None) -> np.ndarray:
-    """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel, -1 where none."""
+def surface_buffers(scene, vp, width: int, height: int, aspect: float | None = None):
+    """(ids, distance) of the drawn surfaces, whatever the drawing mode: ids (H, W) int32 as
+    ``model_ids``, distance (H, W) float32 eye-space depth of the same render (one sample per
+    pixel; NaN where empty). The wireframe mode's own depth buffer holds surfaces only when
+    hidden lines are removed: this is the surfaces' depth for it."""
     from xaml3d.render.api import render_arrays
 
     # time=None: ``scene`` is already the moment drawn; its timeline would rebuild the models
@@ -75,7 +78,14 @@ def model_ids(scene, vp, width: int, height: int, aspect: float | None = None) -
     )
     rgb = r.rgba[..., :3].astype(np.int64)
     code = (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
-    return np.where(r.rgba[..., 3] > 0, code - 1, -1).astype(np.int32)
+    ids = np.where(r.rgba[..., 3] > 0, code - 1, -1).astype(np.int32)
+    distance = r.distance if r.distance is not None else np.full(ids.shape, np.nan, np.float32)
+    return ids, distance
+
+
+def model_ids(scene, vp, width: int, height: int, aspect: float | None = None) -> np.ndarray:
+    """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel, -1 where none."""
+    return surface_buffers(scene, vp, width, height, aspect)[0]
 
 
 def write_atomic(path, data: bytes) -> None:
