@@ -272,6 +272,30 @@ def _render_window(scene, file: str, opts: RenderOptions, diags: list):
     return _checked(fresh, lambda: Image.fromarray(rgba, mode="RGBA"), file, opts, diags)
 
 
+class _Deferred:
+    """A worker's outputs in a parallel batch: each file is written whole beside its target
+    under a temporary name and renamed by the parent in batch order (``_parallel_steps``), once
+    it knows that no earlier scene of the batch read that file; ``read`` lists what the
+    scene read."""
+
+    active: _Deferred | None = None
+
+    def __init__(self) -> None:
+        self.pending: list[tuple[str, str]] = []  # (temporary path, target)
+        self.read: list[str] = []
+
+    @classmethod
+    def path_for(cls, out):
+        """Where to write ``out`` now: itself, or in a parallel worker a temporary sibling
+        with the same suffix (so the format is still told from it)."""
+        if cls.active is None or out == "-":
+            return out
+        out = Path(out)
+        tmp = out.with_name(f".{out.name}.{os.getpid()}.pending{out.suffix}")
+        cls.active.pending.append((str(tmp), str(out)))
+        return tmp
+
+
 def _viewport_target(target: Path, vp) -> Path:
     label = vp.name or str(vp.index)
     return target.with_name(f"{target.stem}-{label}{target.suffix}")
@@ -288,6 +312,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         scene = scene_at(scene, opts.time, opts.storyboard)
         file = scene.file or name
         read = [Path(p) for p in scene_files_read(scene)]
+        if _Deferred.active is not None:
+            _Deferred.active.read.extend(os.path.abspath(p) for p in [source, *read])
         inputs.extend(read)  # a (serial) batch: no later scene may write over what this one read
         _check_not_input(target, name, read)
         for extra in (opts.extras.depth, opts.extras.ids):
@@ -320,7 +346,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
                 if vp is None:
                     image = _render_window(scene, file, opts, diags)
                 else:
-                    image = _render_viewport(scene, vp, file, opts, diags, out if svg else None)
+                    svg_out = _Deferred.path_for(out) if svg else None
+                    image = _render_viewport(scene, vp, file, opts, diags, svg_out)
             except _Failed:
                 failed = True
                 continue
@@ -342,7 +369,7 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
                 stream.write(data)
                 stream.flush()
             else:
-                save_image(image, out, format=opts.fmt)
+                save_image(image, _Deferred.path_for(out), format=opts.fmt)
         if failed:
             echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
             raise _Failed
@@ -369,13 +396,26 @@ def scene_files_read(scene) -> list[str]:
     return [*scene.resources_used, *scene.images_used]
 
 
-def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]) -> bool:
-    """One scene of a parallel batch (in a worker process): True when it was rendered."""
+def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]):
+    """One scene of a parallel batch (in a worker process): (rendered, its outputs as
+    (temporary path, target) pairs, the files it read)."""
+    _Deferred.active = deferred = _Deferred()
     try:
         _render_one(source, target, opts, inputs)
+        ok = True
     except _Failed:
-        return False
-    return True
+        ok = False
+    finally:
+        _Deferred.active = None
+    return ok, deferred.pending, deferred.read
+
+
+def _discard(pending) -> None:
+    for tmp, _ in pending:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
 
 
 def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
@@ -392,6 +432,8 @@ def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
         if not duplicate:
             items.append((source, target, opts, inputs))
     results = run_ordered(_render_task, items, jobs)
+    read_before: list[Path] = []  # what the earlier scenes of the batch read
+    made: set[str] = set()  # what the earlier scenes of the batch wrote
 
     def step(source: str, target, duplicate: bool) -> None:
         if duplicate:
@@ -399,9 +441,23 @@ def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
             click.echo(io_error(display_name(source), msg, "IO003"), err=True)
             failed.append(display_name(source))
             return
-        ok, text = next(results)
-        sys.stderr.write(text)
-        sys.stderr.flush()
+        (ok, pending, read), text = next(results)
+        earlier = {os.path.abspath(p) for p in read_before}
+        clash = any(os.path.abspath(out) in earlier for _, out in pending)
+        if clash or made.intersection(read):
+            # It would write over a file an earlier scene read, or it read a file an earlier
+            # scene wrote: what a serial run does depends on that order, so do it serially.
+            _discard(pending)
+            ok, pending, read = _render_task(source, target, opts, [*inputs, *read_before])
+            for tmp, out in pending:
+                os.replace(tmp, out)
+        else:
+            sys.stderr.write(text)
+            sys.stderr.flush()
+            for tmp, out in pending:
+                os.replace(tmp, out)
+        read_before.extend(Path(p) for p in read)
+        made.update(os.path.abspath(out) for _, out in pending)
         if not ok:
             failed.append(display_name(source))
 
