@@ -6,6 +6,7 @@ checked.
 
 from __future__ import annotations
 
+import json
 import math
 import subprocess
 import sys
@@ -369,3 +370,23 @@ def test_handoff_compose_builds_on_the_earlier_storyboard():
     replaced = xaml3d.load(scene(first, second.replace("Compose", "SnapshotAndReplace")),
                            text=True)  # fmt: skip
     assert offset_x(replaced, 1.0) == 6.0  # only the second: base 4 + 2
+
+
+def test_camera_and_validate_see_wpfs_first_frame(tmp_path):
+    """`camera` shows the camera at --time (default the first frame), and `validate` checks the
+    first frame, as `render` draws and checks it."""
+    dolly = ('<Point3DAnimation Storyboard.TargetName="cam" Storyboard.TargetProperty="Position" '
+             'From="0,0,-10" To="0,0,10" Duration="0:0:2"/>')  # fmt: skip
+    (tmp_path / "s.xaml").write_text(scene(dolly))
+    positions = {}
+    for t in ("0", "1", "none"):
+        p = _run("camera", "s.xaml", "--json", "--time", t, cwd=tmp_path)
+        assert p.returncode == 0, p.stderr
+        positions[t] = json.loads(p.stdout)["camera"]["properties"]["Position"]["value"]
+    assert positions == {"0": [0, 0, -10], "1": [0, 0, 0], "none": [0, 0, 10]}
+    # at t = 0 the camera stands behind the quad, looking away from it: render and validate
+    # report the same findings about that first frame
+    v = _run("validate", "s.xaml", cwd=tmp_path)
+    r = _run("render", "s.xaml", "-o", "r.png", "-v", cwd=tmp_path)
+    found = [ln for ln in v.stdout.decode().splitlines() if " CHK" in ln or " CAM" in ln]
+    assert found and all(ln in r.stderr.decode() for ln in found)

@@ -15,6 +15,7 @@ import math
 import click
 import numpy as np
 
+from xaml3d.cli_animate import parse_time, time_option
 from xaml3d.cli_common import (
     display_name,
     exit_on_input_error,
@@ -230,15 +231,19 @@ Examples:
 @resources_option
 @window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
+@time_option
 @camera_lens_options
 def camera_command(
-    scene, viewport, width, height, scale, fit, points, resources, window_size, as_json, **lens
-) -> None:
+    scene, viewport, width, height, scale, fit, points, resources, window_size, as_json, at_time,
+    **lens,
+) -> None:  # fmt: skip
+    from xaml3d.render.api import scene_at
     from xaml3d.scene.camera_math import camera_pipeline
 
     name = display_name(scene)
+    at_time = parse_time(at_time)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources), window_size)
+        sc = scene_at(load_scene(scene, tuple(resources), window_size), at_time)
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
     if fit:

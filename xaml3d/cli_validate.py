@@ -2,9 +2,9 @@
 
 Collects, per file, a fatal reading error (XML, unreadable file...) if any, else the findings of
 ``xaml3d.findings.scene_findings``: the reader's diagnostics, ``check_camera`` for every viewport
-(at -W/-H when given) and ``check_scene``, exactly the list ``xaml3d render`` prints and refuses a
-scene for. The findings are the command's data, so they go to stdout (text lines or JSON); a
-one-line summary goes to stderr.
+(at -W/-H when given) and ``check_scene`` of WPF's first frame, exactly the list
+``xaml3d render`` prints and refuses a scene for. The findings are the command's data, so
+they go to stdout (text lines or JSON); a one-line summary goes to stderr.
 """
 
 from __future__ import annotations
@@ -32,9 +32,12 @@ def collect_findings(
 ) -> list[Diagnostic]:
     """All findings for one scene (``xaml3d.findings.scene_findings``, as ``render`` reports
     them), or its one fatal reading error, located and sorted by (file, line, column)."""
+    from xaml3d.render.api import scene_at
+
     name = display_name(source)
     try:
-        scene = load_scene(source, resources)
+        # WPF's first frame (storyboards begun at load applied), as `render` checks it
+        scene = scene_at(load_scene(source, resources), 0.0)
     except XamlError as exc:
         exc.with_location(file=name)
         return [exc.as_diagnostic()]
