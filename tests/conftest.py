@@ -11,6 +11,11 @@ np.seterr(all="raise")
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT.parent / "shared" / "corpus"
+SPEC = ROOT.parent / "shared" / "spec"
+# The real-world corpus sits beside the clone (CI has it); a bare clone skips what needs it.
+needs_corpus = pytest.mark.skipif(
+    not CORPUS.is_dir(), reason=f"the shared corpus is absent ({CORPUS})"
+)
 
 
 @pytest.fixture(autouse=True)
@@ -23,5 +28,5 @@ def _numpy_raises():
 @pytest.fixture
 def corpus_dir() -> Path:
     if not CORPUS.is_dir():
-        pytest.fail(f"the shared corpus is missing: {CORPUS}")
+        pytest.skip(f"the shared corpus is absent ({CORPUS})")
     return CORPUS

@@ -229,11 +229,12 @@ def test_viewport_size_rules():
         "</Grid></Window>",
         text=True,
     ).viewports[0]
-    # the Grid has only a Width: the nearest ancestor with both is the Window
-    assert (w.width, w.height, w.size_source) == (800, 600, "ancestor:Window")
+    # WPF's layout: the Viewport3D's own Width; the height of the Window's client area
+    # (600 less the 39 px frame) through the Grid, which has only a Width
+    assert (w.width, w.height) == (50, 561) and w.size_source.startswith("layout: Window")
     d = load(f"<Grid {NS}><Viewport3D/></Grid>", text=True)
     assert (d.viewports[0].width, d.viewports[0].height) == (640, 480)
-    assert d.viewports[0].size_source == "default" and "SCN003" in codes(d)
+    assert "the default size 640 x 480" in d.viewports[0].size_source and "SCN003" in codes(d)
 
 
 def test_default_camera_and_null_camera():
@@ -276,7 +277,11 @@ def test_several_viewports_by_index_and_name():
 def test_no_viewport_is_not_fatal():
     s = load(f"<ResourceDictionary {NS}><SolidColorBrush x:Key='k' Color='Red'/>"
              "</ResourceDictionary>", text=True)  # fmt: skip
-    assert s.viewports == () and "SCN001" in codes(s)
+    assert s.viewports == () and "SCN013" in codes(s)  # a dictionary: info, not an error
+    s = load(f"<Grid {NS}><Button/></Grid>", text=True)
+    assert s.viewports == () and ("SCN001", "error") in {
+        (d.code, d.severity) for d in s.diagnostics
+    }
 
 
 def test_templates_not_instantiated():

@@ -143,3 +143,18 @@ def test_check_never_raises_on_garbage():
     diags = check_camera(PerspectiveCamera(near_plane_distance="x"), 640, 480)
     assert diags and diags[0].severity == ERROR
     assert check_camera(PerspectiveCamera(), "wide", None)[0].code == "CAM010"
+
+
+@pytest.mark.parametrize(
+    ("box", "cause"),
+    [
+        (((-1, -1, 5.5), (1, 1, 7)), "behind the camera"),  # camera at z = 5 looks down -z
+        (((-1, -1, 4.95), (1, 1, 4.96)), "closer to the camera than the near plane"),
+        (((-1, -1, -200), (1, 1, -150)), "beyond the far plane"),
+        (((40, -1, -1), (42, 1, 1)), "past its right edge"),
+    ],
+)
+def test_scene_out_of_view_names_the_real_cause(box, cause):
+    cam = PerspectiveCamera(position=(0, 0, 5), near_plane_distance=0.125, far_plane_distance=100)
+    found = [d for d in check_camera(cam, 40, 30, box) if d.code == "CAM107"]
+    assert len(found) == 1 and cause in found[0].message, found

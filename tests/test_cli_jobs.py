@@ -7,7 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from test_cli import BAD, SQUARE, TYPO
+from test_cli import BAD, SQUARE, WARN
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -25,7 +25,7 @@ def _batch(tmp_path: Path, jobs: str, out: str) -> subprocess.CompletedProcess:
 
 def test_parallel_batch_equals_serial(tmp_path):
     (tmp_path / "ok.xaml").write_text(SQUARE)
-    (tmp_path / "typo.xaml").write_text(TYPO)
+    (tmp_path / "typo.xaml").write_text(WARN)  # a warning: rendered
     (tmp_path / "bad.xaml").write_text(BAD)
     (tmp_path / "sub").mkdir()
     (tmp_path / "sub/ok.xaml").write_text(SQUARE)  # same output name: IO003 in both runs
@@ -66,3 +66,50 @@ def test_ssaa_and_msaa_together_is_a_usage_error(tmp_path):
         cwd=tmp_path, capture_output=True, timeout=60,
     )  # fmt: skip
     assert p.returncode == 2 and b"--ssaa" in p.stderr and not (tmp_path / "x.png").exists()
+
+
+def _textured_tree(root: Path) -> Path:
+    """tex/a.xaml draws tex/textures/checker.png; other/checker.xaml is a plain cube whose
+    output in tex/textures/ is named like that texture."""
+    (root / "tex/textures").mkdir(parents=True)
+    (root / "other").mkdir()
+    (root / "tex/a.xaml").write_bytes((ROOT / "samples/brushes.xaml").read_bytes())
+    texture = root / "tex/textures/checker.png"
+    texture.write_bytes((ROOT / "samples/textures/checker.png").read_bytes())
+    (root / "other/checker.xaml").write_bytes((ROOT / "samples/cube.xaml").read_bytes())
+    return texture
+
+
+def _run(cwd: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "xaml3d", "render", *args], cwd=cwd, capture_output=True,
+        timeout=120,
+    )  # fmt: skip
+
+
+def test_parallel_batch_never_writes_over_what_an_earlier_scene_read(tmp_path):
+    for jobs in ("1", "2"):
+        root = tmp_path / jobs
+        texture = _textured_tree(root)
+        before = texture.read_bytes()
+        p = _run(root, "tex/a.xaml", "other/checker.xaml", "-o", "tex/textures/", "-j", jobs)
+        assert p.returncode == 1
+        assert b"IO002" in p.stderr and b"Traceback" not in p.stderr
+        assert texture.read_bytes() == before  # the texture a.xaml read is untouched
+        assert (root / "tex/textures/a.png").exists()
+        assert not [f for f in (root / "tex/textures").iterdir() if f.name.startswith(".")]
+    assert (tmp_path / "1/tex/textures/a.png").read_bytes() == (
+        tmp_path / "2/tex/textures/a.png"
+    ).read_bytes()
+
+
+def test_parallel_batch_reads_what_an_earlier_scene_wrote_as_a_serial_run(tmp_path):
+    outs = {}
+    for jobs in ("1", "2"):
+        root = tmp_path / jobs
+        texture = _textured_tree(root)
+        p = _run(root, "other/checker.xaml", "tex/a.xaml", "-o", "tex/textures/", "-j", jobs)
+        assert p.returncode == 0, p.stderr
+        assert texture.read_bytes() != (ROOT / "samples/textures/checker.png").read_bytes()
+        outs[jobs] = (texture.read_bytes(), (root / "tex/textures/a.png").read_bytes(), p.stderr)
+    assert outs["1"] == outs["2"]  # a.xaml drew the cube picture the first scene wrote

@@ -7,7 +7,7 @@ import json
 import subprocess
 import sys
 
-from test_cli import BAD, PNG_SIGNATURE, SQUARE, TYPO
+from test_cli import BAD, PNG_SIGNATURE, SQUARE, TYPO, WARN
 
 
 def xaml3d(*args, input: bytes | None = None, cwd=None) -> subprocess.CompletedProcess:
@@ -28,10 +28,10 @@ def test_stdin_to_stdout_is_png_bytes_only(tmp_path):
 
 
 def test_warnings_on_stderr_image_on_stdout(tmp_path):
-    (tmp_path / "t.xaml").write_text(TYPO)
+    (tmp_path / "t.xaml").write_text(WARN)
     p = xaml3d("render", "t.xaml", "-o", "-", cwd=tmp_path)
     assert p.returncode == 0 and p.stdout.startswith(PNG_SIGNATURE)
-    assert p.stderr.decode().startswith("t.xaml:3:") and b"warning XAML004" in p.stderr
+    assert p.stderr.decode().startswith("t.xaml:3:") and b"warning CAM105" in p.stderr
     assert b"warning" not in p.stdout
 
 
@@ -68,9 +68,9 @@ def test_refuse_overwrite_in_a_real_process(tmp_path):
 def test_validate_json_and_info_json(tmp_path):
     (tmp_path / "t.xaml").write_text(TYPO)
     p = xaml3d("validate", "--format", "json", "t.xaml", cwd=tmp_path)
-    assert p.returncode == 0 and p.stderr == b""
-    codes = {d["code"] for d in json.loads(p.stdout)}
-    assert "XAML004" in codes
+    assert p.returncode == 1 and p.stderr == b""
+    codes = {d["code"]: d["severity"] for d in json.loads(p.stdout)}
+    assert codes["XAML004"] == "error"
     assert xaml3d("validate", "--strict", "t.xaml", cwd=tmp_path).returncode == 1
     info = json.loads(xaml3d("info", "--json", "t.xaml", cwd=tmp_path).stdout)
     assert info["viewports"][0]["triangles"] == 2

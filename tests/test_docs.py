@@ -116,17 +116,37 @@ def test_api_examples_run(tmp_path, monkeypatch):
 _LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 
 
-@pytest.mark.parametrize("page", sorted(p.name for p in DOCS.glob("*.md")) or ["index.md"], ids=str)
+PAGES = sorted(str(p.relative_to(ROOT)) for p in [ROOT / "README.md", *DOCS.glob("*.md")])
+# A page named in prose ("see cli.md"), in docs, the README or a sample's comment.
+_PAGE_NAME = re.compile(r"(?<![\w/.-])((?:docs/)?[a-z][\w-]*\.md)\b")
+
+
+@pytest.mark.parametrize("page", PAGES, ids=str)
 def test_relative_links_resolve(page):
-    text = (DOCS / page).read_text(encoding="utf-8")
+    text = (ROOT / page).read_text(encoding="utf-8")
+    base = (ROOT / page).parent
     broken = []
     for target in _LINK.findall(text):
         if re.match(r"[a-z]+:", target) or target.startswith("#"):
             continue
         path = target.split("#", 1)[0]
-        if not (DOCS / path).exists():
+        if not (base / path).exists():
             broken.append(target)
-    assert not broken, f"docs/{page} links to missing files: {broken}"
+    assert not broken, f"{page} links to missing files: {broken}"
+
+
+@pytest.mark.parametrize(
+    "page", PAGES + sorted(str(p.relative_to(ROOT)) for p in (ROOT / "samples").glob("*.xaml"))
+)
+def test_pages_named_in_prose_exist(page):
+    text = (ROOT / page).read_text(encoding="utf-8")
+    base = (ROOT / page).parent
+    missing = [
+        name
+        for name in _PAGE_NAME.findall(text)
+        if not any((b / name).exists() for b in (base, ROOT, DOCS))
+    ]
+    assert not missing, f"{page} names pages that do not exist: {missing}"
 
 
 def test_index_lists_every_page():

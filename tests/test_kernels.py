@@ -23,6 +23,16 @@ OPTIONS = [{}, {"ssaa": 1}, {"ssaa": 2}, {"mode": "flat"}, {"mode": "flat", "msa
 @pytest.mark.parametrize("case", CASES, ids=lambda p: f"{p.parent.name}/{p.stem}")
 def test_kernels_match_numpy_exactly(case, monkeypatch):
     scene = load(case)
+    if case.stem.startswith("window-"):  # a render --window picture: every viewport composed
+        from xaml3d.render.window import compose_window
+
+        for opts in OPTIONS:
+            monkeypatch.setenv(accel.ENV, "numpy")
+            a, _ = compose_window(scene, **opts)
+            monkeypatch.setenv(accel.ENV, "numba")
+            b, _ = compose_window(scene, **opts)
+            assert np.array_equal(a, b), opts
+        return
     for opts in OPTIONS:
         monkeypatch.setenv(accel.ENV, "numpy")
         a = render_arrays(scene, **opts)

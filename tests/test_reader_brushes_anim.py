@@ -149,13 +149,18 @@ def test_storyboards_read():
     d, p3, rot = loaded.animations
     assert (d.type, d.target_name, d.target_property) == ("DoubleAnimation", "rot", "Angle")
     assert (d.from_value, d.to_value, d.duration) == (0.0, 360.0, 10.0)
-    assert d.repeat_behavior == "Forever" and d.begin_time == 1.0 and d.auto_reverse
+    # the group's timing stays on the group (WPF's clock tree), the animation keeps its own
+    assert d.repeat_behavior == 1.0 and d.begin_time == 0.0 and d.auto_reverse
+    group = loaded.root.children[0]
+    assert group.type == "ParallelTimeline" and group.children == (d,)
+    assert group.timing.repeat_behavior == "Forever" and group.timing.begin_time == 1.0
     assert p3.by_value == (1.0, 2.0, 3.0) and p3.begin_time is None
     assert p3.duration == "Automatic" and p3.repeat_behavior == 1.0
     k1, k2 = rot.key_frames
     # axis (0,0,2) normalized, 180 degrees: (0, 0, sin 90, cos 90) = (0, 0, 1, 0)
     assert k1.kind == "Spline" and np.allclose(k1.value, (0, 0, 1, 0), atol=1e-12)
     assert k1.key_time == "0:0:2" and k1.key_spline == (0.6, 0.0, 0.9, 0.0)
+    assert k1.time == ("time", 2.0) and k2.time == ("percent", 0.5)
     assert k2.kind == "Discrete" and k2.key_time == "50%" and k2.value is None
     assert click.trigger == "Button.Click" and not click.starts_at_load
     assert click.animations[0].to_value == (1.0, 0.0, 0.0, 1.0)

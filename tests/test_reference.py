@@ -14,7 +14,9 @@ Comparison (per pixel, per RGBA channel, 8-bit straight alpha, both images the s
 
 On failure a side-by-side picture ``expected | actual | diff x8`` (transparent areas shown over a
 grey checkerboard) is written to ``tests/reference/_failures/<area>__<case>.png`` and the test
-fails with its path.
+fails with its path. Cases named ``window-*`` are ``render --window`` pictures (the root's whole
+client area, every viewport at its layout rectangle) in the ``layout`` area; the others render
+the first viewport.
 
 Regenerating the expected PNGs from the current renderer::
 
@@ -188,35 +190,66 @@ def _case_params() -> list:
     return params
 
 
+def _picture(path: Path, t: float) -> Image.Image:
+    """The case drawn at ``t``: one viewport, or for ``layout/window-*`` cases the whole client
+    area as ``render --window`` draws it."""
+    import xaml3d
+
+    if path.parent.name == "layout" and path.stem.startswith("window-"):
+        from xaml3d.render.window import compose_window
+        from xaml3d.xaml.loader import load
+
+        rgba, _ = compose_window(load(path), time=t)
+        return Image.fromarray(rgba, mode="RGBA")
+    return xaml3d.render(str(path), time=t).convert("RGBA")
+
+
+_TIMES = re.compile(r"TIMES:((?:\s+[0-9.]+)+)")
+
+
+def case_times(path: Path) -> list[float]:
+    """Extra moments an animated case is drawn at: ``TIMES: 0.5 1`` in its top comment; each
+    has its own expected image ``<case>@<t>s.png`` beside the default (t = 0) ``<case>.png``."""
+    m = _TIMES.search(path.read_text(encoding="utf-8")[:2000])
+    return [float(x) for x in m.group(1).split()] if m else []
+
+
+def time_png(path: Path, t: float) -> Path:
+    return path.with_name(f"{path.stem}@{t:g}s.png")
+
+
 @pytest.mark.parametrize("case_path", _case_params())
 @pytest.mark.parametrize("kernels", ["numpy", "numba"])
 def test_reference_case(case_path: Path, kernels: str, monkeypatch) -> None:
     """Every case on both renderer paths: numpy, and the compiled kernels (tests/test_kernels.py
     checks that the two give bit-identical pictures)."""
-    import xaml3d
 
     monkeypatch.setenv("XAML3D_KERNELS", kernels)
     cid = case_id(case_path)
-    expected_png = case_path.with_suffix(".png")
-    actual = xaml3d.render(str(case_path)).convert("RGBA")
+    shots = [(case_path.with_suffix(".png"), cid, 0.0)]
+    shots += [(time_png(case_path, t), f"{cid}@{t:g}s", t) for t in case_times(case_path)]
+    for expected_png, sid, t in shots:
+        actual = _picture(case_path, t)
+        if regenerate_requested():
+            actual.save(expected_png)
+            continue
+        if not expected_png.exists():
+            pytest.fail(
+                f"{sid}: no expected image {expected_png.relative_to(ROOT)}; generate it with "
+                f'{REGENERATE_ENV}=1 pytest tests/test_reference.py -k "{cid}", check it by eye '
+                "against tests/reference/CASES.md, then re-run"
+            )
+        with Image.open(expected_png) as img:
+            expected = img.convert("RGBA")
+        result = compare_images(expected, actual)
+        if not result.ok:
+            sheet = write_failure(sid.replace("@", "_at_"), expected, actual)
+            pytest.fail(f"{sid}: {result.reason}; expected | actual | diff: {sheet}")
     if regenerate_requested():
-        actual.save(expected_png)
         pytest.fail(
-            f"{cid}: regenerated {expected_png.relative_to(ROOT)}, check it by eye against "
+            f"{cid}: regenerated {len(shots)} image(s), check them by eye against "
             f"tests/reference/CASES.md and re-run without {REGENERATE_ENV}"
         )
-    if not expected_png.exists():
-        pytest.fail(
-            f"{cid}: no expected image {expected_png.relative_to(ROOT)}; generate it with "
-            f'{REGENERATE_ENV}=1 pytest tests/test_reference.py -k "{cid}", check it by eye '
-            "against tests/reference/CASES.md, then re-run"
-        )
-    with Image.open(expected_png) as img:
-        expected = img.convert("RGBA")
-    result = compare_images(expected, actual)
-    if not result.ok:
-        sheet = write_failure(cid, expected, actual)
-        pytest.fail(f"{cid}: {result.reason}; expected | actual | diff: {sheet}")
 
 
 def _all_xaml() -> list:

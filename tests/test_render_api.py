@@ -172,3 +172,34 @@ def test_png_compress_level_changes_size_not_pixels(tmp_path):
     for name in ("fast.png", "small.png"):
         assert (np.asarray(Image.open(tmp_path / name)) == arr).all()
     assert (tmp_path / "small.png").stat().st_size <= (tmp_path / "fast.png").stat().st_size
+
+
+@pytest.mark.parametrize(
+    ("colour", "rgba"),
+    [
+        ((1, 1, 1), (255, 255, 255, 255)),  # RGB in 0..1, alpha 1: white, not near-black
+        ((1.0, 0.5, 0.0), (255, 128, 0, 255)),
+        ((255, 0, 0), (255, 0, 0, 255)),  # a component above 1: 0..255
+        ((0, 0, 255, 128), (0, 0, 255, 128)),
+    ],
+)
+def test_colour_arguments(colour, rgba):
+    img = render(scene(), ssaa=1, background=colour)
+    assert img.getpixel((0, 0)) == rgba
+
+
+@pytest.mark.parametrize("bad", [(1, 1), "red", (1, 1, float("nan")), (True, 0, 0)])
+def test_bad_colour_arguments_name_the_argument(bad):
+    with pytest.raises(RenderError) as exc:
+        render(scene(), ssaa=1, mode="wireframe", background=(0, 0, 0), line_color=bad)
+    assert exc.value.code == "RND005" and exc.value.message.startswith("line_color must be")
+    with pytest.raises(RenderError) as exc:
+        render(scene(), ssaa=1, background=bad)
+    assert exc.value.message.startswith("background must be")
+
+
+@pytest.mark.parametrize(("arg", "value"), [("width", "640"), ("height", 0), ("width", 2.5)])
+def test_bad_size_arguments_name_the_argument(arg, value):
+    with pytest.raises(RenderError) as exc:
+        render(scene(), ssaa=1, **{arg: value})
+    assert exc.value.code == "RND005" and exc.value.message.startswith(f"{arg} must be")

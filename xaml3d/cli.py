@@ -1,8 +1,9 @@
 """The ``xaml3d`` command line (click): a thin layer over the Python API.
 
 Commands live in their own modules: ``render`` (cli_render), ``validate`` (cli_validate),
-``camera`` (cli_camera), ``info`` (cli_info); shared helpers in cli_common. Diagnostics go to
-stderr, data to stdout. Exit status: 0 success, 1 the input could not be handled, 2 usage error.
+``camera`` (cli_camera), ``info`` (cli_info), ``animate`` (cli_animate); shared helpers in
+cli_common. Diagnostics go to stderr, data to stdout. Exit status: 0 success, 1 the input
+could not be handled, 2 usage error.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from __future__ import annotations
 import click
 
 from xaml3d import __version__
+from xaml3d.cli_animate import animate_command
 from xaml3d.cli_camera import camera_command
 from xaml3d.cli_info import info_command
 from xaml3d.cli_render import render_command
@@ -23,6 +25,7 @@ Examples:
   xaml3d validate scene.xaml
   xaml3d camera scene.xaml --point 0,0,0
   xaml3d info scene.xaml --json
+  xaml3d animate scene.xaml -o scene.gif
 
 Run xaml3d COMMAND --help for each command's options.
 """
@@ -43,3 +46,4 @@ main.add_command(render_command)
 main.add_command(validate_command)
 main.add_command(camera_command)
 main.add_command(info_command)
+main.add_command(animate_command)

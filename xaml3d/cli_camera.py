@@ -15,13 +15,16 @@ import math
 import click
 import numpy as np
 
+from xaml3d.cli_animate import parse_time, time_option
 from xaml3d.cli_common import (
     display_name,
     exit_on_input_error,
     load_scene,
     render_size,
     resources_option,
+    window_size_option,
 )
+from xaml3d.cli_render_extras import camera_lens_options, lens_report, lens_text
 from xaml3d.errors import XamlError
 from xaml3d.scene.types import MatrixCamera
 
@@ -162,7 +165,9 @@ def locate_points(pipe, points) -> list[dict]:
             # WPF draws a point beyond it, so it counts as visible here too (depth z' < -1).
             why = None if bool(visible[i]) or beyond_ok else "on the edge of the view volume"
         item = {"point": list(p), "visible": why is None, "reason": why}
-        if w > 0:
+        # A clipped point lands on no pixel: x, y and depth are null (docs/cli.md).
+        item.update(x=None, y=None, depth=None)
+        if why is None:
             item.update(x=float(pixels[i, 0]), y=float(pixels[i, 1]), depth=float(depth[i]))
         out.append(item)
     return out
@@ -224,13 +229,21 @@ Examples:
     help="World point to locate (repeatable).",
 )
 @resources_option
+@window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
-def camera_command(scene, viewport, width, height, scale, fit, points, resources, as_json) -> None:
+@time_option
+@camera_lens_options
+def camera_command(
+    scene, viewport, width, height, scale, fit, points, resources, window_size, as_json, at_time,
+    **lens,
+) -> None:  # fmt: skip
+    from xaml3d.render.api import scene_at
     from xaml3d.scene.camera_math import camera_pipeline
 
     name = display_name(scene)
+    at_time = parse_time(at_time)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources))
+        sc = scene_at(load_scene(scene, tuple(resources), window_size), at_time)
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
     if fit:
@@ -266,10 +279,17 @@ def camera_command(scene, viewport, width, height, scale, fit, points, resources
     if pipe is not None:
         report["pipeline"] = _jsonable(pipe.as_dict())
         report["points"] = locate_points(pipe, points)
+        with exit_on_input_error(name):
+            lens_info = lens_report(vp, w, h, **lens)
+        if lens_info is not None:
+            report["lens"] = lens_info
     if as_json:
         click.echo(json.dumps(report, indent=2))
     else:
-        click.echo("\n".join(_camera_text(vp, cam, pipe, report["points"])))
+        text = _camera_text(vp, cam, pipe, report["points"])
+        if "lens" in report:
+            text += lens_text(report["lens"], _matrix_lines)
+        click.echo("\n".join(text))
     if error is not None:
         click.echo(error.format(), err=True)
         click.get_current_context().exit(1)

@@ -16,7 +16,8 @@ from pathlib import Path
 
 import click
 
-from xaml3d.errors import ERROR, INFO, CameraError, Diagnostic, XamlError
+from xaml3d.errors import ERROR, INFO, WARNING, CameraError, Diagnostic, XamlError
+from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
 from xaml3d.scene.types import Scene, Viewport
 
 STDIN_NAME = "<stdin>"
@@ -26,6 +27,7 @@ CLI_CODES: dict[str, tuple[str, str]] = {
     "IO001": (ERROR, "a file could not be read or written (missing, unreadable, bad path)"),
     "IO002": (ERROR, "the output would overwrite an input file: refused"),
     "IO003": (ERROR, "two scenes of a batch would write the same output file"),
+    "OPT001": (WARNING, "a command-line option has no effect with the others given"),
 }
 
 
@@ -45,16 +47,17 @@ def display_name(source: str) -> str:
     return STDIN_NAME if source == "-" else source
 
 
-def load_scene(source: str, resources: Iterable[str] = ()) -> Scene:
+def load_scene(source: str, resources: Iterable[str] = (), window_size=None) -> Scene:
     """Load a scene from a path, or from stdin (as bytes) when ``source`` is ``-``: its
-    relative references then resolve against the current directory."""
+    relative references then resolve against the current directory. ``window_size`` (client
+    width, height) lays the root out at that size (``--window-size``)."""
     from xaml3d.xaml.loader import load
 
     if source != "-":
-        return load(source, tuple(resources))
+        return load(source, tuple(resources), window_size=window_size)
     data = sys.stdin.buffer.read()
     try:
-        scene = load(data, tuple(resources), text=True)
+        scene = load(data, tuple(resources), text=True, window_size=window_size)
     except XamlError as exc:
         if exc.file in (None, TEXT_NAME):
             exc.file = STDIN_NAME
@@ -65,13 +68,6 @@ def load_scene(source: str, resources: Iterable[str] = ()) -> Scene:
         replace(d, file=STDIN_NAME) if d.file in (None, TEXT_NAME) else d for d in scene.diagnostics
     )
     return replace(scene, file=STDIN_NAME, diagnostics=diags)
-
-
-def with_file(diag: Diagnostic, file: str | None) -> Diagnostic:
-    """The diagnostic with ``file`` filled in when the producer did not know it."""
-    if diag.file is not None or file is None:
-        return diag
-    return Diagnostic(diag.code, diag.severity, diag.message, file, diag.line, diag.column)
 
 
 def echo_diagnostics(
@@ -143,6 +139,28 @@ resources_option = click.option(
     multiple=True,
     metavar="FILE",
     help="Extra resource dictionary (repeatable), like App.xaml.",
+)
+
+
+def _parse_window_size(ctx, param, value):
+    if value is None:
+        return None
+    w, sep, h = value.lower().partition("x")
+    try:
+        size = (float(w), float(h)) if sep else None
+    except ValueError:
+        size = None
+    if size is None or not all(math.isfinite(v) and v > 0 for v in size):
+        raise click.BadParameter(f"{value!r} is not a size WIDTHxHEIGHT in pixels (e.g. 800x600)")
+    return size
+
+
+# The client size the root is laid out at (docs/layout.md), instead of its markup size.
+window_size_option = click.option(
+    "--window-size",
+    metavar="WxH",
+    callback=_parse_window_size,
+    help="Lay the root out at this client size (e.g. 1024x768) instead of its markup size.",
 )
 
 

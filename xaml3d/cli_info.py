@@ -4,6 +4,7 @@ models, triangles, lights, world bounds, resource files read, and a diagnostics 
 from __future__ import annotations
 
 import json
+import math
 from collections import Counter
 
 import click
@@ -13,6 +14,7 @@ from xaml3d.cli_common import (
     exit_on_input_error,
     load_scene,
     resources_option,
+    window_size_option,
 )
 from xaml3d.errors import SEVERITIES
 from xaml3d.scene.types import Scene
@@ -31,6 +33,7 @@ def scene_info(scene: Scene, name: str | None = None) -> dict:
                 "width": vp.width,
                 "height": vp.height,
                 "size_source": vp.size_source,
+                "layout_rect": None if vp.layout_rect is None else list(vp.layout_rect),
                 "camera": None if cam is None else type(cam).__name__,
                 "camera_is_default": bool(getattr(cam, "is_default", False)),
                 "models": len(vp.models),
@@ -43,12 +46,53 @@ def scene_info(scene: Scene, name: str | None = None) -> dict:
         )
     counts = Counter(d.severity for d in scene.diagnostics)
     return {
-        "file": scene.file or name,
-        "viewports": viewports,
-        "storyboards": len(scene.storyboards),
+        **_head(scene, name, viewports),
+        "animations": animation_info(scene),
         "resources_used": list(scene.resources_used),
         "diagnostics": {s: counts.get(s, 0) for s in SEVERITIES},
     }
+
+
+def _head(scene: Scene, name, viewports) -> dict:
+    return {
+        "file": scene.file or name,
+        "viewports": viewports,
+        "storyboards": len(scene.storyboards),
+    }
+
+
+def _seconds(v) -> float | str | None:
+    if v is None or isinstance(v, str):
+        return v
+    return None if math.isinf(v) else float(v)
+
+
+def animation_info(scene: Scene) -> dict:
+    """What runs at load, and every storyboard's animations: target, period, repeats."""
+    from xaml3d.animation.clock import iteration_duration, natural_duration
+
+    tl = scene.timeline
+    out = []
+    for sb in scene.storyboards:
+        anims = []
+        for a in sb.animations:
+            d = iteration_duration(a.timing, natural_duration(a))
+            period = d * (2.0 if a.auto_reverse else 1.0) / a.speed_ratio
+            rb = a.repeat_behavior
+            anims.append({
+                "type": a.type,
+                "target": f"{a.target_name}.{a.target_property}",
+                "resolves": tl is not None and tl.targets.get(id(a)) is not None,
+                "begin": a.begin_time,
+                "period": _seconds(period) if not math.isinf(period) else "Forever",
+                "repeat": f"{rb[1]:g} s" if isinstance(rb, tuple) else rb,
+                "line": a.line,
+            })  # fmt: skip
+        out.append({"name": sb.name, "trigger": sb.trigger, "at_load": sb.starts_at_load,
+                    "animations": anims, "line": sb.line})  # fmt: skip
+    cycle = 0.0 if tl is None else _seconds(tl.cycle())
+    running = 0 if tl is None else len(tl.running_animations())
+    return {"running_at_load": running, "cycle": cycle, "storyboards": out}
 
 
 def _text(info: dict) -> list[str]:
@@ -59,6 +103,11 @@ def _text(info: dict) -> list[str]:
             f"  viewport {v['index']}{name}: {v['width']:g} x {v['height']:g} "
             f"(size from {v['size_source']})"
         )
+        if v["layout_rect"] is not None:
+            x, y, w, h = v["layout_rect"]
+            lines.append(
+                f"    layout rect: x {x:g}, y {y:g}, {w:g} x {h:g} in the root's client area"
+            )
         cam = v["camera"] or "none (Camera={x:Null})"
         lines.append(f"    camera: {cam}" + (" (WPF's default)" if v["camera_is_default"] else ""))
         kinds = ", ".join(f"{n} {k}" for k, n in v["light_kinds"].items())
@@ -72,8 +121,7 @@ def _text(info: dict) -> list[str]:
             lo = ", ".join(f"{c:g}" for c in v["bounds"]["min"])
             hi = ", ".join(f"{c:g}" for c in v["bounds"]["max"])
             lines.append(f"    bounds: ({lo}) .. ({hi})")
-    if info["storyboards"]:
-        lines.append(f"  storyboards: {info['storyboards']} (ignored by a static render)")
+    lines.extend(_animation_text(info["animations"]))
     res = ", ".join(info["resources_used"]) or "none"
     lines.append(f"  resource files: {res}")
     d = info["diagnostics"]
@@ -82,6 +130,27 @@ def _text(info: dict) -> list[str]:
         + ", ".join(f"{d[s]} {s}(s)" for s in SEVERITIES)
         + " (xaml3d validate lists them)"
     )
+    return lines
+
+
+def _animation_text(anim: dict) -> list[str]:
+    if not anim["storyboards"]:
+        return []
+    cycle = anim["cycle"]
+    when = "for ever" if cycle is None else f"for {cycle:g} s"
+    lines = [f"  animations: {anim['running_at_load']} run at load ({when})"]
+    for sb in anim["storyboards"]:
+        name = repr(sb["name"]) if sb["name"] else "(unnamed)"
+        start = "at load" if sb["at_load"] else (f"on {sb['trigger']}" if sb["trigger"]
+                                                  else "never (no trigger)")  # fmt: skip
+        lines.append(f"    storyboard {name}: starts {start}")
+        for a in sb["animations"]:
+            period = a["period"] if isinstance(a["period"], str) else f"{a['period']:g} s"
+            begin = "never" if a["begin"] is None else f"{a['begin']:g} s"
+            rb = a["repeat"] if isinstance(a["repeat"], str) else f"{a['repeat']:g}x"
+            bad = "" if a["resolves"] else "  [target does not resolve]"
+            lines.append(f"      {a['type']} -> {a['target']}: begin {begin}, period {period}, "
+                         f"repeat {rb}{bad}")  # fmt: skip
     return lines
 
 
@@ -98,11 +167,12 @@ Examples:
 @click.command("info", help=HELP, short_help="Summarize what a scene holds.")
 @click.argument("scene", metavar="SCENE")
 @resources_option
+@window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def info_command(scene, resources, as_json) -> None:
+def info_command(scene, resources, window_size, as_json) -> None:
     name = display_name(scene)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources))
+        sc = load_scene(scene, tuple(resources), window_size)
     info = scene_info(sc, name)
     if as_json:
         click.echo(json.dumps(info, indent=2))

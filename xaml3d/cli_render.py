@@ -17,6 +17,7 @@ from pathlib import Path
 
 import click
 
+from xaml3d.cli_animate import parse_time, storyboard_option, time_option
 from xaml3d.cli_common import (
     describe_os_error,
     display_name,
@@ -27,13 +28,16 @@ from xaml3d.cli_common import (
     resources_option,
     same_file,
     stderr_is_terminal,
-    with_file,
+    window_size_option,
 )
 from xaml3d.cli_jobs import default_jobs, run_ordered
-from xaml3d.errors import ERROR, XamlError
+from xaml3d.cli_render_extras import Extras, Progress, extras_options
+from xaml3d.errors import ERROR, CameraError, XamlError
+from xaml3d.findings import has_errors, scene_findings, with_file
+from xaml3d.findings import lenient as lenient_findings
 
-FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp"}
-SUFFIX_FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".webp": "webp"}
+FORMATS = {"png": ".png", "jpeg": ".jpg", "webp": ".webp", "svg": ".svg"}
+SUFFIX_FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".webp": "webp", ".svg": "svg"}
 PIL_FORMATS = {"png": "PNG", "jpeg": "JPEG", "webp": "WEBP"}
 
 
@@ -55,6 +59,13 @@ class RenderOptions:
     hide_hidden_lines: bool = False
     antialias_lines: bool = False
     msaa: int | None = None
+    window_size: tuple[float, float] | None = None
+    window: bool = False
+    outline_controls: bool = False
+    time: float | None = 0.0  # seconds after load; None: the markup's base values
+    storyboard: str | None = None
+    lenient: bool = False
+    extras: Extras = Extras()  # lens, stereo, depth/id images, line style (cli_render_extras)
 
 
 class _Failed(Exception):
@@ -97,7 +108,8 @@ def _plan(scenes: tuple[str, ...], output: str | None, output_dir: str | None, f
             )
         if output != "-" and fmt is None and Path(output).suffix.lower() not in SUFFIX_FORMATS:
             raise click.UsageError(
-                f"cannot tell the image format of {output!r}: use .png, .jpg, .webp or --format"
+                f"cannot tell the image format of {output!r}: use .png, .jpg, .webp, .svg or "
+                "--format"
             )
         return [(scenes[0], output if output == "-" else Path(output))], None
     suffix = FORMATS[fmt or "png"]
@@ -116,6 +128,31 @@ def _encode(image, fmt: str) -> bytes:
     return buf.getvalue()
 
 
+def _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_lines, aa_lines) -> None:
+    """OPT001: an option given on the command line that has no effect with the others."""
+    ctx = click.get_current_context()
+
+    def given(param: str) -> bool:
+        source = ctx.get_parameter_source(param)
+        return source is not None and source.name == "COMMANDLINE"
+
+    idle = []
+    if given("margin") and not fit:
+        idle.append("--margin has no effect without --fit")
+    if mode != "wireframe":
+        for option, on in (("--hide-hidden-lines", hide_lines), ("--antialias-lines", aa_lines)):
+            if on:
+                idle.append(f"{option} applies to --mode wireframe only")
+    if fmt and output not in (None, "-") and not _is_dir_target(output):
+        implied = SUFFIX_FORMATS.get(Path(output).suffix.lower())
+        if implied is not None and implied != fmt:
+            idle.append(f"--format {fmt} disagrees with the suffix of {output!r}: {fmt} is written")
+    if quiet and verbose:
+        idle.append("-q and -v together: -q wins, only errors are printed")
+    for msg in idle:
+        click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+
+
 def _check_not_input(target, name: str, inputs: list[Path]) -> None:
     if target == "-":
         return
@@ -128,26 +165,44 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
             raise _Failed
 
 
-def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
-    from xaml3d.render.api import render_arrays, save_image
+def _size_for_checks(opts: RenderOptions):
+    """The size each viewport's camera is checked at: its render size (an empty viewport keeps
+    its own size, which the camera check reports as CAM010)."""
+
+    def size_of(vp):
+        try:
+            return render_size(vp, opts.width, opts.height, opts.scale)
+        except (CameraError, click.UsageError):
+            return (vp.width, vp.height)
+
+    return size_of
+
+
+def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg_target=None):
+    """One viewport as an image at its (laid-out or -W/-H) size, with its --depth/--ids files
+    (or, given ``svg_target``, its SVG wireframe written there: returns None); raises _Failed
+    after printing the error when the camera cannot produce an image."""
+    from xaml3d.render.api import render_arrays
     from xaml3d.scene.fit import fit_viewport
 
-    name = display_name(source)
-    diags = []
+    width, height = render_size(vp, opts.width, opts.height, opts.scale)
+    if opts.fit:
+        fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
+        diags.extend(notes)
+        scene = replace(scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports))
+    # the laid-out size may be fractional: the projection keeps its exact aspect ratio
+    # unless -W and -H both choose another (docs/layout.md)
+    aspect = None if (opts.width and opts.height) else _exact_aspect(vp)
+    if svg_target is not None:
+        from xaml3d.cli_render_extras import write_svg
+
+        fresh = write_svg(opts.extras, scene, vp, width, height, svg_target, opts.background,
+                          opts.ssaa, aspect)  # fmt: skip
+        return _checked(fresh, lambda: None, file, opts, diags)
+    from xaml3d.cli_render_extras import lens_arguments, write_buffers
+
+    progress = Progress(f"{file}: lens samples", opts.extras.progress and stderr_is_terminal())
     try:
-        _check_not_input(target, name, inputs)
-        scene = load_scene(source, opts.resources)
-        file = scene.file or name
-        diags.extend(with_file(d, file) for d in scene.diagnostics)
-        _check_not_input(target, name, [Path(p) for p in scene.resources_used])
-        vp = scene.viewport(opts.viewport)
-        width, height = render_size(vp, opts.width, opts.height, opts.scale)
-        if opts.fit:
-            fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
-            diags.extend(notes)
-            scene = replace(
-                scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports)
-            )
         result = render_arrays(
             scene,
             width,
@@ -159,26 +214,173 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             msaa=opts.msaa,
             hidden_lines=not opts.hide_hidden_lines,
             antialias_lines=opts.antialias_lines,
+            time=None,  # the scene is already the one at --time
+            aspect=aspect,
+            ids=bool(opts.extras.ids),
+            progress=progress,
+            **lens_arguments(opts.extras, vp),
         )
-        fresh = [with_file(d, file) for d in result.diagnostics]
-        diags.extend(d for d in fresh if d.severity != ERROR)
-        fatal = [d for d in fresh if d.severity == ERROR]
-        if fatal:  # e.g. a camera that cannot produce an image: WPF would draw nothing
-            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
-            echo_diagnostics(fatal)
-            raise _Failed
-        image = result.image()
-        if target == "-":
-            # The render already holds --background (at its alpha): flatten onto white only.
-            data = _encode(image, opts.fmt or "png")
-            out = sys.stdout.buffer
-            out.write(data)
-            out.flush()
+    finally:
+        progress.close()
+    image = _checked(result.diagnostics, result.image, file, opts, diags)
+    if result.distance is not None:
+        surfaces = None
+        if opts.mode == "wireframe" and not opts.hide_hidden_lines:
+            from xaml3d.render.buffers import surface_buffers
+
+            def surfaces():
+                return surface_buffers(scene, vp, width, height, aspect)[1]
+
+        diags.extend(write_buffers(opts.extras, result, vp, file, surfaces))
+    return image
+
+
+def _exact_aspect(vp) -> float | None:
+    w, h = float(vp.width), float(vp.height)
+    return w / h if w > 0 and h > 0 else None
+
+
+def _checked(fresh, make_image, file: str, opts: RenderOptions, diags: list):
+    fresh = [with_file(d, file) for d in fresh]
+    diags.extend(d for d in fresh if d.severity != ERROR)
+    fatal = [d for d in fresh if d.severity == ERROR]
+    # Under --lenient a camera that cannot produce an image was already reported by the camera
+    # check (as a warning): the picture stays empty, as WPF draws nothing.
+    if fatal and not opts.lenient:  # e.g. a camera that cannot produce an image
+        echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+        echo_diagnostics(fatal)
+        diags.clear()
+        raise _Failed
+    return make_image()
+
+
+def _render_window(scene, file: str, opts: RenderOptions, diags: list):
+    from PIL import Image
+
+    from xaml3d.render.window import compose_window
+
+    scene.viewport()  # SCN001 when there is nothing to lay out
+    rgba, fresh = compose_window(
+        scene,
+        mode=opts.mode,
+        ssaa=opts.ssaa,
+        msaa=opts.msaa,
+        background=opts.background,
+        outline_controls=opts.outline_controls,
+        time=None,  # the scene is already the one at --time
+    )
+    return _checked(fresh, lambda: Image.fromarray(rgba, mode="RGBA"), file, opts, diags)
+
+
+class _Deferred:
+    """A worker's outputs in a parallel batch: each file is written whole beside its target
+    under a temporary name and renamed by the parent in batch order (``_parallel_steps``), once
+    it knows that no earlier scene of the batch read that file; ``read`` lists what the
+    scene read."""
+
+    active: _Deferred | None = None
+
+    def __init__(self) -> None:
+        self.pending: list[tuple[str, str]] = []  # (temporary path, target)
+        self.read: list[str] = []
+
+    @classmethod
+    def path_for(cls, out):
+        """Where to write ``out`` now: itself, or in a parallel worker a temporary sibling
+        with the same suffix (so the format is still told from it)."""
+        if cls.active is None or out == "-":
+            return out
+        out = Path(out)
+        tmp = out.with_name(f".{out.name}.{os.getpid()}.pending{out.suffix}")
+        cls.active.pending.append((str(tmp), str(out)))
+        return tmp
+
+
+def _viewport_target(target: Path, vp) -> Path:
+    label = vp.name or str(vp.index)
+    return target.with_name(f"{target.stem}-{label}{target.suffix}")
+
+
+def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
+    from xaml3d.render.api import save_image, scene_at
+
+    name = display_name(source)
+    diags = []
+    try:
+        _check_not_input(target, name, inputs)
+        scene = load_scene(source, opts.resources, opts.window_size)
+        scene = scene_at(scene, opts.time, opts.storyboard)
+        file = scene.file or name
+        read = [Path(p) for p in scene_files_read(scene)]
+        if _Deferred.active is not None:
+            _Deferred.active.read.extend(os.path.abspath(p) for p in [source, *read])
+        inputs.extend(read)  # a (serial) batch: no later scene may write over what this one read
+        _check_not_input(target, name, read)
+        for extra in (opts.extras.depth, opts.extras.ids):
+            if extra:
+                _check_not_input(Path(extra), name, inputs)
+        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings).
+        findings = scene_findings(scene, _size_for_checks(opts), name)
+        if has_errors(findings):
+            if not opts.lenient or not scene.viewports:
+                echo_diagnostics(findings, quiet=opts.quiet, verbose=opts.verbose)
+                if scene.viewports:
+                    msg = f"{name}: not rendered: the scene has errors (--lenient renders it)"
+                    click.echo(msg, err=True)
+                raise _Failed
+            findings = lenient_findings(findings)
+        diags.extend(findings)
+        if opts.window:
+            jobs = [(None, target)]
+        elif opts.viewport == "all":
+            scene.viewport()  # SCN001 when there is none
+            jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
+            for _, t in jobs:
+                _check_not_input(t, name, inputs)
         else:
-            save_image(image, target, format=opts.fmt)
+            jobs = [(scene.viewport(opts.viewport), target)]
+        failed = False
+        for vp, out in jobs:
+            try:
+                svg = (opts.fmt or SUFFIX_FORMATS.get(Path(str(out)).suffix.lower())) == "svg"
+                if vp is None:
+                    image = _render_window(scene, file, opts, diags)
+                else:
+                    svg_out = _Deferred.path_for(out) if svg else None
+                    image = _render_viewport(scene, vp, file, opts, diags, svg_out)
+            except _Failed:
+                failed = True
+                continue
+            except XamlError as exc:
+                if len(jobs) == 1:
+                    raise
+                # one viewport of several cannot be drawn (an empty layout...): the others are
+                echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+                diags.clear()
+                click.echo(exc.with_location(file=name).format(), err=True)
+                failed = True
+                continue
+            if image is None:  # an SVG, already written
+                continue
+            if out == "-":
+                # The render already holds --background (at its alpha): flatten onto white only.
+                data = _encode(image, opts.fmt or "png")
+                stream = sys.stdout.buffer
+                stream.write(data)
+                stream.flush()
+            else:
+                save_image(image, _Deferred.path_for(out), format=opts.fmt)
+        if failed:
+            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+            raise _Failed
     except XamlError as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         exc.with_location(file=name)
+        if exc.code == "RND001":  # the API names its arguments; say which options they are
+            exc.message = exc.message.replace(
+                "lower the size or the ssaa/msaa factor",
+                "lower -W/-H (or --scale), --ssaa or --msaa",
+            ).replace("(raise max_size to allow it)", "(lower -W/-H or --scale)")
         click.echo(exc.format(), err=True)
         raise _Failed from None
     except (OSError, ValueError) as exc:
@@ -188,13 +390,32 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
 
 
-def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]) -> bool:
-    """One scene of a parallel batch (in a worker process): True when it was rendered."""
+def scene_files_read(scene) -> list[str]:
+    """Every file a render of ``scene`` reads besides the scene itself: resource dictionaries,
+    App.xaml and the images its ImageBrushes load. None of them may be an output."""
+    return [*scene.resources_used, *scene.images_used]
+
+
+def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]):
+    """One scene of a parallel batch (in a worker process): (rendered, its outputs as
+    (temporary path, target) pairs, the files it read)."""
+    _Deferred.active = deferred = _Deferred()
     try:
         _render_one(source, target, opts, inputs)
+        ok = True
     except _Failed:
-        return False
-    return True
+        ok = False
+    finally:
+        _Deferred.active = None
+    return ok, deferred.pending, deferred.read
+
+
+def _discard(pending) -> None:
+    for tmp, _ in pending:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
 
 
 def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
@@ -211,6 +432,8 @@ def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
         if not duplicate:
             items.append((source, target, opts, inputs))
     results = run_ordered(_render_task, items, jobs)
+    read_before: list[Path] = []  # what the earlier scenes of the batch read
+    made: set[str] = set()  # what the earlier scenes of the batch wrote
 
     def step(source: str, target, duplicate: bool) -> None:
         if duplicate:
@@ -218,13 +441,43 @@ def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
             click.echo(io_error(display_name(source), msg, "IO003"), err=True)
             failed.append(display_name(source))
             return
-        ok, text = next(results)
-        sys.stderr.write(text)
-        sys.stderr.flush()
+        (ok, pending, read), text = next(results)
+        earlier = {os.path.abspath(p) for p in read_before}
+        clash = any(os.path.abspath(out) in earlier for _, out in pending)
+        if clash or made.intersection(read):
+            # It would write over a file an earlier scene read, or it read a file an earlier
+            # scene wrote: what a serial run does depends on that order, so do it serially.
+            _discard(pending)
+            ok, pending, read = _render_task(source, target, opts, [*inputs, *read_before])
+            for tmp, out in pending:
+                os.replace(tmp, out)
+        else:
+            sys.stderr.write(text)
+            sys.stderr.flush()
+            for tmp, out in pending:
+                os.replace(tmp, out)
+        read_before.extend(Path(p) for p in read)
+        made.update(os.path.abspath(out) for _, out in pending)
         if not ok:
             failed.append(display_name(source))
 
     return [lambda args=args: step(*args) for args in todo]
+
+
+def _check_layout_options(window, outline, viewport, width, height, scale, fit, output) -> None:
+    if outline and not window:
+        raise click.UsageError("--outline-controls draws on the --window picture: add --window")
+    if window and viewport is not None:
+        raise click.UsageError("--window draws every viewport: drop --viewport")
+    many = "--window" if window else "--viewport all" if viewport == "all" else None
+    if many and (width is not None or height is not None):
+        raise click.UsageError(
+            f"-W/-H size one viewport; with {many} use --window-size (the root's client size)"
+        )
+    if window and (scale is not None or fit):
+        raise click.UsageError("--scale and --fit apply to one viewport, not to --window")
+    if many and output == "-":
+        raise click.UsageError(f"{many} writes files: give -o FILE or a directory")
 
 
 HELP = """Render XAML 3D scene(s) to images (PNG, JPEG or WebP).
@@ -241,6 +494,12 @@ Examples:
   cat cube.xaml | xaml3d render - -o cube.webp
   xaml3d render scenes/*.xaml -o out/ --format jpeg --background "#FF202020"
   xaml3d render lost-camera.xaml -o fixed.png --fit
+  xaml3d render spin.xaml -o spin-at-1.5s.png --time 1.5
+  xaml3d render views.xaml -o out.png --viewport all      # out-<name or index>.png each
+  xaml3d render app.xaml -o win.png --window --window-size 1024x768
+  xaml3d render row.xaml -o dof.png --aperture 0.08 --focus 6
+  xaml3d render cube.xaml -o pair.png --stereo anaglyph --depth depth.png
+  xaml3d render cube.xaml -o cube.svg --mode wireframe --line-width 2
 
 \b
 Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
@@ -292,7 +551,9 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 @click.option(
     "--hide-hidden-lines",
     is_flag=True,
-    help="wireframe: draw only the edges the depth buffer shows (default: every edge).",
+    help="wireframe: also remove edges (and parts) hidden behind nearer surfaces. Without it, "
+    "every edge of every drawn triangle shows; back faces without a BackMaterial are culled "
+    "either way, so a lone closed convex mesh looks the same. SVG output always removes them.",
 )
 @click.option(
     "--antialias-lines", is_flag=True, help="wireframe: anti-aliased (coverage-blended) lines."
@@ -314,8 +575,22 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     help="Multisampling per axis, 1..4 (shaded once per pixel; default 2, wireframe none).",
 )
 @click.option(
-    "--viewport", metavar="INDEX|NAME", help="Which Viewport3D to render (default: the first)."
+    "--viewport",
+    metavar="INDEX|NAME|all",
+    help="Which Viewport3D to render (default: the first); all: each to OUT-<name or index>.",
 )
+@click.option(
+    "--window",
+    is_flag=True,
+    help="Draw the root's whole client area: every viewport at its layout rectangle over the "
+    "panels' backgrounds.",
+)
+@click.option(
+    "--outline-controls",
+    is_flag=True,
+    help="--window: outline the layout box of each 2D control (they are not drawn).",
+)
+@window_size_option
 @resources_option
 @click.option(
     "--fit", is_flag=True, help="Move the camera (same direction) so the whole scene is framed."
@@ -333,8 +608,17 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
     type=click.IntRange(1),
     help="Worker processes for a batch of scenes (default: the number of cores).",
 )
+@time_option
+@storyboard_option
+@click.option(
+    "--lenient",
+    is_flag=True,
+    help="Render a scene with errors anyway: each error is reported as a warning and WPF's "
+    "default is used for what could not be read.",
+)
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
+@extras_options
 def render_command(
     scenes,
     output,
@@ -356,11 +640,26 @@ def render_command(
     hide_hidden_lines,
     antialias_lines,
     jobs,
+    window,
+    outline_controls,
+    window_size,
+    at_time,
+    storyboard,
+    lenient,
+    extras,
 ) -> None:
+    from xaml3d.cli_render_extras import check_request, check_svg
+
+    at_time = parse_time(at_time)
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
         raise click.UsageError("choose one of --ssaa and --msaa")
     fmt = fmt.lower() if fmt else None
+    _check_layout_options(window, outline_controls, viewport, width, height, scale, fit, output)
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
+    check_request(extras, scenes, output, mode, window or viewport == "all", window)
+    if fmt == "svg" or any(t != "-" and t.suffix.lower() == ".svg" for _, t in plan):
+        check_svg(extras, mode, window)
+    extras = replace(extras, progress=len(plan) == 1)
     opts = RenderOptions(
         width,
         height,
@@ -378,8 +677,20 @@ def render_command(
         hide_hidden_lines,
         antialias_lines,
         msaa,
+        window_size,
+        window,
+        outline_controls,
+        at_time,
+        storyboard,
+        lenient,
+        extras,
     )
+    _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_hidden_lines, antialias_lines)
     if directory is not None:
+        if directory.exists() and not directory.is_dir():
+            msg = f"{directory} is a file, not a directory: it cannot hold the outputs"
+            click.echo(io_error(str(directory), msg), err=True)
+            click.get_current_context().exit(1)
         try:
             directory.mkdir(parents=True, exist_ok=True)
         except OSError as exc:

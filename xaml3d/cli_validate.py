@@ -1,9 +1,10 @@
 """``xaml3d validate``: every problem the reader, the camera check and the scene checks know.
 
-Collects, per file: a fatal reading error (XML, values, resources...) if any, else the reader's
-recoverable diagnostics (``Scene.diagnostics``), ``check_camera`` for every viewport (with its
-size and the scene's bounds), and ``check_scene`` (``xaml3d.scene.checks``). The findings are the
-command's data, so they go to stdout (text lines or JSON); a one-line summary goes to stderr.
+Collects, per file, a fatal reading error (XML, unreadable file...) if any, else the findings of
+``xaml3d.findings.scene_findings``: the reader's diagnostics, ``check_camera`` for every viewport
+(at -W/-H when given) and ``check_scene`` of WPF's first frame, exactly the list
+``xaml3d render`` prints and refuses a scene for. The findings are the command's data, so
+they go to stdout (text lines or JSON); a one-line summary goes to stderr.
 """
 
 from __future__ import annotations
@@ -18,9 +19,9 @@ from xaml3d.cli_common import (
     load_scene,
     render_size,
     resources_option,
-    with_file,
 )
-from xaml3d.errors import ERROR, SEVERITIES, WARNING, Diagnostic, XamlError
+from xaml3d.errors import ERROR, WARNING, Diagnostic, XamlError
+from xaml3d.findings import scene_findings, sort_findings
 
 
 def collect_findings(
@@ -29,41 +30,24 @@ def collect_findings(
     width: int | None = None,
     height: int | None = None,
 ) -> list[Diagnostic]:
-    """All findings for one scene, located, sorted by (file, line, column), duplicates dropped."""
-    from xaml3d.scene.camera_check import check_camera
-    from xaml3d.scene.checks import check_scene
+    """All findings for one scene (``xaml3d.findings.scene_findings``, as ``render`` reports
+    them), or its one fatal reading error, located and sorted by (file, line, column)."""
+    from xaml3d.render.api import scene_at
 
     name = display_name(source)
     try:
-        scene = load_scene(source, resources)
+        # WPF's first frame (storyboards begun at load applied), as `render` checks it
+        scene = scene_at(load_scene(source, resources), 0.0)
     except XamlError as exc:
         exc.with_location(file=name)
         return [exc.as_diagnostic()]
     except (OSError, ValueError) as exc:
         return [Diagnostic("IO001", ERROR, describe_os_error(exc), name)]
-    file = scene.file or name
-    found: list[Diagnostic] = list(scene.diagnostics)
-    for vp in scene.viewports:
-        w, h = render_size(vp, width, height) if (width or height) else (vp.width, vp.height)
-        found.extend(check_camera(vp.camera, w, h, vp.bounds()))
-    found.extend(check_scene(scene))
-    return sort_findings(with_file(d, file) for d in found)
 
+    def size_of(vp):
+        return render_size(vp, width, height) if (width or height) else (vp.width, vp.height)
 
-def sort_findings(diags) -> list[Diagnostic]:
-    """Sorted by (file, line, column) -- unlocated first within a file -- then severity order;
-    exact duplicates dropped."""
-    unique = list(dict.fromkeys(diags))
-    rank = {s: i for i, s in enumerate(SEVERITIES)}
-    return sorted(
-        unique,
-        key=lambda d: (
-            d.file or "",
-            d.line if d.line is not None else 0,
-            d.column if d.column is not None else 0,
-            rank.get(d.severity, len(rank)),
-        ),
-    )
+    return scene_findings(scene, size_of, name)
 
 
 HELP = """Check XAML 3D scene(s) without rendering.

@@ -5,29 +5,40 @@ command line); this module merges them into one mapping for ``docs/diagnostics.m
 A code listed by two tables keeps the first entry (the stage that emits it as a diagnostic); the
 exception classes' default codes (``xaml3d.errors``) only fill in codes no table lists.
 
+A code's severity is WPF's verdict (docs/diagnostics.md) and is defined once, in its table:
+emitters take it from there (``ReadContext.diag`` and ``ReadContext.error`` look it up, the
+scene checks build their diagnostics from their tables), and ``tests/test_severity.py`` checks
+that every diagnostic emitted over the reference cases, samples and corpus carries it. Where one
+situation has two verdicts (an unknown name among 3D types or among framework elements; a
+missing StaticResource or DynamicResource key), there are two codes.
+
 Codes emitted by modules that keep no table of their own (transforms: GEO; renderer: RND; scene
 selection: SCN002) are listed here in ``EXTRA_CODES``, until their modules export one.
 """
 
 from __future__ import annotations
 
+import functools
 import importlib
 
 from xaml3d import errors
-from xaml3d.errors import ERROR, WARNING
+from xaml3d.errors import ERROR, INFO, WARNING
 
 # (module, table name, required): a missing required table is a bug; an optional one is merged
 # when its module exports it.
 TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.xaml.vocabulary", "READER_CODES", True),
     ("xaml3d.xaml.values", "VALUE_CODES", True),
+    ("xaml3d.layout.gotchas", "LAYOUT_CODES", True),
     ("xaml3d.scene.mesh", "MESH_CODES", True),
     ("xaml3d.scene.camera_check", "CAMERA_CODES", True),
     ("xaml3d.scene.checks", "CHECK_CODES", True),
     ("xaml3d.scene.fit", "FIT_CODES", True),
     ("xaml3d.cli_common", "CLI_CODES", True),
     ("xaml3d.render.api", "RENDER_CODES", False),
+    ("xaml3d.scene.lens", "LENS_CODES", True),
     ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
+    ("xaml3d.xaml.animation_targets", "ANIM_CODES", True),
 )
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {
@@ -40,7 +51,8 @@ EXTRA_CODES: dict[str, tuple[str, str]] = {
     "GEO003": (ERROR, "singular matrix: it cannot be inverted"),
     "GEO004": (ERROR, "a Matrix3D does not have 16 numbers / is not 4x4"),
     "RND001": (ERROR, "image size over the limit (pixels per side or supersampled samples)"),
-    "RND002": (WARNING, "nothing was drawn in the image (info when the viewport has no models)"),
+    "RND002": (WARNING, "nothing was drawn in the image, though the viewport holds models"),
+    "RND003": (INFO, "nothing was drawn: the viewport holds no models"),
     "RND004": (
         WARNING,
         "model skipped by the renderer: singular transform or non-finite coordinates",
@@ -79,3 +91,13 @@ def all_codes() -> dict[str, tuple[str, str]]:
     for code, entry in _error_defaults().items():
         merged.setdefault(code, entry)
     return dict(sorted(merged.items()))
+
+
+@functools.cache
+def _severities() -> dict[str, str]:
+    return {code: entry[0] for code, entry in all_codes().items()}
+
+
+def severity(code: str) -> str:
+    """The severity of ``code`` in its table (KeyError for a code no table lists)."""
+    return _severities()[code]

@@ -51,6 +51,9 @@ class FileResult:
     warnings: list[Diagnostic] = field(default_factory=list)
     refusal: str | None = None
     modes: list[ModeResult] = field(default_factory=list)
+    # per viewport: (width, height, how the layout derived it)
+    sizes: list[tuple[float, float, str]] = field(default_factory=list)
+    window: str | None = None  # render --window: "ok", the error, or None (not tried)
 
 
 def companions_for(path: Path) -> list[Path]:
@@ -67,8 +70,10 @@ def run_file(
     size: tuple[int, int] | None = None,
     ssaa: int | None = None,
     modes: tuple[str, ...] = MODES,
+    window: bool = False,
 ) -> FileResult:
-    """Load and render one file in every mode; never raises for a XamlError."""
+    """Load and render one file in every mode (and, with ``window``, as ``render --window``
+    when its root is a Window, Page or UserControl); never raises for a XamlError."""
     from xaml3d.render.api import render_arrays
     from xaml3d.xaml.loader import load
 
@@ -86,6 +91,9 @@ def run_file(
     if not scene.viewports:
         result.status = "no viewport"
         return result
+    result.sizes = [(v.width, v.height, v.size_source) for v in scene.viewports]
+    if window and is_window_root(scene):
+        result.window = window_check(scene, ssaa)
     vp = scene.viewports[0]
     result.triangles = vp.triangle_count
     result.lights = len(vp.lights)
@@ -112,3 +120,20 @@ def run_file(
     else:
         result.status = "rendered with warnings" if result.warnings else "rendered"
     return result
+
+
+def is_window_root(scene) -> bool:
+    """Whether the scene's layout root is a Window, Page or UserControl."""
+    root = getattr(scene.layout, "root", None)
+    return root is not None and root.type in ("Window", "NavigationWindow", "Page", "UserControl")
+
+
+def window_check(scene, ssaa: int | None = None) -> str:
+    """``render --window`` of the scene: "ok" or the error it stops with."""
+    from xaml3d.render.window import compose_window
+
+    try:
+        compose_window(scene, ssaa=ssaa)
+    except XamlError as exc:
+        return exc.format()
+    return "ok"

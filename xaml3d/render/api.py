@@ -12,6 +12,10 @@ Depth in ``Rendering.depth`` is WPF's normalized device depth z_ndc = -z' (0 on 
 1 on the (effective) far plane; non-linear in distance for perspective cameras), the nearest
 sample of each supersampling block, +inf where nothing was drawn.
 
+Time: the scene as it is ``time`` seconds after load (default 0: WPF's first frame, with the
+storyboards begun by Loaded triggers applied; ``storyboard`` names one more to begin at 0);
+``time=None`` draws the base values written in markup. ``scene_at`` gives that Scene itself.
+
 Background: the ``background`` argument (straight RGBA floats 0..1, or 0..255 ints) when given,
 else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, is not drawn).
 """
@@ -20,7 +24,7 @@ from __future__ import annotations
 
 import os
 import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -41,13 +45,19 @@ _FORMATS = {".png": "PNG", ".jpg": "JPEG", ".jpeg": "JPEG", ".webp": "WEBP"}
 @dataclass
 class Rendering:
     """The result of ``render_arrays``: straight-alpha rgba (H, W, 4) uint8, depth (H, W)
-    float64 (z_ndc, +inf where empty), the size, and the diagnostics of the render."""
+    float64 (z_ndc, +inf where empty), the size, and the diagnostics of the render.
+    ``distance``: (H, W) float32 linear eye-space depth (distance from the eye plane along the
+    look direction, NaN where empty; ``xaml3d.render.buffers``); ``ids``: (H, W) int32 index
+    of the model drawn at each pixel, -1 where none (only when asked for with ``ids=True``).
+    With a stereo pair, depth, distance and ids are the pinhole (centre) camera's."""
 
     rgba: np.ndarray
     depth: np.ndarray
     width: int
     height: int
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    distance: np.ndarray | None = None
+    ids: np.ndarray | None = None
 
     def image(self):
         from PIL import Image
@@ -78,19 +88,59 @@ def _resolve_size(vp, width, height, max_size: int) -> tuple[int, int]:
     return w, h
 
 
-def _background(bg, vp) -> tuple[float, float, float, float]:
+def _rgba(value, name: str) -> tuple[float, float, float, float]:
+    """A colour argument (``background``, ``line_color``) as straight RGBA floats in 0..1.
+
+    3 (RGB, alpha 1) or 4 (RGBA) numbers: floats/ints in 0..1, or 0..255 when any component is
+    above 1 (so ``(1, 1, 1)`` is white and ``(255, 0, 0)`` red). Raises RND005 naming ``name``."""
+    try:
+        vals = tuple(value)
+    except TypeError:
+        vals = ()
+    ok = len(vals) in (3, 4) and all(
+        isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
+        for v in vals
+    )
+    if not ok or not all(np.isfinite(float(v)) for v in vals):
+        raise RenderError(
+            f"{name} must be 3 (RGB) or 4 (RGBA) finite numbers, in 0..1 or 0..255; got {value!r}",
+            code="RND005",
+        )
+    scale = 255.0 if any(float(v) > 1.0 for v in vals) else 1.0
+    rgba = [float(v) / scale for v in vals] + ([1.0] if len(vals) == 3 else [])
+    return tuple(float(min(max(v, 0.0), 1.0)) for v in rgba)
+
+
+def _background(bg) -> tuple[float, float, float, float]:
     # Transparent by default (wpf3d.md section 2): the 3D content is composited over whatever
     # 2D lies beneath it, which is not ours to draw; the caller chooses a fill.
-    if bg is None:
-        return (0.0, 0.0, 0.0, 0.0)
-    vals = tuple(bg)
-    if len(vals) == 3:
-        vals = (*vals, 1.0 if all(isinstance(v, float) for v in vals) else 255)
-    if len(vals) != 4:
-        raise RenderError(f"background must be an RGBA tuple, got {bg!r}", code="RND005")
-    if any(isinstance(v, int) and not isinstance(v, bool) and v > 1 for v in vals):
-        vals = tuple(v / 255.0 for v in vals)
-    return tuple(float(min(max(v, 0.0), 1.0)) for v in vals)
+    return (0.0, 0.0, 0.0, 0.0) if bg is None else _rgba(bg, "background")
+
+
+def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = None) -> Scene:
+    """The scene ``time`` seconds after load (None: the base values). Raises SceneError when
+    ``storyboard`` names no storyboard, ValueError for a time that is not finite."""
+    if time is None:
+        return scene
+    if scene.timeline is None:
+        if storyboard is not None:
+            from xaml3d.errors import SceneError
+
+            raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
+                             code="ANIM010", file=scene.file)  # fmt: skip
+        return scene
+    from xaml3d.errors import SceneError
+
+    try:
+        frame = scene.timeline.at(float(time), storyboard)
+    except SceneError as exc:
+        exc.file = scene.file  # the name the caller knows the scene by (stdin...)
+        raise
+    if frame is scene.timeline.base:
+        return scene  # nothing animates at that time
+    # the caller's scene keeps its own file name and diagnostics (stdin renames them); the
+    # frame is a finished moment: rendering it again must not evaluate the storyboards again
+    return replace(scene, viewports=frame.viewports, timeline=None)
 
 
 def render_arrays(
@@ -108,6 +158,19 @@ def render_arrays(
     antialias_lines: bool = False,
     max_size: int = 16384,
     resources=(),
+    time: float | None = 0.0,
+    storyboard: str | None = None,
+    aspect: float | None = None,
+    line_width: float = 1.0,
+    aperture: float = 0.0,
+    focus: float | None = None,
+    fstop: float | None = None,
+    focal_length: float | None = None,
+    lens_samples: int = 24,
+    stereo: str | None = None,
+    eye_separation: float | None = None,
+    progress=None,
+    ids: bool = False,
 ) -> Rendering:
     """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
 
@@ -116,15 +179,35 @@ def render_arrays(
     pixel per triangle (multisampling, WPF's hardware way; the default is msaa 2 for shaded and
     flat), or ``ssaa`` 1..4 samples per side each shaded (supersampling; wireframe's default is
     ssaa 1). Giving ``ssaa`` alone turns multisampling off; both above 1 is an error.
-    ``hidden_lines=False`` hides occluded wireframe edges; ``line_color`` (straight RGBA)
-    overrides the material colour of wireframe edges.
-    Raises RenderError (RND001 size limits, RND005 bad arguments) and SceneError."""
+    ``hidden_lines=False`` hides occluded wireframe edges; ``line_color`` overrides the
+    material colour of wireframe edges. Colours (``background``, ``line_color``) are 3 (RGB,
+    alpha 1) or 4 (straight RGBA) numbers in 0..1, or in 0..255 when any is above 1.
+    ``time``/``storyboard``: which moment of the animations (see ``scene_at``).
+    ``aspect``: the projection's aspect ratio (default: the viewport's exact, possibly
+    fractional, laid-out size when width or height is left to it, else the image's width /
+    height).
+    ``line_width``: wireframe edges' width in output pixels.
+    Lens and stereo (``xaml3d.render.lens``, docs/lens.md): ``aperture`` (lens radius, scene
+    units; 0 = pinhole, the ordinary image bit for bit), ``focus`` (focal distance along the
+    look direction; default: to the scene's centre), or ``fstop`` with ``focal_length`` (mm of
+    a 35 mm frame; default from the FieldOfView) instead of ``aperture``, ``lens_samples``,
+    ``stereo`` ("anaglyph", "side-by-side", "over-under"), ``eye_separation`` (default
+    focus / 30), ``progress(done, total)`` called after each sample render. ``ids=True`` also
+    fills ``Rendering.ids``.
+    Raises RenderError (RND001 size limits, RND005 bad arguments, LNS001 lens or stereo
+    without a PerspectiveCamera) and SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
     else:
         from xaml3d.xaml.loader import load
 
         scene = load(scene_or_path, resources=resources)
+    for arg, value in (("width", width), ("height", height), ("max_size", max_size)):
+        if value is not None and not (
+            isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value >= 1
+        ):
+            raise RenderError(f"{arg} must be a whole number >= 1, got {value!r}", code="RND005")
+    scene = scene_at(scene, time, storyboard)
     if mode not in MODES:
         raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
     if ssaa is None and msaa is None:
@@ -141,8 +224,12 @@ def render_arrays(
             f"choose one anti-aliasing: ssaa={ssaa} and msaa={msaa} were both given", code="RND005"
         )
     grid = max(ssaa, msaa)  # samples per side of the framebuffer's grid
+    bg = _background(background)
+    line_rgba = None if line_color is None else _rgba(line_color, "line_color")
     vp = scene.viewport(viewport)
     w, h = _resolve_size(vp, width, height, max_size)
+    if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
+        aspect = float(vp.width) / float(vp.height)  # the image is the size rounded
     if w * h * grid * grid > MAX_SUPERSAMPLED_PIXELS:
         aa = f"ssaa={ssaa}" if ssaa > 1 else f"msaa={msaa}"
         raise RenderError(
@@ -150,8 +237,18 @@ def render_arrays(
             f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or the ssaa/msaa factor",
             code="RND001",
         )
+    if (aperture is not None and aperture != 0) or stereo is not None or fstop is not None:
+        from xaml3d.render.lens import render_through_lens
+
+        return render_through_lens(
+            scene, w, h, viewport=vp.index, aperture=aperture, focus=focus, fstop=fstop,
+            focal_length=focal_length, lens_samples=lens_samples, stereo=stereo,
+            eye_separation=eye_separation, progress=progress, mode=mode, background=background,
+            ssaa=ssaa if ssaa > 1 else None, msaa=msaa if ssaa == 1 else None,
+            hidden_lines=hidden_lines, line_color=line_color, line_width=line_width,
+            antialias_lines=antialias_lines, max_size=max_size, aspect=aspect, ids=ids,
+        )  # fmt: skip
     diags: list[Diagnostic] = []
-    bg = _background(background, vp)
     sw, sh = w * grid, h * grid
     accel.begin_frame()
     fb = Framebuffer(sw, sh, bg)
@@ -159,25 +256,36 @@ def render_arrays(
     try:
         from xaml3d.scene.camera_math import camera_pipeline
 
-        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds())
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds(), aspect=aspect)
     except CameraError as exc:
         exc.with_location(file=scene.file)
         diags.append(exc.as_diagnostic())
         pipeline = None
     if pipeline is not None:
         if mode == "wireframe":
-            color = None if line_color is None else _background(line_color, vp)
-            draw_wireframe(fb, vp, pipeline, ctx, color, grid, hidden_lines, antialias_lines)
+            draw_wireframe(fb, vp, pipeline, ctx, line_rgba, grid, hidden_lines, antialias_lines,
+                           line_width)  # fmt: skip
         else:
             draw_viewport_models(fb, vp, pipeline, ctx, mode)
     for d in ctx.diagnostics:
         diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
                                                  d.line, d.column))  # fmt: skip
-    if fb.fragments_drawn == 0:
-        sev = INFO if not vp.models else WARNING
-        diags.append(Diagnostic("RND002", sev, "nothing was drawn in the image", scene.file))
+    if fb.fragments_drawn == 0 and pipeline is not None:  # a camera error says why already
+        if vp.models:
+            msg = "nothing was drawn in the image"
+            diags.append(Diagnostic("RND002", WARNING, msg, scene.file))
+        else:
+            msg = "the viewport holds no models: nothing to draw"
+            diags.append(Diagnostic("RND003", INFO, msg, scene.file))
     rgba, depth = fb.resolve(grid)
-    return Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
+    result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
+    if pipeline is not None:
+        from xaml3d.render.buffers import eye_depth, model_ids
+
+        result.distance = eye_depth(depth, pipeline)
+        if ids:
+            result.ids = model_ids(scene, vp, w, h, aspect)
+    return result
 
 
 def render(scene_or_path, width: int | None = None, height: int | None = None, **options):

@@ -239,7 +239,8 @@ class PassShader:
         if flat and self.uniform:
             # The final float32 colour per triangle, gathered 16 bytes at a time as one
             # complex128 element (the framebuffer blends float32; see frame.py).
-            c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
+            with np.errstate(under="ignore"):  # specular powers can fall below float32's range
+                c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
             self._c16 = c32.view(np.complex128).reshape(-1)
         elif not flat:
             self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)

@@ -89,7 +89,7 @@ def line_samples(p0, p1, d0, d1, width, height, thick=1, antialias=False):
     half = thick / 2.0
     if antialias:
         first = np.floor(bc - half)
-        count = thick + 1
+        count = int(np.ceil(thick)) + 1
     else:
         first = np.ceil(bc - half - 0.5)
         count = thick
@@ -134,8 +134,11 @@ def draw_wireframe(
     ssaa: int = 1,
     hidden_lines: bool = True,
     antialias: bool = False,
+    line_width: float = 1.0,
 ) -> None:
-    """Draw the edges of ``viewport``'s models into ``fb``; ``color`` straight RGBA or None."""
+    """Draw the edges of ``viewport``'s models into ``fb``; ``color`` straight RGBA or None;
+    ``line_width`` in output pixels (``line_width * ssaa`` samples thick)."""
+    thick = line_width * ssaa if antialias else max(1, round(line_width * ssaa))
     prepared = [pm for m in viewport.models if (pm := prepare_model(m, pipeline, ctx)) is not None]
     limit = None
     if not hidden_lines:
@@ -154,11 +157,11 @@ def draw_wireframe(
             continue
         edges = unique_edges(pm.model.mesh.indices[tris])
         for start in range(0, edges.shape[0], EDGE_CHUNK):  # bounds the memory of the samples
-            _draw_edges(fb, pm, edges[start : start + EDGE_CHUNK], ctx, col, ssaa, antialias,
+            _draw_edges(fb, pm, edges[start : start + EDGE_CHUNK], ctx, col, thick, antialias,
                         limit)  # fmt: skip
 
 
-def _draw_edges(fb, pm, edges, ctx, col, ssaa, antialias, limit) -> None:
+def _draw_edges(fb, pm, edges, ctx, col, thick, antialias, limit) -> None:
     h0, h1, _ = clip_segments(pm.clip[edges[:, 0]], pm.clip[edges[:, 1]], ctx.clip_planes)
     good = (h0[:, 3] > 0) & (h1[:, 3] > 0)
     h0, h1 = h0[good], h1[good]
@@ -170,7 +173,7 @@ def _draw_edges(fb, pm, edges, ctx, col, ssaa, antialias, limit) -> None:
     shift = np.array([fb.width / 2.0, fb.height / 2.0])
     pix, cov, d = line_samples(
         n0[:, :2] * scale + shift, n1[:, :2] * scale + shift, -n0[:, 2], -n1[:, 2],
-        fb.width, fb.height, ssaa, antialias,
+        fb.width, fb.height, thick, antialias,
     )  # fmt: skip
     keep = d <= 1.0
     if limit is not None:

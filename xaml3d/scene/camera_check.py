@@ -214,6 +214,20 @@ def _depth_ratio(near: float, far: float, report: _Report, narrowed: bool = Fals
         )
 
 
+def _where_outside(planes: list[str], depth, pipe) -> str:
+    """Why the box is out of view, the real cause first: behind the eye (a perspective clip
+    space also puts such a box past a side plane), closer than the near plane, past the far
+    plane, then beside the view."""
+    if depth is not None and bool(np.all(depth <= 0.0)):
+        return "behind the camera (entirely at or behind the eye, along LookDirection)"
+    if "near" in planes:
+        return f"closer to the camera than the near plane (NearPlaneDistance {pipe.near:g})"
+    if "far" in planes:
+        return "beyond the far plane (FarPlaneDistance)"
+    side = {"left": "left", "right": "right", "bottom": "bottom", "top": "top"}[planes[0]]
+    return f"outside the view volume, past its {side} edge"
+
+
 def _check_bounds(camera, width, height, bounds, report: _Report) -> None:
     corners = _box_corners(bounds)
     pipe = camera_pipeline(camera, width, height, bounds)
@@ -226,15 +240,14 @@ def _check_bounds(camera, width, height, bounds, report: _Report) -> None:
         "near": z > 0.0, "far": z < -w,
     }  # fmt: skip
     outside = [name for name, test in planes.items() if bool(np.all(test))]
+    depth = (
+        None if pipe.kind == "matrix" else -transform_homogeneous(pipe.view_matrix, corners)[:, 2]
+    )
     if outside:
-        report(
-            "CAM107",
-            f"the scene's bounding box lies entirely outside the view volume "
-            f"(beyond the {outside[0]} plane): the image will be empty",
-        )
-    if pipe.kind == "matrix":
+        report("CAM107", f"the scene's bounding box lies {_where_outside(outside, depth, pipe)}: "
+               "the image will be empty")  # fmt: skip
+    if depth is None:
         return
-    depth = -transform_homogeneous(pipe.view_matrix, corners)[:, 2]
     eye = transform_points(camera.transform, np.asarray(camera.position, dtype=np.float64))[0]
     lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
     inside = bool(np.all(eye >= lo) and np.all(eye <= hi))

@@ -371,14 +371,19 @@ def _raise_first_error(camera, width, height) -> None:
             raise CameraError(d.message, code=d.code, line=camera.line)
 
 
-def camera_pipeline(camera, width: float, height: float, bounds=None) -> CameraPipeline:
+def camera_pipeline(
+    camera, width: float, height: float, bounds=None, aspect: float | None = None
+) -> CameraPipeline:
     """All pipeline matrices for ``camera`` rendering into a ``width`` x ``height`` viewport.
     ``bounds``: the scene's world AABB (min, max), used to choose a finite far plane when
-    FarPlaneDistance is infinite (module docstring). Degenerate cameras raise CameraError with
-    the codes of ``camera_check``."""
+    FarPlaneDistance is infinite (module docstring). ``aspect``: the viewport's exact aspect
+    ratio when the image is its size rounded to whole pixels (default width / height).
+    Degenerate cameras raise CameraError with the codes of ``camera_check``."""
     _raise_first_error(camera, width, height)
     width, height = float(width), float(height)
-    aspect = width / height
+    if aspect is not None and not (math.isfinite(aspect) and aspect > 0):
+        aspect = None
+    aspect = width / height if aspect is None else float(aspect)
     t_inv = np.asarray(_transform_inverse(camera))
     wind = mwind(width, height)
     wind4 = mwind4(width, height)

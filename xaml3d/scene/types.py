@@ -325,19 +325,49 @@ Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
 
 
 @dataclass(frozen=True)
+class Easing:
+    """An easing function (BackEase, BounceEase ... SineEase; wpf3d.md section 8): its type
+    name without "Ease", its EasingMode and its own parameters (name -> value) as written."""
+
+    kind: str  # "Back" | "Bounce" | "Circle" | "Cubic" | "Elastic" | "Exponential" | ...
+    mode: str = "EaseOut"  # WPF's default EasingMode
+    params: tuple[tuple[str, float], ...] = ()
+
+
+@dataclass(frozen=True)
+class Timing:
+    """The timing properties every Timeline has (animations, Storyboard, ParallelTimeline)."""
+
+    begin_time: float | None = 0.0  # seconds in the parent's time; None = never begins
+    duration: float | str = "Automatic"  # seconds, or "Automatic" / "Forever"
+    repeat_behavior: float | str | tuple = 1.0  # count, "Forever", or ("time", seconds)
+    auto_reverse: bool = False
+    fill_behavior: str = "HoldEnd"  # or "Stop"
+    speed_ratio: float = 1.0
+    acceleration_ratio: float = 0.0
+    deceleration_ratio: float = 0.0
+
+
+@dataclass(frozen=True)
 class KeyFrame:
     kind: str  # "Linear" | "Discrete" | "Spline" | "Easing"
     key_time: str | None  # as written ("0:0:1", "50%", "Uniform", "Paced") or None
     value: object
+    # parsed KeyTime: ("time", seconds), ("percent", 0..1), "Uniform" or "Paced"; None when
+    # absent or unreadable, evaluated as WPF's default KeyTime, Uniform
+    time: tuple[str, float] | str | None = None
     key_spline: tuple[float, float, float, float] | None = None
+    easing: Easing | None = None  # EasingKeyFrame.EasingFunction
     line: int | None = None
     column: int | None = None
 
 
 @dataclass(frozen=True)
 class Animation:
-    """One animation timeline (DoubleAnimation, Point3DAnimation, ...UsingKeyFrames ...), read and
-    kept so that a later step can render the scene at a time t. The static render ignores it."""
+    """One animation timeline (DoubleAnimation, Point3DAnimation, ...UsingKeyFrames ...). Its
+    timing fields are its OWN (the enclosing groups' timing is on the TimelineGroup tree of its
+    Storyboard); ``value_type`` is "Double", "Point3D", "Vector3D", "Quaternion", "Rotation3D"
+    (values as quaternions (x, y, z, w)), "Color", "Point" or "Size"."""
 
     type: str  # element name, e.g. "DoubleAnimation"
     target_name: str | None
@@ -352,16 +382,49 @@ class Animation:
     auto_reverse: bool = False
     fill_behavior: str = "HoldEnd"
     speed_ratio: float = 1.0
+    acceleration_ratio: float = 0.0
+    deceleration_ratio: float = 0.0
+    is_additive: bool = False
+    is_cumulative: bool = False
+    use_shortest_path: bool = True  # QuaternionAnimation.UseShortestPath
+    easing: Easing | None = None
+    # *AnimationUsingPath: the flattened PathGeometry (figures of (N, 2) points) and which of
+    # its values a DoubleAnimationUsingPath takes ("X", "Y" or "Angle")
+    path: tuple | None = field(default=None, compare=False)
+    path_source: str = "X"
+    value_type: str = "Double"
+    evaluated: bool = True  # False: a type xaml3d reads but does not evaluate (path animations)
+    line: int | None = None
+    column: int | None = None
+
+    @property
+    def timing(self) -> Timing:
+        return Timing(
+            self.begin_time, self.duration, self.repeat_behavior, self.auto_reverse,
+            self.fill_behavior, self.speed_ratio, self.acceleration_ratio,
+            self.deceleration_ratio,
+        )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class TimelineGroup:
+    """A Storyboard or ParallelTimeline: its own timing and its children, in document order."""
+
+    timing: Timing = field(default_factory=Timing)
+    children: tuple = ()  # of TimelineGroup | Animation
+    type: str = "Storyboard"
     line: int | None = None
     column: int | None = None
 
 
 @dataclass(frozen=True)
 class Storyboard:
-    animations: tuple[Animation, ...] = ()
+    animations: tuple[Animation, ...] = ()  # every animation of the tree, in document order
     trigger: str | None = None  # routed event that starts it ("Viewport3D.Loaded"...), or None
     starts_at_load: bool = False
     name: str | None = None
+    root: TimelineGroup | None = None  # the clock tree (None: read without its timing)
+    handoff: str = "SnapshotAndReplace"  # BeginStoryboard.HandoffBehavior, or "Compose"
     line: int | None = None
     column: int | None = None
 
@@ -377,7 +440,9 @@ class Viewport:
     name: str | None
     width: float
     height: float
-    size_source: str  # "viewport" | "ancestor:<Type>" | "default"
+    # "layout: <chain of panels and slots>" (WPF's layout), "viewport" (a root Viewport3D's
+    # own Width/Height) or "default" (640 x 480: nothing gives a size)
+    size_source: str
     camera: Camera | None  # None: Camera="{x:Null}", WPF draws nothing
     models: tuple[Model, ...] = ()
     lights: tuple[Light, ...] = ()
@@ -385,6 +450,7 @@ class Viewport:
     clip_to_bounds: bool = True
     line: int | None = None
     column: int | None = None
+    layout_rect: tuple[float, float, float, float] | None = None  # x, y, w, h in the root
 
     @property
     def triangle_count(self) -> int:
@@ -415,6 +481,15 @@ class Scene:
     storyboards: tuple[Storyboard, ...] = ()
     diagnostics: tuple[Diagnostic, ...] = ()
     resources_used: tuple[str, ...] = ()  # files whose resources were read (App.xaml, merged...)
+    images_used: tuple[str, ...] = ()  # image files the ImageBrushes read
+    layout: object = field(
+        default=None, compare=False, repr=False
+    )  # xaml3d.layout.LayoutResult of the panels (None: no layout root)
+    # What evaluates the storyboards: an object with ``at(t, storyboard=None) -> Scene`` (the
+    # scene at t seconds, Loaded storyboards begun at 0), ``running(storyboard=None)`` (the
+    # animations that run) and ``cycle(storyboard=None)`` (seconds of one full cycle, or
+    # math.inf). None: nothing animates. Made by the reader (it keeps the parsed markup).
+    timeline: object = field(default=None, compare=False, repr=False)
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""

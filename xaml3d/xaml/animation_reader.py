@@ -1,19 +1,27 @@
-"""Reading storyboards and animations (wpf3d.md section 8) into Storyboard / Animation / KeyFrame.
+"""Reading storyboards and animations (wpf3d.md section 8) into Storyboard / TimelineGroup /
+Animation / KeyFrame.
 
-Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline or
-``{StaticResource}`` storyboard), Storyboard and ParallelTimeline (their Storyboard.TargetName /
-TargetProperty and BeginTime are inherited by their children, and a RepeatBehavior given on the
-group is passed to children that have none), the From/To/By animations of Double, Point3D,
-Vector3D, Quaternion, Rotation3D and Color, their *UsingKeyFrames forms with Linear, Discrete,
-Spline and Easing key frames. Rotation3D values are read as quaternions (x, y, z, w). Storyboards
-kept in resources that no trigger begins are listed with ``trigger=None`` (code-behind starts
-them, if anything). The static scene keeps the base values: nothing here changes the models.
+Covers EventTrigger (its RoutedEvent; ``*.Loaded`` starts at load), BeginStoryboard (inline
+or ``{StaticResource}`` storyboard; its HandoffBehavior), Storyboard and ParallelTimeline as
+a tree of clocks (each keeps its own timing: BeginTime, Duration, RepeatBehavior,
+AutoReverse, FillBehavior, SpeedRatio, Acceleration/DecelerationRatio),
+Storyboard.TargetName / TargetProperty inherited down the tree, the From/To/By animations of
+Double, Point3D, Vector3D, Quaternion, Rotation3D, Color, Point and Size with IsAdditive,
+IsCumulative, UseShortestPath and an EasingFunction (BackEase ... SineEase with EasingMode),
+their *UsingKeyFrames forms with Linear, Discrete, Spline and Easing key frames,
+DoubleAnimationUsingPath and PointAnimationUsingPath (their PathGeometry's Figures,
+path_data.py). Rotation3D values are read as quaternions (x, y, z, w). Storyboards kept in
+resources that no trigger begins are listed with ``trigger=None`` (code behind starts them,
+if anything). The static scene keeps the base values: nothing here changes the models
+(``animation_scene.py`` evaluates the storyboards).
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from xaml3d.errors import ValueSyntaxError
-from xaml3d.scene.types import Animation, KeyFrame, Storyboard
+from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import element_name, qname, x_attr
 from xaml3d.xaml.models_reader import rotation, rotation_as_quaternion
@@ -25,10 +33,13 @@ _CONVERTERS = {
     "Quaternion": V.parse_quaternion,
     "Color": V.parse_color,
     "Point": V.parse_point,
+    "Size": V.parse_point,
 }
-_VALUE_TYPES = ("Rotation3D", "Quaternion", "Point3D", "Vector3D", "Double", "Color", "Point")
+_VALUE_TYPES = ("Rotation3D", "Quaternion", "Point3D", "Vector3D", "Double", "Color", "Point",
+                "Size")  # fmt: skip
 _KF_KINDS = ("Linear", "Discrete", "Spline", "Easing")
 _GROUPS = ("Storyboard", "ParallelTimeline")
+_EASING_MODES = ("EaseIn", "EaseOut", "EaseInOut")
 
 
 def _value_type(type_name: str) -> str | None:
@@ -44,55 +55,108 @@ def _read_value(r, p, prop: str, vtype: str):
     return p.value(prop, _CONVERTERS[vtype], None)
 
 
-def _timing(p, inherited: dict) -> dict:
-    begin = inherited.get("begin", 0.0)
-    own_begin = 0.0
+def _ratio(p, prop: str) -> float:
+    v = p.value(prop, V.parse_double, 0.0)
+    return v if 0.0 <= v <= 1.0 else 0.0  # WPF refuses others (reported by validate)
+
+
+_DAY_PROPS = ("BeginTime", "Duration", "RepeatBehavior")
+
+
+def _days_warning(r, p, props=_DAY_PROPS) -> None:
+    """A TimeSpan written as a bare number counts DAYS: '5' is five days, rarely meant."""
+    for prop in props:
+        raw = p.attrs.get(prop, "").strip()
+        if raw and ":" not in raw and raw.lstrip("-").isdigit():
+            msg = f"{p.type}.{prop}={raw!r} is {raw} day(s); write 0:0:{raw} for seconds"
+            r.ctx.diag("ANIM006", msg, p.el, attr=p.attr_keys.get(prop))
+
+
+def _timing(r, p) -> Timing:
+    _days_warning(r, p)
+    begin: float | None = 0.0
     if p.attrs.get("BeginTime", "").replace(" ", "") == "{x:Null}":
-        own_begin = None  # never begins
+        begin = None  # never begins
     elif p.has("BeginTime"):
-        own_begin = p.value("BeginTime", V.parse_timespan, 0.0)
-    begin = None if (begin is None or own_begin is None) else begin + own_begin
-    repeat = p.value("RepeatBehavior", V.parse_repeat_behavior, None)
-    return {
-        "begin": begin,
-        "repeat": repeat if repeat is not None else inherited.get("repeat"),
-        "name": p.attached.get("Storyboard.TargetName", inherited.get("name")),
-        "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
-    }
+        begin = p.value("BeginTime", V.parse_timespan, 0.0)
+    speed = p.value("SpeedRatio", V.parse_double, 1.0)
+    accel, decel = _ratio(p, "AccelerationRatio"), _ratio(p, "DecelerationRatio")
+    if accel + decel > 1.0:
+        accel = decel = 0.0
+    return Timing(
+        begin_time=begin,
+        duration=p.value("Duration", V.parse_duration, "Automatic"),
+        repeat_behavior=p.value("RepeatBehavior", V.parse_repeat_behavior, 1.0),
+        auto_reverse=p.value("AutoReverse", V.parse_bool, False),
+        fill_behavior=p.value(
+            "FillBehavior", lambda s: V.parse_enum(s, ("HoldEnd", "Stop")), "HoldEnd"
+        ),  # fmt: skip
+        speed_ratio=speed if speed > 0.0 else 1.0,
+        acceleration_ratio=accel,
+        deceleration_ratio=decel,
+    )
+
+
+def read_easing(r, p, prop: str = "EasingFunction") -> Easing | None:
+    """An EasingFunction property: one of WPF's *Ease elements, or None."""
+
+    def build(el):
+        ep = r.props(el)
+        if ep.etype is None or ep.etype.kind != "easing":
+            r.ctx.diag("ANI003", f"{ep.type} is not one of WPF's easing functions: linear", el)
+            return None
+        params = tuple(
+            (k, ep.value(k, V.parse_double, 0.0))
+            for k in sorted(ep.etype.properties)
+            if k != "EasingMode" and ep.has(k)
+        )
+        mode = ep.value("EasingMode", lambda s: V.parse_enum(s, _EASING_MODES), "EaseOut")
+        return Easing(kind=ep.type[: -len("Ease")], mode=mode, params=params)
+
+    return p.obj(prop, build, None) if p.has(prop) else None
 
 
 def read_storyboard(r, el, trigger: str | None = None, name: str | None = None) -> Storyboard:
     anims: list[Animation] = []
-    _flatten(r, el, {"begin": 0.0}, anims, top=True)
+    root = _node(r, el, {}, anims, top=True)
     starts = trigger is not None and trigger.split(".")[-1] == "Loaded"
     return Storyboard(
         animations=tuple(anims),
         trigger=trigger,
         starts_at_load=starts,
         name=name or element_name(el) or x_attr(el, "Key"),
+        root=root if isinstance(root, TimelineGroup) else None,
         **r.ctx.position(el),
     )
 
 
-def _flatten(r, el, inherited: dict, out: list, top: bool = False) -> None:
+def _node(r, el, inherited: dict, out: list, top: bool = False):
+    """One timeline element -> TimelineGroup | Animation | None (not a timeline)."""
     p = r.props(el)
     t = p.type
+    target = {
+        "name": p.attached.get("Storyboard.TargetName", inherited.get("name")),
+        "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
+    }
     if t in _GROUPS:
         if t == "Storyboard" and not top:
             r.ctx.diag("ANI004", "Storyboard nested in a timeline: read as a group", el)
-        timing = _timing(p, inherited)
-        for k in p.items("Children"):
-            r.build_node(k, lambda e, tm=timing: _flatten(r, e, tm, out), None)
-        return
+        kids = [
+            r.build_node(k, lambda e, tg=target: _node(r, e, tg, out), None)
+            for k in p.items("Children")
+        ]
+        return TimelineGroup(
+            timing=_timing(r, p),
+            children=tuple(k for k in kids if k is not None),
+            type=t,
+            **r.ctx.position(el),
+        )
     vtype = _value_type(t)
     if vtype is None or p.etype is None or p.etype.kind != "animation":
         r.ctx.diag("ANI004", f"{t} is not an animation timeline: ignored", el)
-        return
+        return None
     if not p.etype.supported:
         r.ctx.diag("ANI001", f"{t} is not evaluated by xaml3d (base value kept)", el)
-    if p.has("EasingFunction"):
-        r.ctx.diag("ANI003", f"{t}.EasingFunction ignored: linear timing used", el)
-    timing = _timing(p, inherited)
     key_frames: tuple[KeyFrame, ...] = ()
     if t.endswith("UsingKeyFrames"):
         key_frames = tuple(
@@ -103,27 +167,56 @@ def _flatten(r, el, inherited: dict, out: list, top: bool = False) -> None:
             )
             if kf is not None
         )
-    repeat = timing["repeat"]
-    out.append(
-        Animation(
-            type=t,
-            target_name=timing["name"],
-            target_property=timing["prop"],
-            from_value=_read_value(r, p, "From", vtype) if p.has("From") else None,
-            to_value=_read_value(r, p, "To", vtype) if p.has("To") else None,
-            by_value=_read_value(r, p, "By", vtype) if p.has("By") else None,
-            key_frames=key_frames,
-            begin_time=timing["begin"],
-            duration=p.value("Duration", V.parse_duration, "Automatic"),
-            repeat_behavior=1.0 if repeat is None else repeat,
-            auto_reverse=p.value("AutoReverse", V.parse_bool, False),
-            fill_behavior=p.value(
-                "FillBehavior", lambda s: V.parse_enum(s, ("HoldEnd", "Stop")), "HoldEnd"
-            ),  # fmt: skip
-            speed_ratio=p.value("SpeedRatio", V.parse_double, 1.0),
-            **r.ctx.position(el),
-        )
+    tm = _timing(r, p)
+    path, source = (_path(r, p) if t.endswith("UsingPath") and p.etype.supported
+                    else (None, "X"))  # fmt: skip
+    anim = Animation(
+        type=t,
+        target_name=target["name"],
+        target_property=target["prop"],
+        from_value=_read_value(r, p, "From", vtype) if p.has("From") else None,
+        to_value=_read_value(r, p, "To", vtype) if p.has("To") else None,
+        by_value=_read_value(r, p, "By", vtype) if p.has("By") else None,
+        key_frames=key_frames,
+        begin_time=tm.begin_time,
+        duration=tm.duration,
+        repeat_behavior=tm.repeat_behavior,
+        auto_reverse=tm.auto_reverse,
+        fill_behavior=tm.fill_behavior,
+        speed_ratio=tm.speed_ratio,
+        acceleration_ratio=tm.acceleration_ratio,
+        deceleration_ratio=tm.deceleration_ratio,
+        is_additive=p.value("IsAdditive", V.parse_bool, False),
+        is_cumulative=p.value("IsCumulative", V.parse_bool, False),
+        use_shortest_path=p.value("UseShortestPath", V.parse_bool, True),
+        easing=read_easing(r, p),
+        path=path,
+        path_source=source,
+        value_type=vtype,
+        evaluated=p.etype.supported and (path is not None or not t.endswith("UsingPath")),
+        **r.ctx.position(el),
     )
+    out.append(anim)
+    return anim
+
+
+def _path(r, p) -> tuple[tuple | None, str]:
+    """PathGeometry (its Figures string) and Source of an *AnimationUsingPath."""
+    from xaml3d.xaml.path_data import parse_path_figures
+
+    def build(el):
+        gp = r.props(el)
+        if gp.type != "PathGeometry" or not gp.has("Figures"):
+            msg = f"{gp.type}: only a PathGeometry with a Figures string is followed"
+            r.ctx.diag("ANI001", msg, el)
+            return None
+        return gp.value("Figures", parse_path_figures, None)
+
+    source = p.value("Source", lambda s: V.parse_enum(s, ("X", "Y", "Angle")), "X")
+    figures = p.obj("PathGeometry", build, None)
+    if figures is None:
+        r.ctx.diag("ANI001", f"{p.type} without a usable PathGeometry: not evaluated", p.el)
+    return figures, source
 
 
 def _key_frame(r, el, vtype: str) -> KeyFrame | None:
@@ -133,20 +226,22 @@ def _key_frame(r, el, vtype: str) -> KeyFrame | None:
     if kind is None or not t.endswith("KeyFrame") or vtype not in t:
         r.ctx.diag("ANI004", f"{t} is not a {vtype} key frame: ignored", el)
         return None
+    _days_warning(r, p, ("KeyTime",))
     key_time = p.string("KeyTime")
+    parsed = None
     if key_time is not None:
         try:
-            V.parse_key_time(key_time)
+            parsed = V.parse_key_time(key_time)
         except ValueSyntaxError as exc:
-            r.ctx.error(exc, el)
+            r.ctx.error(exc, el, attr=p.attr_keys.get("KeyTime"))
             key_time = None
-    if kind == "Easing" and p.has("EasingFunction"):
-        r.ctx.diag("ANI003", f"{t}.EasingFunction ignored: linear timing used", el)
     return KeyFrame(
         kind=kind,
         key_time=key_time,
         value=_read_value(r, p, "Value", vtype),
+        time=parsed,
         key_spline=p.value("KeySpline", V.parse_key_spline, None) if kind == "Spline" else None,
+        easing=read_easing(r, p) if kind == "Easing" else None,
         **r.ctx.position(el),
     )
 
@@ -166,13 +261,18 @@ def read_trigger(r, trigger_el, out: list, begun: set) -> None:
                 r.ctx.diag("ANI004", f"{ap.type} is not a trigger action: ignored", action)
             continue
         name = element_name(action)
+        handoff = ap.value(
+            "HandoffBehavior", lambda s: V.parse_enum(s, ("SnapshotAndReplace", "Compose")),
+            "SnapshotAndReplace",
+        )  # fmt: skip
 
-        def build(sb, ev=event, nm=name):
+        def build(sb, ev=event, nm=name, hb=handoff):
             begun.add(id(r.ctx.keep(sb)))
             if qname(sb.tag)[1] != "Storyboard":
                 r.ctx.diag("ANI004", f"{qname(sb.tag)[1]} is not a Storyboard: ignored", sb)
                 return None
-            return read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
+            story = read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
+            return replace(story, handoff=hb)
 
         sb = ap.obj("Storyboard", build, None)
         if sb is not None:

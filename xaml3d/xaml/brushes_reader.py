@@ -165,7 +165,19 @@ def _image_brush(r, p) -> ImageBrush:
 
 def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None, np.ndarray | None]:
     """Resolve and decode an ImageSource; diagnostics (located at ``el``'s attribute ``attr``
-    when the source is an attribute) say why when there is no image."""
+    when the source is an attribute) say why when there is no image. Animation frames reuse
+    the first frame's decoded image."""
+    key = ("image", id(el), source)
+    hit = r.cache.get(key) if r.cache is not None else None
+    if hit is not None and hit[0] is el:
+        return hit[1]
+    found = _load_image(r, source, el, attr)
+    if r.cache is not None:
+        r.cache[key] = (el, found)  # the element kept: its id stays its own
+    return found
+
+
+def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.ndarray | None]:
     rel = reduce_uri(source)
     if rel is None:
         r.ctx.diag(
@@ -194,6 +206,7 @@ def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None,
             r.ctx.diag("BRU002", msg, el, attr=attr)
             return str(path), None
         path = alt
+    r.ctx.images_used.append(str(path))
     try:
         from PIL import Image
 

@@ -2,10 +2,10 @@
 
 Covers finding every Viewport3D (in document order, whatever the root: Window, Page,
 UserControl, a custom control, a bare Viewport3D; not those inside templates and styles), the
-viewport's size (own Width/Height, else the nearest ancestor with both, else 640 x 480:
-wpf3d.md section 2), camera (WPF's default PerspectiveCamera when none is given), background (the
-nearest ancestor's Background brush) and ClipToBounds; the model tree flattened in draw order
-(ModelVisual3D: Content before Children) with each model's and light's world matrix
+viewport's size and rectangle from WPF's layout of the panels around it (layout_step.py,
+docs/layout.md), camera (WPF's default PerspectiveCamera when none is given), background (the
+nearest laid-out ancestor's Background brush) and ClipToBounds; the model tree flattened in
+draw order (ModelVisual3D: Content before Children) with each model's and light's world matrix
 (p_world = p_local * M_model * M_group... * M_visual... in WPF row terms); ModelUIElement3D,
 ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards.
 """
@@ -27,21 +27,22 @@ from xaml3d.scene.types import (
 )
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
-from xaml3d.xaml.brushes_reader import brush_property, material
+from xaml3d.xaml.brushes_reader import material
 from xaml3d.xaml.context import (
     ReadContext,
     element_name,
     is_presentation,
+    namespace_typo,
     qname,
     split_markup,
     x_attr,
 )
+from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
 from xaml3d.xaml.parser import XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
 
-DEFAULT_SIZE = (640.0, 480.0)
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "HierarchicalDataTemplate"}  # fmt: skip
 _REFERENCE = {"StaticResource", "DynamicResource"}
@@ -50,10 +51,19 @@ _REFERENCE = {"StaticResource", "DynamicResource"}
 class Reader:
     """Builds scene objects from elements: property access, references, dispatch."""
 
-    def __init__(self, ctx: ReadContext, resources: Resources) -> None:
+    def __init__(self, ctx: ReadContext, resources: Resources, frame=None) -> None:
         self.ctx = ctx
         self.resources = resources
         self._props: dict[int, Props] = {}
+        # an animation frame being built (xaml3d.xaml.animation_scene.Frame): animated values
+        # by (element id, property), and what earlier frames built that animation cannot change
+        self.overrides: dict = frame.overrides if frame is not None else {}
+        self.cache: dict | None = frame.cache if frame is not None else None
+
+    def animated(self, el, prop: str, value):
+        """The value of ``el``'s property ``prop`` in the frame being built."""
+        f = self.overrides.get((id(el), prop))
+        return value if f is None else f(value)
 
     def props(self, el) -> Props:
         """The element's properties (read once: diagnostics are not repeated on reuse)."""
@@ -68,7 +78,12 @@ class Reader:
         skipping (with one diagnostic) elements of unknown namespaces."""
         ns, local = qname(el.tag)
         if not is_presentation(ns):
-            self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
+            wpf = namespace_typo(ns)
+            if wpf is not None:
+                msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
+                self.ctx.diag("XAML018", msg, el)
+            else:
+                self.ctx.diag("XAML001", f"element {local!r} from namespace {ns!r} skipped", el)
             return default
         if local in _REFERENCE:
             key = el.get("ResourceKey")
@@ -178,58 +193,11 @@ def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
 # --------------------------------------------------------------------------- viewports
 
 
-def _length(r: Reader, p: Props, prop: str) -> float | None:
-    """A Width/Height that is a usable number (not Auto, NaN, a Binding...)."""
-    raw = p.attrs.get(prop)
-    if raw is None or raw.strip().lower() == "auto":
-        return None
-    from xaml3d.xaml.values import parse_double
-
-    v = p.value(prop, parse_double, None)
-    if v is None or not np.isfinite(v):
-        return None
-    if v < 0:
-        # WPF refuses a negative size outright; xaml3d treats it as empty (nothing drawn).
-        r.ctx.diag(
-            "SCN012", f"{p.type}.{prop} = {v:g} is negative (invalid in WPF): taken as 0", p.el,
-            attr=p.attr_keys.get(prop),
-        )  # fmt: skip
-        return 0.0
-    # A zero size is kept: WPF draws nothing there, and the camera check reports it (CAM010).
-    return float(v)
-
-
-def _framework_ancestors(el):
-    node = el.getparent()
-    while node is not None:
-        ns, local = qname(node.tag)
-        if is_presentation(ns) and "." not in local:
-            yield node
-        elif not is_presentation(ns):
-            yield node
-        node = node.getparent()
-
-
-def build_viewport(r: Reader, el, index: int) -> Viewport:
+def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     p = r.props(el)
-    w, h = _length(r, p, "Width"), _length(r, p, "Height")
-    source = "viewport"
-    if w is None or h is None:
-        w = h = None
-        for anc in _framework_ancestors(el):
-            if not is_presentation(qname(anc.tag)[0]):
-                continue
-            ap = r.props(anc)
-            aw, ah = _length(r, ap, "Width"), _length(r, ap, "Height")
-            if aw is not None and ah is not None:
-                w, h, source = aw, ah, f"ancestor:{ap.type}"
-                break
-        if w is None:
-            w, h = DEFAULT_SIZE
-            source = "default"
-    how = {"viewport": "its own Width/Height", "default": "the default size"}.get(
-        source, f"the nearest sized ancestor ({source.split(':', 1)[-1]})"
-    )
+    lay = lay or unreached(r, el)
+    w, h, source = lay.width, lay.height, lay.source
+    how = {"viewport": "its own Width/Height", "default": "the default size"}.get(source, source)
     r.ctx.diag("SCN003", f"Viewport3D #{index} size {w:g} x {h:g} from {how}", el)
 
     if p.has("Camera"):
@@ -244,14 +212,7 @@ def build_viewport(r: Reader, el, index: int) -> Viewport:
         cam = PerspectiveCamera(is_default=True)
         r.ctx.diag("SCN004", "no Camera: WPF's default PerspectiveCamera is used", el)
 
-    background = None
-    for anc in _framework_ancestors(el):
-        if not is_presentation(qname(anc.tag)[0]):
-            continue
-        ap = r.props(anc)
-        if ap.has("Background"):
-            background = brush_property(r, ap, "Background")
-            break
+    background = lay.background
 
     from xaml3d.xaml.values import parse_bool
 
@@ -264,6 +225,7 @@ def build_viewport(r: Reader, el, index: int) -> Viewport:
         width=w,
         height=h,
         size_source=source,
+        layout_rect=lay.rect,
         camera=cam,
         models=tuple(acc.models),
         lights=tuple(acc.lights),
@@ -288,8 +250,13 @@ class _Walk:
         r = self.r
         ns, local = qname(el.tag)
         if not is_presentation(ns):
-            msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
-            r.ctx.diag("XAML001", msg, el, once=(ns, local))
+            wpf = namespace_typo(ns)
+            if wpf is not None:
+                msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
+                r.ctx.diag("XAML018", msg, el, once=ns)
+            else:
+                msg = f"element {local!r} from namespace {ns!r} skipped (children searched)"
+                r.ctx.diag("XAML001", msg, el, once=(ns, local))
             if x_attr(el, "Class") is not None:
                 msg = f"x:Class={x_attr(el, 'Class')!r}: code-behind is not run"
                 r.ctx.diag("XAML007", msg, el, attr=f"{{{XAML_NS}}}Class")
@@ -307,8 +274,12 @@ class _Walk:
             return
         et = voc.lookup(local)
         if et is None:
+            # The framework (2D) vocabulary is not closed: an unknown name there is a WPF type
+            # xaml3d does not list as often as a typo, unless it misspells a 3D type.
+            near = voc.suggest(local, voc.closed_types())
             hint = voc.did_you_mean(local, voc.known_types())
-            r.ctx.diag("XAML003", f"unknown element {local!r}{hint}", el)
+            code = "XAML003" if near is not None else "XAML017"
+            r.ctx.diag(code, f"unknown element {local!r}{hint}", el)
         elif et.kind not in ("framework", "resource"):
             return  # 3D/brush objects outside a Viewport3D (resources, effects...)
         p = r.props(el)
@@ -338,20 +309,31 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
-def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> Scene:
-    r = Reader(ctx, resources)
+def build_scene(
+    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None, frame=None
+) -> Scene:
+    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size;
+    with ``frame`` (animation_scene.Frame) its viewports at one moment of the storyboards,
+    which are not read again."""
+    r = Reader(ctx, resources, frame)
     walk = _Walk(r)
     walk.visit(doc.root)
-    viewports = tuple(build_viewport(r, el, i) for i, el in enumerate(walk.viewports))
+    lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
+    viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
-        ctx.diag("SCN001", "the document holds no Viewport3D", doc.root)
+        root = qname(doc.root.tag)[1]
+        if root in ("ResourceDictionary", "Application"):  # a valid WPF file, not a scene
+            msg = f"a {root} holds no Viewport3D: nothing to render (use it with -r)"
+            ctx.diag("SCN013", msg, doc.root)
+        else:
+            ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
 
     storyboards: list = []
     begun: set[int] = set()
-    for t in walk.triggers:
+    for t in walk.triggers if frame is None else ():
         read_trigger(r, t, storyboards, begun)
     d = resources.dictionary_of(doc.root)
-    for key, entry in d.entries.items() if d else ():
+    for key, entry in d.entries.items() if d and frame is None else ():
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
 
@@ -362,4 +344,6 @@ def build_scene(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> 
         storyboards=tuple(storyboards),
         diagnostics=tuple(diags),
         resources_used=tuple(dict.fromkeys(ctx.files_used)),
+        images_used=tuple(dict.fromkeys(ctx.images_used)),
+        layout=laid_out,
     )

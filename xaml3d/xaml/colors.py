@@ -8,6 +8,7 @@ Gray (#808080) is darker than its DarkGray (#A9A9A9), and Transparent is white w
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 
@@ -235,6 +236,8 @@ def color_from_string(s: str) -> tuple[float, float, float, float]:
         return (r, g, b, a)
     argb = NAMED_COLORS.get(t.lower())
     if argb is None:
-        raise _fail(s, "is not a colour ('#AARRGGBB', 'sc#a,r,g,b' or one of WPF's names)")
+        near = difflib.get_close_matches(t.lower(), list(NAMED_COLORS), n=1, cutoff=0.75)
+        hint = f" (did you mean {CANONICAL_NAMES[near[0]]}?)" if near else ""
+        raise _fail(s, f"is not a colour ('#AARRGGBB', 'sc#a,r,g,b' or one of WPF's names){hint}")
     a, r, g, b = argb
     return (r / 255.0, g / 255.0, b / 255.0, a / 255.0)

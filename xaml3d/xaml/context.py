@@ -17,7 +17,15 @@ from lxml import etree
 
 from xaml3d.errors import Diagnostic, XamlError
 from xaml3d.xaml.parser import MC_NS, PRESENTATION_NAMESPACES, XAML_NS, ParsedDocument
-from xaml3d.xaml.vocabulary import READER_CODES
+
+
+def severity_of(code: str) -> str:
+    """The table severity of a code the reader reports (its own, the value converters', the
+    animation and layout stages'): a severity is never chosen where a code is emitted. KeyError
+    for an uncatalogued code."""
+    from xaml3d.codes import severity  # codes.py merges every stage's table, this one's too
+
+    return severity(code)
 
 
 def qname(el_or_attr: str) -> tuple[str | None, str]:
@@ -32,6 +40,29 @@ def is_presentation(ns: str | None) -> bool:
     return ns in PRESENTATION_NAMESPACES
 
 
+def _one_edit_apart(a: str, b: str) -> bool:
+    """Whether ``a`` and ``b`` differ by exactly one insertion, deletion or substitution."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) > len(b):
+        a, b = b, a
+    i = 0
+    while i < len(a) and a[i] == b[i]:
+        i += 1
+    return a[i + (len(a) == len(b)) :] == b[i + 1 :]
+
+
+def namespace_typo(ns: str | None) -> str | None:
+    """The WPF namespace URI that ``ns`` misspells (one edit away, or differing only in case),
+    else None: WPF resolves no type in such a namespace and refuses the document."""
+    if ns is None or ns in PRESENTATION_NAMESPACES or ns == XAML_NS:
+        return None
+    for wpf in (*sorted(PRESENTATION_NAMESPACES), XAML_NS):
+        if ns.lower() == wpf.lower() or _one_edit_apart(ns, wpf):
+            return wpf
+    return None
+
+
 class ReadContext:
     """Diagnostics and documents of one load."""
 
@@ -41,6 +72,7 @@ class ReadContext:
         self.limits = limits
         self.allowed_roots: list[Path] = []
         self.files_used: list[str] = []
+        self.images_used: list[str] = []  # image files read (never to be written over)
         self._docs: dict[int, tuple[etree._Element, ParsedDocument]] = {}
         self._once: set = set()
         self._building: list[int] = []
@@ -110,7 +142,7 @@ class ReadContext:
             if (code, once) in self._once:
                 return
             self._once.add((code, once))
-        severity = READER_CODES.get(code, ("warning", ""))[0]
+        severity = severity_of(code)
         if el is not None:
             if line is None:
                 line, column = self.locate(el, attr)
@@ -141,19 +173,15 @@ class ReadContext:
             )
         self.diagnostics.append(diagnostic)
 
-    def error(
-        self,
-        exc: XamlError,
-        el: etree._Element | None,
-        severity: str = "warning",
-        attr: str | None = None,
-    ) -> None:
-        """Turn a recoverable XamlError (bad value syntax...) into a located diagnostic."""
+    def error(self, exc: XamlError, el: etree._Element | None, attr: str | None = None) -> None:
+        """Turn a recoverable XamlError (bad value syntax...) into a located diagnostic, with
+        its code's table severity (errors stay errors: the property keeps its default only so
+        that the rest of the scene can still be checked, or rendered with --lenient)."""
         if el is not None:
             line, column = self.locate(el, attr) if exc.line is None else (None, None)
             exc.with_location(self.file_of(el), line, column)
         self.diagnostics.append(
-            Diagnostic(exc.code, severity, exc.message, exc.file, exc.line, exc.column)
+            Diagnostic(exc.code, severity_of(exc.code), exc.message, exc.file, exc.line, exc.column)
         )
 
     # ----------------------------------------------------------------- resource build guard

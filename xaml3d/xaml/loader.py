@@ -28,6 +28,7 @@ def load(
     allow_outside: bool = False,
     discover_app: bool = True,
     limits: Limits | None = None,
+    window_size: tuple[float, float] | None = None,
 ) -> Scene:
     """Read a XAML scene.
 
@@ -35,7 +36,8 @@ def load(
     it "<string>"). ``resources`` name application-resource files (App.xaml-style) searched
     after the document's own resources. ``discover_app`` looks for an App.xaml beside a scene
     file and in its parent folders. ``allow_outside`` lets merged dictionaries and images point
-    outside the scene's folder tree.
+    outside the scene's folder tree. ``window_size`` lays the root out at that client size
+    (width, height) instead of the size its markup gives.
     """
     ctx = ReadContext(allow_outside=allow_outside, limits=limits)
     doc = parse_document(source, text=text, limits=limits)
@@ -50,5 +52,20 @@ def load(
     if discover_app and doc.path is not None and not resources:
         found = res.discover_app(doc.path)
         if found is not None:
-            res.add_app_file(found, discovered=True)
-    return build_scene(ctx, res, doc)
+            res.add_app_file(found, discovered=doc.path)
+    scene = build_scene(ctx, res, doc, window_size)
+    if not scene.storyboards:
+        return scene
+    from dataclasses import replace
+    from functools import partial
+
+    from xaml3d.xaml.animation_scene import SceneTimeline
+
+    timeline = SceneTimeline(ctx, res, doc, scene, partial(build_scene, window_size=window_size))
+    diags = sorted(
+        (*scene.diagnostics, *timeline.diagnostics),
+        key=lambda g: (g.file or "", g.line or 0, g.column or 0),
+    )
+    scene = replace(scene, diagnostics=tuple(diags), timeline=timeline)
+    timeline.base = scene
+    return scene

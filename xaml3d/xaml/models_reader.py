@@ -66,8 +66,9 @@ def transform3d(r, el) -> np.ndarray | None:
             ]
             return T.compose(*[m for m in parts if m is not None])
     except GeometryError as exc:
-        r.ctx.error(exc, el)
-        r.ctx.diag("SCN010", f"{t} cannot be built: identity used", el)
+        # WPF loads a degenerate transform (it draws nothing or garbage): a warning, not the
+        # GEO error the same problem is when a user asks for the transformation directly.
+        r.ctx.diag("SCN010", f"{t} cannot be built ({exc.message}): identity used", el)
         return T.identity()
     r.ctx.diag("XAML013", f"{t} is not a Transform3D: ignored", el)
     return None
@@ -152,6 +153,9 @@ def mesh(r, el):
     """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types)."""
     from xaml3d.scene.mesh import build_mesh
 
+    hit = r.cache.get(("mesh", id(el))) if r.cache is not None else None
+    if hit is not None and hit[0] is el:
+        return hit[1]  # an animation frame: the mesh is not animated
     p = r.props(el)
     if p.type != "MeshGeometry3D":
         r.ctx.diag("SCN006", f"{p.type} is not a MeshGeometry3D: the model is skipped", el)
@@ -172,6 +176,8 @@ def mesh(r, el):
         if key is None and dg.code == "MSH002":  # no TriangleIndices: about the Positions count
             key = p.attr_keys.get("Positions")
         r.ctx.add(dg, el, key)
+    if r.cache is not None:
+        r.cache["mesh", id(el)] = (el, result)  # the element kept: its id stays its own
     return result
 
 

@@ -24,10 +24,12 @@ from xaml3d.xaml.context import (
     ignorable_namespaces,
     is_presentation,
     markup_key,
+    namespace_typo,
     qname,
     split_markup,
 )
 from xaml3d.xaml.parser import XAML_NS
+from xaml3d.xaml.struct_values import is_struct_element, struct_text
 
 NULL = object()  # an explicit {x:Null}
 _COLLECTION_KINDS = ("collection",)
@@ -96,8 +98,15 @@ class Props:
                     ignorable = ignorable_namespaces(self.el)
                 if ns in ignorable or ns == "http://www.w3.org/XML/1998/namespace":
                     continue
-                msg = f"attribute {local!r} from namespace {ns!r} ignored"
-                ctx.diag("XAML002", msg, self.el, attr=name)
+                wpf = namespace_typo(ns)
+                if wpf is not None:
+                    msg = (
+                        f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} ignored"
+                    )
+                    ctx.diag("XAML018", msg, self.el, attr=name)
+                else:
+                    msg = f"attribute {local!r} from namespace {ns!r} ignored"
+                    ctx.diag("XAML002", msg, self.el, attr=name)
                 continue
             if "." in local:
                 owner, _, prop = local.rpartition(".")
@@ -193,7 +202,11 @@ class Props:
         return ("default", None)
 
     def value(self, prop: str, conv: Callable[[str], object], default=None):
-        """A value-type property (numbers, vectors, colours, collections...)."""
+        """A value-type property (numbers, vectors, colours, collections...); while a frame of
+        an animation is built, its animated value."""
+        return self.r.animated(self.el, prop, self._value(prop, conv, default))
+
+    def _value(self, prop: str, conv: Callable[[str], object], default=None):
         if prop in self.attrs:
             kind, payload = self.markup(prop, self.attrs[prop])
             attr = self.attr_keys.get(prop)
@@ -203,6 +216,8 @@ class Props:
                 text = (payload.text or "").strip()
                 if text and len(payload) == 0:
                     return self._convert(conv, text, payload, prop, default)
+                if is_struct_element(payload):
+                    return self._struct(conv, payload, prop, default)
                 msg = f"resource for {self.type}.{prop} is not a value"
                 self.r.ctx.diag("RES008", msg, self.el, attr=attr)
             return default
@@ -214,8 +229,16 @@ class Props:
             text = (node.text or "").strip()
             if text:
                 return self._convert(conv, text, node, prop, default)
+            if is_struct_element(node):
+                return self._struct(conv, node, prop, default)
             self.r.ctx.diag("XAML013", f"{self.type}.{prop}: expected a value", node)
         return default
+
+    def _struct(self, conv, node, prop, default):
+        """A value written as ``<Point3D X=".." .../>`` (struct_values.py), converted by the
+        property's own converter (a Point3D where a Matrix3D is expected fails there)."""
+        text = struct_text(self.r.ctx, node)
+        return default if text is None else self._convert(conv, text, node, prop, default)
 
     def _convert(self, conv, s, node, prop, default, attr=None):
         try:
@@ -227,7 +250,12 @@ class Props:
 
     def obj(self, prop: str, build: Callable, default=None, *, from_string=None):
         """An object property built from an element (or resource); ``from_string`` converts a
-        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None."""
+        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None.
+        While a frame of an animation is built, its animated value (a Rotation)."""
+        built = self._obj(prop, build, default, from_string=from_string)
+        return self.r.animated(self.el, prop, built)
+
+    def _obj(self, prop: str, build: Callable, default=None, *, from_string=None):
         if prop in self.attrs:
             kind, payload = self.markup(prop, self.attrs[prop])
             if kind == "null":

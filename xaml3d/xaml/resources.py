@@ -189,8 +189,9 @@ class Resources:
         return d
 
     # ----------------------------------------------------------------- application resources
-    def add_app_file(self, path: str | os.PathLike, *, discovered: bool = False) -> None:
-        """Read application resources from a file (App.xaml or any resource file)."""
+    def add_app_file(self, path: str | os.PathLike, *, discovered: Path | None = None) -> None:
+        """Read application resources from a file (App.xaml or any resource file); ``discovered``
+        is the scene whose folder (or a parent of it) the file was found in, None when given."""
         label = os.fspath(path)
         try:
             doc = parse_document(path, limits=self.ctx.limits, file=label)
@@ -210,7 +211,7 @@ class Resources:
         self.ctx.files_used.append(label)
         d = self.dictionary_of(doc.root) or Dictionary(doc.root)
         self.app.append((doc, d))
-        how = "found beside the scene" if discovered else "given"
+        how = "given with -r" if discovered is None else _found_where(Path(path), discovered)
         self.ctx.diag(
             "RES006",
             f"application resources read from {label} ({how}: {len(d.entries)} entries)",
@@ -271,6 +272,22 @@ class Resources:
                 from_el,
                 attr=attr,
             )
+        elif dynamic:  # WPF keeps the default and waits for the key to appear: no load error
+            msg = f"DynamicResource {key!r} not found: the property keeps its default"
+            self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            self.ctx.diag("RES001", f"resource {key!r} not found", from_el, attr=attr)
+            self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
         return None
+
+
+def _found_where(app: Path, scene: Path) -> str:
+    """Where an App.xaml was found, said from the scene: its own folder or N folders up."""
+    try:
+        up = len(scene.resolve().parent.relative_to(app.resolve().parent).parts)
+    except ValueError:
+        up = -1
+    if up == 0:
+        return "found in the scene's folder"
+    if up > 0:
+        return f"found {up} folder{'s' if up > 1 else ''} above the scene's"
+    return "found by searching up from the scene's folder"

@@ -60,6 +60,7 @@ UI_PROPS = {
     "InputBindings": "object", "CommandBindings": "object", "ContextMenu": "object",
     "BitmapEffect": "object", "AllowDrop": _B, "ForceCursor": _B, "Language": _S,
     "OverridesDefaultStyle": _B, "Loaded": "event", "Unloaded": "event",
+    "IsManipulationEnabled": _B, "BindingGroup": "object", "InputScope": "object",
 }  # fmt: skip
 _TRANSFORMABLE = {"Transform": "transform3d"}
 _TIMELINE = {
@@ -206,28 +207,36 @@ _t(
     "Actions",
 )
 _ANIM_VALUE = {"Double": _D, "Point3D": _P3, "Vector3D": _V3, "Quaternion": "quaternion",
-               "Rotation3D": "rotation3d", "Color": "color", "Point": "point"}  # fmt: skip
+               "Rotation3D": "rotation3d", "Color": "color", "Point": "point",
+               "Size": "size"}  # fmt: skip
 _FROM_TO = {"IsAdditive": _B, "IsCumulative": _B, "EasingFunction": "object"}
 for _v, _k in _ANIM_VALUE.items():
-    ok = _v != "Point"  # 2D point animations have no 3D target
     _t(f"{_v}Animation", "animation",
        {"From": _k, "To": _k, "By": _k, "UseShortestPath": _B},
-       base=(_TIMELINE, _FROM_TO), supported=ok)  # fmt: skip
+       base=(_TIMELINE, _FROM_TO))  # fmt: skip
     _t(f"{_v}AnimationUsingKeyFrames", "animation", {"KeyFrames": "keyframe[]"}, "KeyFrames",
-       base=(_TIMELINE, _FROM_TO), supported=ok)  # fmt: skip
+       base=(_TIMELINE, _FROM_TO))  # fmt: skip
     for _kind in ("Linear", "Discrete", "Spline", "Easing"):
         _t(f"{_kind}{_v}KeyFrame", "keyframe",
            {"KeyTime": "keytime", "Value": _k, "KeySpline": "keyspline",
             "EasingFunction": "object"}, "Value")  # fmt: skip
-for _c in ("DoubleAnimationUsingPath", "PointAnimationUsingPath", "MatrixAnimationUsingPath"):
-    _t(
-        _c,
-        "animation",
-        {"PathGeometry": "object", "Source": _S},
-        base=(_TIMELINE, _FROM_TO),
-        supported=False,
-        note="path animations are not evaluated",
-    )
+for _c in ("DoubleAnimationUsingPath", "PointAnimationUsingPath"):
+    _t(_c, "animation", {"PathGeometry": "object", "Source": _S}, base=(_TIMELINE, _FROM_TO))
+_t(
+    "MatrixAnimationUsingPath",
+    "animation",
+    {"PathGeometry": "object", "DoesRotateWithTangent": _B, "IsAngleCumulative": _B,
+     "IsOffsetCumulative": _B},
+    base=(_TIMELINE, _FROM_TO),
+    supported=False,
+    note="2D matrix path animations are not evaluated",
+)  # fmt: skip
+_EASINGS = {"Back": ("Amplitude",), "Bounce": ("Bounces", "Bounciness"), "Circle": (),
+            "Cubic": (), "Elastic": ("Oscillations", "Springiness"), "Exponential": ("Exponent",),
+            "Power": ("Power",), "Quadratic": (), "Quartic": (), "Quintic": (),
+            "Sine": ()}  # fmt: skip
+for _e, _ps in _EASINGS.items():
+    _t(f"{_e}Ease", "easing", {"EasingMode": _S, **{_p: _D for _p in _ps}})
 _KEYFRAME_COLLECTIONS = [f"{v}KeyFrameCollection" for v in _ANIM_VALUE]
 for _c in _KEYFRAME_COLLECTIONS:
     _t(_c, "collection", content="Children")
@@ -296,10 +305,19 @@ def known_types() -> list[str]:
     return sorted(_TYPES)
 
 
+def closed_types() -> list[str]:
+    """The types whose vocabulary is closed (3D, brushes, animations...): not framework ones."""
+    return sorted(n for n, t in _TYPES.items() if not t.open)
+
+
 def suggest(name: str, candidates) -> str | None:
-    """The closest known name (difflib), or None."""
-    found = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.75)
-    return found[0] if found else None
+    """The closest known name, compared without case (``lookdirection`` -> LookDirection:
+    XAML names are case-sensitive, so a case slip is the likeliest typo), or None."""
+    by_lower: dict[str, str] = {}
+    for c in candidates:
+        by_lower.setdefault(c.lower(), c)
+    found = difflib.get_close_matches(name.lower(), list(by_lower), n=1, cutoff=0.75)
+    return by_lower[found[0]] if found else None
 
 
 def did_you_mean(name: str, candidates) -> str:
@@ -317,40 +335,47 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XML006": (ERROR, "file cannot be read (fatal)"),
     "XAML001": (INFO, "element from an unknown or clr-namespace namespace skipped"),
     "XAML002": (INFO, "attribute from an unknown or clr-namespace namespace ignored"),
-    "XAML003": (WARNING, "unknown element type (closest known name suggested)"),
-    "XAML004": (WARNING, "unknown property (closest known name suggested)"),
+    "XAML003": (ERROR, "unknown element type in the WPF namespace (closest known name suggested)"),
+    "XAML004": (ERROR, "unknown property of a WPF type (closest known name suggested)"),
     "XAML005": (WARNING, "known element type that xaml3d does not support"),
     "XAML006": (INFO, "known property that xaml3d does not use"),
     "XAML007": (INFO, "x:Class code-behind is not run"),
     "XAML008": (INFO, "event handler attribute ignored (code-behind is not run)"),
-    "XAML009": (WARNING, "{Binding} cannot be evaluated from markup: property keeps its default"),
-    "XAML010": (WARNING, "{x:Static} cannot be evaluated: property keeps its default"),
-    "XAML011": (WARNING, "markup extension not evaluated ({TemplateBinding}, {x:Type}...)"),
-    "XAML012": (WARNING, "property set more than once (attribute and element forms)"),
-    "XAML013": (WARNING, "element of the wrong kind for this property: ignored"),
-    "XAML014": (WARNING, "several values for a single-valued property: the last is used"),
+    "XAML009": (INFO, "{Binding} cannot be evaluated from markup: property keeps its default"),
+    "XAML010": (INFO, "{x:Static} cannot be evaluated: property keeps its default"),
+    "XAML011": (INFO, "markup extension not evaluated ({TemplateBinding}, {x:Type}...)"),
+    "XAML012": (ERROR, "property set more than once (attribute and element forms)"),
+    "XAML013": (
+        ERROR,
+        "value of the wrong type for this property (a Material where a Brush is expected)",
+    ),
+    "XAML014": (ERROR, "several values for a single-valued property"),
     "XAML015": (INFO, "Viewport3D inside a template or style is not instantiated"),
-    "XAML016": (WARNING, "malformed markup extension"),
-    "RES001": (WARNING, "resource key not found"),
-    "RES002": (WARNING, "StaticResource used before its definition"),
-    "RES003": (WARNING, "resource reference cycle"),
+    "XAML016": (ERROR, "malformed markup extension"),
+    "XAML017": (WARNING, "unknown element among the framework (2D) elements: walked through"),
+    "XAML018": (ERROR, "namespace one edit away from WPF's presentation namespace (a typo)"),
+    "RES001": (ERROR, "StaticResource key not found"),
+    "RES002": (ERROR, "StaticResource used before its definition"),
+    "RES003": (ERROR, "resource reference cycle"),
     "RES004": (WARNING, "resource file outside the scene's folder tree refused"),
-    "RES005": (WARNING, "merged resource dictionary missing or unreadable"),
+    "RES005": (ERROR, "merged resource dictionary missing or unreadable"),
     "RES006": (INFO, "application resources read from a file"),
     "RES007": (INFO, "resource entry without x:Key ignored"),
-    "RES008": (WARNING, "resource of the wrong type for this property"),
+    "RES008": (ERROR, "resource of the wrong type for this property"),
+    "RES010": (WARNING, "DynamicResource key not found: the property keeps its default"),
     "RES009": (ERROR, "resource file named by the user cannot be read (fatal)"),
-    "SCN001": (WARNING, "the document holds no Viewport3D"),
-    "SCN003": (INFO, "viewport size source (own, ancestor or default)"),
+    "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
+    "SCN013": (INFO, "a ResourceDictionary or Application file: no scene to render"),
+    "SCN003": (INFO, "viewport size and how the layout derived it (docs/layout.md)"),
     "SCN004": (INFO, "no camera given: WPF's default PerspectiveCamera is used"),
     "SCN005": (WARNING, "GeometryModel3D without a Geometry skipped"),
     "SCN006": (WARNING, "geometry that is not a MeshGeometry3D skipped"),
     "SCN007": (WARNING, "Viewport2DVisual3D 2D content drawn as a placeholder"),
-    "SCN008": (WARNING, "element of the wrong kind in a 3D tree skipped"),
+    "SCN008": (ERROR, "element of the wrong kind in a 3D tree (a bare Model3D among Visual3Ds)"),
     "SCN009": (INFO, "Camera is {x:Null}: the viewport draws nothing"),
     "SCN010": (WARNING, "transform cannot be built: identity used"),
     "SCN011": (INFO, "GeometryModel3D without Material or BackMaterial draws nothing"),
-    "SCN012": (WARNING, "negative Width or Height (invalid in WPF): taken as 0"),
+    "SCN012": (ERROR, "negative Width or Height (invalid in WPF): taken as 0"),
     "BRU001": (WARNING, "VisualBrush/DrawingBrush content drawn as a placeholder"),
     "BRU002": (WARNING, "image file not found: a grey checker stands in"),
     "BRU003": (WARNING, "image file cannot be decoded: a grey checker stands in"),
@@ -360,8 +385,11 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "image path outside the scene's folder tree refused: a grey checker stands in",
     ),
     "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
-    "ANI001": (WARNING, "animation type not evaluated (path animations, 2D targets)"),
+    "ANI001": (
+        WARNING,
+        "animation not evaluated (MatrixAnimationUsingPath, a path without Figures)",
+    ),
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
-    "ANI003": (INFO, "EasingFunction ignored (linear timing used)"),
+    "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),
     "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
 }

@@ -1,0 +1,122 @@
+"""The layout options of the command line, in a real process: ``render --viewport all``,
+``render --window`` (+ ``--outline-controls``), ``--window-size`` for render/info/camera, and
+their usage errors."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+from PIL import Image
+from test_cli_subprocess import xaml3d
+
+REF = __import__("pathlib").Path(__file__).resolve().parent / "reference" / "layout"
+
+TWO = """<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="116" Height="87">
+  <Grid Background="Blue">
+    <Grid.RowDefinitions><RowDefinition Height="Auto"/><RowDefinition/></Grid.RowDefinitions>
+    <Grid.ColumnDefinitions><ColumnDefinition/><ColumnDefinition/></Grid.ColumnDefinitions>
+    <Button Grid.ColumnSpan="2" Height="8">Go</Button>
+    <Viewport3D x:Name="left" Grid.Row="1"/>
+    <Viewport3D Grid.Row="1" Grid.Column="1" Margin="2"/>
+  </Grid>
+</Window>"""
+
+
+def test_viewport_all_writes_one_file_per_viewport(tmp_path):
+    (tmp_path / "two.xaml").write_text(TWO)
+    p = xaml3d("render", "two.xaml", "-o", "out.png", "--viewport", "all", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    with Image.open(tmp_path / "out-left.png") as a, Image.open(tmp_path / "out-1.png") as b:
+        # client 100 x 48; the Auto row takes the Button's 8 px; two star columns of 50
+        assert a.size == (50, 40) and b.size == (46, 36)
+    assert not (tmp_path / "out.png").exists()
+
+
+def test_window_picture_and_outline(tmp_path):
+    (tmp_path / "two.xaml").write_text(TWO)
+    p = xaml3d("render", "two.xaml", "-o", "win.png", "--window", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    with Image.open(tmp_path / "win.png") as im:
+        a = np.asarray(im.convert("RGBA"))
+    assert a.shape == (48, 100, 4)
+    assert (a[..., :3] == (0, 0, 255)).all()  # the Grid's blue; the Button is not drawn
+    p = xaml3d("render", "two.xaml", "-o", "o.png", "--window", "--outline-controls", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    with Image.open(tmp_path / "o.png") as im:
+        b = np.asarray(im.convert("RGBA"))
+    # the Button's layout box (row 0, both columns: 100 x 8) is outlined, its inside is not
+    assert (b[0, :, 2] != 255).all() and (b[7, :, 2] != 255).all()
+    assert (b[3, 1:99] == a[3, 1:99]).all() and (b[8:] == a[8:]).all()
+
+
+def test_window_reference_case_through_the_cli(tmp_path):
+    src = REF / "window-two-viewports.xaml"
+    p = xaml3d("render", src, "-o", tmp_path / "w.png", "--window")
+    assert p.returncode == 0, p.stderr
+    with Image.open(tmp_path / "w.png") as got, Image.open(src.with_suffix(".png")) as want:
+        diff = np.abs(np.asarray(got, dtype=int) - np.asarray(want.convert("RGBA"), dtype=int))
+    assert diff.max() <= 3
+
+
+def test_window_size_relays_out_render_info_camera(tmp_path):
+    src = REF / "grid-toolbar-row.xaml"
+    p = xaml3d("render", src, "-o", tmp_path / "r.png", "--window-size", "200x116")
+    assert p.returncode == 0, p.stderr
+    with Image.open(tmp_path / "r.png") as im:
+        assert im.size == (200, 100)  # the 16 px Auto row keeps its height
+    p = xaml3d("info", src, "--json", "--window-size", "200x116")
+    vp = json.loads(p.stdout)["viewports"][0]
+    assert (vp["width"], vp["height"], vp["layout_rect"]) == (200, 100, [0, 16, 200, 100])
+    assert vp["size_source"].startswith("layout: Window (--window-size 200x116)")
+    p = xaml3d("camera", src, "--json", "--window-size", "200x116")
+    assert json.loads(p.stdout)["viewport"]["width"] == 200
+    p = xaml3d("info", src)
+    assert b"layout rect: x 0, y 16, 80 x 32" in p.stdout
+
+
+def test_layout_usage_errors(tmp_path):
+    src = REF / "grid-toolbar-row.xaml"
+    out = tmp_path / "x.png"
+    for args in (
+        ("--window", "-W", "100"),
+        ("--viewport", "all", "-H", "10"),
+        ("--outline-controls",),
+        ("--window", "--viewport", "0"),
+        ("--window", "--fit"),
+        ("--window-size", "80"),
+        ("--window-size", "0x10"),
+        ("--window-size", "axb"),
+    ):
+        p = xaml3d("render", src, "-o", out, *args)
+        assert p.returncode == 2 and b"Traceback" not in p.stderr, args
+    p = xaml3d("render", src, "-o", "-", "--viewport", "all")
+    assert p.returncode == 2
+    assert not out.exists()
+
+
+def test_empty_viewport_in_all_is_an_error_the_others_render(tmp_path):
+    (tmp_path / "s.xaml").write_text(
+        '<StackPanel xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'Width="40" Height="40"><Viewport3D/><Viewport3D Height="20"/></StackPanel>'
+    )
+    p = xaml3d("render", "s.xaml", "-o", "v.png", "--viewport", "all", cwd=tmp_path)
+    assert p.returncode == 1
+    err = p.stderr.decode()
+    assert "warning LAY001" in err and "error CAM010" in err and "Traceback" not in err
+    assert not (tmp_path / "v-0.png").exists()
+    with Image.open(tmp_path / "v-1.png") as im:
+        assert im.size == (40, 20)
+
+
+def test_validate_reports_an_empty_layout_as_a_warning(tmp_path):
+    (tmp_path / "s.xaml").write_text(
+        '<StackPanel xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'Width="40" Height="40"><Viewport3D/></StackPanel>'
+    )
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    found = p.stdout.decode()  # validate prints its findings as data
+    assert p.returncode == 0 and "warning LAY001" in found and "CAM010" not in found
+    p = xaml3d("validate", "s.xaml", "--strict", cwd=tmp_path)
+    assert p.returncode == 1

@@ -1,0 +1,424 @@
+"""Exact layout numbers (xaml3d.layout): WPF's measure/arrange of each panel, the window frame,
+rounding, the gotchas, and the panels reader on markup."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from xaml3d.layout import Definition, Node, layout
+from xaml3d.layout import tree as L
+from xaml3d.layout.engine import scale_factor
+from xaml3d.layout.gotchas import viewport_notes
+from xaml3d.layout.grid import distribute, round_sizes
+from xaml3d.xaml.loader import load
+
+NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+
+
+def vp(**kw) -> Node:
+    return Node(L.VIEWPORT, "Viewport3D", viewport=0, **kw)
+
+
+def D(spec: str, **kw) -> Definition:
+    if spec == "Auto":
+        return Definition("auto", 1.0, **kw)
+    if spec.endswith("*"):
+        return Definition("star", float(spec[:-1] or 1), **kw)
+    return Definition("pixel", float(spec), **kw)
+
+
+def window(child, w=800, h=600, **kw) -> Node:
+    return Node(L.WINDOW, "Window", width=w, height=h, children=[child], **kw)
+
+
+def test_window_toolbar_row_and_star_row():
+    v = vp(row=1)
+    bar = Node(L.CONTROL, "ToolBar", height=40, estimate=(0, 0))
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"), D("*")), children=[bar, v])
+    r = layout(window(grid))
+    assert r.client == (784, 561)
+    assert v.rect == (0, 40, 784, 521)
+    assert v.slot == "row 1 (*)"
+
+
+def test_two_star_columns_of_a_user_control():
+    a, b = vp(col=0), vp(col=1)
+    grid = Node(L.GRID, "Grid", columns=(D("*"), D("*")), children=[a, b])
+    layout(Node(L.USER_CONTROL, "UserControl", width=600, height=300, children=[grid]))
+    assert a.rect == (0, 0, 300, 300) and b.rect == (300, 0, 300, 300)
+
+
+def test_grid_pixel_auto_star_mix_and_weights():
+    kids = [vp(row=i) for i in range(4)]
+    kids[1].height = 30  # sizes the Auto row
+    grid = Node(L.GRID, "Grid", rows=(D("50"), D("Auto"), D("*"), D("2*")), children=kids)
+    layout(Node(L.GRID, "Grid", width=300, height=380, children=[grid]))
+    assert [k.rect[1] for k in kids] == [0, 50, 80, 180]
+    assert [k.rect[3] for k in kids] == [50, 30, 100, 200]
+
+
+def test_star_min_and_max():
+    a, b = vp(col=0), vp(col=1)
+    grid = Node(L.GRID, "Grid", columns=(D("*", max=100), D("*")), children=[a, b],
+                width=500, height=10)  # fmt: skip
+    layout(grid)
+    assert (a.rect[2], b.rect[2]) == (100, 400)
+    a.width = math.nan
+    grid.columns = (D("*", min=400), D("*"))
+    layout(grid)
+    assert (a.rect[2], b.rect[2]) == (400, 100)
+    assert distribute([1, 1, 2], [0, 0, 0], [math.inf] * 3, 100) == [25, 25, 50]
+
+
+def test_grid_spans_and_out_of_range_indices():
+    a = vp(row=0, col=0, col_span=2)
+    b = vp(row=5, col=-1)  # clamped to the last row, first column
+    grid = Node(L.GRID, "Grid", rows=(D("100"), D("*")), columns=(D("*"), D("3*")),
+                children=[a, b], width=400, height=300)  # fmt: skip
+    layout(grid)
+    assert a.rect == (0, 0, 400, 100)
+    assert b.rect == (0, 100, 100, 200)
+
+
+def test_spanning_cell_grows_the_auto_definitions():
+    c = Node(L.CONTROL, "Button", estimate=(0, 0), height=90, col_span=2, row=0)
+    v = vp(row=0, col=0)
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"),), columns=(D("Auto"), D("Auto")),
+                children=[c, v], row_span=1)  # fmt: skip
+    c.row_span, c.col_span = 1, 1
+    layout(Node(L.BORDER, "Border", width=200, height=200, children=[grid]))
+    assert v.rect[3] == 90
+
+
+def test_border_margin_padding():
+    v = vp()
+    border = Node(L.BORDER, "Border", margin=(10, 10, 10, 10), border=(2, 2, 2, 2),
+                  padding=(5, 5, 5, 5), children=[v])  # fmt: skip
+    layout(window(border, 416, 339))  # client 400 x 300
+    assert border.rect == (10, 10, 380, 280)
+    assert v.rect == (17, 17, 366, 266)
+
+
+def test_dockpanel_sides_and_fill():
+    top = Node(L.CONTROL, "Menu", height=20, estimate=(50, 16), dock="Top")
+    left = Node(L.CONTROL, "ListBox", width=120, estimate=(0, 0), dock="Left")
+    bottom = Node(L.CONTROL, "StatusBar", height=24, estimate=(0, 0), dock="Bottom")
+    v = vp()
+    dock = Node(L.DOCK, "DockPanel", children=[top, left, bottom, v])
+    layout(window(dock))
+    assert top.rect == (0, 0, 784, 20)
+    assert left.rect == (0, 20, 120, 541)
+    assert bottom.rect == (120, 537, 664, 24)
+    assert v.rect == (120, 20, 664, 517)
+    assert v.slot == "the remaining space (LastChildFill)"
+
+
+def test_dockpanel_without_last_child_fill_docks_the_viewport_left():
+    v = vp()
+    layout(window(Node(L.DOCK, "DockPanel", last_child_fill=False, children=[v])))
+    assert v.rect[2] == 0
+    (note,) = viewport_notes([v])
+    assert note.code == "LAY001" and "docked Left" in note.message
+
+
+def test_stackpanel_gotcha_and_sized_item():
+    v, w = vp(), vp(height=200)
+    w.viewport = 1
+    stack = Node(L.STACK, "StackPanel", children=[v, w])
+    layout(window(stack))
+    assert v.rect == (0, 0, 784, 0)
+    assert w.rect == (0, 0, 784, 200)
+    notes = viewport_notes([v, w])
+    assert len(notes) == 1 and "vertical StackPanel" in notes[0].message
+    h = vp(width=100)
+    layout(window(Node(L.STACK, "StackPanel", orientation="Horizontal", children=[h])))
+    assert h.rect == (0, 0, 100, 561)
+
+
+def test_canvas_positions_and_gotcha():
+    a = vp(width=100, height=50, left=10, top=20)
+    b = vp(width=30, height=30, right=5, bottom=5)
+    c = vp()
+    canvas = Node(L.CANVAS, "Canvas", children=[a, b, c], width=200, height=100)
+    layout(canvas)
+    assert a.rect == (10, 20, 100, 50)
+    assert b.rect == (165, 65, 30, 30)
+    assert c.rect[2:] == (0, 0)
+    assert "Canvas" in viewport_notes([c])[0].message
+
+
+@pytest.mark.parametrize(
+    ("stretch", "direction", "expected"),
+    [
+        ("Uniform", "Both", (2.0, 2.0)),
+        ("UniformToFill", "Both", (4.0, 4.0)),
+        ("Fill", "Both", (2.0, 4.0)),
+        ("None", "Both", (1.0, 1.0)),
+        ("Uniform", "DownOnly", (1.0, 1.0)),
+    ],
+)
+def test_viewbox_scale(stretch, direction, expected):
+    assert scale_factor((200, 200), (100, 50), stretch, direction) == expected
+
+
+def test_viewbox_scales_the_viewport_and_unsized_gotcha():
+    v = vp(width=400, height=300)
+    box = Node(L.VIEWBOX, "Viewbox", children=[v])
+    layout(Node(L.GRID, "Grid", width=200, height=200, children=[box]))
+    assert box.rect == (0, 25, 200, 150)
+    assert v.rect == (0, 25, 200, 150)
+    v.width = v.height = math.nan
+    layout(Node(L.GRID, "Grid", width=200, height=200, children=[box]))
+    assert v.rect[2:] == (0, 0) and "Viewbox" in viewport_notes([v])[0].message
+
+
+def test_scrollviewer_fills_the_view_beside_the_vertical_bar():
+    v = vp()
+    layout(window(Node(L.SCROLL, "ScrollViewer", children=[v])))
+    assert v.rect == (0, 0, 784 - 17, 561)
+
+
+def test_alignment_margin_min_max():
+    v = vp(width=100, height=80, h_align="Right", v_align="Top", margin=(0, 10, 20, 0))
+    layout(Node(L.GRID, "Grid", width=300, height=200, children=[v]))
+    assert v.rect == (180, 10, 100, 80)
+    c = vp(max_width=150, min_height=250)  # Stretch but capped: centred in the slot
+    layout(Node(L.GRID, "Grid", width=300, height=200, children=[c]))
+    assert c.rect == (75, 0, 150, 250)
+
+
+def test_collapsed_takes_no_room_hidden_keeps_it():
+    bar = Node(L.CONTROL, "ToolBar", height=40, estimate=(0, 0), visibility="Collapsed")
+    v = vp(row=1)
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"), D("*")), children=[bar, v])
+    layout(window(grid))
+    assert v.rect == (0, 0, 784, 561)
+    hid = vp(visibility="Hidden")
+    layout(window(Node(L.GRID, "Grid", children=[hid])))
+    assert hid.rect[2:] == (784, 561)
+    assert viewport_notes([hid])[0].code == "LAY002"
+    gone = vp()
+    layout(window(Node(L.GRID, "Grid", visibility="Collapsed", children=[gone])))
+    (note,) = viewport_notes([gone])
+    assert note.code == "LAY002" and "Collapsed" in note.message
+
+
+def test_size_to_content_and_window_size_override():
+    v = vp(width=300, height=200)
+    r = layout(window(Node(L.GRID, "Grid", children=[v]), size_to_content="WidthAndHeight"))
+    assert r.client == (300, 200)
+    v2 = vp()
+    r = layout(window(Node(L.GRID, "Grid", children=[v2])), (1000, 500))
+    assert r.client == (1000, 500) and v2.rect == (0, 0, 1000, 500)
+
+
+def test_layout_rounding():
+    a, b, c = vp(col=0), vp(col=1), vp(col=2)
+    grid = Node(L.GRID, "Grid", columns=(D("*"),) * 3, children=[a, b, c], width=100,
+                height=10, rounding=True)  # fmt: skip
+    layout(grid)
+    widths = [k.rect[2] for k in (a, b, c)]
+    assert sum(widths) == 100 and all(w == int(w) for w in widths)
+    grid.rounding = None
+    layout(grid)
+    assert a.rect[2] == pytest.approx(100 / 3)
+    assert (
+        round_sizes([33.5, 33.5, 33.0]) == [34.0, 33.0, 33.0]
+        or sum(round_sizes([33.5, 33.5, 33.0])) == 100
+    )
+
+
+def test_every_element_measured_and_arranged_once():
+    # 10 000 panels: a chain of nested Borders 200 deep, each holding 49 sized leaves
+    root = Node(L.GRID, "Grid", width=800, height=600)
+    node, count = root, 1
+    while count < 10_000:
+        inner = Node(L.BORDER, "Border", margin=(0.01, 0, 0, 0))
+        leaves = [Node(L.CONTROL, "TextBlock", estimate=(5, 5)) for _ in range(48)]
+        holder = Node(L.GRID, "Grid", children=[*leaves, inner])
+        node.children.append(holder)
+        node, count = inner, count + 50
+    node.children.append(vp())
+    r = layout(root)
+    assert r.measure_calls == r.arrange_calls == count + 1
+
+
+def test_root_defaults_and_design_size():
+    v = vp()
+    r = layout(Node(L.GRID, "Grid", children=[v]))
+    assert r.client == (640, 480) and "default" in r.how
+    uc = Node(L.USER_CONTROL, "UserControl", design_size=(300, 200), children=[vp()])
+    assert layout(uc).client == (300, 200)
+
+
+# ------------------------------------------------------------------ reader on markup
+
+
+def size(xaml: str, i: int = 0, **kw):
+    s = load(xaml, text=True, **kw)
+    v = s.viewports[i]
+    return v.width, v.height
+
+
+def test_markup_window_toolbar_example():
+    x = (
+        f"<Window {NS} Width='800' Height='600'><Grid><Grid.RowDefinitions>"
+        "<RowDefinition Height='Auto'/><RowDefinition/></Grid.RowDefinitions>"
+        "<ToolBar Height='40'/><Viewport3D Grid.Row='1'/></Grid></Window>"
+    )
+    assert size(x) == (784, 521)
+    assert size(x, window_size=(1000, 700)) == (1000, 660)
+
+
+def test_markup_values_units_and_bad_values():
+    x = (
+        f"<Grid {NS} Width='1in' Height='2cm' UseLayoutRounding='True'>"
+        "<Viewport3D Margin='4,2' Grid.Row='{Binding R}'/></Grid>"
+    )
+    w, h = size(x)
+    assert (w, h) == (96 - 8, round(96 / 2.54 * 2) - 4)
+    s = load(f"<Grid {NS} Width='100' Height='50'><Viewport3D Margin='1,2,3'/></Grid>", text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (100, 50)
+    assert "VAL003" in {d.code for d in s.diagnostics}
+
+
+def test_markup_gotcha_is_located_warning():
+    s = load(f"<StackPanel {NS} Width='100' Height='100'>\n  <Viewport3D/></StackPanel>", text=True)
+    (d,) = [d for d in s.diagnostics if d.code == "LAY001"]
+    assert (d.severity, d.line, d.column) == ("warning", 2, 3)
+    assert "vertical StackPanel" in d.message
+
+
+def test_markup_control_estimate_is_info():
+    x = (
+        f"<DockPanel {NS} Width='300' Height='200'>"
+        "<Button DockPanel.Dock='Top'>Go</Button><Viewport3D/></DockPanel>"
+    )
+    s = load(x, text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 20)
+    assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
+
+
+def test_auto_row_sized_by_a_cell_in_a_star_column():
+    # the TextBlock (an Auto row, star column: WPF's last measure group) still sizes the row
+    text = Node(L.CONTROL, "TextBlock", estimate=(30, 16), col=1)
+    v = vp(row=1, col_span=2)
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"), D("*")), columns=(D("*"), D("*")),
+                children=[text, v], width=200, height=100)  # fmt: skip
+    layout(grid)
+    assert text.rect == (100, 0, 100, 16)
+    assert v.rect == (0, 16, 200, 84)
+
+
+def test_star_rows_act_as_auto_with_unlimited_height():
+    # a Grid in a vertical StackPanel: its star row gets the content's height, here 0
+    v, w = vp(row=0), vp(row=1, height=30)
+    grid = Node(L.GRID, "Grid", rows=(D("*"), D("*")), children=[v, w])
+    layout(window(Node(L.STACK, "StackPanel", children=[grid])))
+    assert v.rect[3] == 0 and w.rect == (0, 0, 784, 30)
+    assert "vertical StackPanel" in viewport_notes([v])[0].message
+
+
+def test_markup_roots_page_user_control_size_to_content():
+    page = f"<Page {NS} WindowWidth='416' WindowHeight='339'><Grid><Viewport3D/></Grid></Page>"
+    assert size(page) == (400, 300)
+    uc = (
+        f"<UserControl {NS} xmlns:mc='http://schemas.openxmlformats.org/markup-compatibility/2006'"
+        " xmlns:d='http://schemas.microsoft.com/expression/blend/2008' mc:Ignorable='d'"
+        " d:DesignWidth='300' d:DesignHeight='200'><Viewport3D/></UserControl>"
+    )
+    assert size(uc) == (300, 200)
+    stc = (
+        f"<Window {NS} SizeToContent='WidthAndHeight'><Border Padding='5'>"
+        "<Viewport3D Width='100' Height='50'/></Border></Window>"
+    )
+    s = load(stc, text=True)
+    assert s.layout.client == (110, 60) and (s.viewports[0].width, s.viewports[0].height) == (
+        100,
+        50,
+    )
+
+
+def test_markup_rounding_and_fractions():
+    cols = "<Grid.ColumnDefinitions><ColumnDefinition/><ColumnDefinition/><ColumnDefinition/>"
+    x = (
+        f"<Grid {NS} Width='100' Height='30' UseLayoutRounding='{{r}}'>{cols}"
+        "</Grid.ColumnDefinitions><Viewport3D Grid.Column='1'/></Grid>"
+    )
+    assert size(x.replace("{r}", "False"))[0] == pytest.approx(100 / 3)
+    assert size(x.replace("{r}", "True"))[0] in (33, 34)
+
+
+def test_markup_viewport_in_a_custom_control_and_a_button():
+    x = (
+        f"<Grid {NS} xmlns:h='clr-namespace:H' Width='200' Height='100'>"
+        "<h:View Margin='10'><Button><Viewport3D/></Button></h:View></Grid>"
+    )
+    s = load(x, text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (180, 80)
+    assert {"LAY004"} <= {d.code for d in s.diagnostics}
+
+
+def test_rounding_rounds_margin_sums_not_offsets_and_border_not_padding():
+    v = vp(margin=(0.3, 0.3, 0.3, 0.3))
+    layout(Node(L.GRID, "Grid", width=100, height=100, rounding=True, children=[v]))
+    assert v.rect == (0, 0, 99, 99)  # margins 0.6 round to 1; the 0.3 offset rounds to 0
+    w = vp()
+    b = Node(L.BORDER, "Border", border=(1.4, 1.4, 1.4, 1.4), padding=(0.5, 0, 0, 0),
+             children=[w], rounding=True)  # fmt: skip
+    layout(Node(L.GRID, "Grid", width=100, height=100, children=[b]))
+    # thickness 1.4 -> 1 on each side, padding 0.5 kept: the child's 97.5 rounds to 98 (even)
+    assert w.rect[0] == 2 and w.rect[2] == 98
+
+
+def test_fractional_layout_size_keeps_its_exact_aspect_ratio():
+    from xaml3d.render.api import render_arrays
+
+    # a Viewport3D 100 x 33.4 (a third of 100.2): the image is 100 x 33, the projection keeps
+    # 100 / 33.4, so an orthographic camera of Width 100 shows 33.4 units over the 33 rows and
+    # a quad 33 units high leaves the top and bottom rows partly covered
+    x = (
+        f"<Grid {NS} Width='100' Height='100.2'><Grid.RowDefinitions><RowDefinition/>"
+        "<RowDefinition/><RowDefinition/></Grid.RowDefinitions><Viewport3D>"
+        "<Viewport3D.Camera><OrthographicCamera Position='0,0,5' LookDirection='0,0,-1'"
+        " Width='100'/></Viewport3D.Camera><ModelVisual3D><ModelVisual3D.Content>"
+        "<Model3DGroup><AmbientLight/><GeometryModel3D><GeometryModel3D.Geometry>"
+        "<MeshGeometry3D Positions='-60,-16.5,0 60,-16.5,0 60,16.5,0 -60,16.5,0'"
+        " TriangleIndices='0 1 2 0 2 3'/></GeometryModel3D.Geometry><GeometryModel3D.Material>"
+        "<DiffuseMaterial Brush='White'/></GeometryModel3D.Material></GeometryModel3D>"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D></Grid>"
+    )
+    s = load(x, text=True)
+    vp0 = s.viewports[0]
+    assert vp0.height == pytest.approx(33.4)
+    r = render_arrays(s, ssaa=4)
+    assert (r.width, r.height) == (100, 33)
+    alpha = r.rgba[:, 50, 3]
+    assert alpha[16] == 255 and 0 < alpha[0] < 255 and 0 < alpha[32] < 255
+    exact = render_arrays(s, 100, 33, ssaa=4)  # both sizes given: the image's own aspect
+    assert exact.rgba[0, 50, 3] == 255 and exact.rgba[32, 50, 3] == 255
+
+
+def test_uniform_grid_cells_and_first_column():
+    kids = [vp() for _ in range(3)]
+    layout(Node(L.UNIFORM, "UniformGrid", width=200, height=100, children=kids))
+    # 3 children: 2 x 2 cells of 100 x 50
+    assert [k.rect for k in kids] == [(0, 0, 100, 50), (100, 0, 100, 50), (0, 50, 100, 50)]
+    kids = [vp() for _ in range(3)]
+    layout(Node(L.UNIFORM, "UniformGrid", uniform=(0, 3, 1), width=300, height=100, children=kids))
+    assert [k.rect[:2] for k in kids] == [(100, 0), (200, 0), (0, 50)]
+    x = (
+        f"<UniformGrid {NS} Columns='2' Width='200' Height='80' xmlns:x="
+        "'http://schemas.microsoft.com/winfx/2006/xaml'><Viewport3D/><Viewport3D/></UniformGrid>"
+    )
+    assert size(x, 1) == (100, 80)
+
+
+def test_scrollviewer_auto_bar_only_when_the_content_overflows():
+    small, tall = vp(height=100), vp(height=1000)
+    layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[small])))
+    assert small.rect[2] == 784
+    layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[tall])))
+    assert tall.rect[2] == 784 - 17

@@ -1,0 +1,104 @@
+"""What WPF's loader refuses is an error, for both commands (tests/wpf_errors/*.xaml).
+
+Each file holds one condition WPF refuses at load (or a camera that cannot produce an image).
+``validate`` reports it as an error at the exact line:column and exits 1; ``render`` prints the
+same finding, exits 1 and leaves a pre-existing output file byte-identical; ``render --lenient``
+renders it, the error printed as a warning at the same place (except where nothing can be read:
+XML that is not well-formed, or a misspelt namespace that hides the Viewport3D itself).
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from xaml3d.cli import main
+
+HERE = Path(__file__).resolve().parent / "wpf_errors"
+PNG = b"\x89PNG\r\n\x1a\n"
+
+# file -> (code, line, column, a word the message must hold)
+CASES = {
+    "malformed-xml": ("XML001", 18, 30, "mismatch"),
+    "point3d-two-numbers": ("VAL003", 3, 24, "needs 3 numbers"),
+    "double-not-a-number": ("VAL001", 3, 41, "'abc'"),
+    "empty-token": ("VAL002", 11, 29, "empty token"),
+    "trailing-comma": ("VAL002", 3, 24, "trailing comma"),
+    "colour-misspelt": ("VAL004", 14, 30, "did you mean Orange?"),
+    "enum-value-unknown": ("VAL005", 14, 65, "'Tiles'"),
+    "property-misspelt": ("XAML004", 3, 41, "did you mean LookDirection?"),
+    "property-wrong-case": ("XAML004", 3, 41, "did you mean FieldOfView?"),
+    "element-unknown": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
+    "element-wrong-case": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
+    "namespace-typo": ("XAML018", 1, 1, "did you mean 'http://schemas.microsoft.com/winfx/2006"),
+    "property-set-twice": ("XAML012", 15, 15, "set both"),
+    "model3d-among-visuals": ("SCN008", 20, 18, "ModelVisual3D around it"),
+    "static-resource-missing": ("RES001", 14, 30, "'Paint'"),
+    "material-for-brush": ("XAML013", 14, 53, "not a Brush"),
+    "camera-up-parallel": ("CAM003", 3, 5, "parallel"),
+    "camera-fov-180": ("CAM004", 3, 5, "FieldOfView 180"),
+}
+NOT_RENDERABLE = {"malformed-xml", "namespace-typo"}  # fatal even with --lenient
+
+
+def test_every_case_file_is_listed():
+    assert sorted(p.stem for p in HERE.glob("*.xaml")) == sorted(CASES)
+
+
+def _expect(name: str, severity: str) -> tuple[str, str]:
+    code, line, col, words = CASES[name]
+    return f"{HERE / name}.xaml:{line}:{col}: {severity} {code} ", words
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_validate_reports_the_error_at_its_place(name):
+    r = CliRunner().invoke(main, ["validate", str(HERE / f"{name}.xaml")])
+    assert r.exit_code == 1, r.output
+    head, words = _expect(name, "error")
+    hit = [ln for ln in r.stdout.splitlines() if ln.startswith(head)]
+    assert len(hit) == 1 and words in hit[0], r.stdout
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_render_refuses_and_leaves_the_output_alone(name, tmp_path):
+    out = tmp_path / "out.png"
+    out.write_bytes(b"the previous picture")
+    r = CliRunner().invoke(main, ["render", str(HERE / f"{name}.xaml"), "-o", str(out)])
+    assert r.exit_code == 1, r.output
+    head, words = _expect(name, "error")
+    assert any(ln.startswith(head) and words in ln for ln in r.stderr.splitlines()), r.stderr
+    assert out.read_bytes() == b"the previous picture"
+    assert [p.name for p in tmp_path.iterdir()] == ["out.png"]  # no temporary file left
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_lenient_render_reports_a_warning_and_renders(name, tmp_path):
+    out = tmp_path / "out.png"
+    out.write_bytes(b"the previous picture")
+    r = CliRunner().invoke(
+        main, ["render", str(HERE / f"{name}.xaml"), "-o", str(out), "--lenient"]
+    )
+    if name in NOT_RENDERABLE:
+        assert r.exit_code == 1 and out.read_bytes() == b"the previous picture"
+        return
+    assert r.exit_code == 0, r.stderr
+    head, words = _expect(name, "warning")
+    hit = [ln for ln in r.stderr.splitlines() if ln.startswith(head)]
+    assert len(hit) == 1 and words in hit[0] and hit[0].endswith("--lenient]"), r.stderr
+    assert " error " not in r.stderr
+    if name.startswith("camera-"):  # the camera error already says why nothing is drawn
+        assert "RND002" not in r.stderr
+    assert out.read_bytes().startswith(PNG)
+
+
+def test_validate_and_render_print_the_same_findings(tmp_path):
+    # One verdict: the same lines (render prints them on stderr, after the same checks).
+    for name in sorted(CASES):
+        path = str(HERE / f"{name}.xaml")
+        v = CliRunner().invoke(main, ["validate", path]).stdout.splitlines()
+        r = CliRunner().invoke(main, ["render", path, "-o", str(tmp_path / "o.png"), "-v"])
+        shown = [ln for ln in r.stderr.splitlines() if re.match(re.escape(path) + r":\d", ln)]
+        assert shown == v, name

@@ -1,0 +1,216 @@
+"""``xaml3d animate``: a scene's storyboards -> GIF, APNG (.png), WebP, or numbered PNGs.
+
+Also holds the time options ``render`` shares (``--time``, ``--storyboard``). Thin layer over
+``xaml3d.render.frames``: picks the times (``--fps``, ``--start``, ``--end``/``--duration``,
+by default one full cycle of what runs at load), renders each frame as ``render`` would,
+shows a progress bar on a terminal, and writes the file atomically. Bad input is one
+``file:line:col: error CODE message`` line and exit status 1.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+
+from xaml3d.cli_common import (
+    describe_os_error,
+    display_name,
+    echo_diagnostics,
+    exit_on_input_error,
+    io_error,
+    load_scene,
+    render_size,
+    resources_option,
+    same_file,
+    stderr_is_terminal,
+    with_file,
+)
+from xaml3d.cli_render_extras import animate_lens_options
+from xaml3d.errors import ERROR, XamlError
+
+DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
+
+
+def parse_time(value: str, what: str = "--time") -> float | None:
+    """A time option: seconds ('1.5'), a TimeSpan with a colon ('0:0:1.5'), or 'none'."""
+    from xaml3d.errors import ValueSyntaxError
+    from xaml3d.xaml.values import parse_double, parse_timespan
+
+    v = value.strip()
+    if v.lower() == "none":
+        return None
+    try:
+        t = parse_timespan(v) if ":" in v else parse_double(v.rstrip("s"))
+    except ValueSyntaxError:
+        raise click.BadParameter(
+            f"{value!r} is not a time (seconds like 1.5, or a TimeSpan like 0:0:1.5)",
+            param_hint=what,
+        ) from None
+    if not math.isfinite(t) or t < 0:
+        raise click.BadParameter(f"{value!r} must be a finite time >= 0", param_hint=what)
+    return t
+
+
+def _time_callback(ctx, param, value):
+    return value if value is None else parse_time(value, "--" + param.name)
+
+
+time_option = click.option(
+    "--time",
+    "at_time",
+    metavar="T",
+    default="0",
+    show_default=True,
+    help="Moment to draw, seconds after load (1.5 or 0:0:1.5); 'none': markup base values.",
+)
+storyboard_option = click.option(
+    "--storyboard",
+    metavar="NAME",
+    help="Also begin this storyboard (a click-started or keyed one) at t = 0.",
+)
+
+
+HELP = """Render a scene's animations to an animated image or numbered frames.
+
+The output format follows -o: .gif, .png (APNG), .webp, or DIR/ for frame_0000.png ...
+By default one full cycle of what starts at load is drawn (a Forever repeat: one
+iteration, with a note) at 30 frames per second.
+
+\b
+Examples:
+  xaml3d animate spin.xaml -o spin.gif
+  xaml3d animate spin.xaml -o spin.png --fps 25 -W 320 --background White
+  xaml3d animate spin.xaml -o frames/ --start 1 --end 3
+  xaml3d animate menu.xaml -o click.webp --storyboard OnClick
+
+\b
+Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 usage error.
+"""
+
+
+@click.command("animate", help=HELP)
+@click.argument("scene", metavar="SCENE")
+@click.option("-o", "--output", required=True, metavar="FILE|DIR/", help="Output file or DIR/.")
+@click.option("--fps", type=click.FloatRange(0, 120, min_open=True), default=30.0,
+              show_default=True, help="Frames per second.")  # fmt: skip
+@click.option("--start", callback=_time_callback, default="0", show_default=True,
+              metavar="T", help="Time of the first frame.")  # fmt: skip
+@click.option("--end", callback=_time_callback, metavar="T",
+              help="Time where the animation stops (default: --start + --duration).")  # fmt: skip
+@click.option("--duration", callback=_time_callback, metavar="T",
+              help="Length drawn (default: one full cycle of what runs).")  # fmt: skip
+@click.option("--loop", type=click.IntRange(min=0), default=0, show_default=True,
+              help="Times the file plays (0: for ever).")  # fmt: skip
+@storyboard_option
+@click.option("-W", "--width", type=click.IntRange(min=1), help="Width in pixels.")
+@click.option("-H", "--height", type=click.IntRange(min=1), help="Height in pixels.")
+@click.option("--mode", type=click.Choice(["shaded", "flat", "wireframe"]), default="shaded",
+              show_default=True, help="Drawing mode.")  # fmt: skip
+@click.option("--background", metavar="COLOR", help="Fill colour, any WPF syntax "
+              "(default: transparent).")  # fmt: skip
+@click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
+@click.option("--msaa", type=click.IntRange(1, 4), help="Multisampling per axis, 1..4 (default 2).")
+@click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
+@resources_option
+@click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
+@click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
+@animate_lens_options
+def animate_command(scene, output, fps, start, end, duration, loop, storyboard, width, height,
+                    mode, background, ssaa, msaa, viewport, resources, quiet,
+                    verbose, extras) -> None:  # fmt: skip
+    from xaml3d.cli_render import _parse_background
+    from xaml3d.cli_render_extras import check_request, lens_arguments
+
+    check_request(extras, (scene,), output, mode)
+
+    bg = _parse_background(None, None, background)
+    if (ssaa or 1) > 1 and (msaa or 1) > 1:
+        raise click.UsageError("choose one of --ssaa and --msaa")
+    name = display_name(scene)
+    to_dir = output.endswith(("/", "\\")) or Path(output).is_dir()
+    ctx = click.get_current_context()
+    with exit_on_input_error(name):
+        for p in [Path(scene) if scene != "-" else None, *map(Path, resources)]:
+            if p is not None and not to_dir and same_file(Path(output), p):
+                click.echo(io_error(name, f"refusing to write over the input file {p}", "IO002"),
+                           err=True)  # fmt: skip
+                ctx.exit(1)
+        sc = load_scene(scene, resources)
+    file = sc.file or name
+    diags = [with_file(d, file) for d in sc.diagnostics]
+    try:
+        start = start or 0.0
+        if end is None:
+            if duration is None:
+                duration, note = _default_length(sc, storyboard)
+                if note:
+                    diags.append(_note(file, note))
+            end = start + duration
+        if end <= start:
+            raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
+        from xaml3d.render.frames import frame_times, render_frames, save_animation
+
+        if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
+            slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
+            diags.append(_note(file, slow + "viewers (use --fps 50 or less)", "ANIM012"))
+        vp = sc.viewport(viewport)
+        w, h = render_size(vp, width, height)
+        times = frame_times(start, end, fps)
+        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
+        opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
+        frames = []
+        it = render_frames(sc, times, storyboard, width=w, height=h, **opts)
+        if stderr_is_terminal() and not quiet:
+            with click.progressbar(it, length=len(times), label="animating",
+                                   file=click.get_text_stream("stderr")) as bar:  # fmt: skip
+                frames = [_keep(r, diags, file) for _, r in bar]
+        else:
+            frames = [_keep(r, diags, file) for _, r in it]
+        empty = [d for d in diags if d.code == "RND002"]
+        if len(empty) < len(times):  # an empty frame is part of an animation: no warning
+            diags = [d for d in diags if d.code != "RND002"]
+        save_animation(frames, output, end - start, loop=loop, directory=to_dir)
+    except XamlError as exc:
+        echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+        click.echo(exc.with_location(file=name).format(), err=True)
+        ctx.exit(1)
+    except (OSError, ValueError) as exc:
+        echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+        click.echo(io_error(name, describe_os_error(exc)), err=True)
+        ctx.exit(1)
+    errors = [d for d in diags if d.severity == ERROR and d.code.startswith("CAM")]
+    echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+    if errors:
+        ctx.exit(1)
+
+
+def _keep(result, diags: list, file: str):
+    for d in result.diagnostics:
+        d = with_file(d, file)
+        if d not in diags or d.code == "RND002":  # RND002 counted per frame
+            diags.append(d)
+    return result.rgba
+
+
+def _default_length(sc, storyboard) -> tuple[float, str | None]:
+    """One full cycle of what runs (a Forever repeat: one iteration), with a note when the
+    drawn length is not the whole animation."""
+    tl = sc.timeline
+    if tl is None or not tl.running(storyboard):
+        return DEFAULT_LENGTH, "nothing animates at load: a still of 1 s is written"
+    whole, once = tl.cycle(storyboard), tl.one_cycle(storyboard)
+    if math.isinf(once) or once <= 0:
+        why = "a Duration is Forever" if math.isinf(once) else "the animations take no time"
+        return DEFAULT_LENGTH, f"{why}: {DEFAULT_LENGTH:g} s drawn (use --duration)"
+    if math.isinf(whole):
+        return once, f"the animation repeats for ever: one iteration ({once:g} s) drawn"
+    return whole, None
+
+
+def _note(file: str, message: str, code: str = "ANIM011"):
+    from xaml3d.errors import Diagnostic
+    from xaml3d.xaml.animation_targets import ANIM_CODES
+
+    return Diagnostic(code, ANIM_CODES[code][0], message, file)

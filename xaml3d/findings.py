@@ -1,0 +1,79 @@
+"""The findings of a loaded scene: one list, built the same way for ``validate`` and ``render``.
+
+A scene's findings are, in this order: the reader's diagnostics (``Scene.diagnostics``), then for
+every viewport the camera check at the size it is checked or rendered at (``check_camera``),
+then the scene checks (``check_scene``). Both commands call ``scene_findings``, so they report the
+same codes, at the same line:column, with the same severity; ``render`` refuses a scene whose
+findings hold an error unless asked to be lenient, when ``lenient`` turns each error into a
+warning (the reader already used WPF's default for what it could not read).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
+from xaml3d.errors import ERROR, SEVERITIES, WARNING, Diagnostic
+from xaml3d.scene.types import Scene, Viewport
+
+SizeOf = Callable[[Viewport], tuple[float, float]]
+
+
+def _own_size(vp: Viewport) -> tuple[float, float]:
+    return (vp.width, vp.height)
+
+
+def with_file(diag: Diagnostic, file: str | None) -> Diagnostic:
+    """The diagnostic with ``file`` filled in when the producer did not know it."""
+    if diag.file is not None or file is None:
+        return diag
+    return Diagnostic(diag.code, diag.severity, diag.message, file, diag.line, diag.column)
+
+
+def scene_findings(scene: Scene, size_of: SizeOf = _own_size, file: str | None = None):
+    """Every finding of ``scene`` (see module docstring), located in ``file`` when the producer
+    did not say, sorted by position; ``size_of(viewport)`` gives the size a camera is checked
+    at (default: the viewport's own)."""
+    from xaml3d.scene.camera_check import check_camera
+    from xaml3d.scene.checks import check_scene
+
+    found: list[Diagnostic] = list(scene.diagnostics)
+    for vp in scene.viewports:
+        w, h = size_of(vp)
+        if vp.size_source.startswith("layout: ") and not (w > 0 and h > 0):
+            if (w, h) == (vp.width, vp.height):
+                continue  # laid out empty: LAY001/LAY002 say why WPF draws nothing (a warning)
+        found.extend(check_camera(vp.camera, w, h, vp.bounds()))
+    found.extend(check_scene(scene))
+    file = scene.file or file
+    return sort_findings(with_file(d, file) for d in found)
+
+
+def sort_findings(diags: Iterable[Diagnostic]) -> list[Diagnostic]:
+    """Sorted by (file, line, column) -- unlocated first within a file -- then severity order;
+    exact duplicates dropped."""
+    unique = list(dict.fromkeys(diags))
+    rank = {s: i for i, s in enumerate(SEVERITIES)}
+    return sorted(
+        unique,
+        key=lambda d: (
+            d.file or "",
+            d.line if d.line is not None else 0,
+            d.column if d.column is not None else 0,
+            rank.get(d.severity, len(rank)),
+        ),
+    )
+
+
+def has_errors(diags: Iterable[Diagnostic]) -> bool:
+    return any(d.severity == ERROR for d in diags)
+
+
+def lenient(diags: Iterable[Diagnostic]) -> list[Diagnostic]:
+    """``--lenient``: each error reported as a warning (the message says it was an error)."""
+    out = []
+    for d in diags:
+        if d.severity == ERROR:
+            msg = f"{d.message} [an error, rendered anyway: --lenient]"
+            d = Diagnostic(d.code, WARNING, msg, d.file, d.line, d.column)
+        out.append(d)
+    return out

@@ -1,0 +1,254 @@
+"""Grid layout: RowDefinitions/ColumnDefinitions with pixel, Auto and star sizes (WPF's Grid.cs).
+
+Measure follows WPF's order: definitions start at their user sizes (pixel sizes clamped to
+Min/Max; a star in a direction measured with infinite room acts as Auto); cells are measured in
+WPF's groups - (1) no star in either direction, (2) star and Auto columns in a non-star row,
+(3) non-star columns in star rows, (4) the rest - with the star rows resolved before group 3
+and the star columns before group 4, so that star cells are measured at their share. A cell
+spanning an Auto definition (and no star) is measured with infinite room in that direction.
+Each single-span cell raises its definition's minimum to the cell's desired size; a spanning
+cell's excess goes to the Auto definitions of its span (else to all of them equally). The
+Grid's desired size is the sum of the minimums.
+
+Arrange: pixel definitions take their size, Auto ones their minimum (both within Min/Max),
+stars share what is left in proportion to their weights, none below its minimum or above its
+Max. With UseLayoutRounding every size is rounded and the rounding errors are pushed onto the
+definitions that lost the most, so the rounded sizes add up to the rounded total.
+"""
+
+from __future__ import annotations
+
+from xaml3d.layout.tree import INF, Definition, Node
+
+
+class _Defs:
+    """Layout-time state of one direction's definitions."""
+
+    def __init__(self, defs: tuple[Definition, ...], constraint: float) -> None:
+        self.defs = defs
+        n = len(defs)
+        self.star_as_auto = constraint == INF
+        self.unit = ["auto" if (d.unit == "star" and self.star_as_auto) else d.unit for d in defs]
+        self.min = [0.0] * n
+        self.measure = [0.0] * n
+        for i, d in enumerate(defs):
+            user_min = d.min
+            user = d.value if d.unit == "pixel" else INF
+            if d.unit == "pixel":
+                user_min = max(user_min, min(user, d.max))
+            self.min[i] = user_min
+            self.measure[i] = max(user_min, min(user, d.max))
+        self.final = [0.0] * n
+        self.offsets = [0.0] * (n + 1)
+
+    def has(self, unit: str, start: int, span: int) -> bool:
+        return any(u == unit for u in self.unit[start : start + span])
+
+    def constraint(self, start: int, span: int) -> float:
+        """The room a cell spanning [start, start+span) is measured with."""
+        if self.has("auto", start, span) and not self.has("star", start, span):
+            return INF
+        return sum(
+            self.min[i] if self.unit[i] == "auto" else self.measure[i]
+            for i in range(start, start + span)
+        )
+
+    def ensure_min(self, start: int, span: int, size: float) -> None:
+        idx = range(start, start + span)
+        have = sum(self.min[i] for i in idx)
+        if size <= have:
+            return
+        autos = [i for i in idx if self.unit[i] == "auto"] or list(idx)
+        extra = (size - have) / len(autos)
+        for i in autos:
+            self.min[i] += extra
+
+    def resolve_star_measure(self, available: float) -> None:
+        taken = sum(
+            self.min[i] if u == "auto" else self.measure[i]
+            for i, u in enumerate(self.unit)
+            if u != "star"
+        )
+        stars = [i for i, u in enumerate(self.unit) if u == "star"]
+        sizes = distribute(
+            [self.defs[i].value for i in stars],
+            [self.min[i] for i in stars],
+            [self.defs[i].max for i in stars],
+            max(0.0, available - taken),
+        )
+        for i, s in zip(stars, sizes, strict=True):
+            self.measure[i] = s
+
+    def set_final(self, size: float, rounding: bool) -> None:
+        stars = []
+        taken = 0.0
+        for i, d in enumerate(self.defs):
+            if d.unit == "star":
+                stars.append(i)
+                continue
+            user = d.value if d.unit == "pixel" else self.min[i]
+            self.final[i] = max(self.min[i], min(user, d.max))
+            taken += self.final[i]
+        sizes = distribute(
+            [self.defs[i].value for i in stars],
+            [self.min[i] for i in stars],
+            [self.defs[i].max for i in stars],
+            max(0.0, size - taken),
+        )
+        for i, s in zip(stars, sizes, strict=True):
+            self.final[i] = s
+        if rounding:
+            self.final = round_sizes(self.final)
+        acc = 0.0
+        for i, s in enumerate(self.final):
+            self.offsets[i] = acc
+            acc += s
+        self.offsets[len(self.final)] = acc
+
+
+def distribute(weights: list[float], mins: list[float], maxs: list[float], space: float):
+    """Star sizes: ``space`` shared in proportion to ``weights``, each within [min, max]. A
+    definition whose share falls outside its bounds is fixed at the bound and the rest is shared
+    again (minimum violations first), as WPF's ResolveStar does."""
+    n = len(weights)
+    sizes: list[float | None] = [None] * n
+    for i in range(n):
+        if weights[i] <= 0:
+            sizes[i] = mins[i]
+    while True:
+        free = [i for i in range(n) if sizes[i] is None]
+        if not free:
+            break
+        rest = space - sum(s for s in sizes if s is not None)
+        total = sum(weights[i] for i in free)
+        share = {i: max(0.0, rest) * weights[i] / total for i in free}
+        low = [i for i in free if share[i] < mins[i]]
+        if low:
+            for i in low:
+                sizes[i] = mins[i]
+            continue
+        high = [i for i in free if share[i] > maxs[i]]
+        if high:
+            for i in high:
+                sizes[i] = max(mins[i], maxs[i])
+            continue
+        for i in free:
+            sizes[i] = share[i]
+    return [float(s) for s in sizes]
+
+
+def round_sizes(sizes: list[float]) -> list[float]:
+    """Whole-pixel sizes adding up to the rounded total: each size rounded, then the difference
+    handed out one pixel at a time to the sizes whose rounding moved them the most."""
+    rounded = [float(round(s)) for s in sizes]
+    diff = int(round(sum(sizes)) - sum(rounded))
+    if diff:
+        step = 1.0 if diff > 0 else -1.0
+        order = sorted(range(len(sizes)), key=lambda i: (rounded[i] - sizes[i]) * step)
+        for i in order[: abs(diff)]:
+            rounded[i] += step
+    return rounded
+
+
+def _label(d: _Defs, i: int, span: int, word: str) -> str:
+    parts = "+".join(d.defs[k].label() for k in range(i, i + span))
+    where = f"{word} {i}" if span == 1 else f"{word}s {i}..{i + span - 1}"
+    return f"{where} ({parts})"
+
+
+class GridLayout:
+    """Measure and arrange of one Grid, driven by the engine's ``measure``/``arrange``."""
+
+    def __init__(self, engine) -> None:
+        self.e = engine
+
+    def _cells(self, n: Node, cols: _Defs, rows: _Defs):
+        out = []
+        nc, nr = len(cols.defs), len(rows.defs)
+        for k in n.children:
+            c = min(max(k.col, 0), nc - 1)
+            r = min(max(k.row, 0), nr - 1)
+            cs = min(max(k.col_span, 1), nc - c)
+            rs = min(max(k.row_span, 1), nr - r)
+            out.append((k, c, cs, r, rs))
+        return out
+
+    def measure(self, n: Node, cw: float, ch: float) -> tuple[float, float]:
+        if not n.rows and not n.columns:  # the implicit single cell: an overlay
+            dw = dh = 0.0
+            for k in n.children:
+                self.e.measure(k, cw, ch)
+                dw, dh = max(dw, k.desired[0]), max(dh, k.desired[1])
+            return dw, dh
+        cols = _Defs(n.columns or (Definition(),), cw)
+        rows = _Defs(n.rows or (Definition(),), ch)
+        n.state = (cols, rows)
+        groups: list[list] = [[], [], [], []]
+        group3_in_auto_rows = False
+        for cell in self._cells(n, cols, rows):
+            k, c, cs, r, rs = cell
+            star_u, star_v = cols.has("star", c, cs), rows.has("star", r, rs)
+            if not star_u:
+                if not star_v:
+                    groups[0].append(cell)
+                else:
+                    groups[2].append(cell)
+                    group3_in_auto_rows |= rows.has("auto", r, rs)
+            elif cols.has("auto", c, cs) and not star_v:
+                groups[1].append(cell)
+            else:
+                groups[3].append(cell)
+        self._measure_group(groups[0], cols, rows)
+        if not groups[1]:
+            if any(u == "star" for u in rows.unit):
+                rows.resolve_star_measure(ch)
+            self._measure_group(groups[2], cols, rows)
+            if any(u == "star" for u in cols.unit):
+                cols.resolve_star_measure(cw)
+        else:
+            # Cells spanning star and Auto columns: WPF resolves the columns first. (Its
+            # extra pass for such cells when star rows hold Auto-row cells is not repeated:
+            # every element is measured once.)
+            if any(u == "star" for u in cols.unit):
+                cols.resolve_star_measure(cw)
+            self._measure_group(groups[1], cols, rows)
+            if any(u == "star" for u in rows.unit):
+                rows.resolve_star_measure(ch)
+            self._measure_group(groups[2], cols, rows)
+        self._measure_group(groups[3], cols, rows)
+        return sum(cols.min), sum(rows.min)
+
+    def _measure_group(self, cells, cols: _Defs, rows: _Defs) -> None:
+        spans = []
+        for k, c, cs, r, rs in cells:
+            self.e.measure(k, cols.constraint(c, cs), rows.constraint(r, rs))
+            dw, dh = k.desired
+            if cs == 1:
+                cols.min[c] = max(cols.min[c], min(dw, cols.defs[c].max))
+            else:
+                spans.append((cols, c, cs, dw))
+            if rs == 1:
+                rows.min[r] = max(rows.min[r], min(dh, rows.defs[r].max))
+            else:
+                spans.append((rows, r, rs, dh))
+        for d, i, s, size in sorted(spans, key=lambda t: t[2]):
+            d.ensure_min(i, s, size)
+
+    def arrange(self, n: Node, w: float, h: float) -> tuple[float, float]:
+        grid = n.state
+        if grid is None:
+            for k in n.children:
+                self.e.arrange(k, 0.0, 0.0, w, h, "the Grid's single cell")
+            return w, h
+        cols, rows = grid
+        rounding = self.e.rounds(n)
+        cols.set_final(w, rounding)
+        rows.set_final(h, rounding)
+        for k, c, cs, r, rs in self._cells(n, cols, rows):
+            x, y = cols.offsets[c], rows.offsets[r]
+            cw, ch = cols.offsets[c + cs] - x, rows.offsets[r + rs] - y
+            parts = ([_label(rows, r, rs, "row")] if n.rows else []) + (
+                [_label(cols, c, cs, "column")] if n.columns else [])  # fmt: skip
+            slot = ", ".join(parts)
+            self.e.arrange(k, x, y, cw, ch, slot)
+        return w, h

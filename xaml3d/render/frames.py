@@ -1,0 +1,144 @@
+"""Whole animations: frame times, rendered frames, and animated image files.
+
+``frame_times`` samples [start, end) at ``fps``; ``frame_durations`` gives each frame's display
+time in whole units (milliseconds, or GIF's 10 ms) whose total is exactly the animation's
+length (rounding distributed: frame i lasts round((i+1)T/n) - round(iT/n)). ``render_frames``
+yields one ordinary render per time of ``scene.timeline`` (the renderer knows nothing of
+animation). ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels
+become GIF transparency, any other pixel is opaque), APNG (.png), WebP, or numbered PNGs in a
+directory, atomically: a temporary file in the target's folder is written, fsynced and renamed, so a
+failure leaves no partial file and an existing one untouched.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+
+from xaml3d.errors import RenderError
+
+ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
+
+
+def frame_times(start: float, end: float, fps: float) -> list[float]:
+    """Times of the frames from ``start`` (included) to ``end`` (excluded): at least one."""
+    n = max(1, round((end - start) * fps))
+    return [start + i / fps for i in range(n)]
+
+
+def frame_durations(count: int, total: float, unit: float) -> list[int]:
+    """Display time of each of ``count`` frames in whole ``unit``s (seconds per unit), summing
+    to ``total`` seconds rounded to the unit."""
+    units = total / unit
+    return [round((i + 1) * units / count) - round(i * units / count) for i in range(count)]
+
+
+def render_frames(scene, times, storyboard: str | None = None, **options) -> Iterator:
+    """(time, Rendering) for each time: ``xaml3d.render.api.render_arrays`` options apply."""
+    from xaml3d.render.api import render_arrays, scene_at
+
+    for t in times:
+        yield t, render_arrays(scene_at(scene, t, storyboard), time=None, **options)
+
+
+def _gif_frame(rgba: np.ndarray):
+    """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
+    has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
+    so translucent surfaces stay visible; only empty pixels become transparent."""
+    from PIL import Image
+
+    alpha = rgba[..., 3]
+    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
+    clear = alpha == 0
+    if not clear.any():
+        return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
+    # the colours of visible pixels only choose the palette
+    q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    idx = np.array(q, dtype=np.uint8)
+    idx[clear] = 255
+    out = Image.fromarray(idx, mode="P")
+    pal = q.getpalette()[: 255 * 3]
+    out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
+    return out, 255
+
+
+def _atomic(path: Path, write) -> None:
+    directory = path.parent if str(path.parent) else Path(".")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            write(fh)
+            fh.flush()
+            os.fsync(fh.fileno())
+        mask = os.umask(0o022)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)
+        os.replace(tmp, path)
+    except BaseException as exc:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        if isinstance(exc, OSError):
+            raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
+        raise
+
+
+def save_animation(
+    frames: list[np.ndarray], path, total: float, *, loop: int = 0, directory: bool = False
+) -> list[Path]:
+    """Write (H, W, 4) uint8 RGBA frames lasting ``total`` seconds in all. ``loop``: 0 for
+    ever, else the number of plays. ``directory``: numbered PNGs ``frame_0000.png``... in the
+    folder ``path``. Returns the files written. Raises RenderError (RND006 format, RND007)."""
+    from PIL import Image
+
+    from xaml3d.render.api import save_image
+
+    path = Path(path)
+    if directory:
+        path.mkdir(parents=True, exist_ok=True)
+        digits = max(4, len(str(len(frames) - 1)))
+        out = []
+        for i, f in enumerate(frames):
+            target = path / f"frame_{i:0{digits}d}.png"
+            save_image(f, target, format="PNG")
+            out.append(target)
+        return out
+    fmt = ANIMATED_FORMATS.get(path.suffix.lower())
+    if fmt is None:
+        raise RenderError(
+            f"cannot write {path.name!r}: unknown animation format "
+            "(use .gif, .png (APNG), .webp, or a directory ending in /)",
+            code="RND006",
+        )
+    if fmt == "GIF":
+        pairs = [_gif_frame(f) for f in frames]
+        images = [p[0] for p in pairs]
+        durations = [10 * d for d in frame_durations(len(frames), total, 0.01)]
+        transparent = any(p[1] is not None for p in pairs)
+        extra = {"transparency": 255, "disposal": 2} if transparent else {}
+        # GIF's loop count is the number of REPEATS (0: for ever); no count plays once
+        if loop != 1:
+            extra["loop"] = 0 if loop == 0 else loop - 1
+
+        def write(fh):
+            images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
+                           duration=durations, optimize=False, **extra)  # fmt: skip
+    else:
+        images = [Image.fromarray(f, mode="RGBA") for f in frames]
+        durations = frame_durations(len(frames), total, 0.001)
+        opts = {"lossless": False, "quality": 90} if fmt == "WEBP" else {"default_image": False}
+
+        def write(fh):
+            images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
+                           duration=durations, loop=loop, **opts)  # fmt: skip
+
+    _atomic(path, write)
+    return [path]

@@ -1,0 +1,160 @@
+"""``render --window``: the root's client area drawn as one picture (layout result + scene).
+
+Paints, in WPF's order (parents before children, children in document order): the Window's
+background (WPF's default is the system window colour, white), every panel's and Border's
+Background (solid, gradient and image brushes, in the element's own coordinates: a brush's
+relative units refer to the element's box; a Border's Background fills, and maps to, the box
+inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
+and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
+ratio (``render_arrays``), composited over what lies beneath. 2D controls are not drawn;
+``outline_controls`` draws a one-pixel outline of each control's layout box. Hidden and
+Collapsed elements and their content are left out. A pixel belongs to a box when its centre
+lies inside it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xaml3d.errors import Diagnostic
+from xaml3d.layout.tree import BORDER, CONTROL, VIEWPORT, WINDOW, Node
+from xaml3d.render.brushes import sample_brush
+from xaml3d.render.frame import straight_uint8
+from xaml3d.scene.types import Scene, SolidColorBrush
+
+WINDOW_BACKGROUND = SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0))
+OUTLINE = (0.0, 120 / 255, 215 / 255, 1.0)  # the Windows accent blue, premultiplied (opaque)
+
+
+def _span(a: float, length: float, limit: int) -> tuple[int, int]:
+    """Pixels [i0, i1) whose centres lie in [a, a + length)."""
+    i0 = max(0, math.ceil(a - 0.5))
+    i1 = min(limit, math.ceil(a + length - 0.5))
+    return i0, max(i0, i1)
+
+
+def _over(canvas: np.ndarray, y0: int, x0: int, premul: np.ndarray) -> None:
+    h, w = premul.shape[:2]
+    dst = canvas[y0 : y0 + h, x0 : x0 + w]
+    dst *= 1.0 - premul[..., 3:4]
+    dst += premul
+
+
+def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
+    x, y, w, h = rect
+    H, W = canvas.shape[:2]
+    c0, c1 = _span(x, w, W)
+    r0, r1 = _span(y, h, H)
+    if c1 <= c0 or r1 <= r0 or w <= 0 or h <= 0:
+        return
+    px, py = np.meshgrid(np.arange(c0, c1) + 0.5 - x, np.arange(r0, r1) + 0.5 - y)
+    uv = np.stack([px.ravel(), py.ravel()], axis=1)
+    bounds = (np.zeros(2), np.array([w, h], dtype=np.float64))
+    color = sample_brush(brush, uv, bounds).reshape(r1 - r0, c1 - c0, 4).astype(np.float32)
+    if mask is not None:
+        color *= mask(px, py)[..., None]
+    _over(canvas, r0, c0, color)
+
+
+def _band(n: Node):
+    """The BorderThickness band of a Border, as a mask over element coordinates."""
+    left, top, right, bottom = n.border
+    w, h = n.rect[2], n.rect[3]
+    sx = w / n.ink[0] if n.ink[0] else 1.0  # a Viewbox scales the band too
+    sy = h / n.ink[1] if n.ink[1] else 1.0
+
+    def mask(px, py):
+        inner = (
+            (px >= left * sx) & (px < w - right * sx) & (py >= top * sy) & (py < h - bottom * sy)
+        )
+        return (~inner).astype(np.float32)
+
+    return mask
+
+
+def _inner(n: Node):
+    """A Border's rectangle less its BorderThickness (scaled like the element)."""
+    left, top, right, bottom = n.border
+    x, y, w, h = n.rect
+    sx = w / n.ink[0] if n.ink[0] else 1.0
+    sy = h / n.ink[1] if n.ink[1] else 1.0
+    return (x + left * sx, y + top * sy, max(0.0, w - (left + right) * sx),
+            max(0.0, h - (top + bottom) * sy))  # fmt: skip
+
+
+def _outline(canvas: np.ndarray, rect) -> None:
+    x, y, w, h = rect
+    H, W = canvas.shape[:2]
+    c0, c1 = _span(x, w, W)
+    r0, r1 = _span(y, h, H)
+    if c1 <= c0 or r1 <= r0:
+        return
+    color = np.array(OUTLINE, dtype=np.float32)
+    canvas[r0, c0:c1] = color
+    canvas[r1 - 1, c0:c1] = color
+    canvas[r0:r1, c0] = color
+    canvas[r0:r1, c1 - 1] = color
+
+
+def compose_window(
+    scene: Scene,
+    *,
+    mode: str = "shaded",
+    ssaa: int | None = None,
+    msaa: int | None = None,
+    background=None,
+    outline_controls: bool = False,
+    time: float | None = 0.0,
+    storyboard: str | None = None,
+) -> tuple[np.ndarray, list[Diagnostic]]:
+    """(straight-alpha rgba uint8 (H, W, 4), diagnostics) of the scene's whole client area.
+    ``background`` (straight RGBA floats) fills the picture first (default transparent);
+    ``time``/``storyboard``: the moment drawn, as for ``render_arrays``."""
+    from xaml3d.render.api import render_arrays, scene_at
+
+    scene = scene_at(scene, time, storyboard)
+
+    result = scene.layout
+    W = max(1, round(result.client[0]))
+    H = max(1, round(result.client[1]))
+    canvas = np.zeros((H, W, 4), dtype=np.float32)
+    if background is not None:
+        bg = np.array(background, dtype=np.float32)
+        bg[:3] *= bg[3]
+        canvas[...] = bg
+    diags: list[Diagnostic] = []
+    stack = [result.root]
+    while stack:
+        n = stack.pop()
+        if not n.arranged or n.visibility != "Visible":
+            continue
+        brush = n.background
+        if brush is None and n.kind == WINDOW and n is result.root:
+            brush = WINDOW_BACKGROUND
+        if n.kind == BORDER and n.border_brush is not None and any(n.border):
+            _fill(canvas, n.rect, n.border_brush, _band(n))
+        if brush is not None:
+            # a Border paints its Background inside the border band (its brush maps there)
+            _fill(canvas, _inner(n) if n.kind == BORDER else n.rect, brush)
+        if n.kind == VIEWPORT:
+            w, h = round(n.rect[2]), round(n.rect[3])
+            if w >= 1 and h >= 1:
+                r = render_arrays(
+                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None,
+                    aspect=n.rect[2] / n.rect[3],  # the exact laid-out aspect ratio
+                )  # fmt: skip
+                diags.extend(r.diagnostics)
+                premul = r.rgba.astype(np.float32) / 255.0
+                premul[..., :3] *= premul[..., 3:4]
+                x0, y0 = round(n.rect[0]), round(n.rect[1])
+                # the part inside the client area (a viewport may overhang it)
+                ys, xs = max(0, -y0), max(0, -x0)
+                ye, xe = min(h, H - y0), min(w, W - x0)
+                if ye > ys and xe > xs:
+                    _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
+        if n.kind == CONTROL and outline_controls:
+            _outline(canvas, n.rect)
+        stack.extend(reversed(n.children))
+    return straight_uint8(canvas), diags

@@ -1,0 +1,216 @@
+"""Resolving what an animation animates: Storyboard.TargetName + TargetProperty -> (markup
+element, property), once per load (wpf3d.md section 8).
+
+TargetName is an x:Name / Name anywhere in the document (resources included: WPF's name scope
+of a window reaches them). TargetProperty is a property path: a simple name (``Angle``), an
+owner-qualified chain such as
+``(ModelVisual3D.Transform).(RotateTransform3D.Rotation).(AxisAngleRotation3D.Angle)``,
+dotted names (``Transform.Rotation.Angle``), indexers into collections
+(``(Transform3DGroup.Children)[1]``, ``Children[0]``). Each step but the last must lead to an
+object written as an element (or a ``{StaticResource}``), or be a brush made from a colour
+string (``Brush="Red"``): WPF's storyboard animates a copy of such a frozen brush, so its Color
+or Opacity animates (the target is then that field of the built brush); any other object made
+from a string cannot be animated. The last step must be a property
+of the element's type whose value type is the animation's (a DoubleAnimation on a Point3D
+property is WPF's error). Problems are ANIM codes, reported by ``validate``.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from xaml3d.errors import ERROR, INFO, WARNING
+from xaml3d.xaml import vocabulary as voc
+from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
+
+ANIM_CODES: dict[str, tuple[str, str]] = {
+    "ANIM001": (ERROR, "Storyboard.TargetName names no object of the document"),
+    "ANIM002": (
+        ERROR,
+        "Storyboard.TargetProperty does not resolve on the target (no such "
+        "property, no object at a step, index out of range)",
+    ),  # fmt: skip
+    "ANIM003": (
+        ERROR,
+        "animation type does not match the property's type (a DoubleAnimation "
+        "on a Point3D property)",
+    ),  # fmt: skip
+    "ANIM004": (
+        ERROR,
+        "the path goes through an object made from a string (frozen: WPF cannot animate it)",
+    ),  # fmt: skip
+    "ANIM005": (ERROR, "animation without Storyboard.TargetName or Storyboard.TargetProperty"),
+    "ANIM006": (WARNING, "a time without a colon is a number of DAYS ('5' = five days)"),
+    "ANIM007": (
+        WARNING,
+        "storyboard that can never start (no trigger begins it, or BeginTime is {x:Null})",
+    ),  # fmt: skip
+    "ANIM008": (
+        WARNING,
+        "animation that never has an effect (BeginTime {x:Null}, or a zero-length active period)",
+    ),  # fmt: skip
+    "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
+    "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
+    "ANIM012": (
+        WARNING,
+        "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",
+    ),  # fmt: skip
+}
+
+# the value kind (vocabulary) each animation value type may target
+_KINDS = {
+    "Double": ("double",),
+    "Point3D": ("point3d",),
+    "Vector3D": ("vector3d",),
+    "Quaternion": ("quaternion",),
+    "Rotation3D": ("rotation3d",),
+    "Color": ("color",),
+    "Point": ("point",),
+    "Size": ("size",),
+}
+_STEP = re.compile(r"\s*(?:\(\s*([\w.:]+)\s*\)|([\w]+))\s*((?:\[\s*\d+\s*\])*)")
+
+
+@dataclass(frozen=True)
+class Target:
+    """A resolved target: the element whose property is animated, and the property."""
+
+    element: object  # lxml element (kept alive: overrides are keyed by its id)
+    prop: str
+    kind: str  # the property's value kind in the vocabulary
+    field: str | None = None  # a field of the object the property holds (a string-made brush)
+
+    @property
+    def key(self) -> tuple[int, str, str | None]:
+        return (id(self.element), self.prop, self.field)
+
+
+class TargetError(Exception):
+    def __init__(self, code: str, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+
+
+def parse_path(path: str) -> list[tuple[str, str | None, list[int]]]:
+    """``(Owner.Prop)[1].Prop2`` -> [(prop, owner, [indices]), ...]."""
+    steps = []
+    pos = 0
+    s = path.strip()
+    while pos < len(s):
+        m = _STEP.match(s, pos)
+        if not m or m.end() == pos:
+            raise TargetError("ANIM002", f"property path {path!r} cannot be read")
+        name = m.group(1) or m.group(2)
+        owner, _, prop = name.rpartition(".")
+        owner = owner.split(":")[-1] or None
+        idx = [int(x) for x in re.findall(r"\d+", m.group(3))]
+        steps.append((prop, owner, idx))
+        pos = m.end()
+        if pos < len(s):
+            if s[pos] != ".":
+                raise TargetError("ANIM002", f"property path {path!r} cannot be read")
+            pos += 1
+    if not steps:
+        raise TargetError("ANIM002", "empty property path")
+    return steps
+
+
+def name_map(root) -> dict[str, object]:
+    """x:Name / Name -> element, first in document order."""
+    out: dict[str, object] = {}
+    for el in root.iter():
+        if isinstance(el.tag, str) and is_presentation(qname(el.tag)[0]):
+            n = element_name(el)
+            if n and n not in out:
+                out[n] = el
+    return out
+
+
+def _follow(r, el):
+    """An element standing for a <StaticResource ResourceKey=.../>: the entry it names."""
+    if isinstance(el.tag, str) and qname(el.tag)[1] in ("StaticResource", "DynamicResource"):
+        key = el.get("ResourceKey")
+        entry = r.resources.lookup(key, el, dynamic=False) if key else None
+        if entry is None:
+            raise TargetError("ANIM002", f"resource {key!r} not found on the path")
+        return entry
+    return el
+
+
+_STRING_BRUSH_FIELDS = {"Color": ("color", "color"), "Opacity": ("opacity", "double")}
+
+
+def _string_brush(el, prop: str, rest: list, vtype: str) -> Target | None:
+    """``Brush="Red"`` then ``(SolidColorBrush.Color)`` / ``Opacity``: that field of the brush."""
+    if len(rest) != 1 or rest[0][2]:
+        return None
+    name, owner, _ = rest[0]
+    if owner not in (None, "SolidColorBrush", "Brush") or name not in _STRING_BRUSH_FIELDS:
+        return None
+    field, kind = _STRING_BRUSH_FIELDS[name]
+    if kind not in _KINDS.get(vtype, ()):
+        raise TargetError("ANIM003", f"{vtype} animation on SolidColorBrush.{name}, a {kind}")
+    return Target(el, prop, kind, field)
+
+
+def _step_objects(r, el, prop: str) -> list:
+    p = r.props(el)
+    if prop in p.attrs:
+        m = split_markup(p.attrs[prop])
+        if m is not None and m[0] in ("StaticResource", "DynamicResource"):
+            entry = r.resources.lookup(markup_key(m[1]), el, dynamic=False)
+            if entry is None:
+                raise TargetError("ANIM002", f"{p.type}.{prop}: its resource is not found")
+            return [entry]
+        raise TargetError(
+            "ANIM004", f"{p.type}.{prop} is made from the string {p.attrs[prop]!r}: frozen"
+        )
+    return [_follow(r, k) for k in p.items(prop)]
+
+
+def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: str) -> Target:
+    """Resolve one animation's target (raises TargetError)."""
+    if not target_name or not path:
+        missing = "TargetName" if not target_name else "TargetProperty"
+        raise TargetError("ANIM005", f"no Storyboard.{missing}")
+    el = names.get(target_name)
+    if el is None:
+        raise TargetError("ANIM001", f"Storyboard.TargetName {target_name!r} names no object")
+    steps = parse_path(path)
+    for n, (prop, _owner, indices) in enumerate(steps):
+        et = voc.lookup(qname(el.tag)[1])
+        tname = qname(el.tag)[1]
+        if et is None or (not et.open and prop not in et.properties):
+            raise TargetError("ANIM002", f"{tname} has no property {prop!r} (path {path!r})")
+        last = n == len(steps) - 1
+        if last and not indices:
+            kind = et.property_kind(prop) or "object"
+            if kind not in _KINDS.get(vtype, ()):
+                raise TargetError(
+                    "ANIM003",
+                    f"{vtype} animation on {tname}.{prop}, a {kind} property",
+                )
+            return Target(el, prop, kind)
+        if not indices and (et.property_kind(prop) or "").startswith("brush"):
+            attr = r.props(el).attrs.get(prop)
+            if attr is not None and split_markup(attr) is None:
+                hit = _string_brush(el, prop, steps[n + 1 :], vtype)
+                if hit is not None:
+                    return hit
+        objs = _step_objects(r, el, prop)
+        if indices:
+            i = indices[0]
+            if i >= len(objs):
+                raise TargetError(
+                    "ANIM002", f"{tname}.{prop}[{i}]: the collection has {len(objs)} items"
+                )
+            el = objs[i]
+        elif objs:
+            el = objs[-1]
+        else:
+            raise TargetError("ANIM002", f"{tname}.{prop} is not set: nothing to animate in it")
+        if last:
+            raise TargetError("ANIM003", f"{path!r} ends at an object, not a {vtype} value")
+    raise TargetError("ANIM002", f"property path {path!r} cannot be read")

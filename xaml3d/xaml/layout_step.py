@@ -1,0 +1,92 @@
+"""The layout step of reading: the panel tree read (panels_reader.py), laid out
+(xaml3d.layout) and turned into each viewport's size, its derivation and the gotcha warnings.
+
+A viewport that the panel walk does not reach (inside a header, a tooltip...) keeps its own
+Width/Height, else the default 640 x 480, and says so.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from xaml3d.errors import Diagnostic
+from xaml3d.layout import layout
+from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
+from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
+from xaml3d.xaml.panels_reader import read_layout
+
+DEFAULT_SIZE = (640.0, 480.0)
+_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM)
+
+
+@dataclass(frozen=True)
+class ViewportLayout:
+    width: float
+    height: float
+    rect: tuple[float, float, float, float] | None  # x, y, w, h in the root's client area
+    source: str  # the derivation ("layout: ..."), "viewport" or "default"
+    background: object = None  # the nearest laid-out ancestor's Background brush
+
+
+def derivation(vp: Node) -> str:
+    """The chain of elements from the root to the viewport, with the slot each parent gave."""
+    chain = [vp, *vp.ancestors()][::-1]
+    root = chain[0]
+    parts = []
+    for n in chain:
+        text = n.label
+        if n is root:
+            text += f" ({n.slot})" if n.slot else ""
+        elif n.parent is not None and n.parent.kind in _PLACING and n.slot:
+            text += f" [{n.slot}]"
+        extra = []
+        if any(n.margin) and n is not root:
+            extra.append("Margin " + ",".join(f"{m:g}" for m in n.margin))
+        if any(n.padding) or any(n.border):
+            extra.append(
+                "inset " + ",".join(f"{a + b:g}" for a, b in zip(n.border, n.padding, strict=True))
+            )
+        if n.width == n.width or n.height == n.height:
+            extra.append(f"Width {n.width:g} Height {n.height:g}".replace("nan", "Auto"))
+        if extra and n is not root:
+            text += " {" + "; ".join(extra) + "}"
+        parts.append(text)
+    return "layout: " + " > ".join(parts)
+
+
+def lay_out(r, root_el, viewport_elements: list, window_size=None):
+    """({viewport index: ViewportLayout}, LayoutResult or None)."""
+    root, nodes = read_layout(r, root_el, viewport_elements) if viewport_elements else (None, {})
+    result = layout(root, window_size) if root is not None else None
+    out: dict[int, ViewportLayout] = {}
+    if result is not None:
+        for note in viewport_notes(result.viewports):
+            el = viewport_elements[note.node.viewport]
+            r.ctx.add(Diagnostic(note.code, LAYOUT_CODES[note.code][0], note.message), el)
+    for i, el in enumerate(viewport_elements):
+        n = nodes.get(i)
+        if n is None:
+            out[i] = unreached(r, el)
+            continue
+        background = next((a.background for a in n.ancestors() if a.background is not None), None)
+        w, h = n.rect[2], n.rect[3]
+        if not n.arranged or any(a.visibility != "Visible" for a in (n, *n.ancestors())):
+            w = h = 0.0  # WPF draws nothing (LAY002 said why)
+        source = derivation(n)
+        if n.parent is None and n.slot.startswith("the default"):
+            source = "default"
+        elif n.parent is None and n.width == n.width and n.height == n.height:
+            source = "viewport"
+        out[i] = ViewportLayout(w, h, n.rect, source, background)
+    return out, result
+
+
+def unreached(r, el) -> ViewportLayout:
+    from xaml3d.xaml.panels_reader import ElementValues, parse_length
+
+    v = ElementValues(r, el)
+    w, h = v.get("Width", parse_length, math.nan), v.get("Height", parse_length, math.nan)
+    if w == w and h == h and w >= 0 and h >= 0:
+        return ViewportLayout(w, h, None, "viewport")
+    return ViewportLayout(*DEFAULT_SIZE, None, "default")

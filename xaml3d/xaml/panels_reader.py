@@ -1,0 +1,370 @@
+"""Reading the panels around the viewports into a layout tree (xaml3d.layout.tree.Node).
+
+Covers, for every element from the document's root down to the Viewport3Ds: Window (and
+NavigationWindow), Page, UserControl, Grid (RowDefinitions/ColumnDefinitions: pixel, Auto,
+star, Min/Max), DockPanel, StackPanel, Border, Canvas, Viewbox, ScrollViewer, UniformGrid
+(Rows, Columns, FirstColumn), Viewport3D, the
+content controls and decorators a viewport can sit in, and the 2D controls beside them (sized by
+Width/Height, else by an estimate: LAY003). Per element: Width/Height (``Auto``, ``px``, ``in``,
+``cm``, ``pt``), Min/Max sizes, Margin, Padding, BorderThickness, alignments, Visibility,
+UseLayoutRounding, the attached Grid.Row/Column/RowSpan/ColumnSpan, DockPanel.Dock,
+Canvas.Left/Top/Right/Bottom and ScrollViewer.*ScrollBarVisibility, the panels' own properties,
+and the Background/BorderBrush that ``render --window`` paints. Values go through the reader's
+converters, so a bad value is a located diagnostic and the property keeps WPF's default.
+"""
+
+from __future__ import annotations
+
+import math
+
+from xaml3d.errors import Diagnostic, ValueSyntaxError
+from xaml3d.layout import tree as L
+from xaml3d.layout.gotchas import LAYOUT_CODES
+from xaml3d.xaml import values as V
+from xaml3d.xaml import vocabulary as voc
+from xaml3d.xaml.brushes_reader import brush_property
+from xaml3d.xaml.context import element_name, is_presentation, qname, split_markup
+
+BLEND_NS = "http://schemas.microsoft.com/expression/blend/2008"
+
+_KINDS = {
+    "Window": L.WINDOW, "NavigationWindow": L.WINDOW, "Page": L.PAGE,
+    "UserControl": L.USER_CONTROL, "Grid": L.GRID, "DockPanel": L.DOCK,
+    "StackPanel": L.STACK, "Border": L.BORDER, "Canvas": L.CANVAS, "InkCanvas": L.CANVAS,
+    "Viewbox": L.VIEWBOX, "ScrollViewer": L.SCROLL, "Viewport3D": L.VIEWPORT,
+    "UniformGrid": L.UNIFORM,
+}  # fmt: skip
+# Elements that simply hold their content (no chrome of their own): laid out as a Border.
+_PLAIN = {"ContentControl", "ContentPresenter", "Decorator", "AdornerDecorator", "Frame"}
+# 2D elements taking part in layout that xaml3d neither lays out inside nor draws.
+_CONTROLS = set("""
+Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox ComboBoxItem ListBox
+ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline Menu MenuItem
+Separator Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar
+MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox WrapPanel GridSplitter
+StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Thumb Track ScrollBar ResizeGrip
+HeaderedContentControl Calendar DatePicker DataGrid TreeView TreeViewItem
+""".split())  # fmt: skip
+_SHAPES = {"Rectangle", "Ellipse", "Path", "Line", "Polygon", "Polyline", "Image"}
+# The documented estimate of a control's content size: about 7 px per character of its text
+# (Segoe UI 12 px), one 16 px text line, plus the chrome (padding + border) of its default
+# template, (width, height) in px.
+CHAR_WIDTH, LINE_HEIGHT = 7.0, 16.0
+_CHROME = {
+    "TextBlock": (0, 0), "Label": (10, 10), "Button": (4, 4), "ToggleButton": (4, 4),
+    "RepeatButton": (4, 4), "CheckBox": (20, 0), "RadioButton": (20, 0), "TextBox": (6, 6),
+    "PasswordBox": (6, 6), "ComboBox": (26, 6), "Slider": (0, 6), "ProgressBar": (0, -6),
+    "Separator": (0, -12), "Menu": (0, 4), "MenuItem": (14, 6), "ToolBar": (12, 10),
+    "StatusBar": (0, 6), "GroupBox": (12, 30), "Expander": (24, 8), "TabControl": (8, 32),
+}  # fmt: skip
+# Property elements whose children are not laid out as content.
+_NOT_CONTENT = ("Resources", "Triggers", "MergedDictionaries", "RowDefinitions",
+                "ColumnDefinitions", "Style", "Template", "ToolTip", "ContextMenu",
+                "InputBindings", "CommandBindings", "Background", "BorderBrush", "Foreground",
+                "Effect", "RenderTransform", "LayoutTransform", "OpacityMask", "Clip",
+                "ItemTemplate", "ItemsPanel", "DataContext", "Camera", "Header")  # fmt: skip
+_PAINTED = (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.BORDER, L.CANVAS,
+            L.CONTAINER, L.SCROLL, L.UNIFORM)  # fmt: skip
+_UNITS = {"px": 1.0, "in": 96.0, "cm": 96.0 / 2.54, "pt": 96.0 / 72.0}
+_ALIGN_H = ("Left", "Center", "Right", "Stretch")
+_ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
+
+
+def parse_length(s: str) -> float:
+    """A FrameworkElement length (LengthConverter): a number with an optional px, in, cm or pt
+    unit, or ``Auto`` (NaN: sized by layout)."""
+    t = s.strip()
+    if t.lower() == "auto":
+        return math.nan
+    factor = 1.0
+    if t[-2:].lower() in _UNITS:
+        factor, t = _UNITS[t[-2:].lower()], t[:-2]
+    return V.parse_double(t) * factor
+
+
+def parse_thickness(s: str) -> tuple[float, float, float, float]:
+    """A Thickness: one length (all sides), two (left/right, top/bottom) or four (left, top,
+    right, bottom)."""
+    toks = [parse_length(t) for t, _ in V.split_tokens(s, "Thickness")]
+    if any(v != v for v in toks):
+        raise ValueSyntaxError(
+            f"Thickness: Auto is not a thickness in {s.strip()!r}", code="VAL001"
+        )
+    if len(toks) == 1:
+        return (toks[0],) * 4
+    if len(toks) == 2:
+        return (toks[0], toks[1], toks[0], toks[1])
+    if len(toks) == 4:
+        return tuple(toks)
+    raise ValueSyntaxError(f"Thickness needs 1, 2 or 4 lengths, got {len(toks)}", code="VAL003")
+
+
+def parse_grid_length(s: str) -> tuple[str, float]:
+    """A GridLength: ``Auto``, ``*``, ``2*`` or a length -> (unit, value)."""
+    t = s.strip()
+    if t.lower() == "auto":
+        return "auto", 1.0
+    if t.endswith("*"):
+        w = V.parse_double(t[:-1]) if t[:-1].strip() else 1.0
+        if w < 0:
+            raise ValueSyntaxError(f"GridLength: negative star weight in {t!r}", code="VAL007")
+        return "star", w
+    v = parse_length(t)
+    if v != v or v < 0:
+        raise ValueSyntaxError(f"GridLength: {t!r} is not a size", code="VAL001")
+    return "pixel", v
+
+
+class ElementValues:
+    """Property values of one element, through Props (presentation elements) or, for custom
+    elements, their plain attributes with bad values ignored."""
+
+    def __init__(self, r, el) -> None:
+        self.r, self.el = r, el
+        self.p = r.props(el) if is_presentation(qname(el.tag)[0]) else None
+
+    def get(self, prop: str, conv, default):
+        if self.p is not None:
+            return self.p.value(prop, conv, default)
+        raw = self.el.get(prop)
+        if raw is None or split_markup(raw) is not None:
+            return default
+        try:
+            return conv(raw)
+        except ValueSyntaxError:
+            return default
+
+    def attached(self, prop: str, conv, default):
+        if self.p is None:
+            raw = self.el.get(prop)
+        else:
+            raw = self.p.attached.get(prop)
+            owner, _, short = prop.partition(".")
+            if raw is None and owner == self.p.type:  # Grid.Row on a Grid: read as its own
+                raw = self.p.attrs.get(short)
+                prop = self.p.attr_keys.get(short, prop)
+        if raw is None or split_markup(raw) is not None:
+            return default  # a {Binding} row cannot be evaluated: WPF's default
+        try:
+            return conv(raw)
+        except ValueSyntaxError as exc:
+            if self.p is not None:
+                exc.message = f"{prop}: {exc.message}"
+                self.r.ctx.error(exc, self.el, attr=prop)
+            return default
+
+
+def _enum(allowed):
+    return lambda s: V.parse_enum(s, allowed)
+
+
+class PanelsReader:
+    def __init__(self, r, viewport_elements: list) -> None:
+        self.r = r
+        self.index = {id(el): i for i, el in enumerate(viewport_elements)}
+        self.holds_viewport: set[int] = set()
+        for el in viewport_elements:
+            node = el.getparent()
+            while node is not None and id(node) not in self.holds_viewport:
+                self.holds_viewport.add(id(node))
+                node = node.getparent()
+        self.viewports: dict[int, L.Node] = {}
+
+    def note(self, code: str, message: str, el) -> None:
+        self.r.ctx.add(Diagnostic(code, LAYOUT_CODES[code][0], message), el)
+
+    # ----------------------------------------------------------------- elements
+    def kind_of(self, el) -> str | None:
+        """The layout rule of an element, None when it takes no part in layout."""
+        ns, local = qname(el.tag)
+        if not is_presentation(ns) or voc.lookup(local) is None:
+            return L.CONTAINER if id(el) in self.holds_viewport else L.CONTROL
+        if local == "Viewport3D":
+            return L.VIEWPORT if id(el) in self.index else None
+        if local in _KINDS:
+            return _KINDS[local]
+        if local in _PLAIN:
+            return L.CONTAINER
+        if local in _CONTROLS:
+            return L.CONTAINER if id(el) in self.holds_viewport else L.CONTROL
+        return None
+
+    def content_of(self, el):
+        """The child elements that are laid out inside ``el`` (content and Child/Content/
+        Children/Items property elements), in document order."""
+        for child in el:
+            if not isinstance(child.tag, str):
+                continue
+            ns, local = qname(child.tag)
+            if "." in local:
+                if local.rpartition(".")[2] in _NOT_CONTENT:
+                    continue
+                for g in child:
+                    if isinstance(g.tag, str) and "." not in qname(g.tag)[1]:
+                        yield g
+            else:
+                yield child
+
+    def build(self, el) -> L.Node | None:
+        kind = self.kind_of(el)
+        if kind is None:
+            return None
+        ns, local = qname(el.tag)
+        n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
+        v = ElementValues(self.r, el)
+        self._framework(n, v)
+        if kind == L.VIEWPORT:
+            n.viewport = self.index[id(el)]
+            self.viewports[n.viewport] = n
+            return n
+        self._panel(n, v, el)
+        if kind == L.CONTROL:
+            self._estimate(n, v, el)
+            return n
+        if kind == L.CONTAINER and (local not in _PLAIN):
+            what = "custom element" if not is_presentation(ns) else local
+            self.note("LAY004", f"{what} {local!r} holding a Viewport3D is laid out as a plain "
+                      "container (its own chrome and rules are not known)", el)  # fmt: skip
+        for child in self.content_of(el):
+            k = self.build(child)
+            if k is not None:
+                n.children.append(k)
+        return n
+
+    def _framework(self, n: L.Node, v: ElementValues) -> None:
+        for prop in ("Width", "Height"):
+            x = v.get(prop, parse_length, math.nan)
+            if x == x and x < 0:
+                # WPF refuses a negative size outright; xaml3d treats it as empty.
+                self.r.ctx.diag(
+                    "SCN012", f"{n.type}.{prop} = {x:g} is negative (invalid in WPF): taken as 0",
+                    v.el, attr=v.p.attr_keys.get(prop) if v.p else None,
+                )  # fmt: skip
+                x = 0.0
+            setattr(n, prop.lower(), x)
+        n.min_width = _finite(v.get("MinWidth", parse_length, 0.0), 0.0)
+        n.min_height = _finite(v.get("MinHeight", parse_length, 0.0), 0.0)
+        n.max_width = _nonneg(v.get("MaxWidth", parse_length, math.inf), math.inf)
+        n.max_height = _nonneg(v.get("MaxHeight", parse_length, math.inf), math.inf)
+        n.margin = v.get("Margin", parse_thickness, n.margin)
+        n.h_align = v.get("HorizontalAlignment", _enum(_ALIGN_H), n.h_align)
+        n.v_align = v.get("VerticalAlignment", _enum(_ALIGN_V), n.v_align)
+        n.visibility = v.get("Visibility", _enum(("Visible", "Hidden", "Collapsed")), "Visible")
+        n.rounding = v.get("UseLayoutRounding", V.parse_bool, None)
+        n.row = max(0, v.attached("Grid.Row", V.parse_int, 0))
+        n.col = max(0, v.attached("Grid.Column", V.parse_int, 0))
+        n.row_span = max(1, v.attached("Grid.RowSpan", V.parse_int, 1))
+        n.col_span = max(1, v.attached("Grid.ColumnSpan", V.parse_int, 1))
+        n.dock = v.attached("DockPanel.Dock", _enum(("Left", "Top", "Right", "Bottom")), "Left")
+        for side in ("Left", "Top", "Right", "Bottom"):
+            setattr(n, side.lower(), v.attached(f"Canvas.{side}", parse_length, math.nan))
+
+    def _panel(self, n: L.Node, v: ElementValues, el) -> None:
+        kind = n.kind
+        bars = ("Disabled", "Auto", "Hidden", "Visible")
+        if kind == L.WINDOW:
+            n.size_to_content = v.get(
+                "SizeToContent", _enum(("Manual", "Width", "Height", "WidthAndHeight")), "Manual"
+            )
+        if kind == L.SCROLL:
+            n.scroll_h = v.get("HorizontalScrollBarVisibility", _enum(bars), "Disabled")
+            n.scroll_v = v.get("VerticalScrollBarVisibility", _enum(bars), "Visible")
+        if kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.BORDER, L.CONTAINER, L.SCROLL):
+            n.padding = v.get("Padding", parse_thickness, n.padding)
+            n.border = v.get("BorderThickness", parse_thickness, n.border)
+        if kind == L.UNIFORM:
+            n.uniform = tuple(
+                max(0, v.get(p, V.parse_int, 0)) for p in ("Rows", "Columns", "FirstColumn")
+            )
+        if kind == L.STACK:
+            n.orientation = v.get("Orientation", _enum(("Vertical", "Horizontal")), "Vertical")
+        if kind == L.DOCK:
+            n.last_child_fill = v.get("LastChildFill", V.parse_bool, True)
+        if kind == L.VIEWBOX:
+            n.stretch = v.get(
+                "Stretch", _enum(("None", "Fill", "Uniform", "UniformToFill")), "Uniform"
+            )
+            n.stretch_direction = v.get(
+                "StretchDirection", _enum(("UpOnly", "DownOnly", "Both")), "Both"
+            )
+        if kind == L.GRID and v.p is not None:
+            n.rows = self._definitions(v.p, "RowDefinitions", "Height")
+            n.columns = self._definitions(v.p, "ColumnDefinitions", "Width")
+        if kind == L.PAGE:
+            ww = v.get("WindowWidth", parse_length, math.nan)
+            wh = v.get("WindowHeight", parse_length, math.nan)
+            if ww == ww or wh == wh:
+                fw, fh = L.WINDOW_FRAME
+                n.design_size = (ww - fw if ww == ww else None, wh - fh if wh == wh else None)
+        if el.getparent() is None and kind != L.WINDOW and n.design_size is None:
+            dw, dh = _design(el, "DesignWidth"), _design(el, "DesignHeight")
+            if dw is not None or dh is not None:
+                n.design_size = (dw, dh)
+        if v.p is not None and kind in _PAINTED:
+            if v.p.has("Background"):
+                n.background = brush_property(self.r, v.p, "Background")
+            if kind in (L.BORDER, L.WINDOW, L.USER_CONTROL, L.CONTAINER) and v.p.has("BorderBrush"):
+                n.border_brush = brush_property(self.r, v.p, "BorderBrush")
+
+    def _definitions(self, p, prop: str, size: str) -> tuple[L.Definition, ...]:
+        out = []
+        for d in p.items(prop):
+            if not isinstance(d.tag, str) or qname(d.tag)[1] not in (
+                "RowDefinition",
+                "ColumnDefinition",
+            ):
+                continue
+            dv = ElementValues(self.r, d)
+            unit, value = dv.get(size, parse_grid_length, ("star", 1.0))
+            lo = _finite(dv.get(f"Min{size}", parse_length, 0.0), 0.0)
+            hi = _nonneg(dv.get(f"Max{size}", parse_length, math.inf), math.inf)
+            out.append(L.Definition(unit, value, lo, hi))
+        return tuple(out)
+
+    def _estimate(self, n: L.Node, v: ElementValues, el) -> None:
+        local = n.type
+        if local in _SHAPES or not is_presentation(qname(el.tag)[0]):
+            n.estimate = (0.0, 0.0)  # shapes and images without a size: nothing to measure
+            return
+        text = None
+        for prop in ("Text", "Content", "Header"):
+            s = el.get(prop)
+            if s is not None and split_markup(s) is None:
+                text = s
+                break
+        if text is None:
+            text = "".join(el.itertext()).strip() if len(el) == 0 else ""
+        cw, ch = _CHROME.get(local, (0, 0))
+        w = CHAR_WIDTH * len(text) + cw
+        h = LINE_HEIGHT + ch
+        n.estimate = (max(0.0, w), max(0.0, h))
+        if n.width != n.width or n.height != n.height:
+            self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
+                      f"estimated as {w:g} x {h:g}", el)  # fmt: skip
+
+
+def _finite(x: float, default: float) -> float:
+    return x if (x == x and math.isfinite(x) and x >= 0) else default
+
+
+def _nonneg(x: float, default: float) -> float:
+    return x if (x == x and x >= 0) else default
+
+
+def _design(el, name: str) -> float | None:
+    raw = el.get(f"{{{BLEND_NS}}}{name}")
+    if raw is None:
+        return None
+    try:
+        x = parse_length(raw)
+    except ValueSyntaxError:
+        return None
+    return x if x == x and x >= 0 else None
+
+
+def read_layout(r, root_el, viewport_elements: list):
+    """(layout root or None, {viewport index: Node}) for the document whose root is
+    ``root_el``; None when the root takes no part in layout."""
+    reader = PanelsReader(r, viewport_elements)
+    root = reader.build(root_el)
+    return root, reader.viewports
