@@ -114,11 +114,13 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("--msaa", type=click.IntRange(1, 4), help="Multisampling per axis, 1..4 (default 2).")
 @click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
 @resources_option
+@click.option("-j", "--jobs", type=click.IntRange(1),
+              help="Worker processes for the frames (default: the number of cores).")  # fmt: skip
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @animate_lens_options
 def animate_command(scene, output, fps, start, end, duration, loop, storyboard, width, height,
-                    mode, background, ssaa, msaa, viewport, resources, quiet,
+                    mode, background, ssaa, msaa, viewport, resources, jobs, quiet,
                     verbose, extras) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
     from xaml3d.cli_render_extras import check_request, lens_arguments
@@ -161,7 +163,10 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
         opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
         opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         frames = []
-        it = render_frames(sc, times, storyboard, width=w, height=h, **opts)
+        from xaml3d.cli_jobs import default_jobs
+
+        jobs = default_jobs() if jobs is None else jobs
+        it = render_frames(sc, times, storyboard, jobs=jobs, width=w, height=h, **opts)
         if stderr_is_terminal() and not quiet:
             with click.progressbar(it, length=len(times), label="animating",
                                    file=click.get_text_stream("stderr")) as bar:  # fmt: skip

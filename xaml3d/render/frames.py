@@ -37,12 +37,51 @@ def frame_durations(count: int, total: float, unit: float) -> list[int]:
     return [round((i + 1) * units / count) - round(i * units / count) for i in range(count)]
 
 
-def render_frames(scene, times, storyboard: str | None = None, **options) -> Iterator:
-    """(time, Rendering) for each time: ``xaml3d.render.api.render_arrays`` options apply."""
+def render_frames(
+    scene, times, storyboard: str | None = None, *, jobs: int = 1, **options
+) -> Iterator:
+    """(time, Rendering) for each time: ``xaml3d.render.api.render_arrays`` options apply.
+
+    ``jobs`` > 1 renders the frames in that many worker processes (each frame is an independent
+    render, so the results are the same); they are still yielded in time order."""
+    if jobs > 1 and len(times) > 1:
+        yield from _parallel_frames(scene, times, storyboard, jobs, options)
+        return
     from xaml3d.render.api import render_arrays, scene_at
 
     for t in times:
         yield t, render_arrays(scene_at(scene, t, storyboard), time=None, **options)
+
+
+_WORKER: dict = {}  # a worker process's scene, storyboard and options (see _parallel_frames)
+
+
+def _start_worker(scene, storyboard, options) -> None:
+    _WORKER.update(scene=scene, storyboard=storyboard, options=options)
+
+
+def _worker_frame(t: float):
+    from xaml3d.render.api import render_arrays, scene_at
+
+    w = _WORKER
+    return t, render_arrays(scene_at(w["scene"], t, w["storyboard"]), time=None, **w["options"])
+
+
+def _parallel_frames(scene, times, storyboard, jobs: int, options) -> Iterator:
+    # Forked workers inherit the loaded scene (nothing to pickle but the times and results);
+    # where fork does not exist the scene is pickled once per worker.
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    methods = multiprocessing.get_all_start_methods()
+    ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    workers = min(int(jobs), len(times))
+    with ProcessPoolExecutor(
+        workers, mp_context=ctx, initializer=_start_worker, initargs=(scene, storyboard, options)
+    ) as pool:
+        futures = [pool.submit(_worker_frame, t) for t in times]
+        for future in futures:
+            yield future.result()
 
 
 def _gif_frame(rgba: np.ndarray):
