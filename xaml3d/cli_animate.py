@@ -28,6 +28,7 @@ from xaml3d.cli_common import (
 )
 from xaml3d.cli_outputs import (
     OUTPUT_CODES,
+    FrameSequence,
     animation_target,
     overwritten_input,
     remove_stale,
@@ -160,6 +161,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images
     file = sc.file or name
     diags = [with_file(d, file) for d in sc.diagnostics]
+    sequence = None
     try:
         start = start or 0.0
         if end is None:
@@ -183,6 +185,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if _refused(name, [Path(output) / n for n in names] if to_dir else [Path(output)], inputs):
             ctx.exit(1)
         stale = stale_frames(Path(output), names) if to_dir else []
+        sequence = FrameSequence(Path(output), names) if to_dir else None
         opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
         opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         frames = []
@@ -190,19 +193,25 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
 
         jobs = default_jobs() if jobs is None else jobs
         it = render_frames(sc, times, storyboard, jobs=jobs, width=w, height=h, **opts)
+        # A sequence goes to disk frame by frame; an animated file needs every frame at once.
+        keep = frames.append if sequence is None else sequence.add
         if stderr_is_terminal() and not quiet:
             with click.progressbar(it, length=len(times), label="animating",
                                    file=click.get_text_stream("stderr")) as bar:  # fmt: skip
-                frames = [_keep(r, diags, file) for _, r in bar]
+                for _, r in bar:
+                    keep(_keep(r, diags, file))
         else:
-            frames = [_keep(r, diags, file) for _, r in it]
+            for _, r in it:
+                keep(_keep(r, diags, file))
         empty = [d for d in diags if d.code == "RND002"]
         if len(empty) < len(times):  # an empty frame is part of an animation: no warning
             diags = [d for d in diags if d.code != "RND002"]
-        gif = not to_dir and Path(output).suffix.lower() == ".gif"
-        if gif:
-            frames = _gif_frames(frames, bg, diags, file)
-        save_animation(frames, output, end - start, loop=loop, directory=to_dir)
+        if sequence is not None:
+            sequence.commit()
+        else:
+            if Path(output).suffix.lower() == ".gif":
+                frames = _gif_frames(frames, bg, diags, file)
+            save_animation(frames, output, end - start, loop=loop)
         if stale and clean:
             stale = remove_stale(stale, inputs)  # only after the new sequence is complete
         if stale:
@@ -215,6 +224,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         echo_diagnostics(diags, quiet=quiet, verbose=verbose)
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         ctx.exit(1)
+    finally:
+        if sequence is not None:
+            sequence.discard()  # a failure or Ctrl-C: no frame file of this run is left
     errors = [d for d in diags if d.severity == ERROR and d.code.startswith("CAM")]
     echo_diagnostics(diags, quiet=quiet, verbose=verbose)
     if errors:
@@ -231,8 +243,8 @@ def _refused(name: str, outputs: list[Path], inputs: list[Path]) -> bool:
 
 
 def _gif_frames(frames: list, bg, diags: list, file: str) -> list:
-    """The frames as GIF holds them: flattened onto the background colour (white without
-    --background) when GIF's 1-bit transparency would lose their translucency (ANIM013)."""
+    """The frames as GIF holds them: flattened onto the --background colour made opaque (white
+    without it) when GIF's 1-bit transparency would lose their translucency (ANIM013)."""
     from xaml3d.render.gif_matte import frames_for_gif
 
     matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])

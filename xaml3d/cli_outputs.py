@@ -6,6 +6,9 @@
 - No output may be a file the scene reads (the scene, ``-r`` dictionaries, App.xaml, ImageBrush
   images): ``overwritten_input`` finds the first such pair among every path the command would
   write (each frame file of a sequence), so the command refuses (IO002) before writing anything.
+- A directory sequence is written frame by frame as the frames are drawn (``FrameSequence``:
+  memory for one frame, however long the animation), under temporary names renamed into place
+  once every frame is drawn: a failure or Ctrl-C leaves no new frame file.
 - A sequence written into a directory that holds frame files of an earlier, longer run would be
   seen mixed with them: ``stale_frames`` lists them (warning IO004), ``--clean`` removes them
   (only files named like frames, never a file the scene reads).
@@ -124,3 +127,36 @@ def stale_message(directory: str, stale: list[Path], count: int, clean: bool) ->
         f"{head} beside the {count} written: a viewer of the sequence shows them too "
         "(--clean removes them)"
     )
+
+
+class FrameSequence:
+    """The frame files of ``directory``, written as the frames come under hidden temporary
+    names (never named like frames): ``commit`` renames them all into place, ``discard`` (a
+    no-op after ``commit``) removes what was written."""
+
+    def __init__(self, directory: Path, names: list[str]) -> None:
+        self.directory = directory
+        self.names = names
+        self.written: list[tuple[Path, Path]] = []  # (temporary, final)
+        directory.mkdir(parents=True, exist_ok=True)
+
+    def add(self, rgba) -> None:
+        from xaml3d.render.api import save_image
+
+        final = self.directory / self.names[len(self.written)]
+        tmp = self.directory / f".{final.name}.{os.getpid()}.partial.png"
+        self.written.append((tmp, final))
+        save_image(rgba, tmp, format="PNG")
+
+    def commit(self) -> None:
+        for tmp, final in self.written:
+            os.replace(tmp, final)
+        self.written = []
+
+    def discard(self) -> None:
+        for tmp, _ in self.written:
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
+        self.written = []
