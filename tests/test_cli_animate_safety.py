@@ -308,3 +308,15 @@ def test_an_interrupted_sequence_leaves_the_earlier_frames(tmp_path, monkeypatch
                                   "--start", "0.1"])  # fmt: skip
     assert r.exit_code == 1 and "Aborted!" in r.output
     assert {f.name: f.read_bytes() for f in d.iterdir()} == before  # no temporary, no mix
+
+
+def test_a_scene_with_errors_is_not_animated_unless_lenient(tmp_path):
+    (tmp_path / "s.xaml").write_text(scene().replace('Color="White"', 'Color="Whyte"'))
+    p = xaml3d("animate", "s.xaml", "-o", "a.gif", "--fps", "2", cwd=tmp_path)
+    assert p.returncode == 1 and b"s.xaml:5:19: error VAL004" in p.stderr, p.stderr
+    assert b"s.xaml: not animated: the scene has errors (--lenient animates it)" in p.stderr
+    assert not (tmp_path / "a.gif").exists()
+    p = xaml3d("animate", "s.xaml", "-o", "a.gif", "--fps", "2", "--lenient", cwd=tmp_path)
+    assert p.returncode == 0 and b"warning VAL004" in p.stderr
+    assert b"[an error, rendered anyway: --lenient]" in p.stderr
+    assert (tmp_path / "a.gif").exists()

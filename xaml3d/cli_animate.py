@@ -36,7 +36,7 @@ from xaml3d.cli_outputs import (
     stale_message,
 )
 from xaml3d.cli_render_extras import animate_lens_options
-from xaml3d.errors import ERROR, XamlError
+from xaml3d.errors import ERROR, CameraError, XamlError
 
 DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
 
@@ -127,12 +127,15 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @resources_option
 @click.option("-j", "--jobs", type=click.IntRange(1),
               help="Worker processes for the frames (default: the number of cores).")  # fmt: skip
+@click.option("--lenient", is_flag=True, help="Animate a scene with errors anyway: each "
+              "error is reported as a warning, WPF's default used for what could not be "
+              "read.")  # fmt: skip
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @animate_lens_options
 def animate_command(scene, output, fps, start, end, duration, loop, clean, storyboard, width,
-                    height, mode, background, ssaa, msaa, viewport, resources, jobs, quiet,
-                    verbose, extras) -> None:  # fmt: skip
+                    height, mode, background, ssaa, msaa, viewport, resources, jobs, lenient,
+                    quiet, verbose, extras) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
     from xaml3d.cli_render_extras import check_request, lens_arguments
 
@@ -173,6 +176,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if end <= start:
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
         from xaml3d.render.frames import frame_names, frame_times, render_frames, save_animation
+
+        diags = _verdict(sc, (start, storyboard), (width, height), name, lenient, diags, quiet,
+                         verbose)  # fmt: skip
 
         if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
             slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
@@ -231,6 +237,33 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     echo_diagnostics(diags, quiet=quiet, verbose=verbose)
     if errors:
         ctx.exit(1)
+
+
+def _verdict(sc, moment, size, name: str, lenient: bool, diags, quiet: bool, verbose: bool):
+    """The findings ``render --time START`` reports (``xaml3d.findings``, the same as
+    ``validate``) at ``moment`` (start, storyboard) and ``size`` (-W, -H): a scene with errors
+    is not animated (exit 1) unless --lenient, which reports each error as a warning. Returns
+    the diagnostics to print after the frames."""
+    from xaml3d.findings import has_errors, scene_findings
+    from xaml3d.findings import lenient as lenient_findings
+    from xaml3d.render.api import scene_at
+
+    def size_of(vp):
+        try:
+            return render_size(vp, *size)
+        except CameraError:  # an empty viewport: the camera check reports it (CAM010)
+            return (vp.width, vp.height)
+
+    findings = scene_findings(scene_at(sc, *moment), size_of, name)
+    if not has_errors(findings):
+        return [*findings, *(d for d in diags if d not in findings)]
+    if not lenient or not sc.viewports:
+        echo_diagnostics(findings, quiet=quiet, verbose=verbose)
+        if sc.viewports:
+            click.echo(f"{name}: not animated: the scene has errors (--lenient animates it)",
+                       err=True)  # fmt: skip
+        click.get_current_context().exit(1)
+    return [*lenient_findings(findings), *(d for d in diags if d not in findings)]
 
 
 def _refused(name: str, outputs: list[Path], inputs: list[Path]) -> bool:
