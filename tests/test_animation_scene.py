@@ -284,8 +284,9 @@ def test_cli_animate_errors(tmp_path):
     assert p.returncode == 1 and b"error ANIM010" in p.stderr and b"Traceback" not in p.stderr
     assert not (tmp_path / "a.gif").exists()
     p = _run("animate", "s.xaml", "-o", "a.bmp", cwd=tmp_path)
-    assert p.returncode == 1 and b"RND006" in p.stderr
-    p = _run("animate", "s.xaml", "-o", "s.xaml", cwd=tmp_path)
+    assert p.returncode == 2 and b"cannot tell the animation format" in p.stderr  # as render
+    (tmp_path / "s.png").write_text(scene(ANIM))  # a scene whose name looks like an APNG
+    p = _run("animate", "s.png", "-o", "s.png", cwd=tmp_path)
     assert p.returncode == 1 and b"IO002" in p.stderr
     p = _run("animate", "s.xaml", "-o", "a.gif", "--start", "2", "--end", "1", cwd=tmp_path)
     assert p.returncode == 2

@@ -23,12 +23,20 @@ from xaml3d.cli_common import (
     load_scene,
     render_size,
     resources_option,
-    same_file,
     stderr_is_terminal,
     with_file,
 )
+from xaml3d.cli_outputs import (
+    OUTPUT_CODES,
+    FrameSequence,
+    animation_target,
+    overwritten_input,
+    remove_stale,
+    stale_frames,
+    stale_message,
+)
 from xaml3d.cli_render_extras import animate_lens_options
-from xaml3d.errors import ERROR, XamlError
+from xaml3d.errors import ERROR, CameraError, XamlError
 
 DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
 
@@ -75,8 +83,9 @@ storyboard_option = click.option(
 HELP = """Render a scene's animations to an animated image or numbered frames.
 
 The output format follows -o: .gif, .png (APNG), .webp, or DIR/ for frame_0000.png ...
-By default one full cycle of what starts at load is drawn (a Forever repeat: one
-iteration, with a note) at 30 frames per second.
+(--clean removes frame files an earlier, longer run left there). By default one full
+cycle of what starts at load is drawn (a Forever repeat: one iteration, with a note)
+at 30 frames per second.
 
 \b
 Examples:
@@ -103,6 +112,8 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
               help="Length drawn (default: one full cycle of what runs).")  # fmt: skip
 @click.option("--loop", type=click.IntRange(min=0), default=0, show_default=True,
               help="Times the file plays (0: for ever).")  # fmt: skip
+@click.option("--clean", is_flag=True, help="With -o DIR/: delete the frame files "
+              "(frame_NNNN.png) of an earlier run that this one does not replace.")  # fmt: skip
 @storyboard_option
 @click.option("-W", "--width", type=click.IntRange(min=1), help="Width in pixels.")
 @click.option("-H", "--height", type=click.IntRange(min=1), help="Height in pixels.")
@@ -116,32 +127,44 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @resources_option
 @click.option("-j", "--jobs", type=click.IntRange(1),
               help="Worker processes for the frames (default: the number of cores).")  # fmt: skip
+@click.option("--lenient", is_flag=True, help="Animate a scene with errors anyway: each "
+              "error is reported as a warning, WPF's default used for what could not be "
+              "read.")  # fmt: skip
 @click.option("-q", "--quiet", is_flag=True, help="Do not print warnings (errors still are).")
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @animate_lens_options
-def animate_command(scene, output, fps, start, end, duration, loop, storyboard, width, height,
-                    mode, background, ssaa, msaa, viewport, resources, jobs, quiet,
-                    verbose, extras) -> None:  # fmt: skip
+def animate_command(scene, output, fps, start, end, duration, loop, clean, storyboard, width,
+                    height, mode, background, ssaa, msaa, viewport, resources, jobs, lenient,
+                    quiet, verbose, extras) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
     from xaml3d.cli_render_extras import check_request, lens_arguments
 
     check_request(extras, (scene,), output, mode)
+    to_dir = animation_target(output)  # the format, before anything is read (exit 2)
 
     bg = _parse_background(None, None, background)
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
         raise click.UsageError("choose one of --ssaa and --msaa")
+    if clean and not to_dir:
+        click.echo("xaml3d: warning OPT001 --clean applies to a directory output (-o DIR/) only",
+                   err=True)  # fmt: skip
     name = display_name(scene)
-    to_dir = output.endswith(("/", "\\")) or Path(output).is_dir()
     ctx = click.get_current_context()
+    if to_dir and Path(output).exists() and not Path(output).is_dir():
+        msg = f"{output} is a file, not a directory: it cannot hold the frames"
+        click.echo(io_error(name, msg), err=True)
+        ctx.exit(1)
+    inputs = [Path(p) for p in (scene, *resources) if p != "-"]
     with exit_on_input_error(name):
-        for p in [Path(scene) if scene != "-" else None, *map(Path, resources)]:
-            if p is not None and not to_dir and same_file(Path(output), p):
-                click.echo(io_error(name, f"refusing to write over the input file {p}", "IO002"),
-                           err=True)  # fmt: skip
-                ctx.exit(1)
+        if not to_dir and _refused(name, [Path(output)], inputs):  # before reading the scene
+            ctx.exit(1)
         sc = load_scene(scene, resources)
+    from xaml3d.cli_render import scene_files_read
+
+    inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images
     file = sc.file or name
     diags = [with_file(d, file) for d in sc.diagnostics]
+    sequence = None
     try:
         start = start or 0.0
         if end is None:
@@ -152,7 +175,10 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
             end = start + duration
         if end <= start:
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
-        from xaml3d.render.frames import frame_times, render_frames, save_animation
+        from xaml3d.render.frames import frame_names, frame_times, render_frames, save_animation
+
+        diags = _verdict(sc, (start, storyboard), (width, height), name, lenient, diags, quiet,
+                         verbose)  # fmt: skip
 
         if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
             slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
@@ -160,6 +186,12 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height)
         times = frame_times(start, end, fps)
+        # Every path this run writes, checked before the first frame is drawn.
+        names = frame_names(len(times)) if to_dir else []
+        if _refused(name, [Path(output) / n for n in names] if to_dir else [Path(output)], inputs):
+            ctx.exit(1)
+        stale = stale_frames(Path(output), names) if to_dir else []
+        sequence = FrameSequence(Path(output), names) if to_dir else None
         opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
         opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         frames = []
@@ -167,16 +199,29 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
 
         jobs = default_jobs() if jobs is None else jobs
         it = render_frames(sc, times, storyboard, jobs=jobs, width=w, height=h, **opts)
+        # A sequence goes to disk frame by frame; an animated file needs every frame at once.
+        keep = frames.append if sequence is None else sequence.add
         if stderr_is_terminal() and not quiet:
             with click.progressbar(it, length=len(times), label="animating",
                                    file=click.get_text_stream("stderr")) as bar:  # fmt: skip
-                frames = [_keep(r, diags, file) for _, r in bar]
+                for _, r in bar:
+                    keep(_keep(r, diags, file))
         else:
-            frames = [_keep(r, diags, file) for _, r in it]
+            for _, r in it:
+                keep(_keep(r, diags, file))
         empty = [d for d in diags if d.code == "RND002"]
         if len(empty) < len(times):  # an empty frame is part of an animation: no warning
             diags = [d for d in diags if d.code != "RND002"]
-        save_animation(frames, output, end - start, loop=loop, directory=to_dir)
+        if sequence is not None:
+            sequence.commit()
+        else:
+            if Path(output).suffix.lower() == ".gif":
+                frames = _gif_frames(frames, bg, diags, file)
+            save_animation(frames, output, end - start, loop=loop)
+        if stale and clean:
+            stale = remove_stale(stale, inputs)  # only after the new sequence is complete
+        if stale:
+            diags.append(_note(file, stale_message(output, stale, len(names), clean), "IO004"))
     except XamlError as exc:
         echo_diagnostics(diags, quiet=quiet, verbose=verbose)
         click.echo(exc.with_location(file=name).format(), err=True)
@@ -185,10 +230,64 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
         echo_diagnostics(diags, quiet=quiet, verbose=verbose)
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         ctx.exit(1)
+    finally:
+        if sequence is not None:
+            sequence.discard()  # a failure or Ctrl-C: no frame file of this run is left
     errors = [d for d in diags if d.severity == ERROR and d.code.startswith("CAM")]
     echo_diagnostics(diags, quiet=quiet, verbose=verbose)
     if errors:
         ctx.exit(1)
+
+
+def _verdict(sc, moment, size, name: str, lenient: bool, diags, quiet: bool, verbose: bool):
+    """The findings ``render --time START`` reports (``xaml3d.findings``, the same as
+    ``validate``) at ``moment`` (start, storyboard) and ``size`` (-W, -H): a scene with errors
+    is not animated (exit 1) unless --lenient, which reports each error as a warning. Returns
+    the diagnostics to print after the frames."""
+    from xaml3d.findings import has_errors, scene_findings
+    from xaml3d.findings import lenient as lenient_findings
+    from xaml3d.render.api import scene_at
+
+    def size_of(vp):
+        try:
+            return render_size(vp, *size)
+        except CameraError:  # an empty viewport: the camera check reports it (CAM010)
+            return (vp.width, vp.height)
+
+    findings = scene_findings(scene_at(sc, *moment), size_of, name)
+    if not has_errors(findings):
+        return [*findings, *(d for d in diags if d not in findings)]
+    if not lenient or not sc.viewports:
+        echo_diagnostics(findings, quiet=quiet, verbose=verbose)
+        if sc.viewports:
+            click.echo(f"{name}: not animated: the scene has errors (--lenient animates it)",
+                       err=True)  # fmt: skip
+        click.get_current_context().exit(1)
+    return [*lenient_findings(findings), *(d for d in diags if d not in findings)]
+
+
+def _refused(name: str, outputs: list[Path], inputs: list[Path]) -> bool:
+    """Print IO002 and return True when an output would replace a file the scene reads."""
+    hit = overwritten_input(outputs, inputs)
+    if hit is not None:
+        msg = f"refusing to write {hit[0]} over the input file {hit[1]}"
+        click.echo(io_error(name, msg, "IO002"), err=True)
+    return hit is not None
+
+
+def _gif_frames(frames: list, bg, diags: list, file: str) -> list:
+    """The frames as GIF holds them: flattened onto the --background colour made opaque (white
+    without it) when GIF's 1-bit transparency would lose their translucency (ANIM013)."""
+    from xaml3d.render.gif_matte import frames_for_gif
+
+    matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
+    frames, flattened = frames_for_gif(frames, matte)
+    if flattened:
+        onto = "white" if bg is None else "the --background colour, made opaque"
+        msg = (f"GIF keeps only 1-bit transparency: frames flattened onto {onto} to show their "
+               "translucency; use .png (APNG) or .webp to keep alpha")  # fmt: skip
+        diags.append(_note(file, msg, "ANIM013"))
+    return frames
 
 
 def _keep(result, diags: list, file: str):
@@ -218,4 +317,4 @@ def _note(file: str, message: str, code: str = "ANIM011"):
     from xaml3d.errors import Diagnostic
     from xaml3d.xaml.animation_targets import ANIM_CODES
 
-    return Diagnostic(code, ANIM_CODES[code][0], message, file)
+    return Diagnostic(code, {**ANIM_CODES, **OUTPUT_CODES}[code][0], message, file)

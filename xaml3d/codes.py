@@ -35,6 +35,7 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.scene.checks", "CHECK_CODES", True),
     ("xaml3d.scene.fit", "FIT_CODES", True),
     ("xaml3d.cli_common", "CLI_CODES", True),
+    ("xaml3d.cli_outputs", "OUTPUT_CODES", True),
     ("xaml3d.render.api", "RENDER_CODES", False),
     ("xaml3d.scene.lens", "LENS_CODES", True),
     ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),

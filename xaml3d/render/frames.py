@@ -4,15 +4,17 @@
 time in whole units (milliseconds, or GIF's 10 ms) whose total is exactly the animation's
 length (rounding distributed: frame i lasts round((i+1)T/n) - round(iT/n)). ``render_frames``
 yields one ordinary render per time of ``scene.timeline`` (the renderer knows nothing of
-animation). ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels
-become GIF transparency, any other pixel is opaque), APNG (.png), WebP, or numbered PNGs in a
-directory, atomically: a temporary file in the target's folder is written, fsynced and renamed, so a
-failure leaves no partial file and an existing one untouched.
+animation). ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels become GIF
+transparency, any other pixel is opaque; frames with translucent surfaces are flattened first,
+``xaml3d.render.gif_matte``), APNG (.png), WebP, or numbered PNGs in a directory
+(``frame_names``), atomically: a temporary file in the target's folder is written, fsynced and
+renamed, so a failure leaves no partial file and an existing one untouched.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -22,6 +24,14 @@ import numpy as np
 from xaml3d.errors import RenderError
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
+# The files of a numbered sequence: frame_0000.png ... (4 digits at least, more when needed).
+FRAME_FILE = re.compile(r"frame_[0-9]{4,}\.png")
+
+
+def frame_names(count: int) -> list[str]:
+    """The file names of a sequence of ``count`` frames, in order."""
+    digits = max(4, len(str(count - 1)))
+    return [f"frame_{i:0{digits}d}.png" for i in range(count)]
 
 
 def frame_times(start: float, end: float, fps: float) -> list[float]:
@@ -57,6 +67,11 @@ _WORKER: dict = {}  # a worker process's scene, storyboard and options (see _par
 
 
 def _start_worker(scene, storyboard, options) -> None:
+    import signal
+
+    # Ctrl-C reaches the whole process group: the parent stops the run (see _parallel_frames),
+    # a worker just finishes its frame instead of printing a traceback of its own.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     _WORKER.update(scene=scene, storyboard=storyboard, options=options)
 
 
@@ -80,8 +95,14 @@ def _parallel_frames(scene, times, storyboard, jobs: int, options) -> Iterator:
         workers, mp_context=ctx, initializer=_start_worker, initargs=(scene, storyboard, options)
     ) as pool:
         futures = [pool.submit(_worker_frame, t) for t in times]
-        for future in futures:
-            yield future.result()
+        try:
+            for future in futures:
+                yield future.result()
+        finally:
+            # Interrupted (Ctrl-C) or abandoned: drop the frames not started, so leaving the
+            # pool waits for the running ones only, not for the whole animation.
+            for future in futures:
+                future.cancel()
 
 
 def _gif_frame(rgba: np.ndarray):
@@ -131,11 +152,19 @@ def _atomic(path: Path, write) -> None:
 
 
 def save_animation(
-    frames: list[np.ndarray], path, total: float, *, loop: int = 0, directory: bool = False
+    frames: list[np.ndarray],
+    path,
+    total: float,
+    *,
+    loop: int = 0,
+    directory: bool = False,
+    matte: tuple[int, int, int] = (255, 255, 255),
 ) -> list[Path]:
     """Write (H, W, 4) uint8 RGBA frames lasting ``total`` seconds in all. ``loop``: 0 for
     ever, else the number of plays. ``directory``: numbered PNGs ``frame_0000.png``... in the
-    folder ``path``. Returns the files written. Raises RenderError (RND006 format, RND007)."""
+    folder ``path``. ``matte``: the opaque RGB (0..255) a GIF's frames are flattened onto when
+    they show translucent surfaces (``gif_matte.frames_for_gif``). Returns the files written.
+    Raises RenderError (RND006 format, RND007)."""
     from PIL import Image
 
     from xaml3d.render.api import save_image
@@ -143,10 +172,9 @@ def save_animation(
     path = Path(path)
     if directory:
         path.mkdir(parents=True, exist_ok=True)
-        digits = max(4, len(str(len(frames) - 1)))
         out = []
-        for i, f in enumerate(frames):
-            target = path / f"frame_{i:0{digits}d}.png"
+        for name, f in zip(frame_names(len(frames)), frames, strict=True):
+            target = path / name
             save_image(f, target, format="PNG")
             out.append(target)
         return out
@@ -158,6 +186,9 @@ def save_animation(
             code="RND006",
         )
     if fmt == "GIF":
+        from xaml3d.render.gif_matte import frames_for_gif
+
+        frames, _ = frames_for_gif(frames, matte)
         pairs = [_gif_frame(f) for f in frames]
         images = [p[0] for p in pairs]
         durations = [10 * d for d in frame_durations(len(frames), total, 0.01)]
