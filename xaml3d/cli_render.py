@@ -32,7 +32,7 @@ from xaml3d.cli_common import (
 )
 from xaml3d.cli_jobs import default_jobs, run_ordered
 from xaml3d.cli_render_extras import Extras, Progress, extras_options
-from xaml3d.errors import ERROR, CameraError, XamlError
+from xaml3d.errors import ERROR, CameraError, RenderError, XamlError
 from xaml3d.findings import has_errors, scene_findings, with_file
 from xaml3d.findings import lenient as lenient_findings
 
@@ -167,11 +167,12 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
 
 def _size_for_checks(opts: RenderOptions):
     """The size each viewport's camera is checked at: its render size (an empty viewport keeps
-    its own size, which the camera check reports as CAM010)."""
+    its own size: the camera check reports CAM010, or for one laid out empty nothing, as
+    LAY001/LAY002 say why and rendering it is refused with RND008)."""
 
     def size_of(vp):
         try:
-            return render_size(vp, opts.width, opts.height, opts.scale)
+            return render_size(vp, *_requested(vp, opts), opts.scale)
         except (CameraError, click.UsageError):
             return (vp.width, vp.height)
 
@@ -185,7 +186,8 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
     from xaml3d.render.api import render_arrays
     from xaml3d.scene.fit import fit_viewport
 
-    width, height = render_size(vp, opts.width, opts.height, opts.scale)
+    _check_laid_out(scene, vp, opts)
+    width, height = render_size(vp, *_requested(vp, opts), opts.scale)
     if opts.fit:
         fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
         diags.extend(notes)
@@ -233,6 +235,41 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
 
         diags.extend(write_buffers(opts.extras, result, vp, file, surfaces))
     return image
+
+
+def _laid_out_empty(vp) -> bool:
+    return vp.size_source.startswith("layout: ") and not (vp.width > 0 and vp.height > 0)
+
+
+def _requested(vp, opts: RenderOptions) -> tuple[int | None, int | None]:
+    """-W/-H as asked; for a viewport laid out empty, one of them alone gives a square (there is
+    no aspect ratio for the other to follow)."""
+    if _laid_out_empty(vp) and (opts.width is None) != (opts.height is None):
+        side = opts.width or opts.height
+        return side, side
+    return opts.width, opts.height
+
+
+def _check_laid_out(scene, vp, opts: RenderOptions) -> None:
+    """RND008 for a viewport WPF's layout leaves empty (LAY001/LAY002 said why, as a warning)
+    rendered without -W/-H: there is nothing to draw at that size (--window shows the empty
+    area as WPF does)."""
+    if not _laid_out_empty(vp) or opts.width is not None or opts.height is not None:
+        return
+    at = (vp.line, vp.column)
+    why = [d.code for d in scene.diagnostics
+           if d.code in ("LAY001", "LAY002") and (d.line, d.column) == at]  # fmt: skip
+    see = f" (see {why[0]})" if why else ""
+    sized = "give -W/-H to render it at a size"
+    if opts.viewport == "all":  # -W/-H size one viewport only
+        sized = f"render it alone (--viewport {vp.index}) with -W/-H to give it a size"
+    raise RenderError(
+        f"Viewport3D #{vp.index} is laid out {vp.width:g} x {vp.height:g}{see}: nothing to draw; "
+        f"{sized}, or --window to render the window as WPF shows it",
+        code="RND008",
+        line=vp.line,
+        column=vp.column,
+    )
 
 
 def _exact_aspect(vp) -> float | None:
