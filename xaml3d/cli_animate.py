@@ -29,6 +29,7 @@ from xaml3d.cli_common import (
 )
 from xaml3d.cli_render_extras import animate_lens_options
 from xaml3d.errors import ERROR, XamlError
+from xaml3d.findings import begun_by_name
 
 DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
 
@@ -141,7 +142,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, storyboard, 
                 ctx.exit(1)
         sc = load_scene(scene, resources)
     file = sc.file or name
-    diags = [with_file(d, file) for d in sc.diagnostics]
+    diags = [with_file(d, file) for d in begun_by_name(sc.diagnostics, sc, storyboard)]
     try:
         start = start or 0.0
         if end is None:

@@ -179,19 +179,42 @@ def _size_for_checks(opts: RenderOptions):
     return size_of
 
 
-def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg_target=None):
-    """One viewport as an image at its (laid-out or -W/-H) size, with its --depth/--ids files
-    (or, given ``svg_target``, its SVG wireframe written there: returns None); raises _Failed
-    after printing the error when the camera cannot produce an image."""
-    from xaml3d.render.api import render_arrays
+def _fitted(scene, file: str, opts: RenderOptions):
+    """``--fit``: the scene with the camera of each viewport to be rendered moved to frame it,
+    and each fit's notes (FIT0xx) by viewport index. The findings are then those of the cameras
+    drawn, so what --fit makes moot for the markup camera it replaced (CAM107 the scene out of
+    view, CAM108, CHK003) is not reported; a camera --fit cannot move keeps its own findings."""
     from xaml3d.scene.fit import fit_viewport
+
+    if not opts.fit:
+        return scene, {}
+    try:
+        chosen = scene.viewports if opts.viewport == "all" else [scene.viewport(opts.viewport)]
+    except XamlError:
+        return scene, {}  # reported when the viewport is asked for again, to be rendered
+    fitted, notes = {}, {}
+    for vp in chosen:
+        try:
+            width, height = render_size(vp, *_requested(vp, opts), opts.scale)
+        except (CameraError, click.UsageError):
+            continue  # not rendered: its error comes when it is
+        fitted[vp.index], notes[vp.index] = fit_viewport(vp, width, height, opts.margin, file=file)
+    viewports = tuple(fitted.get(v.index, v) for v in scene.viewports)
+    return replace(scene, viewports=viewports), notes
+
+
+def _render_viewport(
+    scene, vp, file: str, opts: RenderOptions, diags: list, svg_target=None, notes=()
+):
+    """One viewport as an image at its (laid-out or -W/-H) size, with its --depth/--ids files
+    (or, given ``svg_target``, its SVG wireframe written there: returns None), after ``notes``
+    (what --fit did); raises _Failed after printing the error when the camera cannot produce
+    an image."""
+    from xaml3d.render.api import render_arrays
 
     _check_laid_out(scene, vp, opts)
     width, height = render_size(vp, *_requested(vp, opts), opts.scale)
-    if opts.fit:
-        fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
-        diags.extend(notes)
-        scene = replace(scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports))
+    diags.extend(notes)
     # the laid-out size may be fractional: the projection keeps its exact aspect ratio
     # unless -W and -H both choose another (docs/layout.md)
     aspect = None if (opts.width and opts.height) else _exact_aspect(vp)
@@ -356,8 +379,10 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         for extra in (opts.extras.depth, opts.extras.ids):
             if extra:
                 _check_not_input(Path(extra), name, inputs)
-        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings).
-        findings = scene_findings(scene, _size_for_checks(opts), name)
+        scene, fit_notes = _fitted(scene, file, opts)
+        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings), for the
+        # cameras drawn (those --fit moved).
+        findings = scene_findings(scene, _size_for_checks(opts), name, opts.storyboard)
         if has_errors(findings):
             if not opts.lenient or not scene.viewports:
                 echo_diagnostics(findings, quiet=opts.quiet, verbose=opts.verbose)
@@ -384,7 +409,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
                     image = _render_window(scene, file, opts, diags)
                 else:
                     svg_out = _Deferred.path_for(out) if svg else None
-                    image = _render_viewport(scene, vp, file, opts, diags, svg_out)
+                    notes = fit_notes.get(vp.index, ())
+                    image = _render_viewport(scene, vp, file, opts, diags, svg_out, notes)
             except _Failed:
                 failed = True
                 continue
