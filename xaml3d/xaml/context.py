@@ -15,7 +15,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from xaml3d.errors import Diagnostic, XamlError
+from xaml3d.errors import ERROR, Diagnostic, XamlError
 from xaml3d.xaml.parser import MC_NS, PRESENTATION_NAMESPACES, XAML_NS, ParsedDocument
 
 
@@ -68,6 +68,10 @@ class ReadContext:
 
     def __init__(self, *, allow_outside: bool = False, limits=None) -> None:
         self.diagnostics: list[Diagnostic] = []
+        # errors reported so far, repeats suppressed by ``once`` too: a property whose reading
+        # raised it saw an error (Props.rejected), even while an animation frame's build drops
+        # the repeated diagnostics
+        self.errors = 0
         self.allow_outside = allow_outside
         self.limits = limits
         self.allowed_roots: list[Path] = []
@@ -138,11 +142,12 @@ class ReadContext:
     ) -> None:
         """Record a diagnostic about ``el`` (or its attribute ``attr``, a key of ``el.attrib``);
         ``once`` (a key) suppresses repeats of the same report."""
+        severity = severity_of(code)
+        self.errors += severity == ERROR
         if once is not None:
             if (code, once) in self._once:
                 return
             self._once.add((code, once))
-        severity = severity_of(code)
         if el is not None:
             if line is None:
                 line, column = self.locate(el, attr)
@@ -154,6 +159,7 @@ class ReadContext:
     ) -> None:
         """Record a diagnostic made elsewhere (mesh building...) about ``el`` (or its attribute
         ``attr``): an unknown location, or ``el``'s sourceline, becomes the located one."""
+        self.errors += diagnostic.severity == ERROR
         about_el = el is not None and diagnostic.line in (None, el.sourceline)
         if about_el and diagnostic.column is None:
             line, column = self.locate(el, attr)
@@ -180,8 +186,10 @@ class ReadContext:
         if el is not None:
             line, column = self.locate(el, attr) if exc.line is None else (None, None)
             exc.with_location(self.file_of(el), line, column)
+        severity = severity_of(exc.code)
+        self.errors += severity == ERROR
         self.diagnostics.append(
-            Diagnostic(exc.code, severity_of(exc.code), exc.message, exc.file, exc.line, exc.column)
+            Diagnostic(exc.code, severity, exc.message, exc.file, exc.line, exc.column)
         )
 
     # ----------------------------------------------------------------- resource build guard
