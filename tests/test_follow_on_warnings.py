@@ -61,16 +61,17 @@ SCENE = f"""<Viewport3D {NS} Width="40" Height="30">
 </Viewport3D>
 """
 
-# (line, column, severity, code, message) as validate prints them
+# (line, column, severity, code, message) as validate prints them; a bad number's column is
+# that of its offending character in the value
 EXPECTED = [
     (4, 34, "error", "VAL004", "DiffuseMaterial.Brush: Color: 'Oragne' is not a colour "
      "('#AARRGGBB', 'sc#a,r,g,b' or one of WPF's names) (did you mean Orange?)"),
     (5, 35, "error", "RES001", "StaticResource 'Nope' not found"),
     (6, 5, "warning", "CHK004", "DiffuseMaterial in model #5's Material has no Brush: it draws "
      "nothing (Color only multiplies the brush)"),
-    (25, 67, "error", "VAL001", "MeshGeometry3D.TriangleIndices: Int32Collection: bad integer "
+    (25, 94, "error", "VAL001", "MeshGeometry3D.TriangleIndices: Int32Collection: bad integer "
      "'x' (token 6, character 11)"),
-    (30, 27, "error", "VAL001", "MeshGeometry3D.Positions: Point3DCollection: bad number 'nan' "
+    (30, 48, "error", "VAL001", "MeshGeometry3D.Positions: Point3DCollection: bad number 'nan' "
      "(token 5, character 11)"),
     (33, 24, "error", "RES001", "StaticResource 'Missing' not found"),
     (45, 67, "warning", "MSH002", "TriangleIndices has 4 entries, not a multiple of 3; the last "

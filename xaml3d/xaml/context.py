@@ -115,11 +115,14 @@ class ReadContext:
         return el
 
     # ----------------------------------------------------------------- diagnostics
-    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int | None, int | None]:
+    def locate(
+        self, el: etree._Element, attr: str | None = None, index: int | None = None
+    ) -> tuple[int | None, int | None]:
         """(line, column) of an element's ``<``, or of attribute ``attr``'s name (a key of
-        ``el.attrib``) in its own document's text; (sourceline, None) when not found."""
+        ``el.attrib``), or of character ``index`` of its value, in its own document's text;
+        (sourceline, None) when not found."""
         doc = self.doc_of(el)
-        where = doc.locate(el, attr) if doc is not None else None
+        where = doc.locate(el, attr, index) if doc is not None else None
         return where if where is not None else (el.sourceline, None)
 
     def position(self, el: etree._Element) -> dict:
@@ -184,7 +187,10 @@ class ReadContext:
         its code's table severity (errors stay errors: the property keeps its default only so
         that the rest of the scene can still be checked, or rendered with --lenient)."""
         if el is not None:
-            line, column = self.locate(el, attr) if exc.line is None else (None, None)
+            # a converter that names the offending character of the attribute's value
+            at = getattr(exc, "at", None)
+            index = at[1] if at and attr is not None and at[0] == el.get(attr) else None
+            line, column = self.locate(el, attr, index) if exc.line is None else (None, None)
             exc.with_location(self.file_of(el), line, column)
         severity = severity_of(exc.code)
         self.errors += severity == ERROR
