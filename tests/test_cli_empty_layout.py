@@ -98,3 +98,18 @@ def test_one_of_width_and_height_gives_a_square(tmp_path):
         assert _lines(p.stderr) == [LAY001, *MESH]
         with Image.open(tmp_path / "out.png") as im:
             assert im.size == (30, 30)
+
+
+def test_animate_and_camera_say_the_same_render_error(tmp_path):
+    (tmp_path / "s.xaml").write_text(SCENE)
+    rnd008 = (
+        "s.xaml:4:5: error RND008 Viewport3D #0 is laid out 384 x 0 (see LAY001/LAY002): "
+        "nothing to draw; give -W/-H to render it at a size"
+    )
+    p = xaml3d("animate", "s.xaml", "-o", "a.gif", "--duration", "0.2", cwd=tmp_path)
+    assert p.returncode == 1 and _lines(p.stderr) == [LAY001, *MESH, rnd008]
+    assert not (tmp_path / "a.gif").exists()
+    p = xaml3d("camera", "s.xaml", cwd=tmp_path)
+    assert p.returncode == 1 and _lines(p.stderr)[-1] == rnd008
+    p = xaml3d("camera", "s.xaml", "-W", "30", cwd=tmp_path)  # a square: no aspect to follow
+    assert p.returncode == 0 and "Pipeline for a 30 x 30 image" in p.stdout.decode()

@@ -172,8 +172,8 @@ def _size_for_checks(opts: RenderOptions):
 
     def size_of(vp):
         try:
-            return render_size(vp, *_requested(vp, opts), opts.scale)
-        except (CameraError, click.UsageError):
+            return render_size(vp, opts.width, opts.height, opts.scale)
+        except (CameraError, RenderError, click.UsageError):
             return (vp.width, vp.height)
 
     return size_of
@@ -195,8 +195,8 @@ def _fitted(scene, file: str, opts: RenderOptions):
     fitted, notes = {}, {}
     for vp in chosen:
         try:
-            width, height = render_size(vp, *_requested(vp, opts), opts.scale)
-        except (CameraError, click.UsageError):
+            width, height = render_size(vp, opts.width, opts.height, opts.scale)
+        except (CameraError, RenderError, click.UsageError):
             continue  # not rendered: its error comes when it is
         fitted[vp.index], notes[vp.index] = fit_viewport(vp, width, height, opts.margin, file=file)
     viewports = tuple(fitted.get(v.index, v) for v in scene.viewports)
@@ -213,7 +213,7 @@ def _render_viewport(
     from xaml3d.render.api import render_arrays
 
     _check_laid_out(scene, vp, opts)
-    width, height = render_size(vp, *_requested(vp, opts), opts.scale)
+    width, height = render_size(vp, opts.width, opts.height, opts.scale)
     diags.extend(notes)
     # the laid-out size may be fractional: the projection keeps its exact aspect ratio
     # unless -W and -H both choose another (docs/layout.md)
@@ -264,19 +264,11 @@ def _laid_out_empty(vp) -> bool:
     return vp.size_source.startswith("layout: ") and not (vp.width > 0 and vp.height > 0)
 
 
-def _requested(vp, opts: RenderOptions) -> tuple[int | None, int | None]:
-    """-W/-H as asked; for a viewport laid out empty, one of them alone gives a square (there is
-    no aspect ratio for the other to follow)."""
-    if _laid_out_empty(vp) and (opts.width is None) != (opts.height is None):
-        side = opts.width or opts.height
-        return side, side
-    return opts.width, opts.height
-
-
 def _check_laid_out(scene, vp, opts: RenderOptions) -> None:
     """RND008 for a viewport WPF's layout leaves empty (LAY001/LAY002 said why, as a warning)
-    rendered without -W/-H: there is nothing to draw at that size (--window shows the empty
-    area as WPF does)."""
+    rendered without -W/-H: there is nothing to draw at that size. As ``render_size`` says
+    (for animate and camera too), with which warning and the render's own ways out: --window
+    shows the empty area as WPF does."""
     if not _laid_out_empty(vp) or opts.width is not None or opts.height is not None:
         return
     at = (vp.line, vp.column)

@@ -62,7 +62,7 @@ EXTRA_CODES: dict[str, tuple[str, str]] = {
     "RND007": (ERROR, "the output image cannot be written"),
     "RND008": (
         ERROR,
-        "render: the viewport is laid out empty (LAY001/LAY002): nothing to draw without -W/-H",
+        "the viewport is laid out empty (LAY001/LAY002): nothing to draw without -W/-H",
     ),
 }
 
