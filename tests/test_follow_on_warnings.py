@@ -125,3 +125,24 @@ def test_render_lenient_prints_the_same_findings(tmp_path):
         for ln, col, sev, code, msg in EXPECTED
     ]
     assert _printed(p.stderr) == lenient
+
+
+def test_an_animation_frame_keeps_what_was_refused():
+    # a Loaded storyboard moves the camera: the frame at t is built again from the markup, and
+    # the repeated errors of that build are dropped; the refusals stay on its objects
+    from xaml3d.render.api import scene_at
+
+    animated = SCENE.replace(
+        '<Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>',
+        '<Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>'
+        '<Storyboard><Point3DAnimation Storyboard.TargetName="cam" '
+        'Storyboard.TargetProperty="Position" To="0,0,9" Duration="0:0:1"/></Storyboard>'
+        "</BeginStoryboard></EventTrigger></Viewport3D.Triggers>"
+        '<Viewport3D.Camera><PerspectiveCamera x:Name="cam" Position="0,0,5"/></Viewport3D.Camera>',
+    )
+    frame = scene_at(load(animated, text=True), 0.5)
+    assert tuple(frame.viewports[0].camera.position) == (0.0, 0.0, 7.0)
+    models = frame.viewports[0].models
+    assert [m.material[0].rejected for m in models[:2]] == [{"Brush"}, {"Brush"}]
+    assert [m.mesh.rejected for m in models[2:4]] == [{"TriangleIndices"}, {"Positions"}]
+    assert models[4].rejected == {"Material"}
