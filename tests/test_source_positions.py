@@ -154,16 +154,20 @@ def test_markup_extensions_and_missing_resources_point_at_the_attribute():
     assert where(s, "XAML009") == [(4, 22)]
 
 
-def test_value_syntax_error_points_at_the_attribute():
+def test_value_syntax_error_points_at_the_offending_character():
     doc = (
         f"{VP}<Viewport3D.Camera>\n"  # line 1
-        '<PerspectiveCamera FieldOfView="wide"/>\n'  # line 2
+        '<PerspectiveCamera FieldOfView="wide" Position="1,2x,3" LookDirection="0,,-1"\n'
+        '  UpDirection="0,&#49;x,0"/>\n'  # line 3: a character reference
         "</Viewport3D.Camera></Viewport3D>\n"
     )
     s = load(doc, text=True)
-    found = [(d.line, d.column) for d in s.diagnostics if "FieldOfView" in d.message]
-    # "<PerspectiveCamera " is 19 chars: "FieldOfView" starts at col 20
-    assert found == [(2, 20)]
+    found = [(d.code, d.line, d.column) for d in s.diagnostics if d.code.startswith("VAL")]
+    # "<PerspectiveCamera " is 19 chars: FieldOfView="wide" starts at col 20, its value at 33
+    # (a word: its first character); Position's value at 49, the "x" of "2x" at 52;
+    # LookDirection's at 72, its second comma at 74. The text of UpDirection's value is not
+    # the value (&#49; is one character "1"): the column stays at the attribute's name.
+    assert found == [("VAL001", 2, 33), ("VAL001", 2, 52), ("VAL002", 2, 74), ("VAL001", 3, 3)]
 
 
 def test_merged_dictionary_diagnostics_point_into_its_own_file(tmp_path):

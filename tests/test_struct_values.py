@@ -122,7 +122,8 @@ def test_unknown_member_and_bad_number_are_errors_at_the_attribute():
       <DirectionalLight.Direction><Vector3D X="1" Y="abc"/></DirectionalLight.Direction>
     </DirectionalLight>"""
     )
-    assert errors(s) == [("XAML004", 5, 43), ("VAL001", 8, 51)]
+    # the bad number: at its first character, inside the value of Y (at column 51)
+    assert errors(s) == [("XAML004", 5, 43), ("VAL001", 8, 54)]
     point, directional = s.viewports[0].lights
     assert tuple(point.position) == (0.0, 0.0, 0.0)  # the property keeps its default
     assert tuple(directional.direction) == (0.0, 0.0, -1.0)

@@ -24,9 +24,10 @@ PNG = b"\x89PNG\r\n\x1a\n"
 CASES = {
     "malformed-xml": ("XML001", 18, 30, "mismatch"),
     "point3d-two-numbers": ("VAL003", 3, 24, "needs 3 numbers"),
-    "double-not-a-number": ("VAL001", 3, 41, "'abc'"),
-    "empty-token": ("VAL002", 11, 29, "empty token"),
-    "trailing-comma": ("VAL002", 3, 24, "trailing comma"),
+    # a bad number or comma: the column of the offending character in the value
+    "double-not-a-number": ("VAL001", 3, 54, "'abc'"),
+    "empty-token": ("VAL002", 11, 43, "empty token"),
+    "trailing-comma": ("VAL002", 3, 39, "trailing comma"),
     "colour-misspelt": ("VAL004", 14, 30, "did you mean Orange?"),
     "enum-value-unknown": ("VAL005", 14, 65, "'Tiles'"),
     "property-misspelt": ("XAML004", 3, 41, "did you mean LookDirection?"),

@@ -37,6 +37,7 @@ from xaml3d.cli_outputs import (
 )
 from xaml3d.cli_render_extras import animate_lens_options
 from xaml3d.errors import ERROR, CameraError, XamlError
+from xaml3d.findings import begun_by_name
 
 DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
 
@@ -163,7 +164,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
 
     inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images
     file = sc.file or name
-    diags = [with_file(d, file) for d in sc.diagnostics]
+    diags = [with_file(d, file) for d in begun_by_name(sc.diagnostics, sc, storyboard)]
     sequence = None
     try:
         start = start or 0.0
@@ -254,7 +255,7 @@ def _verdict(sc, moment, size, name: str, lenient: bool, diags, quiet: bool, ver
         except CameraError:  # an empty viewport: the camera check reports it (CAM010)
             return (vp.width, vp.height)
 
-    findings = scene_findings(scene_at(sc, *moment), size_of, name)
+    findings = scene_findings(scene_at(sc, *moment), size_of, name, moment[1])
     if not has_errors(findings):
         return [*findings, *(d for d in diags if d not in findings)]
     if not lenient or not sc.viewports:

@@ -139,6 +139,14 @@ def parse_point(ctx, param, values):
     return points
 
 
+# With FarPlaneDistance = Infinity the effective far plane only encloses the scene's bounds
+# (camera-math.md section 9): a point beyond it is drawn by WPF, with a depth below -1.
+BEYOND_EFFECTIVE_FAR = (
+    "beyond the effective far plane, which only encloses the scene: FarPlaneDistance is "
+    "Infinity, so WPF draws it"
+)
+
+
 def locate_points(pipe, points) -> list[dict]:
     """Where each world point lands: pixel x, y and depth z', or why it is clipped (tests on
     the homogeneous parallel-volume coordinates, before division: camera-pipeline.md section 6)."""
@@ -166,9 +174,11 @@ def locate_points(pipe, points) -> list[dict]:
             why = None if bool(visible[i]) or beyond_ok else "on the edge of the view volume"
         item = {"point": list(p), "visible": why is None, "reason": why}
         # A clipped point lands on no pixel: x, y and depth are null (docs/cli.md).
-        item.update(x=None, y=None, depth=None)
+        item.update(x=None, y=None, depth=None, note=None)
         if why is None:
             item.update(x=float(pixels[i, 0]), y=float(pixels[i, 1]), depth=float(depth[i]))
+            if z < -w:  # drawn, but its depth lies outside the documented range [-1, 0]
+                item["note"] = BEYOND_EFFECTIVE_FAR
         out.append(item)
     return out
 
@@ -319,9 +329,10 @@ def _camera_text(vp, cam, pipe, located) -> list[str]:
     for item in located:
         p = ",".join(_num(c) for c in item["point"])
         if item["visible"]:
+            note = f" ({item['note']})" if item["note"] else ""
             lines.append(
                 f"point {p} -> pixel ({_num(item['x'])}, {_num(item['y'])}), "
-                f"depth {_num(item['depth'])}"
+                f"depth {_num(item['depth'])}{note}"
             )
         else:
             lines.append(f"point {p} -> clipped: {item['reason']}")

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import click
 
-from xaml3d.errors import ERROR, INFO, WARNING, CameraError, Diagnostic, XamlError
+from xaml3d.errors import ERROR, INFO, WARNING, CameraError, Diagnostic, RenderError, XamlError
 from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
 from xaml3d.scene.types import Scene, Viewport
 
@@ -89,10 +89,21 @@ def render_size(
     vp: Viewport, width: int | None, height: int | None, scale: float | None = None
 ) -> tuple[int, int]:
     """The pixel size of a render: both given -> as given (the aspect changes like a resized
-    window); one given -> the other follows the viewport's aspect; none -> the viewport's size.
-    ``scale`` then multiplies both. Rounded to whole pixels, at least 1."""
+    window); one given -> the other follows the viewport's aspect (an empty viewport has none:
+    a square); none -> the viewport's size. ``scale`` then multiplies both. Rounded to whole
+    pixels, at least 1. An empty viewport without -W/-H: RND008 when WPF's layout left it empty
+    (LAY001/LAY002 said why, as a warning), else the camera's CAM010."""
     w0, h0 = float(vp.width), float(vp.height)
-    if width is None and height is None and not (w0 > 0 and h0 > 0):
+    empty = not (w0 > 0 and h0 > 0)
+    if width is None and height is None and empty and vp.size_source.startswith("layout: "):
+        raise RenderError(
+            f"Viewport3D #{vp.index} is laid out {w0:g} x {h0:g} (see LAY001/LAY002): nothing to "
+            "draw; give -W/-H to render it at a size",
+            code="RND008",
+            line=vp.line,
+            column=vp.column,
+        )
+    if width is None and height is None and empty:
         # WPF draws nothing in an empty viewport; rendering a 1-pixel sliver would hide that.
         raise CameraError(
             f"viewport size {w0:g} x {h0:g} is empty: WPF draws nothing "
@@ -105,10 +116,10 @@ def render_size(
         w, h = float(width), float(height)
     elif width is not None:
         w = float(width)
-        h = w * h0 / w0 if w0 > 0 else w
+        h = w if empty else w * h0 / w0
     elif height is not None:
         h = float(height)
-        w = h * w0 / h0 if h0 > 0 else h
+        w = h if empty else h * w0 / h0
     else:
         w, h = w0, h0
     if scale is not None:

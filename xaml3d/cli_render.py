@@ -32,7 +32,7 @@ from xaml3d.cli_common import (
 )
 from xaml3d.cli_jobs import default_jobs, run_ordered
 from xaml3d.cli_render_extras import Extras, Progress, extras_options
-from xaml3d.errors import ERROR, CameraError, XamlError
+from xaml3d.errors import ERROR, CameraError, RenderError, XamlError
 from xaml3d.findings import has_errors, scene_findings, with_file
 from xaml3d.findings import lenient as lenient_findings
 
@@ -167,29 +167,54 @@ def _check_not_input(target, name: str, inputs: list[Path]) -> None:
 
 def _size_for_checks(opts: RenderOptions):
     """The size each viewport's camera is checked at: its render size (an empty viewport keeps
-    its own size, which the camera check reports as CAM010)."""
+    its own size: the camera check reports CAM010, or for one laid out empty nothing, as
+    LAY001/LAY002 say why and rendering it is refused with RND008)."""
 
     def size_of(vp):
         try:
             return render_size(vp, opts.width, opts.height, opts.scale)
-        except (CameraError, click.UsageError):
+        except (CameraError, RenderError, click.UsageError):
             return (vp.width, vp.height)
 
     return size_of
 
 
-def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg_target=None):
-    """One viewport as an image at its (laid-out or -W/-H) size, with its --depth/--ids files
-    (or, given ``svg_target``, its SVG wireframe written there: returns None); raises _Failed
-    after printing the error when the camera cannot produce an image."""
-    from xaml3d.render.api import render_arrays
+def _fitted(scene, file: str, opts: RenderOptions):
+    """``--fit``: the scene with the camera of each viewport to be rendered moved to frame it,
+    and each fit's notes (FIT0xx) by viewport index. The findings are then those of the cameras
+    drawn, so what --fit makes moot for the markup camera it replaced (CAM107 the scene out of
+    view, CAM108, CHK003) is not reported; a camera --fit cannot move keeps its own findings."""
     from xaml3d.scene.fit import fit_viewport
 
+    if not opts.fit:
+        return scene, {}
+    try:
+        chosen = scene.viewports if opts.viewport == "all" else [scene.viewport(opts.viewport)]
+    except XamlError:
+        return scene, {}  # reported when the viewport is asked for again, to be rendered
+    fitted, notes = {}, {}
+    for vp in chosen:
+        try:
+            width, height = render_size(vp, opts.width, opts.height, opts.scale)
+        except (CameraError, RenderError, click.UsageError):
+            continue  # not rendered: its error comes when it is
+        fitted[vp.index], notes[vp.index] = fit_viewport(vp, width, height, opts.margin, file=file)
+    viewports = tuple(fitted.get(v.index, v) for v in scene.viewports)
+    return replace(scene, viewports=viewports), notes
+
+
+def _render_viewport(
+    scene, vp, file: str, opts: RenderOptions, diags: list, svg_target=None, notes=()
+):
+    """One viewport as an image at its (laid-out or -W/-H) size, with its --depth/--ids files
+    (or, given ``svg_target``, its SVG wireframe written there: returns None), after ``notes``
+    (what --fit did); raises _Failed after printing the error when the camera cannot produce
+    an image."""
+    from xaml3d.render.api import render_arrays
+
+    _check_laid_out(scene, vp, opts)
     width, height = render_size(vp, opts.width, opts.height, opts.scale)
-    if opts.fit:
-        fitted, notes = fit_viewport(vp, width, height, opts.margin, file=file)
-        diags.extend(notes)
-        scene = replace(scene, viewports=tuple(fitted if v is vp else v for v in scene.viewports))
+    diags.extend(notes)
     # the laid-out size may be fractional: the projection keeps its exact aspect ratio
     # unless -W and -H both choose another (docs/layout.md)
     aspect = None if (opts.width and opts.height) else _exact_aspect(vp)
@@ -233,6 +258,33 @@ def _render_viewport(scene, vp, file: str, opts: RenderOptions, diags: list, svg
 
         diags.extend(write_buffers(opts.extras, result, vp, file, surfaces))
     return image
+
+
+def _laid_out_empty(vp) -> bool:
+    return vp.size_source.startswith("layout: ") and not (vp.width > 0 and vp.height > 0)
+
+
+def _check_laid_out(scene, vp, opts: RenderOptions) -> None:
+    """RND008 for a viewport WPF's layout leaves empty (LAY001/LAY002 said why, as a warning)
+    rendered without -W/-H: there is nothing to draw at that size. As ``render_size`` says
+    (for animate and camera too), with which warning and the render's own ways out: --window
+    shows the empty area as WPF does."""
+    if not _laid_out_empty(vp) or opts.width is not None or opts.height is not None:
+        return
+    at = (vp.line, vp.column)
+    why = [d.code for d in scene.diagnostics
+           if d.code in ("LAY001", "LAY002") and (d.line, d.column) == at]  # fmt: skip
+    see = f" (see {why[0]})" if why else ""
+    sized = "give -W/-H to render it at a size"
+    if opts.viewport == "all":  # -W/-H size one viewport only
+        sized = f"render it alone (--viewport {vp.index}) with -W/-H to give it a size"
+    raise RenderError(
+        f"Viewport3D #{vp.index} is laid out {vp.width:g} x {vp.height:g}{see}: nothing to draw; "
+        f"{sized}, or --window to render the window as WPF shows it",
+        code="RND008",
+        line=vp.line,
+        column=vp.column,
+    )
 
 
 def _exact_aspect(vp) -> float | None:
@@ -319,8 +371,10 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         for extra in (opts.extras.depth, opts.extras.ids):
             if extra:
                 _check_not_input(Path(extra), name, inputs)
-        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings).
-        findings = scene_findings(scene, _size_for_checks(opts), name)
+        scene, fit_notes = _fitted(scene, file, opts)
+        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings), for the
+        # cameras drawn (those --fit moved).
+        findings = scene_findings(scene, _size_for_checks(opts), name, opts.storyboard)
         if has_errors(findings):
             if not opts.lenient or not scene.viewports:
                 echo_diagnostics(findings, quiet=opts.quiet, verbose=opts.verbose)
@@ -347,7 +401,8 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
                     image = _render_window(scene, file, opts, diags)
                 else:
                     svg_out = _Deferred.path_for(out) if svg else None
-                    image = _render_viewport(scene, vp, file, opts, diags, svg_out)
+                    notes = fit_notes.get(vp.index, ())
+                    image = _render_viewport(scene, vp, file, opts, diags, svg_out, notes)
             except _Failed:
                 failed = True
                 continue

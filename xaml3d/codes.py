@@ -61,6 +61,10 @@ EXTRA_CODES: dict[str, tuple[str, str]] = {
     "RND005": (ERROR, "bad render argument (mode, ssaa, background)"),
     "RND006": (ERROR, "unknown output image format (use .png, .jpg, .jpeg or .webp)"),
     "RND007": (ERROR, "the output image cannot be written"),
+    "RND008": (
+        ERROR,
+        "the viewport is laid out empty (LAY001/LAY002): nothing to draw without -W/-H",
+    ),
 }
 
 

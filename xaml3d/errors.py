@@ -103,6 +103,9 @@ class ValueSyntaxError(XamlError):
     """An attribute value does not follow WPF's type-converter syntax."""
 
     default_code = "VAL001"
+    # (the string converted, 0-based index of the offending character in it) when the
+    # converter knows it: the reader then points the column at that character
+    at: tuple[str, int] | None = None
 
 
 class ResourceError(XamlError):

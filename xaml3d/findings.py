@@ -29,14 +29,20 @@ def with_file(diag: Diagnostic, file: str | None) -> Diagnostic:
     return Diagnostic(diag.code, diag.severity, diag.message, file, diag.line, diag.column)
 
 
-def scene_findings(scene: Scene, size_of: SizeOf = _own_size, file: str | None = None):
+def scene_findings(
+    scene: Scene,
+    size_of: SizeOf = _own_size,
+    file: str | None = None,
+    storyboard: str | None = None,
+):
     """Every finding of ``scene`` (see module docstring), located in ``file`` when the producer
     did not say, sorted by position; ``size_of(viewport)`` gives the size a camera is checked
-    at (default: the viewport's own)."""
+    at (default: the viewport's own); ``storyboard``: the one ``--storyboard`` begins (see
+    ``begun_by_name``)."""
     from xaml3d.scene.camera_check import check_camera
     from xaml3d.scene.checks import check_scene
 
-    found: list[Diagnostic] = list(scene.diagnostics)
+    found: list[Diagnostic] = begun_by_name(scene.diagnostics, scene, storyboard)
     for vp in scene.viewports:
         w, h = size_of(vp)
         if vp.size_source.startswith("layout: ") and not (w > 0 and h > 0):
@@ -46,6 +52,18 @@ def scene_findings(scene: Scene, size_of: SizeOf = _own_size, file: str | None =
     found.extend(check_scene(scene))
     file = scene.file or file
     return sort_findings(with_file(d, file) for d in found)
+
+
+def begun_by_name(diags: Iterable[Diagnostic], scene: Scene, storyboard: str | None):
+    """``diags`` without the ANIM007 "no trigger begins it" of the storyboard that
+    ``--storyboard NAME`` begins (it does start); one that never starts (BeginTime {x:Null})
+    keeps its warning."""
+    idle = {
+        (sb.line, sb.column)
+        for sb in scene.storyboards
+        if storyboard is not None and sb.name == storyboard and sb.trigger is None
+    }
+    return [d for d in diags if not (d.code == "ANIM007" and (d.line, d.column) in idle)]
 
 
 def sort_findings(diags: Iterable[Diagnostic]) -> list[Diagnostic]:

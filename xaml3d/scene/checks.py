@@ -36,6 +36,10 @@ CHECK_CODES: dict[str, tuple[str, str]] = {
 }
 
 
+_MESH_VALUES = frozenset({"Positions", "TriangleIndices"})
+_MATERIALS = frozenset({"Material", "BackMaterial"})
+
+
 def _diag(code: str, message: str, file: str | None, where) -> Diagnostic:
     """A finding located at ``where``: a scene object with ``line``/``column`` (or None)."""
     line = getattr(where, "line", None)
@@ -51,12 +55,14 @@ def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]
     out: list[Diagnostic] = []
     label = _label(model, index)
     where = model if model.line is not None else model.mesh
-    if model.mesh.triangle_count == 0:
+    # A warning that only follows from a value WPF refuses (an error already reported on that
+    # property: Model.rejected and friends) is not added.
+    if model.mesh.triangle_count == 0 and not model.mesh.rejected & _MESH_VALUES:
         n = int(model.mesh.positions.shape[0])
         out.append(
             _diag("CHK001", f"{label} has no triangles ({n} positions): draws nothing", file, where)
         )
-    if not model.material and not model.back_material:
+    if not (model.material or model.back_material or model.rejected & _MATERIALS):
         out.append(
             _diag(
                 "CHK005",
@@ -67,7 +73,7 @@ def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]
         )
     for which, passes in (("Material", model.material), ("BackMaterial", model.back_material)):
         for p in passes:
-            if p.brush is None:
+            if p.brush is None and "Brush" not in p.rejected:
                 kind = type(p).__name__
                 out.append(
                     _diag(

@@ -148,6 +148,12 @@ Brush = SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush
 # --------------------------------------------------------------------------- materials
 # A Material in the scene is a tuple of leaf passes (MaterialGroup flattened in document order).
 # A leaf with brush None draws nothing (WPF: Color is only a multiplier of the brush).
+#
+# ``rejected`` (materials, meshes, models): the properties whose markup value WPF's loader
+# refuses (an error was reported; the default stands in, for --lenient). The scene checks do not
+# add the warnings that only follow from such an error (no Brush, no triangles, no Material).
+def rejected_field():
+    return field(default=frozenset(), compare=False)
 
 
 @dataclass(frozen=True)
@@ -157,6 +163,7 @@ class DiffuseMaterial:
     ambient_color: RGBA = WHITE
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()
 
 
 @dataclass(frozen=True)
@@ -166,6 +173,7 @@ class SpecularMaterial:
     specular_power: float = 40.0
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()
 
 
 @dataclass(frozen=True)
@@ -174,6 +182,7 @@ class EmissiveMaterial:
     color: RGBA = WHITE
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()
 
 
 MaterialPass = DiffuseMaterial | SpecularMaterial | EmissiveMaterial
@@ -256,6 +265,7 @@ class Mesh:
     texcoords: np.ndarray
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()  # "Positions", "TriangleIndices"...
 
     @property
     def triangle_count(self) -> int:
@@ -273,6 +283,7 @@ class Model:
     name: str | None = None
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()  # "Geometry", "Material"...
 
 
 # --------------------------------------------------------------------------- cameras

@@ -236,6 +236,12 @@ def _case_insensitive(path: Path) -> Path | None:
 # --------------------------------------------------------------------------- materials
 
 
+def _located(r, p) -> dict:
+    """A material pass's position and the properties read so far that WPF refuses (keyword
+    arguments come last, so every property of the pass has been read)."""
+    return {**r.ctx.position(p.el), "rejected": frozenset(p.rejected)}
+
+
 def material(r, el) -> tuple:
     """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order)."""
     p = r.props(el)
@@ -252,7 +258,7 @@ def material(r, el) -> tuple:
                 brush=brush_property(r, p, "Brush"),
                 color=p.value("Color", V.parse_color, white),
                 ambient_color=p.value("AmbientColor", V.parse_color, white),
-                **r.ctx.position(el),
+                **_located(r, p),
             ),
         )
     if t == "SpecularMaterial":
@@ -261,7 +267,7 @@ def material(r, el) -> tuple:
                 brush=brush_property(r, p, "Brush"),
                 color=p.value("Color", V.parse_color, white),
                 specular_power=p.value("SpecularPower", V.parse_double, 40.0),
-                **r.ctx.position(el),
+                **_located(r, p),
             ),
         )
     if t == "EmissiveMaterial":
@@ -269,7 +275,7 @@ def material(r, el) -> tuple:
             EmissiveMaterial(
                 brush=brush_property(r, p, "Brush"),
                 color=p.value("Color", V.parse_color, white),
-                **r.ctx.position(el),
+                **_located(r, p),
             ),
         )
     r.ctx.diag("XAML013", f"{t} is not a Material: ignored", el)

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from xaml3d.errors import Diagnostic, XamlError
+from xaml3d.errors import ERROR, Diagnostic, XamlError
 from xaml3d.xaml.parser import MC_NS, PRESENTATION_NAMESPACES, XAML_NS, ParsedDocument
 
 
@@ -68,6 +68,10 @@ class ReadContext:
 
     def __init__(self, *, allow_outside: bool = False, limits=None) -> None:
         self.diagnostics: list[Diagnostic] = []
+        # errors reported so far, repeats suppressed by ``once`` too: a property whose reading
+        # raised it saw an error (Props.rejected), even while an animation frame's build drops
+        # the repeated diagnostics
+        self.errors = 0
         self.allow_outside = allow_outside
         self.limits = limits
         self.allowed_roots: list[Path] = []
@@ -111,11 +115,14 @@ class ReadContext:
         return el
 
     # ----------------------------------------------------------------- diagnostics
-    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int | None, int | None]:
+    def locate(
+        self, el: etree._Element, attr: str | None = None, index: int | None = None
+    ) -> tuple[int | None, int | None]:
         """(line, column) of an element's ``<``, or of attribute ``attr``'s name (a key of
-        ``el.attrib``) in its own document's text; (sourceline, None) when not found."""
+        ``el.attrib``), or of character ``index`` of its value, in its own document's text;
+        (sourceline, None) when not found."""
         doc = self.doc_of(el)
-        where = doc.locate(el, attr) if doc is not None else None
+        where = doc.locate(el, attr, index) if doc is not None else None
         return where if where is not None else (el.sourceline, None)
 
     def position(self, el: etree._Element) -> dict:
@@ -138,11 +145,12 @@ class ReadContext:
     ) -> None:
         """Record a diagnostic about ``el`` (or its attribute ``attr``, a key of ``el.attrib``);
         ``once`` (a key) suppresses repeats of the same report."""
+        severity = severity_of(code)
+        self.errors += severity == ERROR
         if once is not None:
             if (code, once) in self._once:
                 return
             self._once.add((code, once))
-        severity = severity_of(code)
         if el is not None:
             if line is None:
                 line, column = self.locate(el, attr)
@@ -154,6 +162,7 @@ class ReadContext:
     ) -> None:
         """Record a diagnostic made elsewhere (mesh building...) about ``el`` (or its attribute
         ``attr``): an unknown location, or ``el``'s sourceline, becomes the located one."""
+        self.errors += diagnostic.severity == ERROR
         about_el = el is not None and diagnostic.line in (None, el.sourceline)
         if about_el and diagnostic.column is None:
             line, column = self.locate(el, attr)
@@ -178,10 +187,15 @@ class ReadContext:
         its code's table severity (errors stay errors: the property keeps its default only so
         that the rest of the scene can still be checked, or rendered with --lenient)."""
         if el is not None:
-            line, column = self.locate(el, attr) if exc.line is None else (None, None)
+            # a converter that names the offending character of the attribute's value
+            at = getattr(exc, "at", None)
+            index = at[1] if at and attr is not None and at[0] == el.get(attr) else None
+            line, column = self.locate(el, attr, index) if exc.line is None else (None, None)
             exc.with_location(self.file_of(el), line, column)
+        severity = severity_of(exc.code)
+        self.errors += severity == ERROR
         self.diagnostics.append(
-            Diagnostic(exc.code, severity_of(exc.code), exc.message, exc.file, exc.line, exc.column)
+            Diagnostic(exc.code, severity, exc.message, exc.file, exc.line, exc.column)
         )
 
     # ----------------------------------------------------------------- resource build guard

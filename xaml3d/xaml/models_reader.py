@@ -10,6 +10,7 @@ rules); AmbientLight, DirectionalLight, PointLight and SpotLight with their worl
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -139,6 +140,11 @@ def camera(r, el):
     return None
 
 
+# What a mesh reports only because of the value WPF refused in Positions or TriangleIndices (the
+# empty default, or the implicit triangles of no TriangleIndices, stands in): not repeated after
+# that error.
+_FOLLOW_ON = {"MSH002", "MSH005", "MSH006"}
+
 # the mesh property each MSH code is about (its diagnostic points at that attribute)
 _MESH_ATTRS = {
     "MSH001": "TriangleIndices",
@@ -170,6 +176,9 @@ def mesh(r, el):
         p.value("TextureCoordinates", V.parse_point_collection, None),
         line=r.ctx.position(el)["line"],
     )
+    if p.rejected & {"Positions", "TriangleIndices"}:
+        diags = [dg for dg in diags if dg.code not in _FOLLOW_ON]
+    result = replace(result, rejected=frozenset(p.rejected))
     for dg in diags:
         attr = _MESH_ATTRS.get(dg.code)
         key = p.attr_keys.get(attr) if attr else None

@@ -56,9 +56,12 @@ class ParsedDocument:
     path: Path | None  # the resolved file path (None for text input)
     source: SourceMap | None = None
 
-    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int, int] | None:
-        """(line, column) of an element of this document, or of one of its attributes."""
-        return None if self.source is None else self.source.locate(el, attr)
+    def locate(
+        self, el: etree._Element, attr: str | None = None, index: int | None = None
+    ) -> tuple[int, int] | None:
+        """(line, column) of an element of this document, or of one of its attributes (or of
+        character ``index`` of that attribute's value: SourceMap.locate)."""
+        return None if self.source is None else self.source.locate(el, attr, index)
 
     @property
     def directory(self) -> Path | None:

@@ -52,6 +52,10 @@ class Props:
         self.prop_el: dict[str, etree._Element] = {}
         self.content: list[etree._Element] = []
         self.text = (el.text or "").strip()
+        # properties whose value WPF's loader refuses: an error was reported while reading it
+        # and the default stands in. The scene objects carry them, so that the checks do not
+        # add a warning that only follows from that error (CHK004 "no Brush" after a bad colour)
+        self.rejected: set[str] = set()
         self._read_attributes()
         self._read_children()
 
@@ -204,7 +208,14 @@ class Props:
     def value(self, prop: str, conv: Callable[[str], object], default=None):
         """A value-type property (numbers, vectors, colours, collections...); while a frame of
         an animation is built, its animated value."""
-        return self.r.animated(self.el, prop, self._value(prop, conv, default))
+        errors = self.r.ctx.errors
+        value = self._value(prop, conv, default)
+        self._rejected(prop, value, default, errors)
+        return self.r.animated(self.el, prop, value)
+
+    def _rejected(self, prop: str, value, default, errors: int) -> None:
+        if value is default and self.r.ctx.errors > errors:
+            self.rejected.add(prop)
 
     def _value(self, prop: str, conv: Callable[[str], object], default=None):
         if prop in self.attrs:
@@ -252,7 +263,9 @@ class Props:
         """An object property built from an element (or resource); ``from_string`` converts a
         plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None.
         While a frame of an animation is built, its animated value (a Rotation)."""
+        errors = self.r.ctx.errors
         built = self._obj(prop, build, default, from_string=from_string)
+        self._rejected(prop, built, default, errors)
         return self.r.animated(self.el, prop, built)
 
     def _obj(self, prop: str, build: Callable, default=None, *, from_string=None):

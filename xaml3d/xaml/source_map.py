@@ -161,22 +161,27 @@ class SourceMap:
         marks.insert(k + 1, (offset, line, line_start))
         return line, offset - line_start + 1
 
-    def locate(self, el: etree._Element, attr: str | None = None) -> tuple[int, int] | None:
+    def locate(
+        self, el: etree._Element, attr: str | None = None, index: int | None = None
+    ) -> tuple[int, int] | None:
         """(line, column) of ``el``'s ``<``, or of the start of attribute ``attr``'s name (a key
-        of ``el.attrib``, Clark notation) when it is written in the start tag; None when the
-        element cannot be matched to the text."""
+        of ``el.attrib``, Clark notation) when it is written in the start tag, or of character
+        ``index`` of its value when the text holds the value as lxml gives it (no character
+        reference, no line break turned into a blank); None when the element cannot be matched
+        to the text."""
         i = self._tag(el)
         if i is None:
             return None
         offset = self._starts[i]
         if attr is not None:
-            found = self._attribute(el, i, attr)
+            found = self._attribute(el, i, attr, index)
             offset = offset if found is None else found
         return self.position_at(offset)
 
-    def _attribute(self, el: etree._Element, i: int, attr: str) -> int | None:
-        """Offset of attribute ``attr``'s name in start tag ``i``: a scan from one attribute to
-        the next that jumps over each quoted value (which may hold ">" or the other quote)."""
+    def _attribute(self, el: etree._Element, i: int, attr: str, index=None) -> int | None:
+        """Offset of attribute ``attr``'s name in start tag ``i`` (or of character ``index`` of
+        its value, see ``locate``): a scan from one attribute to the next that jumps over each
+        quoted value (which may hold ">" or the other quote)."""
         text = self.text
         pos = self._starts[i] + 1 + len(self._names[i])
         while True:
@@ -192,6 +197,14 @@ class SourceMap:
                 else:
                     key = name
                 if key == attr:
+                    if index is not None:
+                        value = el.get(attr) or ""
+                        end = m.end() + len(value)
+                        # the text is the value (no character reference, no line break made a
+                        # blank): its characters line up
+                        if 0 <= index < len(value) and text[end : end + 1] == m.group(2):
+                            if text[m.end() : end] == value:
+                                return m.end() + index
                     return m.start(1)
             close = text.find(m.group(2), m.end())
             if close < 0:

@@ -73,7 +73,9 @@ def split_tokens(s: str, what: str) -> list[tuple[str, int]]:
     gap = s.find(",", end)
     if gap >= 0:
         where = "leading" if not out else "trailing"
-        raise _fail("VAL002", f"{what}: {where} comma at character {gap + 1} in {_show(s)}")
+        raise _fail(
+            "VAL002", f"{what}: {where} comma at character {gap + 1} in {_show(s)}", (s, gap)
+        )
     return out
 
 
@@ -82,12 +84,12 @@ def _check_gap(s: str, start: int, stop: int, what: str, first: bool) -> None:
     if comma < 0:
         return
     if first:
-        raise _fail("VAL002", f"{what}: leading comma at character {comma + 1} in {_show(s)}")
+        msg = f"{what}: leading comma at character {comma + 1} in {_show(s)}"
+        raise _fail("VAL002", msg, (s, comma))
     second = s.find(",", comma + 1, stop)
     if second >= 0:
-        raise _fail(
-            "VAL002", f"{what}: empty token (two commas) at character {second + 1} in {_show(s)}"
-        )
+        msg = f"{what}: empty token (two commas) at character {second + 1} in {_show(s)}"
+        raise _fail("VAL002", msg, (s, second))
 
 
 def _exact(s: str, what: str, integer: bool) -> np.ndarray:
@@ -97,15 +99,20 @@ def _exact(s: str, what: str, integer: bool) -> np.ndarray:
     values = []
     for i, (tok, off) in enumerate(split_tokens(s, what), 1):
         if not pattern.fullmatch(tok):
+            # the offending character: the first one past the longest prefix of the grammar
+            prefix = pattern.match(tok)
+            bad = off + (len(prefix.group()) if prefix else 0)
             raise _fail(
                 "VAL001",
                 f"{what}: bad {kind} {_show(tok)} (token {i}, character {off + 1})",
+                (s, min(bad, off + len(tok) - 1)),
             )
         v = int(tok) if integer else float(tok)
         if integer and not _INT32_MIN <= v <= _INT32_MAX:
             raise _fail(
                 "VAL001",
                 f"{what}: {tok} is outside the Int32 range (token {i}, character {off + 1})",
+                (s, off),
             )
         values.append(v)
     return np.array(values, dtype=np.int64 if integer else np.float64)
@@ -186,8 +193,11 @@ def number_array(s: str, what: str, integer: bool = False) -> np.ndarray:
 # --------------------------------------------------------------------------- scalars
 
 
-def _fail(code: str, message: str) -> ValueSyntaxError:
-    return ValueSyntaxError(message, code=code)
+def _fail(code: str, message: str, at: tuple[str, int] | None = None) -> ValueSyntaxError:
+    """The error; ``at`` = (the string converted, index of the offending character in it)."""
+    exc = ValueSyntaxError(message, code=code)
+    exc.at = at
+    return exc
 
 
 def _show(s: str) -> str:
