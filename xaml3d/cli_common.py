@@ -7,6 +7,7 @@ Data goes to stdout, diagnostics to stderr, never mixed.
 
 from __future__ import annotations
 
+import gc
 import math
 import sys
 from collections.abc import Iterable, Iterator
@@ -51,6 +52,15 @@ def load_scene(source: str, resources: Iterable[str] = (), window_size=None) -> 
     """Load a scene from a path, or from stdin (as bytes) when ``source`` is ``-``: its
     relative references then resolve against the current directory. ``window_size`` (client
     width, height) lays the root out at that size (``--window-size``)."""
+    scene = _load(source, resources, window_size)
+    # The reader's tree, decoded text and number lists sit in reference cycles: collect them
+    # now, before a render allocates its buffers, or they stay until the next automatic
+    # collection and add about 180 MB to the peak of a 56 MB file.
+    gc.collect()
+    return scene
+
+
+def _load(source: str, resources: Iterable[str], window_size) -> Scene:
     from xaml3d.xaml.loader import load
 
     if source != "-":
