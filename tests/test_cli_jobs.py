@@ -133,3 +133,39 @@ def test_parallel_animation_frames_equal_serial(tmp_path):
     assert [f.name for f in one] == [f.name for f in three] and len(one) == 6
     assert [f.read_bytes() for f in one] == [f.read_bytes() for f in three]
     assert len({f.read_bytes() for f in one}) > 1  # the cube does move
+
+
+def _write_marker(folder: str, i: int) -> str:
+    """A task of run_ordered: writes its marker file and returns its path."""
+    p = Path(folder) / f"{i}.done"
+    p.write_text("x")
+    return str(p)
+
+
+def test_a_batch_closed_early_leaves_only_what_was_handed_over(tmp_path):
+    # As after Ctrl-C: the consumer stops after two results. Items not started are cancelled,
+    # running ones finish, and every result computed but never handed over is abandoned.
+    from xaml3d.cli_jobs import run_ordered
+
+    abandoned = []
+
+    def abandon(path):
+        abandoned.append(path)
+        Path(path).unlink()
+
+    items = [(str(tmp_path), i) for i in range(40)]
+    results = run_ordered(_write_marker, items, 2, abandon=abandon)
+    taken = [next(results)[0], next(results)[0]]
+    results.close()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(Path(p).name for p in taken)
+    assert all(Path(p).name not in {Path(t).name for t in taken} for p in abandoned)
+
+
+def test_a_batch_run_to_the_end_abandons_nothing(tmp_path):
+    from xaml3d.cli_jobs import run_ordered
+
+    abandoned = []
+    items = [(str(tmp_path), i) for i in range(5)]
+    out = [r for r, _ in run_ordered(_write_marker, items, 2, abandon=abandoned.append)]
+    assert [Path(p).name for p in out] == [f"{i}.done" for i in range(5)]
+    assert abandoned == []

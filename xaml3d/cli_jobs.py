@@ -34,11 +34,26 @@ def _captured(task: Callable[..., bool], args: tuple) -> tuple[bool, str]:
     return ok, buffer.getvalue()
 
 
+def _ignore_interrupt() -> None:
+    import signal
+
+    # Ctrl-C reaches the whole process group: the parent stops the batch (run_ordered), a
+    # worker just finishes its scene instead of printing a traceback of its own.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def run_ordered(
-    task: Callable[..., bool], items: Sequence[tuple], jobs: int
+    task: Callable[..., bool],
+    items: Sequence[tuple],
+    jobs: int,
+    abandon: Callable[[object], None] | None = None,
 ) -> Iterator[tuple[bool, str]]:
     """Yield (result, stderr text) of ``task(*item)`` for every item, in the items' order, with
-    up to ``jobs`` worker processes. ``task`` must be a module-level function (picklable)."""
+    up to ``jobs`` worker processes. ``task`` must be a module-level function (picklable).
+
+    Closed early (Ctrl-C, an error in the caller): the items not started are cancelled, the
+    running ones finish, and ``abandon(result)`` is called for every result that was computed
+    but never yielded (so the caller can remove what it wrote)."""
     # Imported here: a single render (the common, small case) never pays for them.
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
@@ -46,7 +61,23 @@ def run_ordered(
     workers = max(1, min(int(jobs), len(items)))
     methods = multiprocessing.get_all_start_methods()
     ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        futures = [pool.submit(_captured, task, args) for args in items]
-        for future in futures:
-            yield future.result()
+    futures: list = []
+    given = 0
+    try:
+        with ProcessPoolExecutor(
+            max_workers=workers, mp_context=ctx, initializer=_ignore_interrupt
+        ) as pool:
+            futures = [pool.submit(_captured, task, args) for args in items]
+            try:
+                for future in futures:
+                    result = future.result()
+                    given += 1
+                    yield result
+            finally:
+                for future in futures:
+                    future.cancel()  # leaving the pool then waits for the running ones only
+    finally:
+        for future in futures[given:]:
+            if abandon is not None and future.done() and not future.cancelled():
+                if future.exception() is None:
+                    abandon(future.result()[0])

@@ -486,7 +486,8 @@ def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
         todo.append((source, target, duplicate))
         if not duplicate:
             items.append((source, target, opts, inputs))
-    results = run_ordered(_render_task, items, jobs)
+    # Interrupted: the finished scenes' temporaries are removed, never renamed into place.
+    results = run_ordered(_render_task, items, jobs, abandon=lambda r: _discard(r[1]))
     read_before: list[Path] = []  # what the earlier scenes of the batch read
     made: set[str] = set()  # what the earlier scenes of the batch wrote
 
@@ -516,7 +517,17 @@ def _parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
         if not ok:
             failed.append(display_name(source))
 
-    return [lambda args=args: step(*args) for args in todo]
+    batch = _Batch(lambda args=args: step(*args) for args in todo)
+    batch.close = results.close
+    return batch
+
+
+class _Batch(list):
+    """The steps of a parallel batch; ``close()`` stops its workers when the batch ends early
+    (Ctrl-C): queued scenes are cancelled and finished ones' temporaries removed."""
+
+    def close(self) -> None:  # replaced by the batch's own
+        pass
 
 
 def _check_layout_options(window, outline, viewport, width, height, scale, fit, output) -> None:
@@ -774,15 +785,19 @@ def render_command(
         steps = (
             lambda source=source, target=target: run(source, target) for source, target in plan
         )
-    if len(plan) > 1 and stderr_is_terminal():
-        with click.progressbar(
-            steps, length=len(plan), label="rendering", file=click.get_text_stream("stderr")
-        ) as bar:
-            for step in bar:
+    try:
+        if len(plan) > 1 and stderr_is_terminal():
+            with click.progressbar(
+                steps, length=len(plan), label="rendering", file=click.get_text_stream("stderr")
+            ) as bar:
+                for step in bar:
+                    step()
+        else:
+            for step in steps:
                 step()
-    else:
-        for step in steps:
-            step()
+    finally:
+        if isinstance(steps, _Batch):
+            steps.close()
     if len(plan) > 1:
         ok = len(plan) - len(failed)
         summary = f"xaml3d: rendered {ok} of {len(plan)} scenes"
