@@ -278,8 +278,10 @@ def test_an_interrupted_write_leaves_no_partial_file(tmp_path, existing):
         fh.write(b"GIF89a half")
         raise KeyboardInterrupt  # Ctrl-C while the file is being encoded
 
+    from xaml3d.render.atomic import write_atomically
+
     with pytest.raises(KeyboardInterrupt):
-        frames_module._atomic(target, write)
+        write_atomically(target, write)
     assert os.listdir(tmp_path) == (["a.gif"] if existing else [])
     if existing:
         assert target.read_bytes() == b"the earlier animation"

@@ -22,8 +22,6 @@ else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, 
 
 from __future__ import annotations
 
-import os
-import tempfile
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -31,6 +29,7 @@ import numpy as np
 
 from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError
 from xaml3d.render import accel
+from xaml3d.render.atomic import write_atomically
 from xaml3d.render.draw import draw_viewport_models, make_context
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.wireframe import draw_wireframe
@@ -308,12 +307,6 @@ def flatten(image, background=None):
     return Image.alpha_composite(base, image.convert("RGBA")).convert("RGB")
 
 
-def _current_umask() -> int:
-    mask = os.umask(0o022)  # reading the umask means setting it; put it straight back
-    os.umask(mask)
-    return mask
-
-
 def save_image(
     image, path, format: str | None = None, background=None, *, compress_level: int = 1
 ) -> None:
@@ -341,27 +334,11 @@ def save_image(
         image = Image.fromarray(image, mode="RGBA")
     if fmt != "PNG":
         image = flatten(image, background)
-    directory = path.parent if str(path.parent) else Path(".")
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as exc:
-        raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            if fmt == "PNG":
-                image.save(fh, format=fmt, compress_level=int(compress_level))
-            else:
-                image.save(fh, format=fmt)
-            fh.flush()
-            os.fsync(fh.fileno())
-        # mkstemp creates the file 0600; give it the mode a plain open() would have.
-        os.chmod(tmp, 0o666 & ~_current_umask())
-        os.replace(tmp, path)
-    except BaseException as exc:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        if isinstance(exc, OSError):
-            raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
-        raise
+
+    def write(fh) -> None:
+        if fmt == "PNG":
+            image.save(fh, format=fmt, compress_level=int(compress_level))
+        else:
+            image.save(fh, format=fmt)
+
+    write_atomically(path, write)

@@ -17,14 +17,11 @@ are written atomically through ``write_atomic``.
 from __future__ import annotations
 
 import io
-import os
-import tempfile
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 
-from xaml3d.errors import RenderError
+from xaml3d.render.atomic import write_atomically
 from xaml3d.scene.lens import eye_distance, eye_distance_matrix
 from xaml3d.scene.types import AmbientLight, DiffuseMaterial, SolidColorBrush
 
@@ -89,32 +86,9 @@ def model_ids(scene, vp, width: int, height: int, aspect: float | None = None) -
 
 
 def write_atomic(path, data: bytes) -> None:
-    """Write ``data`` to ``path`` through a fsynced temporary file renamed over it; on failure
-    the temporary file is removed and an existing ``path`` is left untouched. RenderError
-    RND007 when it cannot be written."""
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as exc:
-        raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        mask = os.umask(0o022)  # reading the umask means setting it; put it straight back
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)
-        os.replace(tmp, path)
-    except BaseException as exc:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        if isinstance(exc, OSError):
-            raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
-        raise
+    """Write ``data`` to ``path`` atomically (``xaml3d.render.atomic``); RenderError RND007 when
+    it cannot be written."""
+    write_atomically(path, lambda fh: fh.write(data))
 
 
 def depth_range(distance: np.ndarray) -> tuple[float, float] | None:

@@ -13,15 +13,14 @@ renamed, so a failure leaves no partial file and an existing one untouched.
 
 from __future__ import annotations
 
-import os
 import re
-import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
 
 from xaml3d.errors import RenderError
+from xaml3d.render.atomic import write_atomically
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
 # The files of a numbered sequence: frame_0000.png ... (4 digits at least, more when needed).
@@ -126,31 +125,6 @@ def _gif_frame(rgba: np.ndarray):
     return out, 255
 
 
-def _atomic(path: Path, write) -> None:
-    directory = path.parent if str(path.parent) else Path(".")
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as exc:
-        raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            write(fh)
-            fh.flush()
-            os.fsync(fh.fileno())
-        mask = os.umask(0o022)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)
-        os.replace(tmp, path)
-    except BaseException as exc:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        if isinstance(exc, OSError):
-            raise RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007") from exc
-        raise
-
-
 def save_animation(
     frames: list[np.ndarray],
     path,
@@ -210,5 +184,5 @@ def save_animation(
             images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
                            duration=durations, loop=loop, **opts)  # fmt: skip
 
-    _atomic(path, write)
+    write_atomically(path, write)
     return [path]
