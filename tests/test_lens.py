@@ -587,3 +587,74 @@ def test_cli_wireframe_depth_is_the_surfaces(tmp_path):
     exp = _plane_expected()
     assert np.array_equal(np.isnan(arr), np.isnan(exp))
     assert np.allclose(arr[34:48], exp[34:48], rtol=2e-7)
+
+
+# --------------------------------------------------------------------------- lit once
+
+
+def _shiny_plane(tmp_path: Path) -> Path:
+    """A 16 x 16-cell grid in the plane z = 0 reaching past the view of a camera 5 units away
+    (so every pixel shows the plane and no edge is seen), grey diffuse plus a white specular
+    highlight of a point light near the eye."""
+    n = 16
+    xs = np.linspace(-4.0, 4.0, n + 1)
+    pos = " ".join(f"{x:g},{y:g},0" for y in xs for x in xs)
+    tris = []
+    for j in range(n):
+        for i in range(n):
+            a = j * (n + 1) + i
+            tris += [a, a + 1, a + n + 2, a, a + n + 2, a + n + 1]
+    path = tmp_path / "shiny.xaml"
+    path.write_text(f"""<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    Width="160" Height="120">
+  <Viewport3D.Camera>
+    <PerspectiveCamera Position="0,0,5" LookDirection="0,0,-1" FieldOfView="60" />
+  </Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#202020" />
+    <PointLight Color="White" Position="0.6,0.4,2" />
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="{pos}" TriangleIndices="{" ".join(map(str, tris))}" />
+      </GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><MaterialGroup>
+        <DiffuseMaterial Brush="#808080" /><SpecularMaterial Brush="White" SpecularPower="8" />
+      </MaterialGroup></GeometryModel3D.Material>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>
+""")
+    return path
+
+
+@pytest.mark.parametrize("mode", ["shaded", "flat"])
+def test_lens_lights_the_scene_once(monkeypatch, mode):
+    from xaml3d.render import draw
+
+    calls = []
+    real = draw.shade_vertices
+
+    def counting(*args, **kwargs):
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(draw, "shade_vertices", counting)
+    scene = load(CUBE)
+    render_arrays(scene, 80, 60, mode=mode)
+    once = len(calls)
+    calls.clear()
+    r = render_arrays(scene, 80, 60, mode=mode, aperture=0.2, lens_samples=6, stereo="anaglyph")
+    assert once > 0 and len(calls) == once  # 12 eye renders and the pinhole: lit once
+    assert r.rgba[..., 3].any()
+
+
+def test_lens_highlights_are_the_lens_centre_s(tmp_path):
+    # Every eye sees the same point of the focal plane at a pixel, with the same weights; lit
+    # once (from the lens centre), its colour is the pinhole's, specular highlight included.
+    # Re-lit per eye, the highlight would move with each eye point and smear.
+    scene = load(_shiny_plane(tmp_path))
+    pin = render_arrays(scene)
+    lens = render_arrays(scene, aperture=0.8, focus=5.0, lens_samples=8)
+    grey = pin.rgba[..., :3].astype(int)
+    assert grey.max() - grey.min() > 60  # a highlight to speak of
+    assert np.abs(lens.rgba.astype(int) - pin.rgba).max() <= 1

@@ -236,17 +236,51 @@ def render_arrays(
             f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or the ssaa/msaa factor",
             code="RND001",
         )
+    settings = dict(
+        mode=mode, bg=bg, grid=grid, msaa=msaa, line_rgba=line_rgba, hidden_lines=hidden_lines,
+        antialias_lines=antialias_lines, line_width=line_width, aspect=aspect,
+    )  # fmt: skip
     if (aperture is not None and aperture != 0) or stereo is not None or fstop is not None:
         from xaml3d.render.lens import render_through_lens
 
+        bounds = vp.bounds()  # the same models in every sample: measured once
+
+        def draw(eye_vp, shading, want_ids: bool) -> Rendering:
+            return _draw_viewport(
+                scene, eye_vp, w, h, ids=want_ids, shading=shading, bounds=bounds, **settings
+            )
+
         return render_through_lens(
-            scene, w, h, viewport=vp.index, aperture=aperture, focus=focus, fstop=fstop,
+            vp, w, h, draw, ids=ids, aperture=aperture, focus=focus, fstop=fstop,
             focal_length=focal_length, lens_samples=lens_samples, stereo=stereo,
-            eye_separation=eye_separation, progress=progress, mode=mode, background=background,
-            ssaa=ssaa if ssaa > 1 else None, msaa=msaa if ssaa == 1 else None,
-            hidden_lines=hidden_lines, line_color=line_color, line_width=line_width,
-            antialias_lines=antialias_lines, max_size=max_size, aspect=aspect, ids=ids,
+            eye_separation=eye_separation, progress=progress, aspect=aspect,
         )  # fmt: skip
+    return _draw_viewport(scene, vp, w, h, ids=ids, **settings)
+
+
+def _draw_viewport(
+    scene: Scene,
+    vp,
+    w: int,
+    h: int,
+    *,
+    mode: str,
+    bg,
+    grid: int,
+    msaa: int,
+    line_rgba,
+    hidden_lines: bool,
+    antialias_lines: bool,
+    line_width: float,
+    aspect: float | None,
+    ids: bool,
+    shading=None,
+    bounds=False,
+) -> Rendering:
+    """One render of the viewport ``vp`` (its camera may be a lens sample's) with arguments
+    already checked by ``render_arrays``. ``shading``: a ``draw.Shading`` cache of lit colours
+    to fill or reuse (the lens lights once for all its samples); ``bounds``: ``vp.bounds()``
+    when the caller already has it."""
     diags: list[Diagnostic] = []
     sw, sh = w * grid, h * grid
     accel.begin_frame()
@@ -255,7 +289,9 @@ def render_arrays(
     try:
         from xaml3d.scene.camera_math import camera_pipeline
 
-        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds(), aspect=aspect)
+        if bounds is False:
+            bounds = vp.bounds()
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=bounds, aspect=aspect)
     except CameraError as exc:
         exc.with_location(file=scene.file)
         diags.append(exc.as_diagnostic())
@@ -265,7 +301,7 @@ def render_arrays(
             draw_wireframe(fb, vp, pipeline, ctx, line_rgba, grid, hidden_lines, antialias_lines,
                            line_width)  # fmt: skip
         else:
-            draw_viewport_models(fb, vp, pipeline, ctx, mode)
+            draw_viewport_models(fb, vp, pipeline, ctx, mode, shading)
     for d in ctx.diagnostics:
         diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
                                                  d.line, d.column))  # fmt: skip

@@ -20,6 +20,11 @@ For every GeometryModel3D (``Model``), vectorized over all its vertices and tria
 
 ``mode="flat"`` samples non-uniform brushes per pixel exactly as ``shaded`` does; only the
 lighting is per face.
+
+Shading once for many cameras: a ``Shading`` cache passed to ``draw_viewport_models`` keeps each
+pass's lit colours (vertex colours, or face colours of every triangle in flat mode) from the
+first render that fills it; later renders of the same models through other cameras (the lens
+samples and stereo eyes of ``xaml3d.render.lens``) reuse them instead of lighting again.
 """
 
 from __future__ import annotations
@@ -290,8 +295,29 @@ def _blend(fb: Framebuffer, mat, frag: Fragments, col: np.ndarray) -> None:
         fb.add(frag.pixel, frag.depth, col)
 
 
-def draw_model(fb: Framebuffer, pm: PreparedModel, lights, ctx: DrawContext, mode: str) -> None:
-    """Draw one prepared model: BackMaterial on back faces first, then Material on front faces."""
+class Shading:
+    """Lit pass colours shared by several renders of the same viewport's models (module
+    docstring): ``PassShader``s keyed by (model position, side, mode). The lights are those of
+    the camera of the render that filled it (for the lens: the pinhole, the lens centre)."""
+
+    def __init__(self) -> None:
+        self.shaders: dict[tuple[int, float, str], list[PassShader]] = {}
+        self.lightings = 0  # how many sides were lit (tests: the lens lights once)
+
+
+def draw_model(
+    fb: Framebuffer,
+    pm: PreparedModel,
+    lights,
+    ctx: DrawContext,
+    mode: str,
+    shading: Shading | None = None,
+    key: int = 0,
+) -> None:
+    """Draw one prepared model: BackMaterial on back faces first, then Material on front faces.
+
+    ``lights``: the prepared lights, or a callable returning them (called only when a side
+    must be lit). ``shading``/``key``: the cache and this model's position in it."""
     flat = mode == "flat"
     sides = (
         (pm.model.back_material, pm.back, -1.0),
@@ -302,8 +328,16 @@ def draw_model(fb: Framebuffer, pm: PreparedModel, lights, ctx: DrawContext, mod
         tris = np.flatnonzero(mask)
         if not passes or tris.size == 0:
             continue
-        faces = _face_geometry(pm, tris) if flat else None
-        shaders = [PassShader(pm, p, sign, lights, flat, faces, tris) for p in passes]
+        shaders = None if shading is None else shading.shaders.get((key, sign, mode))
+        if shaders is None:
+            # A cached side may face the other way for another camera: light every triangle.
+            lit = tris if shading is None else np.arange(pm.front.size)
+            faces = _face_geometry(pm, lit) if flat else None
+            lights = lights() if callable(lights) else lights
+            shaders = [PassShader(pm, p, sign, lights, flat, faces, lit) for p in passes]
+            if shading is not None:
+                shading.shaders[(key, sign, mode)] = shaders
+                shading.lightings += 1
         # Flat colours with uniform brushes are per triangle: no weights to interpolate.
         need_weights = not (flat and all(sh.uniform for sh in shaders))
         frags = side_fragments(pm, tris, ctx, weights=need_weights, passes=len(shaders))
@@ -333,10 +367,19 @@ def _nbytes(frag: Fragments) -> int:
     return sum(a.nbytes for a in arrays if a is not None)
 
 
-def draw_viewport_models(fb: Framebuffer, viewport, pipeline, ctx: DrawContext, mode: str) -> None:
-    """Draw every model of ``viewport`` in order with its lights (shaded / flat modes)."""
-    lights = prepare_lights(viewport.lights, pipeline.view_matrix)
-    for model in viewport.models:
+def draw_viewport_models(
+    fb: Framebuffer, viewport, pipeline, ctx: DrawContext, mode: str, shading: Shading | None = None
+) -> None:
+    """Draw every model of ``viewport`` in order with its lights (shaded / flat modes).
+    ``shading``: lit colours to reuse, or fill for later renders (module docstring)."""
+    prepared = []
+
+    def lights():
+        if not prepared:  # the lights are moved into view space only when something is lit
+            prepared.append(prepare_lights(viewport.lights, pipeline.view_matrix))
+        return prepared[0]
+
+    for key, model in enumerate(viewport.models):
         pm = prepare_model(model, pipeline, ctx)
         if pm is not None:
-            draw_model(fb, pm, lights, ctx, mode)
+            draw_model(fb, pm, lights, ctx, mode, shading, key)

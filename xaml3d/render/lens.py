@@ -12,7 +12,8 @@ and the images are combined in LINEAR light with premultiplied alpha:
   blue = the right eye's.
 
 The depth buffer, the eye distances and the model ids of the result are those of the pinhole
-camera (the centre of the lens, between the eyes), rendered once more for them.
+camera (the centre of the lens, between the eyes), rendered once more for them. That pinhole
+render also lights the scene, once: every sample reuses its lit colours (``draw.Shading``).
 """
 
 from __future__ import annotations
@@ -88,11 +89,12 @@ def eye_offsets(aperture: float, samples: int, stereo: str | None, separation: f
 
 
 def render_through_lens(
-    scene,
+    vp,
     width: int,
     height: int,
+    draw,
     *,
-    viewport=None,
+    ids: bool = False,
     aperture: float = 0.0,
     focus: float | None = None,
     fstop: float | None = None,
@@ -102,17 +104,21 @@ def render_through_lens(
     eye_separation: float | None = None,
     progress=None,
     aspect: float | None = None,
-    **options,
 ):
-    """Depth of field and/or a stereo pair of one viewport (module docstring).
+    """Depth of field and/or a stereo pair of the viewport ``vp`` (module docstring).
 
-    ``width`` x ``height`` is the size of ONE eye's image. ``progress(done, total)`` is called
-    after every sample render. ``fstop``/``focal_length``: the aperture as an f-number
-    (``xaml3d.scene.lens.aperture_of_fstop``). Returns a ``Rendering`` whose rgba is the
-    combined picture (side-by-side: 2W x H; over-under: W x 2H) and whose depth, distance
-    and ids are the pinhole camera's. Raises RenderError (LNS001: not a PerspectiveCamera;
-    RND005: bad argument)."""
-    from xaml3d.render.api import render_arrays
+    ``draw(viewport, shading, ids)`` renders one viewport (the pinhole's, or a copy whose camera
+    is a lens sample's) at ``width`` x ``height``, the size of ONE eye's image, and returns a
+    ``Rendering`` (``render_arrays`` gives it, with every other argument already checked).
+    The scene is lit ONCE: the pinhole render fills a ``draw.Shading`` cache of lit colours
+    that every sample reuses, so the lighting is the lens centre's (specular highlights are
+    evaluated from the centre of the lens, as diffuse light is the same from every eye point).
+    ``progress(done, total)`` is called after every sample render. ``fstop``/``focal_length``:
+    the aperture as an f-number (``xaml3d.scene.lens.aperture_of_fstop``). Returns a
+    ``Rendering`` whose rgba is the combined picture (side-by-side: 2W x H; over-under: W x 2H)
+    and whose depth, distance and ids are the pinhole camera's. Raises RenderError (LNS001: not
+    a PerspectiveCamera; RND005: bad argument)."""
+    from xaml3d.render.draw import Shading
 
     if stereo is not None and stereo not in STEREO_MODES:
         raise RenderError(
@@ -121,12 +127,10 @@ def render_through_lens(
     aperture = 0.0 if aperture is None else aperture
     if not (aperture >= 0 and np.isfinite(aperture)):
         raise RenderError(f"aperture must be finite and >= 0, got {aperture!r}", code="RND005")
-    vp = scene.viewport(viewport)
     if not isinstance(vp.camera, PerspectiveCamera):
         lens_frame(vp.camera, width, height, focus)  # raises LNS001
-    options["time"] = None  # the scene is already the moment asked for
-    options["aspect"] = aspect
-    pinhole = render_arrays(scene, width, height, viewport=vp.index, **options)
+    shading = Shading()
+    pinhole = draw(vp, shading, ids)
     if any(d.severity == ERROR for d in pinhole.diagnostics):
         return pinhole  # a camera that cannot produce an image: WPF draws nothing
     frame = lens_frame(vp.camera, width, height, focus, vp.bounds(), aspect)
@@ -143,19 +147,13 @@ def render_through_lens(
         )
     plan = eye_offsets(float(aperture), lens_samples, stereo, float(eye_separation))
     total = sum(len(offsets) for _, offsets in plan)
-    options = {k: v for k, v in options.items() if k != "ids"}
     done = 0
     images = []
     for _, offsets in plan:
         acc = np.zeros((pinhole.height, pinhole.width, 4))
         for sx, sy in offsets:
-            cam = frame.eye_camera(float(sx), float(sy))
-            eye_vp = replace(vp, camera=cam)
-            eye_scene = replace(
-                scene, viewports=tuple(eye_vp if v is vp else v for v in scene.viewports)
-            )
-            sample = render_arrays(eye_scene, width, height, viewport=vp.index, **options)
-            acc += to_linear_premultiplied(sample.rgba)
+            eye_vp = replace(vp, camera=frame.eye_camera(float(sx), float(sy)))
+            acc += to_linear_premultiplied(draw(eye_vp, shading, False).rgba)
             done += 1
             if progress is not None:
                 progress(done, total)
