@@ -120,3 +120,20 @@ def test_small_scene_does_not_import_numba():
     )
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "False"
+
+
+def test_bilinear_texture_sampling_matches_numpy_exactly(monkeypatch):
+    from xaml3d.render.brushes import bilinear
+
+    rng = np.random.default_rng(7)
+    img = rng.random((5, 7, 4))
+    # inside, on texel centres and edges, and beyond the edges (clamped)
+    px = np.concatenate([rng.uniform(-1.0, 8.0, 500), [0.0, 0.5, 7.0, 6.5, 3.25]])
+    py = np.concatenate([rng.uniform(-1.0, 6.0, 500), [0.0, 0.5, 5.0, 4.5, 2.75]])
+    monkeypatch.setenv(accel.ENV, "numpy")
+    a = bilinear(img, px, py)
+    monkeypatch.setenv(accel.ENV, "numba")
+    assert accel.for_work(0, 0) is not None  # "numba" loads the kernels
+    b = bilinear(img, px, py)
+    assert np.array_equal(a, b)
+    assert np.array_equal(a[-4], img[0, 0]) and np.array_equal(a[-2], img[4, 6])

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from xaml3d.render import accel
 from xaml3d.scene.types import (
     Brush,
     ImageBrush,
@@ -224,6 +225,13 @@ def _premultiplied_image(image: np.ndarray) -> np.ndarray:
 def bilinear(img: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
     """Bilinear sample of a premultiplied (H, W, 4) image at pixel coordinates (texel centres at
     half-integers); neighbours beyond the edge are clamped to the edge texel."""
+    kernels = accel.active()
+    if kernels is not None:
+        return kernels.bilinear(
+            np.ascontiguousarray(img, dtype=np.float64),
+            np.ascontiguousarray(px, dtype=np.float64),
+            np.ascontiguousarray(py, dtype=np.float64),
+        )
     h, w = img.shape[:2]
     x = px - 0.5
     y = py - 0.5

@@ -198,3 +198,30 @@ def interpolate(planes, indices, tri, w):
         for c in range(k):
             out[f, c] = w0 * planes[c, i0] + w1 * planes[c, i1] + w2 * planes[c, i2]
     return out
+
+
+@numba.njit(cache=True, nogil=True)
+def bilinear(img, px, py):
+    """Bilinear samples of a premultiplied (H, W, C) image at pixel coordinates (texel centres at
+    half-integers), neighbours beyond the edge clamped to it (``brushes.bilinear``)."""
+    h = img.shape[0]
+    w = img.shape[1]
+    k = img.shape[2]
+    n = px.shape[0]
+    out = np.empty((n, k))
+    for f in range(n):
+        x = px[f] - 0.5
+        y = py[f] - 0.5
+        x0 = np.floor(x)
+        y0 = np.floor(y)
+        fx = x - x0
+        fy = y - y0
+        xi0 = int(min(max(x0, 0.0), w - 1.0))
+        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
+        yi0 = int(min(max(y0, 0.0), h - 1.0))
+        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        for c in range(k):
+            top = img[yi0, xi0, c] * (1.0 - fx) + img[yi0, xi1, c] * fx
+            bottom = img[yi1, xi0, c] * (1.0 - fx) + img[yi1, xi1, c] * fx
+            out[f, c] = top * (1.0 - fy) + bottom * fy
+    return out
