@@ -92,6 +92,76 @@ def test_spanning_cell_grows_the_auto_definitions():
     assert v.rect[3] == 90
 
 
+def _defs(*specs, constraint=500.0):
+    from xaml3d.layout.grid import _Defs
+
+    return _Defs(tuple(D(x) for x in specs), constraint)
+
+
+def test_span_within_preferred_sizes_grows_the_star_not_the_auto():
+    # WPF's EnsureMinSizeInDefinitionRange: Auto definitions stay tight while the others'
+    # preferred sizes (a resolved star: its share) can hold the spanning cell
+    d = _defs("Auto", "*")
+    d.min = [16.0, 0.0]
+    d.resolve_star_measure(640.0)
+    assert d.measure[1] == 624.0
+    d.ensure_min(0, 2, 217.0)
+    assert d.min == [16.0, 201.0]
+
+
+def test_span_beyond_preferred_sizes_fills_non_auto_first():
+    # a star measured with infinite room acts as Auto for sizing, but is not a markup Auto:
+    # it takes the growth, the markup Auto stays tight
+    d = _defs("Auto", "*", constraint=math.inf)
+    d.min = [16.0, 200.0]
+    d.ensure_min(0, 2, 217.0)
+    assert d.min == [16.0, 201.0]
+    # two markup Autos share it equally
+    d = _defs("Auto", "Auto", constraint=math.inf)
+    d.min = [10.0, 20.0]
+    d.ensure_min(0, 2, 60.0)
+    assert d.min == [25.0, 35.0]
+    # a pixel column is not Auto: WPF grows its minimum (and so its arranged size)
+    d = _defs("100", "Auto")
+    d.ensure_min(0, 2, 150.0)
+    assert d.min == [150.0, 0.0]
+
+
+def test_span_beyond_maximums_grows_smaller_definitions_faster():
+    from xaml3d.layout.grid import _Defs
+
+    d = _Defs((Definition("auto", 1.0, max=50.0), Definition("auto", 1.0, max=200.0)), math.inf)
+    d.ensure_min(0, 2, 300.0)
+    assert d.min == [100.0, 200.0]
+    d = _Defs((Definition("auto", 1.0, max=50.0), Definition("auto", 1.0, max=100.0)), math.inf)
+    d.ensure_min(0, 2, 300.0)
+    assert d.min == [150.0, 150.0]
+
+
+def test_grid_cycle_auto_column_star_row_and_span_over_auto_and_star():
+    # Auto | * columns, Auto / * / Auto rows in a DockPanel (finite room: the star is a real
+    # star). The header spans both columns (217 px): WPF puts the extra into the star column,
+    # so the Grid is 217 wide, not 16 + 217; the 16 px cell in the star row sizes the Auto
+    # column (WPF's group 2 / group 3 cycle).
+    head = Node(L.CONTROL, "Rectangle", width=217, height=16, col_span=2, estimate=(0, 0))
+    big = Node(L.CONTROL, "Rectangle", width=200, height=200, row=1, col=1, estimate=(0, 0))
+    side = Node(L.CONTROL, "Rectangle", width=16, height=150, row=1, col=0, estimate=(0, 0))
+    foot = Node(L.CONTROL, "Rectangle", width=161, height=16, row=2, col=1, estimate=(0, 0))
+    grid = Node(L.GRID, "Grid", rows=(D("Auto"), D("*"), D("Auto")), columns=(D("Auto"), D("*")),
+                children=[head, big, side, foot], dock="Left")  # fmt: skip
+    v = vp()
+    page = Node(L.PAGE, "Page", width=640, height=480,
+                children=[Node(L.DOCK, "DockPanel", children=[grid, v])])  # fmt: skip
+    r = layout(page)
+    assert grid.desired == (217.0, 232.0)  # the sums of the minimums
+    assert v.rect == (217.0, 0.0, 423.0, 480.0)
+    # column 0 is 16, column 1 201: the 200 px square sits centred in it
+    assert side.rect[2] == 16.0 and big.rect[0] == 16.5
+    # the side cell is measured twice (infinite height, then its star row's height), as in
+    # WPF; the loop's repeat with an unchanged size is skipped
+    assert r.measure_calls == r.arrange_calls + 1
+
+
 def test_border_margin_padding():
     v = vp()
     border = Node(L.BORDER, "Border", margin=(10, 10, 10, 10), border=(2, 2, 2, 2),

@@ -139,6 +139,11 @@ class Engine:
 
     # ----------------------------------------------------------------- measure
     def measure(self, n: Node, aw: float, ah: float) -> None:
+        # Like UIElement.Measure: measuring again with the same available size in the same
+        # pass changes nothing and is skipped (a Grid's cyclic groups measure cells twice).
+        if n.measured_with == (self, aw, ah):
+            return
+        n.measured_with = (self, aw, ah)
         self.measure_calls += 1
         if n.visibility == "Collapsed":
             n.desired = n.unclipped = (0.0, 0.0)

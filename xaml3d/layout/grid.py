@@ -7,8 +7,9 @@ WPF's groups - (1) no star in either direction, (2) star and Auto columns in a n
 and the star columns before group 4, so that star cells are measured at their share. A cell
 spanning an Auto definition (and no star) is measured with infinite room in that direction.
 Each single-span cell raises its definition's minimum to the cell's desired size; a spanning
-cell's excess goes to the Auto definitions of its span (else to all of them equally). The
-Grid's desired size is the sum of the minimums.
+cell's size is distributed over its span as WPF's EnsureMinSizeInDefinitionRange does (Auto
+definitions stay tight while the others can hold it; see ``_Defs.ensure_min``). The Grid's
+desired size is the sum of the minimums.
 
 Arrange: pixel definitions take their size, Auto ones their minimum (both within Min/Max),
 stars share what is left in proportion to their weights, none below its minimum or above its
@@ -19,6 +20,8 @@ definitions that lost the most, so the rounded sizes add up to the rounded total
 from __future__ import annotations
 
 from xaml3d.layout.tree import INF, Definition, Node
+
+_LOOP_MAX = 5  # WPF's c_layoutLoopMaxCount: rounds of the group 2 / group 3 cycle
 
 
 class _Defs:
@@ -53,15 +56,59 @@ class _Defs:
             for i in range(start, start + span)
         )
 
+    def preferred(self, i: int) -> float:
+        """WPF's PreferredSize: an Auto definition wants its minimum, others their measure size."""
+        if self.unit[i] == "auto":
+            return self.min[i]
+        return max(self.min[i], self.measure[i])
+
     def ensure_min(self, start: int, span: int, size: float) -> None:
-        idx = range(start, start + span)
-        have = sum(self.min[i] for i in idx)
-        if size <= have:
+        """Raise the minimums of [start, start+span) so they hold ``size`` (a spanning cell).
+
+        WPF's EnsureMinSizeInDefinitionRange: while the span's preferred sizes can hold the
+        cell, the growth goes to the non-Auto definitions only (Auto ones stay tight), smallest
+        preferred size first; beyond that, up to the definitions' maximums, non-Auto ones are
+        filled first; beyond the maximums every definition grows, smaller ones faster. "Auto"
+        here is the markup's Auto: a star treated as Auto (infinite room) is not one.
+        """
+        if size == 0.0:
             return
-        autos = [i for i in idx if self.unit[i] == "auto"] or list(idx)
-        extra = (size - have) / len(autos)
-        for i in autos:
-            self.min[i] += extra
+        idx = list(range(start, start + span))
+        user_auto = {i: self.defs[i].unit == "auto" for i in idx}
+        n_auto = sum(user_auto.values())
+        cap = {i: max(self.defs[i].max, self.min[i]) for i in idx}
+        range_min = sum(self.min[i] for i in idx)
+        range_pref = sum(self.preferred(i) for i in idx)
+        range_max = sum(cap.values())
+        if size <= range_min:
+            return
+        if size <= range_pref:
+            # Auto definitions first (by minimum), then the others by preferred size
+            order = sorted(idx, key=lambda i: (not user_auto[i], self.preferred(i)))
+            left = size - sum(self.min[i] for i in order[:n_auto])
+            for k, i in enumerate(order[n_auto:], start=n_auto):
+                grow = min(left / (span - k), self.preferred(i))
+                self.min[i] = max(self.min[i], grow)
+                left -= grow
+        elif size <= range_max:
+            order = sorted(idx, key=lambda i: (user_auto[i], cap[i]))
+            left = size - range_pref
+            for k, i in enumerate(order):
+                base = self.preferred(i) if k < span - n_auto else self.min[i]
+                share = span - n_auto - k if k < span - n_auto else span - k
+                self.min[i] = max(self.min[i], min(base + left / share, cap[i]))
+                left -= self.min[i] - base
+        else:
+            equal = size / span
+            top = max(cap.values())
+            if equal < top and not _close(equal, top):
+                room = top * span - range_max
+                extra = size - range_max
+                for i in idx:
+                    self.min[i] = max(self.min[i], cap[i] + (top - cap[i]) * extra / room)
+            else:
+                for i in idx:
+                    self.min[i] = max(self.min[i], equal)
 
     def resolve_star_measure(self, available: float) -> None:
         taken = sum(
@@ -104,6 +151,14 @@ class _Defs:
             self.offsets[i] = acc
             acc += s
         self.offsets[len(self.final)] = acc
+
+
+def _close(a: float, b: float) -> bool:
+    """WPF's DoubleUtil.AreClose: equal within a relative 1e-15 (plus the same absolute)."""
+    if a == b:
+        return True
+    eps = (abs(a) + abs(b) + 10.0) * 2.2204460492503131e-16
+    return -eps < a - b < eps
 
 
 def distribute(weights: list[float], mins: list[float], maxs: list[float], space: float):
@@ -183,56 +238,100 @@ class GridLayout:
         cols = _Defs(n.columns or (Definition(),), cw)
         rows = _Defs(n.rows or (Definition(),), ch)
         n.state = (cols, rows)
-        groups: list[list] = [[], [], [], []]
-        group3_in_auto_rows = False
+        # WPF's four groups (Grid.ValidateCells): 1 no star either way, 2 star rows with
+        # Auto (not star) columns, 3 star columns in non-star rows, 4 the rest.
+        g1, g2, g3, g4 = [], [], [], []
+        g3_in_auto_rows = star_cells_u = star_cells_v = False
         for cell in self._cells(n, cols, rows):
-            k, c, cs, r, rs = cell
+            _, c, cs, r, rs = cell
             star_u, star_v = cols.has("star", c, cs), rows.has("star", r, rs)
-            if not star_u:
-                if not star_v:
-                    groups[0].append(cell)
+            star_cells_u |= star_u
+            star_cells_v |= star_v
+            if not star_v:
+                if not star_u:
+                    g1.append(cell)
                 else:
-                    groups[2].append(cell)
-                    group3_in_auto_rows |= rows.has("auto", r, rs)
-            elif cols.has("auto", c, cs) and not star_v:
-                groups[1].append(cell)
+                    g3.append(cell)
+                    g3_in_auto_rows |= rows.has("auto", r, rs)
+            elif cols.has("auto", c, cs) and not star_u:
+                g2.append(cell)
             else:
-                groups[3].append(cell)
-        self._measure_group(groups[0], cols, rows)
-        if not groups[1]:
-            if any(u == "star" for u in rows.unit):
-                rows.resolve_star_measure(ch)
-            self._measure_group(groups[2], cols, rows)
-            if any(u == "star" for u in cols.unit):
+                g4.append(cell)
+
+        def stars_u() -> None:
+            if star_cells_u:
                 cols.resolve_star_measure(cw)
+
+        def stars_v() -> None:
+            if star_cells_v:
+                rows.resolve_star_measure(ch)
+
+        self._measure_group(g1, cols, rows)
+        if not g3_in_auto_rows:
+            stars_v()
+            self._measure_group(g2, cols, rows)
+            stars_u()
+            self._measure_group(g3, cols, rows)
+        elif not g2:
+            stars_u()
+            self._measure_group(g3, cols, rows)
+            stars_v()
         else:
-            # Cells spanning star and Auto columns: WPF resolves the columns first. (Its
-            # extra pass for such cells when star rows hold Auto-row cells is not repeated:
-            # every element is measured once.)
-            if any(u == "star" for u in cols.unit):
-                cols.resolve_star_measure(cw)
-            self._measure_group(groups[1], cols, rows)
-            if any(u == "star" for u in rows.unit):
-                rows.resolve_star_measure(ch)
-            self._measure_group(groups[2], cols, rows)
-        self._measure_group(groups[3], cols, rows)
+            # The cycle of WPF's Grid: an Auto column's width depends on a star row's cell
+            # (group 2), the star row's height on an Auto row holding a star column's cell
+            # (group 3). Group 2 is measured with infinite height first, then both groups
+            # again until the Auto columns settle (at most five rounds, as WPF).
+            g2_widths = self._cached_mins(g2, cols, lambda cell: cell[1])
+            g3_heights = self._cached_mins(g3, rows, lambda cell: cell[3])
+            self._measure_group(g2, cols, rows, infinite_v=True)
+            changed, rounds = False, 0
+            while True:
+                if changed:
+                    self._restore_mins(rows, g3_heights)
+                stars_u()
+                self._measure_group(g3, cols, rows)
+                self._restore_mins(cols, g2_widths)
+                stars_v()
+                changed = self._measure_group(g2, cols, rows, ignore_u=rounds == _LOOP_MAX)
+                rounds += 1
+                if not changed or rounds > _LOOP_MAX:
+                    break
+        self._measure_group(g4, cols, rows)
         return sum(cols.min), sum(rows.min)
 
-    def _measure_group(self, cells, cols: _Defs, rows: _Defs) -> None:
-        spans = []
+    @staticmethod
+    def _cached_mins(cells, defs: _Defs, index) -> dict[int, float]:
+        return {index(cell): defs.min[index(cell)] for cell in cells}
+
+    @staticmethod
+    def _restore_mins(defs: _Defs, mins: dict[int, float]) -> None:
+        for i, m in mins.items():
+            defs.min[i] = m
+
+    def _measure_group(self, cells, cols: _Defs, rows: _Defs, *, ignore_u: bool = False,
+                       infinite_v: bool = False) -> bool:  # fmt: skip
+        """Measure one group of cells and raise their definitions' minimums (WPF's
+        MeasureCellsGroup). Returns whether any cell's desired width changed."""
+        spans: dict[tuple[int, int, int], float] = {}  # (direction, start, count) -> size
+        changed = False
         for k, c, cs, r, rs in cells:
-            self.e.measure(k, cols.constraint(c, cs), rows.constraint(r, rs))
+            before = k.desired[0]
+            self.e.measure(k, cols.constraint(c, cs), INF if infinite_v else rows.constraint(r, rs))
             dw, dh = k.desired
-            if cs == 1:
-                cols.min[c] = max(cols.min[c], min(dw, cols.defs[c].max))
-            else:
-                spans.append((cols, c, cs, dw))
-            if rs == 1:
-                rows.min[r] = max(rows.min[r], min(dh, rows.defs[r].max))
-            else:
-                spans.append((rows, r, rs, dh))
-        for d, i, s, size in sorted(spans, key=lambda t: t[2]):
-            d.ensure_min(i, s, size)
+            changed |= not _close(before, dw)
+            if not ignore_u:
+                if cs == 1:
+                    cols.min[c] = max(cols.min[c], min(dw, cols.defs[c].max))
+                else:
+                    spans[(0, c, cs)] = max(spans.get((0, c, cs), 0.0), dw)
+            if not infinite_v:
+                if rs == 1:
+                    rows.min[r] = max(rows.min[r], min(dh, rows.defs[r].max))
+                else:
+                    spans[(1, r, rs)] = max(spans.get((1, r, rs), 0.0), dh)
+        for (direction, i, count), size in sorted(spans.items(), key=lambda t: t[0][2]):
+            (rows if direction else cols).ensure_min(i, count, size)
+        return changed
 
     def arrange(self, n: Node, w: float, h: float) -> tuple[float, float]:
         grid = n.state

@@ -125,6 +125,7 @@ class Node:
     slot: str = ""  # how the parent placed it ("row 1 (Auto), column 0 (*)", "Dock=Top" ...)
     arranged: bool = False  # False: collapsed, or never reached by arrange
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange
+    measured_with: object = field(default=None, repr=False)  # (engine, available w, h)
 
     def walk(self):
         """This node and its descendants, parents first (iterative: deep trees are fine)."""
