@@ -2,9 +2,11 @@
 
 Measure follows WPF's order: definitions start at their user sizes (pixel sizes clamped to
 Min/Max; a star in a direction measured with infinite room acts as Auto); cells are measured in
-WPF's groups - (1) no star in either direction, (2) star and Auto columns in a non-star row,
-(3) non-star columns in star rows, (4) the rest - with the star rows resolved before group 3
-and the star columns before group 4, so that star cells are measured at their share. A cell
+WPF's groups - (1) no star in either direction, (2) star rows with Auto (not star) columns,
+(3) star columns in non-star rows, (4) the rest - in WPF's order: star rows resolved before
+group 2 and star columns before group 3 unless a group 3 cell sits in an Auto row; then, with
+group 2 cells present, WPF's cycle (group 2 at infinite height, then groups 3 and 2 until the
+Auto columns settle); group 4 last, so that star cells are measured at their share. A cell
 spanning an Auto definition (and no star) is measured with infinite room in that direction.
 Each single-span cell raises its definition's minimum to the cell's desired size; a spanning
 cell's size is distributed over its span as WPF's EnsureMinSizeInDefinitionRange does (Auto
