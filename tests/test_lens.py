@@ -316,6 +316,39 @@ def test_model_ids_are_exact_and_match_coverage():
     assert img.text["xaml3d:ids"].startswith("palette index = model number")
 
 
+OVERLAP = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+  Width="120" Height="90">
+ <Viewport3D.Camera><PerspectiveCamera Position="0,0,0" LookDirection="0,0,-1"/></Viewport3D.Camera>
+ <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+  <AmbientLight Color="White"/>
+  <GeometryModel3D><GeometryModel3D.Geometry><MeshGeometry3D
+    Positions="-1.3,-0.9,-3 1.1,-0.4,-3 -0.2,1.2,-3" TriangleIndices="0 1 2"/>
+  </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial Brush="Red"/>
+  </GeometryModel3D.Material></GeometryModel3D>
+  <GeometryModel3D><GeometryModel3D.Geometry><MeshGeometry3D
+    Positions="-0.7,-2.9,-6 3.1,-1.3,-6 1.7,2.8,-6 -2.6,1.9,-6" TriangleIndices="0 1 2 0 2 3"/>
+  </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial Brush="Blue"/>
+  </GeometryModel3D.Material></GeometryModel3D>
+ </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>"""
+
+
+@pytest.mark.parametrize("aa", [{}, {"ssaa": 1}, {"ssaa": 3}, {"msaa": 4}], ids=str)
+def test_ids_and_depth_come_from_the_same_sample(tmp_path, aa):
+    # with multisampling a pixel on an edge holds samples of two models (or of one and none):
+    # its depth is the nearest sample's, and so must its id be
+    path = tmp_path / "overlap.xaml"
+    path.write_text(OVERLAP)
+    r = render_arrays(load(path), ids=True, **aa)
+    assert np.array_equal(np.isnan(r.distance), r.ids < 0)
+    assert set(np.unique(r.ids)) == {-1, 0, 1}
+    # the front triangle lies in the plane at distance 3, the back quad at 6
+    assert np.allclose(r.distance[r.ids == 0], 3.0, atol=1e-4)
+    assert np.allclose(r.distance[r.ids == 1], 6.0, atol=1e-4)
+    edge = (r.rgba[..., 3] > 0) & (r.rgba[..., 3] < 255)
+    assert edge.any() == bool(aa != {"ssaa": 1})  # the case is one with mixed edge pixels
+
+
 def test_ids_beyond_255_models_use_rgb_codes():
     ids = np.array([[-1, 0, 299]], dtype=np.int32)
     img = Image.open(io.BytesIO(ids_png(ids, [None] * 300)))

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError
+from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, RenderError, XamlError
 from xaml3d.render import accel
 from xaml3d.render.atomic import write_atomically
 from xaml3d.render.draw import draw_viewport_models, make_context
@@ -201,61 +201,68 @@ def render_arrays(
         from xaml3d.xaml.loader import load
 
         scene = load(scene_or_path, resources=resources)
-    for arg, value in (("width", width), ("height", height), ("max_size", max_size)):
-        if value is not None and not (
-            isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value >= 1
-        ):
-            raise RenderError(f"{arg} must be a whole number >= 1, got {value!r}", code="RND005")
-    scene = scene_at(scene, time, storyboard)
-    if mode not in MODES:
-        raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
-    if ssaa is None and msaa is None:
-        msaa = 1 if mode == "wireframe" else DEFAULT_MSAA
-    ssaa = 1 if ssaa is None else ssaa
-    msaa = 1 if msaa is None or mode == "wireframe" else msaa
-    for name, value in (("ssaa", ssaa), ("msaa", msaa)):
-        if not (isinstance(value, int) and 1 <= value <= 4):
+    try:
+        for arg, value in (("width", width), ("height", height), ("max_size", max_size)):
+            if value is not None and not (
+                isinstance(value, (int, np.integer)) and not isinstance(value, bool) and value >= 1
+            ):
+                raise RenderError(
+                    f"{arg} must be a whole number >= 1, got {value!r}", code="RND005"
+                )
+        scene = scene_at(scene, time, storyboard)
+        if mode not in MODES:
+            raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
+        if ssaa is None and msaa is None:
+            msaa = 1 if mode == "wireframe" else DEFAULT_MSAA
+        ssaa = 1 if ssaa is None else ssaa
+        msaa = 1 if msaa is None or mode == "wireframe" else msaa
+        for name, value in (("ssaa", ssaa), ("msaa", msaa)):
+            if not (isinstance(value, int) and 1 <= value <= 4):
+                raise RenderError(
+                    f"{name} must be an integer from 1 to 4, got {value!r}", code="RND005"
+                )  # fmt: skip
+        if ssaa > 1 and msaa > 1:
             raise RenderError(
-                f"{name} must be an integer from 1 to 4, got {value!r}", code="RND005"
-            )  # fmt: skip
-    if ssaa > 1 and msaa > 1:
-        raise RenderError(
-            f"choose one anti-aliasing: ssaa={ssaa} and msaa={msaa} were both given", code="RND005"
-        )
-    grid = max(ssaa, msaa)  # samples per side of the framebuffer's grid
-    bg = _background(background)
-    line_rgba = None if line_color is None else _rgba(line_color, "line_color")
-    vp = scene.viewport(viewport)
-    w, h = _resolve_size(vp, width, height, max_size)
-    if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
-        aspect = float(vp.width) / float(vp.height)  # the image is the size rounded
-    if w * h * grid * grid > MAX_SUPERSAMPLED_PIXELS:
-        aa = f"ssaa={ssaa}" if ssaa > 1 else f"msaa={msaa}"
-        raise RenderError(
-            f"image size {w} x {h} with {aa} needs {w * h * grid * grid} samples, over the "
-            f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or the ssaa/msaa factor",
-            code="RND001",
-        )
-    settings = dict(
-        mode=mode, bg=bg, grid=grid, msaa=msaa, line_rgba=line_rgba, hidden_lines=hidden_lines,
-        antialias_lines=antialias_lines, line_width=line_width, aspect=aspect,
-    )  # fmt: skip
-    if (aperture is not None and aperture != 0) or stereo is not None or fstop is not None:
-        from xaml3d.render.lens import render_through_lens
-
-        bounds = vp.bounds()  # the same models in every sample: measured once
-
-        def draw(eye_vp, shading, want_ids: bool) -> Rendering:
-            return _draw_viewport(
-                scene, eye_vp, w, h, ids=want_ids, shading=shading, bounds=bounds, **settings
+                f"choose one anti-aliasing: ssaa={ssaa} and msaa={msaa} were both given",
+                code="RND005",
             )
-
-        return render_through_lens(
-            vp, w, h, draw, ids=ids, aperture=aperture, focus=focus, fstop=fstop,
-            focal_length=focal_length, lens_samples=lens_samples, stereo=stereo,
-            eye_separation=eye_separation, progress=progress, aspect=aspect,
+        grid = max(ssaa, msaa)  # samples per side of the framebuffer's grid
+        bg = _background(background)
+        line_rgba = None if line_color is None else _rgba(line_color, "line_color")
+        vp = scene.viewport(viewport)
+        w, h = _resolve_size(vp, width, height, max_size)
+        if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
+            aspect = float(vp.width) / float(vp.height)  # the image is the size rounded
+        if w * h * grid * grid > MAX_SUPERSAMPLED_PIXELS:
+            aa = f"ssaa={ssaa}" if ssaa > 1 else f"msaa={msaa}"
+            raise RenderError(
+                f"image size {w} x {h} with {aa} needs {w * h * grid * grid} samples, over the "
+                f"limit of {MAX_SUPERSAMPLED_PIXELS}: lower the size or the ssaa/msaa factor",
+                code="RND001",
+            )
+        settings = dict(
+            mode=mode, bg=bg, grid=grid, msaa=msaa, line_rgba=line_rgba, hidden_lines=hidden_lines,
+            antialias_lines=antialias_lines, line_width=line_width, aspect=aspect,
         )  # fmt: skip
-    return _draw_viewport(scene, vp, w, h, ids=ids, **settings)
+        if (aperture is not None and aperture != 0) or stereo is not None or fstop is not None:
+            from xaml3d.render.lens import render_through_lens
+
+            bounds = vp.bounds()  # the same models in every sample: measured once
+
+            def draw(eye_vp, shading, want_ids: bool) -> Rendering:
+                return _draw_viewport(
+                    scene, eye_vp, w, h, ids=want_ids, shading=shading, bounds=bounds, **settings
+                )
+
+            return render_through_lens(
+                vp, w, h, draw, ids=ids, aperture=aperture, focus=focus, fstop=fstop,
+                focal_length=focal_length, lens_samples=lens_samples, stereo=stereo,
+                eye_separation=eye_separation, progress=progress, aspect=aspect,
+            )  # fmt: skip
+        return _draw_viewport(scene, vp, w, h, ids=ids, **settings)
+    except XamlError as exc:  # an argument refused for this scene: name its file
+        exc.with_location(file=scene.file)
+        raise
 
 
 def _draw_viewport(
@@ -276,11 +283,13 @@ def _draw_viewport(
     ids: bool,
     shading=None,
     bounds=False,
+    nearest: bool = False,
 ) -> Rendering:
     """One render of the viewport ``vp`` (its camera may be a lens sample's) with arguments
     already checked by ``render_arrays``. ``shading``: a ``draw.Shading`` cache of lit colours
     to fill or reuse (the lens lights once for all its samples); ``bounds``: ``vp.bounds()``
-    when the caller already has it."""
+    when the caller already has it; ``nearest``: each pixel takes its nearest sample's colour
+    instead of the average (the model-id render)."""
     diags: list[Diagnostic] = []
     sw, sh = w * grid, h * grid
     accel.begin_frame()
@@ -312,14 +321,14 @@ def _draw_viewport(
         else:
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
-    rgba, depth = fb.resolve(grid)
+    rgba, depth = fb.resolve_nearest(grid) if nearest else fb.resolve(grid)
     result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
     if pipeline is not None:
         from xaml3d.render.buffers import eye_depth, model_ids
 
         result.distance = eye_depth(depth, pipeline)
         if ids:
-            result.ids = model_ids(scene, vp, w, h, aspect)
+            result.ids = model_ids(scene, vp, w, h, aspect, grid=grid, msaa=msaa)
     return result
 
 

@@ -5,8 +5,9 @@ normalized device depth z_ndc, ``Rendering.depth``) into the distance from the e
 the look direction, exactly (``xaml3d.scene.lens.eye_distance``). ``model_ids`` renders a derived
 scene in which every GeometryModel3D (``Model``) with a drawable material draws one flat, unlit,
 opaque colour encoding its index (lights replaced by one white AmbientLight, every pass by one
-DiffuseMaterial whose AmbientColor is the code; no supersampling, so no colour is ever mixed),
-and decodes the colours back to indices.
+DiffuseMaterial whose AmbientColor is the code) on the picture's sample grid, keeps each
+pixel's nearest sample (so no colour is ever mixed, and ids match the depth's sample), and
+decodes the colours back to indices.
 
 Files: ``depth_png`` (16-bit greyscale, near = black, the range in a tEXt chunk),
 ``depth_npy`` (float32, NaN where nothing was drawn), ``ids_png`` (palette PNG whose pixel
@@ -45,8 +46,8 @@ def _code_color(k: int) -> tuple[float, float, float, float]:
     return ((k >> 16) / 255.0, ((k >> 8) & 255) / 255.0, (k & 255) / 255.0, 1.0)
 
 
-def id_scene(scene, vp):
-    """The derived scene of ``model_ids``: model i (0-based) draws the code i + 1."""
+def id_viewport(vp):
+    """The derived viewport of ``model_ids``: model i (0-based) draws the code i + 1."""
     models = []
     for i, m in enumerate(vp.models):
         mat = DiffuseMaterial(
@@ -58,21 +59,24 @@ def id_scene(scene, vp):
         back = (mat,) if any(p.brush is not None for p in m.back_material) else ()
         models.append(replace(m, material=front, back_material=back))
     light = AmbientLight(color=(1.0, 1.0, 1.0, 1.0))
-    new_vp = replace(vp, models=tuple(models), lights=(light,))
-    return replace(scene, viewports=tuple(new_vp if v is vp else v for v in scene.viewports))
+    return replace(vp, models=tuple(models), lights=(light,))
 
 
-def surface_buffers(scene, vp, width: int, height: int, aspect: float | None = None):
+def surface_buffers(scene, vp, width: int, height: int, aspect: float | None = None, *,
+                    grid: int = 1, msaa: int = 1):  # fmt: skip
     """(ids, distance) of the drawn surfaces, whatever the drawing mode: ids (H, W) int32 as
-    ``model_ids``, distance (H, W) float32 eye-space depth of the same render (one sample per
-    pixel; NaN where empty). The wireframe mode's own depth buffer holds surfaces only when
-    hidden lines are removed: this is the surfaces' depth for it."""
-    from xaml3d.render.api import render_arrays
+    ``model_ids``, distance (H, W) float32 eye-space depth of the same render; NaN where empty.
+    ``grid``/``msaa``: the sample grid of the picture's render. Each pixel takes its nearest
+    sample, id and depth alike, so the two always agree, and the depth is the picture's own (a
+    render's ``distance`` is its nearest sample too). The wireframe mode's own depth buffer
+    holds surfaces only when hidden lines are removed: this is the surfaces' depth for it."""
+    from xaml3d.render.api import _background, _draw_viewport
 
-    # time=None: ``scene`` is already the moment drawn; its timeline would rebuild the models
-    r = render_arrays(
-        id_scene(scene, vp), width, height, viewport=vp.index, ssaa=1, time=None, aspect=aspect
-    )
+    r = _draw_viewport(
+        scene, id_viewport(vp), width, height, mode="shaded", bg=_background(None), grid=grid,
+        msaa=msaa, line_rgba=None, hidden_lines=True, antialias_lines=False, line_width=1.0,
+        aspect=aspect, ids=False, nearest=True,
+    )  # fmt: skip
     rgb = r.rgba[..., :3].astype(np.int64)
     code = (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
     ids = np.where(r.rgba[..., 3] > 0, code - 1, -1).astype(np.int32)
@@ -80,9 +84,11 @@ def surface_buffers(scene, vp, width: int, height: int, aspect: float | None = N
     return ids, distance
 
 
-def model_ids(scene, vp, width: int, height: int, aspect: float | None = None) -> np.ndarray:
-    """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel, -1 where none."""
-    return surface_buffers(scene, vp, width, height, aspect)[0]
+def model_ids(scene, vp, width: int, height: int, aspect: float | None = None, *,
+              grid: int = 1, msaa: int = 1) -> np.ndarray:  # fmt: skip
+    """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel (its nearest
+    sample's, on the picture's sample ``grid``), -1 where none."""
+    return surface_buffers(scene, vp, width, height, aspect, grid=grid, msaa=msaa)[0]
 
 
 def write_atomic(path, data: bytes) -> None:

@@ -218,6 +218,26 @@ class Framebuffer:
         depth = np.where(z < 0.0, z + DEPTH_OFFSET, np.inf)  # back from the stored d - 2
         return straight_uint8(col), depth
 
+    def resolve_nearest(self, ssaa: int = 1) -> tuple[np.ndarray, np.ndarray]:
+        """Like ``resolve`` but each pixel takes the colour of its block's nearest sample (the
+        first in row order on a tie) instead of the average: the model-id render, whose colours
+        are codes that must never mix, and whose ids then belong to the very sample that gives
+        ``resolve``'s depth."""
+        s = int(ssaa)
+        h, w = self.height // s, self.width // s
+        c5 = self.color.reshape(h, s, w, s, 4)
+        z4 = self.zbuf.reshape(h, s, w, s)
+        col = c5[:, 0, :, 0].copy()
+        z = z4[:, 0, :, 0].copy()
+        for a in range(s):
+            for b in range(s):
+                if a or b:
+                    nearer = z4[:, a, :, b] < z
+                    col[nearer] = c5[:, a, :, b][nearer]
+                    z[nearer] = z4[:, a, :, b][nearer]
+        depth = np.where(z < 0.0, z + DEPTH_OFFSET, np.inf)
+        return straight_uint8(col), depth
+
 
 def to_straight_uint8(premul: np.ndarray) -> np.ndarray:
     """Premultiplied float planes (4, H, W) -> straight-alpha uint8 (H, W, 4), rounded."""
