@@ -533,6 +533,9 @@ def test_cli_camera_prints_a_sheared_lens_sample():
     data = json.loads(xaml3d("camera", ROW, "--fstop", "2", "--json").stdout)
     assert data["lens"]["aperture"] == pytest.approx(18 / t / 2 / 2 / 1000)
     assert data["lens"]["lens_sample"]["wpf_projection"][2][0] != 0
+    out = xaml3d("camera", ROW, "--fstop", "2", "--focal-length", "50").stdout.decode()
+    assert "from f/2 with a 50 mm lens" in out
+    assert "both projections below use the far plane as rendered" in out
 
 
 def test_progress_bar_opens_only_when_slow(capsys):

@@ -338,7 +338,12 @@ def lens_text(report: dict, matrix_lines) -> list[str]:
         f"(near {report['near']:g}, far {report['far']:g} as rendered)",
         f"one lens sample: the eye moved by {report['aperture']:g} along u (the lens rim); its "
         "frustum is sheared (m31) so the focal plane's rectangle stays fixed",
+        f"both projections below use the far plane as rendered ({report['far']:g}); the WPF "
+        "projection above uses the markup's FarPlaneDistance (infinite by default: m33 = -1)",
     ]
+    if report.get("fstop") is not None:
+        lines.insert(2, f"  from f/{report['fstop']:g} with a {report['focal_length_mm']:g} mm "
+                        "lens (35 mm frame, the camera's horizontal field of view)")  # fmt: skip
     for key, title in (("wpf_view", "view"), ("wpf_projection", "projection")):
         left = matrix_lines(report["pinhole"][key])
         right = matrix_lines(report["lens_sample"][key])
