@@ -286,7 +286,8 @@ def _gif_frames(frames: list, bg, diags: list, file: str) -> list:
     if flattened:
         onto = "white" if bg is None else "the --background colour, made opaque"
         msg = (f"GIF keeps only 1-bit transparency: frames flattened onto {onto} to show their "
-               "translucency; use .png (APNG) or .webp to keep alpha")  # fmt: skip
+               "partly transparent pixels (translucent materials, or the blur of --aperture); "
+               "use .png (APNG) or .webp to keep alpha")  # fmt: skip
         diags.append(_note(file, msg, "ANIM013"))
     return frames
 
