@@ -371,6 +371,60 @@ def test_markup_control_estimate_is_info():
     assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
 
 
+XNS = 'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+
+
+def _dock_left(left: str, resources: str = "") -> str:
+    return (
+        f"<Page {NS} {XNS} Width='640' Height='480'><Page.Resources>{resources}</Page.Resources>"
+        f"<DockPanel>{left}<Viewport3D/></DockPanel></Page>"
+    )
+
+
+def test_markup_style_setters_size_elements():
+    base = "<Style x:Key='B' TargetType='Border'><Setter Property='MinWidth' Value='100'/></Style>"
+    keyed = (
+        "<Style x:Key='S' TargetType='{x:Type Border}' BasedOn='{StaticResource B}'>"
+        "<Setter Property='Border.Width' Value='300'/><Setter Property='Grid.Column' Value='9'/>"
+        "<Style.Triggers><Trigger Property='IsMouseOver' Value='True'>"
+        "<Setter Property='Width' Value='50'/></Trigger></Style.Triggers></Style>"
+    )
+    # a keyed Style (its Trigger's Setter applies only when it fires)
+    assert size(_dock_left("<Border DockPanel.Dock='Left' Style='{StaticResource S}'/>",
+                           base + keyed)) == (340, 480)  # fmt: skip
+    # the element's own value wins over its Style's (and the Style's MinWidth still holds)
+    for width, left in (("120", 120), ("20", 100)):
+        border = f"<Border DockPanel.Dock='Left' Width='{width}' Style='{{StaticResource S}}'/>"
+        assert size(_dock_left(border, base + keyed)) == (640 - left, 480)
+    # BasedOn: the base Style's Setters apply too (the derived ones win)
+    derived = "<Style x:Key='D' TargetType='Border' BasedOn='{StaticResource B}'/>"
+    assert size(_dock_left("<Border DockPanel.Dock='Left' Style='{StaticResource D}'/>",
+                           base + derived)) == (540, 480)  # fmt: skip
+    # an implicit Style (no key: keyed by its TargetType) applies to every Border in scope
+    implicit = "<Style TargetType='Border'><Setter Property='Width' Value='200'/></Style>"
+    assert size(_dock_left("<Border DockPanel.Dock='Left'/>", implicit)) == (440, 480)
+    assert size(_dock_left("<Border DockPanel.Dock='Left' Style='{x:Null}'/>", implicit)) == (
+        640, 480)  # fmt: skip
+
+
+def test_markup_text_after_a_property_element_and_layout_transform():
+    text = "KeyFrame Progress (Output)"  # 26 characters: 182 px estimated
+    plain = f"<TextBlock DockPanel.Dock='Left'>{text}</TextBlock>"
+    assert size(_dock_left(plain)) == (640 - 182, 480)
+    turned = (
+        "<TextBlock DockPanel.Dock='Left'><TextBlock.LayoutTransform>"
+        f"<RotateTransform Angle='-90'/></TextBlock.LayoutTransform>\n  {text}\n</TextBlock>"
+    )
+    assert size(_dock_left(turned)) == (640 - 16, 480)
+    group = (
+        "<Button DockPanel.Dock='Left' Width='40' Height='10' Margin='5'>"
+        "<Button.LayoutTransform><TransformGroup><ScaleTransform ScaleX='2'/>"
+        "<RotateTransform Angle='90'/></TransformGroup></Button.LayoutTransform></Button>"
+    )
+    w, h = size(_dock_left(group))  # 80 x 10 turned: 10 x 80, plus the margins
+    assert (round(w, 9), h) == (640 - 20, 480)
+
+
 def test_auto_row_sized_by_a_cell_in_a_star_column():
     # the TextBlock (an Auto row, star column: WPF's last measure group) still sizes the row
     text = Node(L.CONTROL, "TextBlock", estimate=(30, 16), col=1)

@@ -10,7 +10,9 @@ Width/Height, else by an estimate: LAY003). Per element: Width/Height (``Auto``,
 UseLayoutRounding, the attached Grid.Row/Column/RowSpan/ColumnSpan, DockPanel.Dock,
 Canvas.Left/Top/Right/Bottom and ScrollViewer.*ScrollBarVisibility, the panels' own properties,
 and the Background/BorderBrush that ``render --window`` paints. Values go through the reader's
-converters, so a bad value is a located diagnostic and the property keeps WPF's default.
+converters, so a bad value is a located diagnostic and the property keeps WPF's default. A
+property the element does not set comes from its Style's Setters (keyed or implicit, BasedOn
+chains); a 2D control's LayoutTransform turns its size.
 """
 
 from __future__ import annotations
@@ -23,7 +25,8 @@ from xaml3d.layout.gotchas import LAYOUT_CODES
 from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush_property
-from xaml3d.xaml.context import element_name, is_presentation, qname, split_markup
+from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
+from xaml3d.xaml.resources import type_key
 
 BLEND_NS = "http://schemas.microsoft.com/expression/blend/2008"
 
@@ -119,13 +122,24 @@ class ElementValues:
     """Property values of one element, through Props (presentation elements) or, for custom
     elements, their plain attributes with bad values ignored."""
 
-    def __init__(self, r, el) -> None:
+    def __init__(self, r, el, style: dict[str, str] | None = None) -> None:
         self.r, self.el = r, el
         self.p = r.props(el) if is_presentation(qname(el.tag)[0]) else None
+        self.style = style or {}
 
     def get(self, prop: str, conv, default):
         if self.p is not None:
-            return self.p.value(prop, conv, default)
+            p = self.p
+            raw = self.style.get(prop)
+            if raw is None or prop in p.attrs or prop in p.elem_text or p.items(prop):
+                return p.value(prop, conv, default)
+            # not set on the element: its Style's Setter (an animation still applies on top)
+            if split_markup(raw) is None:
+                try:
+                    default = conv(raw)
+                except ValueSyntaxError:
+                    pass
+            return self.r.animated(self.el, prop, default)
         raw = self.el.get(prop)
         if raw is None or split_markup(raw) is not None:
             return default
@@ -152,6 +166,25 @@ class ElementValues:
                 exc.message = f"{prop}: {exc.message}"
                 self.r.ctx.error(exc, self.el, attr=prop)
             return default
+
+
+_STYLE_DEPTH = 16  # BasedOn chains longer than this are cut (a cycle, or hostile markup)
+
+
+_ATTACHED_OWNERS = {"Grid", "DockPanel", "Canvas", "ScrollViewer"}
+
+
+def _style_setter_elements(style):
+    """A Style's own Setters (direct children or inside ``<Style.Setters>``); a Trigger's
+    Setters apply only when it fires, so they are not among them."""
+    for child in style:
+        if not isinstance(child.tag, str):
+            continue
+        local = qname(child.tag)[1]
+        if local == "Setter":
+            yield child
+        elif local == "Style.Setters":
+            yield from (k for k in child if isinstance(k.tag, str) and qname(k.tag)[1] == "Setter")
 
 
 def _enum(allowed):
@@ -211,7 +244,7 @@ class PanelsReader:
             return None
         ns, local = qname(el.tag)
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
-        v = ElementValues(self.r, el)
+        v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
         if kind == L.VIEWPORT:
             n.viewport = self.index[id(el)]
@@ -230,6 +263,44 @@ class PanelsReader:
             if k is not None:
                 n.children.append(k)
         return n
+
+    def style_setters(self, el, local: str) -> dict[str, str]:
+        """Property -> value text of the Setters of ``el``'s Style: ``Style="{StaticResource
+        k}"`` (or DynamicResource), else the implicit Style keyed by the element's type in
+        scope; BasedOn styles first, so the derived Setters win. Setter values that are
+        property elements or markup are left out (the property keeps its default)."""
+        res = self.r.resources
+        ref = el.get("Style")
+        if ref is not None:
+            m = split_markup(ref)
+            if m is None or m[0] not in ("StaticResource", "DynamicResource"):
+                return {}
+            entry = res.find(markup_key(m[1]), el)
+        else:
+            entry = res.find(type_key(local), el)
+        chain = []
+        while entry is not None and qname(entry.tag)[1] == "Style" and len(chain) < _STYLE_DEPTH:
+            chain.append(entry)
+            based = entry.get("BasedOn")
+            m = split_markup(based) if based else None
+            if m is None:
+                break
+            if m[0] in ("StaticResource", "DynamicResource"):
+                entry = res.find(markup_key(m[1]), entry)
+            elif m[0] == "Type":
+                entry = res.find(type_key(based), entry)
+            else:
+                break
+        setters: dict[str, str] = {}
+        for style in reversed(chain):
+            for child in _style_setter_elements(style):
+                prop, value = child.get("Property"), child.get("Value")
+                if not prop or value is None or child.get("TargetName"):
+                    continue
+                owner, _, short = prop.rpartition(".")
+                if owner not in _ATTACHED_OWNERS:  # Grid.Row in a Setter: not read from styles
+                    setters[short] = value
+        return setters
 
     def _framework(self, n: L.Node, v: ElementValues) -> None:
         for prop in ("Width", "Height"):
@@ -333,14 +404,110 @@ class PanelsReader:
                 text = s
                 break
         if text is None:
-            text = "".join(el.itertext()).strip() if len(el) == 0 else ""
+            text = _content_text(el)
         cw, ch = _CHROME.get(local, (0, 0))
         w = CHAR_WIDTH * len(text) + cw
         h = LINE_HEIGHT + ch
         n.estimate = (max(0.0, w), max(0.0, h))
-        if n.width != n.width or n.height != n.height:
+        turned = _layout_transform(el)
+        if turned is not None:
+            # A LayoutTransform turns the element's box before its parent places it: the
+            # parent sees the bounding box of the transformed size (margins stay outside).
+            bw = (
+                n.width if n.width == n.width else max(n.min_width, min(n.estimate[0], n.max_width))
+            )
+            bh = (
+                n.height
+                if n.height == n.height
+                else max(n.min_height, min(n.estimate[1], n.max_height))
+            )
+            (a, b), (c, d) = turned
+            n.width, n.height = abs(a * bw) + abs(c * bh), abs(b * bw) + abs(d * bh)
+            n.min_width = n.min_height = 0.0
+            n.max_width = n.max_height = math.inf
+            w, h = n.width, n.height
+            self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
+                      f"estimated, turned by its LayoutTransform, as {w:g} x {h:g}",
+                      el)  # fmt: skip
+        elif n.width != n.width or n.height != n.height:
             self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
                       f"estimated as {w:g} x {h:g}", el)  # fmt: skip
+
+
+def _content_text(el) -> str:
+    """The text of an element's content as WPF shows it: its own text, inline elements' text
+    (Run, Bold ...) and the text after property elements, with white space collapsed."""
+    parts = [el.text or ""]
+    for child in el:
+        if isinstance(child.tag, str) and "." not in qname(child.tag)[1]:
+            parts.append("".join(child.itertext()))
+        parts.append(child.tail or "")
+    return " ".join("".join(parts).split())
+
+
+def _layout_transform(el):
+    """The 2x2 linear part ((m11, m12), (m21, m22)) of an element's LayoutTransform (Rotate,
+    Scale, Skew, Matrix transforms and TransformGroups of them, as property elements or a
+    matrix string), or None when it has none or it cannot be read (then it is ignored)."""
+    local = qname(el.tag)[1]
+    raw = el.get("LayoutTransform")
+    try:
+        if raw is not None:
+            return None if split_markup(raw) is not None else _matrix_text(raw)
+        for child in el:
+            if isinstance(child.tag, str) and qname(child.tag)[1] == f"{local}.LayoutTransform":
+                kids = [k for k in child if isinstance(k.tag, str)]
+                return _transform_2d(kids[0]) if len(kids) == 1 else None
+    except (ValueError, ZeroDivisionError, OverflowError):
+        return None
+    return None
+
+
+def _matrix_text(s: str):
+    if s.strip() == "Identity":
+        return ((1.0, 0.0), (0.0, 1.0))
+    v = [float(x) for x in s.replace(",", " ").split()]
+    if len(v) != 6 or not all(math.isfinite(x) for x in v):
+        raise ValueError(s)
+    return ((v[0], v[1]), (v[2], v[3]))
+
+
+def _num(el, name: str, default: float) -> float:
+    raw = el.get(name)
+    x = default if raw is None else float(raw)
+    if not math.isfinite(x):
+        raise ValueError(raw)
+    return x
+
+
+def _transform_2d(t, depth: int = 0):
+    kind = qname(t.tag)[1]
+    if kind == "RotateTransform":
+        a = math.radians(_num(t, "Angle", 0.0))
+        return ((math.cos(a), math.sin(a)), (-math.sin(a), math.cos(a)))
+    if kind == "ScaleTransform":
+        return ((_num(t, "ScaleX", 1.0), 0.0), (0.0, _num(t, "ScaleY", 1.0)))
+    if kind == "SkewTransform":
+        ax, ay = math.radians(_num(t, "AngleX", 0.0)), math.radians(_num(t, "AngleY", 0.0))
+        return ((1.0, math.tan(ay)), (math.tan(ax), 1.0))
+    if kind == "MatrixTransform":
+        return _matrix_text(t.get("Matrix", "Identity"))
+    if kind == "TransformGroup" and depth < 8:
+        kids = []
+        for k in t:
+            if not isinstance(k.tag, str):
+                continue
+            if qname(k.tag)[1] == "TransformGroup.Children":
+                kids.extend(g for g in k if isinstance(g.tag, str))
+            elif "." not in qname(k.tag)[1]:
+                kids.append(k)
+        m = ((1.0, 0.0), (0.0, 1.0))
+        for k in kids:  # applied in order: p' = p M1 M2 ... (row vectors)
+            (a, b), (c, d) = m
+            (e, f), (g, h) = _transform_2d(k, depth + 1)
+            m = ((a * e + b * g, a * f + b * h), (c * e + d * g, c * f + d * h))
+        return m
+    raise ValueError(kind)
 
 
 def _finite(x: float, default: float) -> float:

@@ -127,6 +127,10 @@ class Resources:
             if "." in local:
                 continue  # other property elements of the dictionary
             key = x_attr(child, "Key")
+            if key is not None and key.replace(" ", "").startswith(("{x:Type", "{Type")):
+                key = type_key(key)  # x:Key="{x:Type Border}": the implicit style's own key
+            if key is None and local == "Style" and child.get("TargetType"):
+                key = type_key(child.get("TargetType"))  # an implicit style: keyed by its type
             if key is None:
                 if local not in ("Style", "DataTemplate", "ControlTemplate"):
                     self.ctx.diag("RES007", f"{local} in a resource dictionary has no x:Key", child)
@@ -238,6 +242,23 @@ class Resources:
         return None
 
     # ----------------------------------------------------------------- lookup
+    def find(self, key: str, from_el: etree._Element) -> etree._Element | None:
+        """The entry for ``key`` in scope at ``from_el`` (enclosing elements, then the
+        application), silently: for lookups WPF makes itself (implicit styles), where a miss
+        is not an error."""
+        node = from_el
+        while node is not None:
+            d = self.dictionary_of(node)
+            hit = d.find(key) if d is not None else None
+            if hit is not None:
+                return hit[0]
+            node = node.getparent()
+        for _, d in reversed(self.app):
+            hit = d.find(key)
+            if hit is not None:
+                return hit[0]
+        return None
+
     def lookup(
         self, key: str, from_el: etree._Element, *, dynamic: bool = False, attr: str | None = None
     ) -> etree._Element | None:
@@ -278,6 +299,18 @@ class Resources:
         else:
             self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
         return None
+
+
+def type_key(target: str) -> str:
+    """The key of an implicit Style: ``TargetType="Border"``, ``"{x:Type Border}"`` and
+    ``x:Key="{x:Type Border}"`` all give ``{x:Type Border}`` (the namespace prefix dropped)."""
+    t = target.strip()
+    if t.startswith("{") and t.endswith("}"):
+        body = t[1:-1].split(None, 1)
+        t = body[1] if len(body) == 2 else ""
+        if t.startswith("TypeName="):
+            t = t[len("TypeName=") :]
+    return "{x:Type " + t.strip().split(":")[-1] + "}"
 
 
 def _found_where(app: Path, scene: Path) -> str:
