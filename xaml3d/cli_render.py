@@ -432,6 +432,8 @@ def _draw_scene(source: str, target, opts: RenderOptions, inputs: list[Path], na
     from xaml3d.render.api import save_image, scene_at
 
     ex = opts.extras
+    _note_kinds([(source, "a scene of this command")] if source != "-" else [])
+    _note_kinds([(r, "a resource dictionary given with -r") for r in opts.resources])
     _check_not_input(target, name, inputs)
     scene = load_scene(source, opts.resources, opts.window_size)
     scene = scene_at(scene, opts.time, opts.storyboard)
@@ -824,7 +826,6 @@ def render_command(
             click.get_current_context().exit(1)
     inputs = [Path(s) for s in scenes if s != "-"] + [Path(r) for r in resources]
     _note_kinds([(s, "a scene of this command") for s in scenes if s != "-"])
-    _note_kinds([(r, "a resource dictionary given with -r") for r in resources])
     failed: list[str] = []
     written: set[Path] = set()
 

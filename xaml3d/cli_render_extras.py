@@ -103,10 +103,13 @@ _OPTIONS = (
     click.option(
         "--depth",
         metavar="FILE",
-        help="Also write the eye-space depth: .png (16-bit, near black) or .npy (float32).",
+        help="Also write the eye-space depth: .png (16-bit, near black) or .npy (float32); "
+        "not with an SVG output.",
     ),
     click.option(
-        "--ids", metavar="FILE", help="Also write a PNG of model ids (one colour per model)."
+        "--ids",
+        metavar="FILE",
+        help="Also write a PNG of model ids (one colour per model); not with an SVG output.",
     ),
     click.option(
         "--line-color",
