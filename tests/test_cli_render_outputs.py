@@ -237,16 +237,17 @@ def test_an_ordinary_lens_gives_no_empty_warning(tmp_path):
 
 # --------------------------------------------------------------------------- 7. idle options
 
+NO_LENS = "--lens-samples has no effect without a lens (--aperture above 0, or --fstop)"
+
 
 @pytest.mark.parametrize(
     ("args", "warning"),
     [
-        (["--lens-samples", "8"], "--lens-samples has no effect without --aperture or --fstop"),
+        (["--lens-samples", "8"], NO_LENS),
         (["--lens-samples", "8", "--stereo", "anaglyph"],
-         "--lens-samples has no effect without --aperture or --fstop: a stereo pair without a "
-         "lens draws each eye once"),
+         f"{NO_LENS}: a stereo pair without a lens draws each eye once"),
         (["--lens-samples", "8", "--aperture", "0"],
-         "--lens-samples has no effect without --aperture or --fstop"),
+         NO_LENS),
         (["--aperture", "0", "--focus", "3"],
          "--focus has no effect without --aperture, --fstop or --stereo (--aperture 0 is the "
          "pinhole: everything is sharp)"),
@@ -264,9 +265,7 @@ def test_animate_warns_about_lens_samples_without_a_lens(tmp_path):
     p = xaml3d("animate", "s.xaml", "-o", "a.gif", "--lens-samples", "8", "--duration", "0.1",
                "--fps", "10", cwd=tmp_path)  # fmt: skip
     assert p.returncode == 0
-    assert _lines(p) == [
-        "xaml3d: warning OPT001 --lens-samples has no effect without --aperture or --fstop"
-    ]
+    assert _lines(p) == [f"xaml3d: warning OPT001 {NO_LENS}"]
 
 
 def test_svg_output_warns_about_raster_only_options(tmp_path):

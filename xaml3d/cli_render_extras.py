@@ -156,11 +156,10 @@ def check_request(
         zero = " (--aperture 0 is the pinhole: everything is sharp)" if ex.aperture == 0 else ""
         idle.append(f"--focus has no effect without --aperture, --fstop or --stereo{zero}")
     if _given("lens_samples") and not ex.blur:
+        msg = "--lens-samples has no effect without a lens (--aperture above 0, or --fstop)"
         if ex.stereo is not None:
-            idle.append("--lens-samples has no effect without --aperture or --fstop: a stereo "
-                        "pair without a lens draws each eye once")  # fmt: skip
-        else:
-            idle.append("--lens-samples has no effect without --aperture or --fstop")
+            msg += ": a stereo pair without a lens draws each eye once"
+        idle.append(msg)
     if ex.eye_separation is not None and ex.stereo is None:
         idle.append("--eye-separation has no effect without --stereo")
     if (ex.line_color is not None or ex.line_width is not None) and mode != "wireframe":
