@@ -376,3 +376,19 @@ def test_the_default_focus_fallback_is_a_warning(tmp_path):
     p = xaml3d("render", "s.xaml", "-o", "x.png", "--stereo", "anaglyph", "--focus", "2",
                cwd=tmp_path)  # fmt: skip
     assert b"LNS004" not in p.stderr
+
+
+def test_together_renames_every_file_at_the_end_or_none(tmp_path):
+    from xaml3d.render.atomic import together, write_atomically
+
+    with together():
+        write_atomically(tmp_path / "a.bin", lambda fh: fh.write(b"a"))
+        write_atomically(tmp_path / "b.bin", lambda fh: fh.write(b"b"))
+        assert not (tmp_path / "a.bin").exists()  # only the temporaries so far
+    assert (tmp_path / "a.bin").read_bytes() == b"a" and (tmp_path / "b.bin").read_bytes() == b"b"
+    with pytest.raises(RenderError) as info:
+        with together():
+            write_atomically(tmp_path / "a.bin", lambda fh: fh.write(b"new"))
+            write_atomically(tmp_path / "no" / "c.bin", lambda fh: fh.write(b"c"))
+    assert info.value.code == "RND007"
+    assert _files(tmp_path) == ["a.bin", "b.bin"] and (tmp_path / "a.bin").read_bytes() == b"a"
