@@ -465,8 +465,8 @@ def test_cli_depth_ids_and_svg(tmp_path):
     [
         (["--aperture", "0.1", "--fstop", "2"], "either --aperture or --fstop"),
         (["--depth", "d.tiff"], ".png or .npy"),
-        (["--depth", "o.png"], "also the output image"),
-        (["--depth", "d.png", "--ids", "d.png"], "name the same file"),
+        (["--depth", "o.png"], "is the same file as the output image"),
+        (["--depth", "d.png", "--ids", "d.png"], "is the same file as --depth 'd.png'"),
         (["--window", "--aperture", "0.1"], "not --window"),
         (["--viewport", "all", "--depth", "d.png"], "one viewport at a time"),
     ],
@@ -503,8 +503,11 @@ def test_cli_aperture_zero_writes_the_pinhole_image(tmp_path):
 def test_cli_lens_needs_a_perspective_camera(tmp_path):
     ortho = Path(__file__).resolve().parent.parent / "samples" / "orthographic-camera.xaml"
     r = xaml3d("render", ortho, "-o", tmp_path / "o.png", "--aperture", "0.1")
-    assert r.returncode == 2
-    assert "need a PerspectiveCamera; viewport 0 has OrthographicCamera" in r.stderr.decode()
+    assert r.returncode == 1 and not (tmp_path / "o.png").exists()
+    assert r.stderr.decode().splitlines() == [
+        f"{ortho}:11:7: error LNS001 --aperture 0.1 needs a PerspectiveCamera: viewport 0 has "
+        "an OrthographicCamera (only a perspective camera has a lens)"
+    ]
     r = xaml3d("render", CUBE, "-o", tmp_path / "c.svg")
     assert r.returncode == 2 and b"SVG output needs --mode wireframe" in r.stderr
 
@@ -565,7 +568,8 @@ def test_cli_animate_takes_the_lens_options(tmp_path):
     assert img.size[0] == 160 and img.n_frames == 2
     ortho = Path(__file__).resolve().parent.parent / "samples" / "orthographic-camera.xaml"
     r = xaml3d("animate", ortho, "-o", tmp_path / "o.gif", "--aperture", "0.1")
-    assert r.returncode == 2 and b"need a PerspectiveCamera" in r.stderr
+    assert r.returncode == 1 and not (tmp_path / "o.gif").exists()
+    assert b":11:7: error LNS001 --aperture 0.1 needs a PerspectiveCamera" in r.stderr
     assert not (tmp_path / "o.gif").exists()
 
 

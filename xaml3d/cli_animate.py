@@ -15,6 +15,7 @@ from pathlib import Path
 import click
 
 from xaml3d.cli_common import (
+    FiniteFloat,
     describe_os_error,
     display_name,
     echo_diagnostics,
@@ -103,7 +104,7 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.command("animate", help=HELP)
 @click.argument("scene", metavar="SCENE")
 @click.option("-o", "--output", required=True, metavar="FILE|DIR/", help="Output file or DIR/.")
-@click.option("--fps", type=click.FloatRange(0, 120, min_open=True), default=30.0,
+@click.option("--fps", type=FiniteFloat(0, 120, min_open=True), default=30.0,
               show_default=True, help="Frames per second.")  # fmt: skip
 @click.option("--start", callback=_time_callback, default="0", show_default=True,
               metavar="T", help="Time of the first frame.")  # fmt: skip
@@ -186,6 +187,8 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             diags.append(_note(file, slow + "viewers (use --fps 50 or less)", "ANIM012"))
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height)
+        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
+        opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         times = frame_times(start, end, fps)
         # Every path this run writes, checked before the first frame is drawn.
         names = frame_names(len(times)) if to_dir else []
@@ -193,8 +196,6 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             ctx.exit(1)
         stale = stale_frames(Path(output), names) if to_dir else []
         sequence = FrameSequence(Path(output), names) if to_dir else None
-        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
-        opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
         frames = []
         from xaml3d.cli_jobs import default_jobs
 

@@ -17,6 +17,7 @@ import numpy as np
 
 from xaml3d.cli_animate import parse_time, time_option
 from xaml3d.cli_common import (
+    FiniteFloat,
     display_name,
     exit_on_input_error,
     load_scene,
@@ -228,7 +229,7 @@ Examples:
 @click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
 @click.option("-W", "--width", type=click.IntRange(min=1), help="Image width (as in render).")
 @click.option("-H", "--height", type=click.IntRange(min=1), help="Image height (as in render).")
-@click.option("--scale", type=click.FloatRange(min=0, min_open=True), help="Multiply the size.")
+@click.option("--scale", type=FiniteFloat(min=0, min_open=True), help="Multiply the size.")
 @click.option("--fit", is_flag=True, help="Show the camera as render --fit would move it.")
 @click.option(
     "--point",

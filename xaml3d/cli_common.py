@@ -27,9 +27,25 @@ TEXT_NAME = "<string>"  # the loader's label for markup given as text
 CLI_CODES: dict[str, tuple[str, str]] = {
     "IO001": (ERROR, "a file could not be read or written (missing, unreadable, bad path)"),
     "IO002": (ERROR, "the output would overwrite an input file: refused"),
-    "IO003": (ERROR, "two scenes of a batch would write the same output file"),
+    "IO003": (
+        ERROR,
+        "two outputs would be the same file (two scenes of a batch, two viewports of a scene)",
+    ),
     "OPT001": (WARNING, "a command-line option has no effect with the others given"),
 }
+
+
+class FiniteFloat(click.FloatRange):
+    """A ``click.FloatRange`` that also refuses NaN and the infinities (a usage error, exit 2,
+    like any other value out of range)."""
+
+    name = "float"
+
+    def convert(self, value, param, ctx):
+        rv = super().convert(value, param, ctx)
+        if not math.isfinite(rv):
+            self.fail(f"{value!r} is not a finite number.", param, ctx)
+        return rv
 
 
 def io_error(file: str | None, message: str, code: str = "IO001") -> str:

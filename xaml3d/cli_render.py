@@ -1,4 +1,4 @@
-"""``xaml3d render``: XAML scene(s) -> PNG / JPEG / WebP, one file or a batch.
+"""``xaml3d render``: XAML scene(s) -> PNG / JPEG / WebP (SVG wireframes), one file or a batch.
 
 Thin layer over ``xaml3d.render.api``: resolves the output (a file, ``-`` for stdout, or a
 directory for a batch), the render size (-W/-H/--scale, wpf3d.md section 2), ``--fit``
@@ -19,6 +19,7 @@ import click
 
 from xaml3d.cli_animate import parse_time, storyboard_option, time_option
 from xaml3d.cli_common import (
+    FiniteFloat,
     describe_os_error,
     display_name,
     echo_diagnostics,
@@ -153,16 +154,54 @@ def _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_lines, aa_li
         click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
 
 
-def _check_not_input(target, name: str, inputs: list[Path]) -> None:
+def _check_not_input(target, name: str, inputs: list[Path], what: str = "the image") -> None:
+    """IO002 when ``target`` (``what``: the image, the depth image ...) is one of ``inputs``."""
     if target == "-":
         return
     for p in inputs:
         if same_file(Path(target), p):
-            click.echo(
-                io_error(name, f"refusing to write the output over the input file {p}", "IO002"),
-                err=True,
-            )
+            kind = _input_kind(p) or "an input file"
+            also = "" if str(target) == str(p) else f" ({p})"
+            msg = f"refusing to write {what} over an input file: {target} is {kind}{also}"
+            click.echo(io_error(name, msg, "IO002"), err=True)
             raise _Failed
+
+
+_INPUT_KINDS: dict[str, str] = {}  # resolved path -> what the scene reads it as
+
+
+def _input_kind(p: Path) -> str:
+    from xaml3d.cli_outputs import _resolved
+
+    return _INPUT_KINDS.get(str(_resolved(Path(p))), "")
+
+
+def _note_kinds(kinds) -> None:
+    """Remember what each (path, kind) file read is, for IO002's message."""
+    from xaml3d.cli_outputs import _resolved
+
+    for p, kind in kinds:
+        _INPUT_KINDS.setdefault(str(_resolved(Path(p))), kind)
+
+
+def _note_inputs(scene) -> None:
+    _note_kinds([(p, "a resource dictionary the scene reads") for p in scene.resources_used])
+    _note_kinds([(p, "an image (texture) the scene reads") for p in scene.images_used])
+
+
+def _check_distinct(outputs: list[tuple[str, Path]], name: str) -> None:
+    """IO003 when two files one scene writes would be the same file (two viewports named so
+    that their files coincide...)."""
+    from xaml3d.cli_outputs import _resolved
+
+    seen: dict[Path, str] = {}
+    for what, path in outputs:
+        key = _resolved(Path(path))
+        if key in seen:
+            msg = f"{what} {path} would be the same file as {seen[key]}"
+            click.echo(io_error(name, msg, "IO003"), err=True)
+            raise _Failed
+        seen[key] = f"{what} {path}"
 
 
 def _size_for_checks(opts: RenderOptions):
@@ -224,8 +263,10 @@ def _render_viewport(
         fresh = write_svg(opts.extras, scene, vp, width, height, svg_target, opts.background,
                           opts.ssaa, aspect)  # fmt: skip
         return _checked(fresh, lambda: None, file, opts, diags)
-    from xaml3d.cli_render_extras import lens_arguments, write_buffers
+    from xaml3d.cli_render_extras import focus_notes, lens_arguments, write_buffers
 
+    lens_args = lens_arguments(opts.extras, vp)
+    diags.extend(focus_notes(opts.extras, vp, file))
     progress = Progress(f"{file}: lens samples", opts.extras.progress and stderr_is_terminal())
     try:
         result = render_arrays(
@@ -243,12 +284,12 @@ def _render_viewport(
             aspect=aspect,
             ids=bool(opts.extras.ids),
             progress=progress,
-            **lens_arguments(opts.extras, vp),
+            **lens_args,
         )
     finally:
         progress.close()
     image = _checked(result.diagnostics, result.image, file, opts, diags)
-    if result.distance is not None:
+    if opts.extras.depth or opts.extras.ids:
         surfaces = None
         if opts.mode == "wireframe" and not opts.hide_hidden_lines:
             from xaml3d.render.buffers import surface_buffers
@@ -336,17 +377,6 @@ class _Deferred:
         self.pending: list[tuple[str, str]] = []  # (temporary path, target)
         self.read: list[str] = []
 
-    @classmethod
-    def path_for(cls, out):
-        """Where to write ``out`` now: itself, or in a parallel worker a temporary sibling
-        with the same suffix (so the format is still told from it)."""
-        if cls.active is None or out == "-":
-            return out
-        out = Path(out)
-        tmp = out.with_name(f".{out.name}.{os.getpid()}.pending{out.suffix}")
-        cls.active.pending.append((str(tmp), str(out)))
-        return tmp
-
 
 def _viewport_target(target: Path, vp) -> Path:
     label = vp.name or str(vp.index)
@@ -354,77 +384,27 @@ def _viewport_target(target: Path, vp) -> Path:
 
 
 def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) -> None:
-    from xaml3d.render.api import save_image, scene_at
+    """Render one scene to ``target`` (a Path or '-'), with its --depth/--ids files or one file
+    per viewport. Every file goes to a temporary first and all are renamed into place only when
+    every one of them was written (``atomic.together``): a failure leaves no file of this
+    scene and every existing file untouched. In a parallel batch's worker the renames are left
+    to the parent (``_Deferred``)."""
+    from xaml3d.render.atomic import together
 
     name = display_name(source)
-    diags = []
+    diags: list = []
     try:
-        _check_not_input(target, name, inputs)
-        scene = load_scene(source, opts.resources, opts.window_size)
-        scene = scene_at(scene, opts.time, opts.storyboard)
-        file = scene.file or name
-        read = [Path(p) for p in scene_files_read(scene)]
-        if _Deferred.active is not None:
-            _Deferred.active.read.extend(os.path.abspath(p) for p in [source, *read])
-        inputs.extend(read)  # a (serial) batch: no later scene may write over what this one read
-        _check_not_input(target, name, read)
-        for extra in (opts.extras.depth, opts.extras.ids):
-            if extra:
-                _check_not_input(Path(extra), name, inputs)
-        scene, fit_notes = _fitted(scene, file, opts)
-        # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings), for the
-        # cameras drawn (those --fit moved).
-        findings = scene_findings(scene, _size_for_checks(opts), name, opts.storyboard)
-        if has_errors(findings):
-            if not opts.lenient or not scene.viewports:
-                echo_diagnostics(findings, quiet=opts.quiet, verbose=opts.verbose)
-                if scene.viewports:
-                    msg = f"{name}: not rendered: the scene has errors (--lenient renders it)"
-                    click.echo(msg, err=True)
-                raise _Failed
-            findings = lenient_findings(findings)
-        diags.extend(findings)
-        if opts.window:
-            jobs = [(None, target)]
-        elif opts.viewport == "all":
-            scene.viewport()  # SCN001 when there is none
-            jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
-            for _, t in jobs:
-                _check_not_input(t, name, inputs)
-        else:
-            jobs = [(scene.viewport(opts.viewport), target)]
-        failed = False
-        for vp, out in jobs:
-            try:
-                svg = (opts.fmt or SUFFIX_FORMATS.get(Path(str(out)).suffix.lower())) == "svg"
-                if vp is None:
-                    image = _render_window(scene, file, opts, diags)
-                else:
-                    svg_out = _Deferred.path_for(out) if svg else None
-                    notes = fit_notes.get(vp.index, ())
-                    image = _render_viewport(scene, vp, file, opts, diags, svg_out, notes)
-            except _Failed:
-                failed = True
-                continue
-            except XamlError as exc:
-                if len(jobs) == 1:
-                    raise
-                # one viewport of several cannot be drawn (an empty layout...): the others are
-                echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
-                diags.clear()
-                click.echo(exc.with_location(file=name).format(), err=True)
-                failed = True
-                continue
-            if image is None:  # an SVG, already written
-                continue
-            if out == "-":
-                # The render already holds --background (at its alpha): flatten onto white only.
-                data = _encode(image, opts.fmt or "png")
+        with together(commit=False) as staged:
+            stdout, failed = _draw_scene(source, target, opts, inputs, name, diags)
+            if stdout is not None:
                 stream = sys.stdout.buffer
-                stream.write(data)
+                stream.write(stdout)
                 stream.flush()
+            if _Deferred.active is not None:
+                _Deferred.active.pending.extend((str(t), str(o)) for t, o in staged.pending)
+                staged.pending = []
             else:
-                save_image(image, _Deferred.path_for(out), format=opts.fmt)
+                staged.commit()
         if failed:
             echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
             raise _Failed
@@ -443,6 +423,86 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         raise _Failed from None
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+
+
+def _draw_scene(source: str, target, opts: RenderOptions, inputs: list[Path], name: str, diags):
+    """Read and draw one scene, writing its files (staged by the caller); returns (the bytes
+    for stdout or None, whether a viewport of several could not be drawn)."""
+    from xaml3d.cli_render_extras import check_lens_camera
+    from xaml3d.render.api import save_image, scene_at
+
+    ex = opts.extras
+    _note_kinds([(source, "a scene of this command")] if source != "-" else [])
+    _note_kinds([(r, "a resource dictionary given with -r") for r in opts.resources])
+    _check_not_input(target, name, inputs)
+    scene = load_scene(source, opts.resources, opts.window_size)
+    scene = scene_at(scene, opts.time, opts.storyboard)
+    file = scene.file or name
+    _note_inputs(scene)
+    read = [Path(p) for p in scene_files_read(scene)]
+    if _Deferred.active is not None:
+        _Deferred.active.read.extend(os.path.abspath(p) for p in [source, *read])
+    inputs.extend(read)  # a (serial) batch: no later scene may write over what this one read
+    _check_not_input(target, name, read)
+    for extra, what in ((ex.depth, "the depth image"), (ex.ids, "the id image")):
+        if extra:
+            _check_not_input(Path(extra), name, inputs, what)
+    scene, fit_notes = _fitted(scene, file, opts)
+    # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings), for the
+    # cameras drawn (those --fit moved).
+    findings = scene_findings(scene, _size_for_checks(opts), name, opts.storyboard)
+    if has_errors(findings):
+        if not opts.lenient or not scene.viewports:
+            echo_diagnostics(findings, quiet=opts.quiet, verbose=opts.verbose)
+            if scene.viewports:
+                msg = f"{name}: not rendered: the scene has errors (--lenient renders it)"
+                click.echo(msg, err=True)
+            raise _Failed
+        findings = lenient_findings(findings)
+    diags.extend(findings)
+    if opts.window:
+        jobs = [(None, target)]
+    elif opts.viewport == "all":
+        scene.viewport()  # SCN001 when there is none
+        jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
+        for _, t in jobs:
+            _check_not_input(t, name, inputs)
+        _check_distinct([(f"viewport {vp.index}'s image", t) for vp, t in jobs], name)
+    else:
+        jobs = [(scene.viewport(opts.viewport), target)]
+    for vp, _ in jobs:  # a lens or stereo pair on a camera without one: before any file
+        if vp is not None:
+            check_lens_camera(ex, vp)
+    stdout, failed = None, False
+    for vp, out in jobs:
+        try:
+            svg = (opts.fmt or SUFFIX_FORMATS.get(Path(str(out)).suffix.lower())) == "svg"
+            if vp is None:
+                image = _render_window(scene, file, opts, diags)
+            else:
+                svg_out = out if svg else None
+                notes = fit_notes.get(vp.index, ())
+                image = _render_viewport(scene, vp, file, opts, diags, svg_out, notes)
+        except _Failed:
+            failed = True
+            continue
+        except XamlError as exc:
+            if len(jobs) == 1:
+                raise
+            # one viewport of several cannot be drawn (an empty layout...): the others are
+            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+            diags.clear()
+            click.echo(exc.with_location(file=name).format(), err=True)
+            failed = True
+            continue
+        if image is None:  # an SVG, already written
+            continue
+        if out == "-":
+            # The render already holds --background (at its alpha): flatten onto white only.
+            stdout = _encode(image, opts.fmt or "png")
+        else:
+            save_image(image, out, format=opts.fmt)
+    return stdout, failed
 
 
 def scene_files_read(scene) -> list[str]:
@@ -546,7 +606,7 @@ def _check_layout_options(window, outline, viewport, width, height, scale, fit, 
         raise click.UsageError(f"{many} writes files: give -o FILE or a directory")
 
 
-HELP = """Render XAML 3D scene(s) to images (PNG, JPEG or WebP).
+HELP = """Render XAML 3D scene(s) to images (PNG, JPEG or WebP; SVG in wireframe mode).
 
 SCENE is a .xaml file, or - to read the markup from stdin (relative references then resolve
 against the current directory). The output format follows the suffix of -o (or --format).
@@ -604,7 +664,7 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 )
 @click.option(
     "--scale",
-    type=click.FloatRange(min=0, min_open=True),
+    type=FiniteFloat(min=0, min_open=True),
     help="Multiply the size (e.g. 2 for a 2x image of the markup's size).",
 )
 @click.option(
@@ -663,7 +723,7 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 )
 @click.option(
     "--margin",
-    type=click.FloatRange(0, 10),
+    type=FiniteFloat(0, 10),
     default=0.05,
     show_default=True,
     help="Room left around the scene by --fit, as a fraction of its size.",
@@ -714,7 +774,7 @@ def render_command(
     lenient,
     extras,
 ) -> None:
-    from xaml3d.cli_render_extras import check_request, check_svg
+    from xaml3d.cli_render_extras import check_output_names, check_request, check_svg
 
     at_time = parse_time(at_time)
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
@@ -723,8 +783,10 @@ def render_command(
     _check_layout_options(window, outline_controls, viewport, width, height, scale, fit, output)
     plan, directory = _plan(tuple(scenes), output, output_dir, fmt)
     check_request(extras, scenes, output, mode, window or viewport == "all", window)
+    if len(plan) == 1:  # --depth/--ids take one scene: against its image, wherever it goes
+        check_output_names(extras, plan[0][1])
     if fmt == "svg" or any(t != "-" and t.suffix.lower() == ".svg" for _, t in plan):
-        check_svg(extras, mode, window)
+        check_svg(extras, mode, window, (msaa, antialias_lines))
     extras = replace(extras, progress=len(plan) == 1)
     opts = RenderOptions(
         width,
@@ -763,6 +825,7 @@ def render_command(
             click.echo(io_error(str(directory), describe_os_error(exc)), err=True)
             click.get_current_context().exit(1)
     inputs = [Path(s) for s in scenes if s != "-"] + [Path(r) for r in resources]
+    _note_kinds([(s, "a scene of this command") for s in scenes if s != "-"])
     failed: list[str] = []
     written: set[Path] = set()
 

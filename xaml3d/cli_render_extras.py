@@ -14,8 +14,9 @@ from pathlib import Path
 
 import click
 
-from xaml3d.errors import INFO, Diagnostic
-from xaml3d.scene.lens import STEREO_MODES
+from xaml3d.cli_common import FiniteFloat
+from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
+from xaml3d.scene.lens import MAX_LENS_SAMPLES, STEREO_MODES
 from xaml3d.scene.types import PerspectiveCamera
 
 DEPTH_SUFFIXES = (".png", ".npy")
@@ -39,7 +40,20 @@ class Extras:
 
     @property
     def lens(self) -> bool:
-        return self.aperture is not None or self.fstop is not None or self.stereo is not None
+        """A lens or stereo pair is drawn: ``--aperture 0`` alone is the pinhole, no lens."""
+        return bool(self.aperture) or self.fstop is not None or self.stereo is not None
+
+    @property
+    def blur(self) -> bool:
+        """The lens has a disk of eye points (``--lens-samples`` applies)."""
+        return bool(self.aperture) or self.fstop is not None
+
+    def lens_options(self) -> str:
+        """The options that ask for a lens, as given: ``--aperture 0.1 and --stereo anaglyph``."""
+        named = [f"--aperture {self.aperture:g}" if self.aperture else None,
+                 f"--fstop {self.fstop:g}" if self.fstop is not None else None,
+                 f"--stereo {self.stereo}" if self.stereo is not None else None]  # fmt: skip
+        return " and ".join(n for n in named if n)
 
 
 def _parse_color(ctx, param, value):
@@ -51,30 +65,30 @@ def _parse_color(ctx, param, value):
 _OPTIONS = (
     click.option(
         "--aperture",
-        type=click.FloatRange(min=0),
+        type=FiniteFloat(min=0),
         help="Lens radius in scene units: depth of field (0: pinhole, the ordinary image).",
     ),
     click.option(
         "--focus",
-        type=click.FloatRange(min=0, min_open=True),
+        type=FiniteFloat(min=0, min_open=True),
         help="Focal distance along the look direction (default: to the scene's centre).",
     ),
     click.option(
         "--fstop",
-        type=click.FloatRange(min=0, min_open=True),
+        type=FiniteFloat(min=0, min_open=True),
         help="Aperture as an f-number instead of --aperture (1 scene unit = 1 m).",
     ),
     click.option(
         "--focal-length",
-        type=click.FloatRange(min=0, min_open=True),
+        type=FiniteFloat(min=0, min_open=True),
         help="With --fstop: focal length in mm of a 35 mm frame (default: from FieldOfView).",
     ),
     click.option(
         "--lens-samples",
-        type=click.IntRange(1, 4096),
+        type=click.IntRange(1, MAX_LENS_SAMPLES),
         default=24,
         show_default=True,
-        help="Eye points on the lens disk (renders averaged).",
+        help=f"Eye points on the lens disk (renders averaged), 1..{MAX_LENS_SAMPLES}.",
     ),
     click.option(
         "--stereo",
@@ -83,16 +97,19 @@ _OPTIONS = (
     ),
     click.option(
         "--eye-separation",
-        type=click.FloatRange(min=0),
+        type=FiniteFloat(min=0),
         help="Stereo: distance between the eyes in scene units (default: focus / 30).",
     ),
     click.option(
         "--depth",
         metavar="FILE",
-        help="Also write the eye-space depth: .png (16-bit, near black) or .npy (float32).",
+        help="Also write the eye-space depth: .png (16-bit, near black) or .npy (float32); "
+        "not with an SVG output.",
     ),
     click.option(
-        "--ids", metavar="FILE", help="Also write a PNG of model ids (one colour per model)."
+        "--ids",
+        metavar="FILE",
+        help="Also write a PNG of model ids (one colour per model); not with an SVG output.",
     ),
     click.option(
         "--line-color",
@@ -102,7 +119,7 @@ _OPTIONS = (
     ),
     click.option(
         "--line-width",
-        type=click.FloatRange(min=0, min_open=True),
+        type=FiniteFloat(min=0, min_open=True),
         help="wireframe: line width in pixels (default 1).",
     ),
 )
@@ -136,7 +153,13 @@ def check_request(
     if ex.focal_length is not None and ex.fstop is None:
         idle.append("--focal-length has no effect without --fstop")
     if ex.focus is not None and not ex.lens:
-        idle.append("--focus has no effect without --aperture, --fstop or --stereo")
+        zero = " (--aperture 0 is the pinhole: everything is sharp)" if ex.aperture == 0 else ""
+        idle.append(f"--focus has no effect without --aperture, --fstop or --stereo{zero}")
+    if _given("lens_samples") and not ex.blur:
+        msg = "--lens-samples has no effect without a lens (--aperture above 0, or --fstop)"
+        if ex.stereo is not None:
+            msg += ": a stereo pair without a lens draws each eye once"
+        idle.append(msg)
     if ex.eye_separation is not None and ex.stereo is None:
         idle.append("--eye-separation has no effect without --stereo")
     if (ex.line_color is not None or ex.line_width is not None) and mode != "wireframe":
@@ -153,14 +176,40 @@ def check_request(
         suffixes = DEPTH_SUFFIXES if opt == "--depth" else (".png",)
         if Path(value).suffix.lower() not in suffixes:
             raise click.UsageError(f"{opt} {value!r}: use {' or '.join(suffixes)}")
-        if output not in (None, "-") and Path(value).resolve() == Path(output).resolve():
-            raise click.UsageError(f"{opt} {value!r} is also the output image")
-    if ex.depth and ex.ids and Path(ex.depth).resolve() == Path(ex.ids).resolve():
-        raise click.UsageError("--depth and --ids name the same file")
+    check_output_names(ex, output)
 
 
-def check_svg(ex: Extras, mode: str, window: bool = False) -> None:
-    """An SVG output draws vectors: only the wireframe mode, no lens, no stereo."""
+def _given(param: str) -> bool:
+    """The option ``param`` was given on the command line (not left to its default)."""
+    ctx = click.get_current_context(silent=True)
+    if ctx is None or param not in {p.name for p in ctx.command.params}:
+        return False
+    source = ctx.get_parameter_source(param)
+    return source is not None and source.name == "COMMANDLINE"
+
+
+def check_output_names(ex: Extras, target) -> None:
+    """--depth/--ids against the image file they go with (``target``: the resolved output, a
+    file in the output directory included, or '-'): a usage error when two are one file."""
+    from xaml3d.cli_outputs import _resolved
+
+    files = [("--depth", ex.depth), ("--ids", ex.ids)]
+    if target not in (None, "-"):
+        files.insert(0, ("the output image", str(target)))
+    seen: dict[Path, str] = {}
+    for opt, value in files:
+        if value is None:
+            continue
+        key = _resolved(Path(value))
+        if key in seen:
+            raise click.UsageError(f"{opt} {value!r} is the same file as {seen[key]}")
+        seen[key] = f"{opt} {value!r}" if opt.startswith("--") else f"the output image {value!r}"
+
+
+def check_svg(ex: Extras, mode: str, window: bool = False, idle=None) -> None:
+    """An SVG output draws vectors: only the wireframe mode, no lens, no stereo, no depth or
+    id images. ``idle``: (msaa, antialias_lines) given, each warned about (OPT001): an SVG's
+    lines are vectors, neither multisampled nor rasterized."""
     if window:
         raise click.UsageError("--window draws a raster picture: use .png, .jpg or .webp")
     if mode != "wireframe":
@@ -169,21 +218,41 @@ def check_svg(ex: Extras, mode: str, window: bool = False) -> None:
         raise click.UsageError("an SVG output cannot have --aperture, --fstop or --stereo")
     if ex.depth or ex.ids:
         raise click.UsageError("--depth and --ids go with an image output, not an SVG")
+    msaa, aa_lines = idle or (None, False)
+    for opt, on in (("--msaa", msaa is not None), ("--antialias-lines", aa_lines)):
+        if on:
+            msg = f"{opt} has no effect on an SVG output (its edges are vector paths)"
+            click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+
+
+def check_lens_camera(ex: Extras, vp) -> None:
+    """A lens or stereo pair needs a PerspectiveCamera: RenderError LNS001 at the camera element
+    of viewport ``vp`` (an error of that scene, exit 1), naming the options given."""
+    if not ex.lens:
+        return
+    cam = vp.camera
+    if isinstance(cam, PerspectiveCamera):
+        return
+    kind = f"an {type(cam).__name__}" if cam is not None else "no camera (Camera is {x:Null})"
+    verb = "needs" if " and " not in ex.lens_options() else "need"
+    what = "a lens or a stereo pair" if ex.stereo is not None else "a lens"
+    raise RenderError(
+        f"{ex.lens_options()} {verb} a PerspectiveCamera: viewport {vp.index} has {kind} "
+        f"(only a perspective camera has {what})",
+        code="LNS001",
+        line=cam.line if cam is not None else vp.line,
+        column=cam.column if cam is not None else vp.column,
+    )
 
 
 def lens_arguments(ex: Extras, vp) -> dict:
     """The ``render_arrays`` arguments of the options for viewport ``vp``; a lens or stereo
-    pair on another camera than a PerspectiveCamera is a usage error (exit 2)."""
+    pair on another camera than a PerspectiveCamera raises RenderError LNS001
+    (``check_lens_camera``)."""
     args: dict = {"line_color": ex.line_color, "line_width": ex.line_width or 1.0}
     if not ex.lens:
         return args
-    cam = vp.camera
-    if not isinstance(cam, PerspectiveCamera):
-        kind = type(cam).__name__ if cam is not None else "no camera"
-        raise click.UsageError(
-            f"--aperture, --fstop and --stereo need a PerspectiveCamera; viewport {vp.index} "
-            f"has {kind}"
-        )
+    check_lens_camera(ex, vp)
     args.update(
         aperture=ex.aperture or 0.0,
         fstop=ex.fstop,
@@ -219,14 +288,72 @@ class Progress:
             self.bar = None
 
 
+def focus_notes(ex: Extras, vp, file: str) -> list[Diagnostic]:
+    """What a lens or stereo render of viewport ``vp`` focuses on, at its camera element: info
+    LNS003 (the focal distance, and the eyes' separation of a stereo pair), and warning LNS004
+    when the default focal distance falls back to 1 because the centre of the scene's bounding
+    box is not in front of the camera (``xaml3d.scene.lens.default_focus``)."""
+    import math
+
+    import numpy as np
+
+    from xaml3d.scene.lens import STEREO_FRACTION, camera_view
+
+    if not ex.lens or not isinstance(vp.camera, PerspectiveCamera):
+        return []
+    at = (file, vp.camera.line, vp.camera.column)
+    notes = []
+    if ex.focus is not None:
+        focus, how = ex.focus, "(--focus)"
+    else:
+        bounds = vp.bounds()
+        if bounds is None:
+            return []  # nothing to focus on, nor to draw (RND003)
+        lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
+        centre = np.append((lo + hi) / 2.0, 1.0)
+        try:
+            with np.errstate(all="ignore"):
+                d = -float((camera_view(vp.camera) @ centre)[2])
+        except (ArithmeticError, ValueError, np.linalg.LinAlgError, XamlError):
+            return []  # a camera that cannot produce an image: its error says so
+        if d > 0 and math.isfinite(d):
+            focus, how = d, "(to the centre of the scene's bounding box; --focus sets it)"
+        else:
+            focus, how = 1.0, "(the fallback: give --focus)"
+            where = f"{d:g} along the look direction" if math.isfinite(d) else "undefined"
+            notes.append(Diagnostic(
+                "LNS004", WARNING,
+                f"the centre of the scene's bounding box is not in front of the camera (at "
+                f"{where}): the focal distance falls back to 1 scene unit; give --focus",
+                *at,
+            ))  # fmt: skip
+    msg = f"focal distance {focus:g} {how}"
+    if ex.stereo is not None:
+        sep = ex.eye_separation if ex.eye_separation is not None else focus * STEREO_FRACTION
+        msg += f", eye separation {sep:g}"
+    if ex.blur:
+        msg += f", {ex.lens_samples} lens sample(s) per eye" if ex.stereo else (
+            f", {ex.lens_samples} lens sample(s)")  # fmt: skip
+    notes.append(Diagnostic("LNS003", INFO, msg, *at))
+    return notes
+
+
 def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diagnostic]:
     """Write --depth and --ids from a ``Rendering``; returns the LNS002 range note.
     ``surfaces``: a function giving the surfaces' distance, used instead of the render's own
-    (wireframe mode: its depth buffer holds no surfaces unless hidden lines are removed)."""
+    (wireframe mode: its depth buffer holds no surfaces unless hidden lines are removed).
+    A render whose camera could not produce an image (drawn anyway under --lenient) has no
+    buffers: they are written as WPF's picture is, empty (no distance, no model anywhere)."""
+    import numpy as np
+
     from xaml3d.render.buffers import depth_npy, depth_png, ids_png, write_atomic
 
     notes = []
-    if ex.depth and surfaces is not None:
+    if result.distance is None:
+        shape = result.depth.shape
+        result = replace(result, distance=np.full(shape, np.nan, dtype=np.float32),
+                         ids=np.full(shape, -1, dtype=np.int32) if ex.ids else None)  # fmt: skip
+    elif ex.depth and surfaces is not None:
         result = replace(result, distance=surfaces())
     if ex.depth:
         if Path(ex.depth).suffix.lower() == ".npy":
@@ -304,11 +431,19 @@ def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_lengt
             msg = "--focus and --focal-length have no effect without --aperture or --fstop"
             click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
         return None
-    check_request(ex, ("scene",), None, "shaded")
-    args = lens_arguments(ex, vp)
-    frame = lens_frame(vp.camera, width, height, args["focus"], vp.bounds())
+    if ex.aperture is not None and ex.fstop is not None:
+        raise click.UsageError("give either --aperture or --fstop, not both")
+    if focal_length is not None and fstop is None:
+        click.echo("xaml3d: warning OPT001 --focal-length has no effect without --fstop", err=True)
+    check_lens_camera(ex, vp)  # LNS001 at the camera element, exit 1
+    if not isinstance(vp.camera, PerspectiveCamera):
+        if focus is not None:
+            msg = "--focus has no effect with --aperture 0 on a camera without a lens"
+            click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+        return None  # --aperture 0: the pinhole, the camera's own matrices above
+    frame = lens_frame(vp.camera, width, height, focus, vp.bounds())
     focal = focal_length or focal_length_of_fov(float(vp.camera.field_of_view))
-    a = aperture_of_fstop(fstop, focal) if fstop is not None else float(args["aperture"])
+    a = aperture_of_fstop(fstop, focal) if fstop is not None else float(ex.aperture)
     pin, rim = frame.eye_camera(0.0, 0.0), frame.eye_camera(a, 0.0)
 
     def mats(cam) -> dict:

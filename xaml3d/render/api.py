@@ -191,8 +191,9 @@ def render_arrays(
     look direction; default: to the scene's centre), or ``fstop`` with ``focal_length`` (mm of
     a 35 mm frame; default from the FieldOfView) instead of ``aperture``, ``lens_samples``,
     ``stereo`` ("anaglyph", "side-by-side", "over-under"), ``eye_separation`` (default
-    focus / 30), ``progress(done, total)`` called after each sample render. ``ids=True`` also
-    fills ``Rendering.ids``.
+    focus / 30), ``progress(done, total)`` called after each sample render; ``lens_samples``
+    is 1..4096 (``xaml3d.scene.lens.MAX_LENS_SAMPLES``, as on the command line).
+    ``ids=True`` also fills ``Rendering.ids``.
     Raises RenderError (RND001 size limits, RND005 bad arguments, LNS001 lens or stereo
     without a PerspectiveCamera) and SceneError."""
     if isinstance(scene_or_path, Scene):
@@ -221,6 +222,18 @@ def render_arrays(
                 raise RenderError(
                     f"{name} must be an integer from 1 to 4, got {value!r}", code="RND005"
                 )  # fmt: skip
+        from xaml3d.scene.lens import MAX_LENS_SAMPLES
+
+        if not (
+            isinstance(lens_samples, (int, np.integer))
+            and not isinstance(lens_samples, bool)
+            and 1 <= lens_samples <= MAX_LENS_SAMPLES
+        ):
+            raise RenderError(
+                f"lens_samples must be a whole number from 1 to {MAX_LENS_SAMPLES} (each is a "
+                f"full render), got {lens_samples!r}",
+                code="RND005",
+            )
         if ssaa > 1 and msaa > 1:
             raise RenderError(
                 f"choose one anti-aliasing: ssaa={ssaa} and msaa={msaa} were both given",

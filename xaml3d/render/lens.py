@@ -22,7 +22,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.errors import ERROR, RenderError
+from xaml3d.errors import ERROR, WARNING, Diagnostic, RenderError
 from xaml3d.scene.lens import (
     STEREO_FRACTION,
     STEREO_MODES,
@@ -147,13 +147,15 @@ def render_through_lens(
         )
     plan = eye_offsets(float(aperture), lens_samples, stereo, float(eye_separation))
     total = sum(len(offsets) for _, offsets in plan)
-    done = 0
+    done = blank = 0
     images = []
     for _, offsets in plan:
         acc = np.zeros((pinhole.height, pinhole.width, 4))
         for sx, sy in offsets:
             eye_vp = replace(vp, camera=frame.eye_camera(float(sx), float(sy)))
-            acc += to_linear_premultiplied(draw(eye_vp, shading, False).rgba)
+            sample = draw(eye_vp, shading, False)
+            acc += to_linear_premultiplied(sample.rgba)
+            blank += any(d.code == "RND002" or d.severity == ERROR for d in sample.diagnostics)
             done += 1
             if progress is not None:
                 progress(done, total)
@@ -167,4 +169,17 @@ def render_through_lens(
     else:
         combined = np.concatenate(images, axis=0)
     rgba = to_straight_srgb8(combined)
-    return replace(pinhole, rgba=rgba, width=rgba.shape[1], height=rgba.shape[0])
+    diagnostics = list(pinhole.diagnostics)
+    if blank == total and not any(d.code in ("RND002", "RND003") for d in diagnostics):
+        # The pinhole sees the scene but no eye point does: extreme lens values.
+        values = f"aperture radius {float(aperture):g}, focal distance {frame.focus:g}"
+        if stereo is not None:
+            values += f", eye separation {float(eye_separation):g}"
+        diagnostics.append(Diagnostic("RND002", WARNING, (
+            f"nothing was drawn through the lens: the pinhole camera sees the scene, but from "
+            f"none of the {total} eye point(s) is any of it in view ({values}): the eye points "
+            "lie too far from the camera, or the focal distance is too small, for the sheared "
+            "frusta to hold the scene"), None,
+            vp.camera.line, vp.camera.column))  # fmt: skip
+    return replace(pinhole, rgba=rgba, width=rgba.shape[1], height=rgba.shape[0],
+                   diagnostics=diagnostics)  # fmt: skip

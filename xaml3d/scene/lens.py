@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xaml3d.errors import ERROR, INFO, RenderError
+from xaml3d.errors import ERROR, INFO, WARNING, RenderError
 from xaml3d.scene.camera_math import camera_frame, camera_pipeline
 from xaml3d.scene.types import MatrixCamera, PerspectiveCamera, frozen_array
 
@@ -44,6 +44,12 @@ LENS_CODES: dict[str, tuple[str, str]] = {
         "a lens aperture or stereo pair needs a PerspectiveCamera (not orthographic or matrix)",
     ),
     "LNS002": (INFO, "range of the eye-space distances written to a depth image"),
+    "LNS003": (INFO, "the focal distance (and eye separation) a lens or stereo render uses"),
+    "LNS004": (
+        WARNING,
+        "the default focal distance falls back to 1: the scene's centre is not in front of the "
+        "camera",
+    ),
 }
 
 GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))  # radians, about 137.5 degrees
@@ -51,6 +57,7 @@ FRAME_WIDTH_MM = 36.0  # the 35 mm film frame is 36 mm x 24 mm
 MM_PER_SCENE_UNIT = 1000.0  # --fstop/--focal-length: one scene unit is taken as one metre
 STEREO_FRACTION = 1.0 / 30.0  # default eye separation: focal distance / 30 (the "1/30 rule")
 STEREO_MODES = ("anaglyph", "side-by-side", "over-under")
+MAX_LENS_SAMPLES = 4096  # eye points on the lens disk, each a full render
 
 
 def lens_pattern(n: int) -> np.ndarray:
