@@ -21,7 +21,7 @@ from pathlib import Path
 from lxml import etree
 
 from xaml3d.errors import ResourceError, XamlError
-from xaml3d.xaml.context import ReadContext, doc_position, qname, x_attr
+from xaml3d.xaml.context import ReadContext, as_written, doc_position, qname, x_attr
 from xaml3d.xaml.parser import ParsedDocument, parse_document
 
 APP_FILE_NAMES = ("app.xaml",)
@@ -143,7 +143,7 @@ class Resources:
         doc = self.ctx.doc_of(md)
         rel = reduce_uri(source)
         if rel is None:
-            msg = f"merged dictionary {source!r}: network URIs are refused"
+            msg = f"merged dictionary {as_written(source)}: network URIs are refused"
             self.ctx.diag("RES004", msg, md, attr="Source")
             return None
         base = doc.directory if doc and doc.directory else Path.cwd()
@@ -151,7 +151,7 @@ class Resources:
         if not self.ctx.path_allowed(path):
             self.ctx.diag(
                 "RES004",
-                f"merged dictionary {source!r} leaves the scene's folder tree: refused "
+                f"merged dictionary {as_written(source)} leaves the scene's folder tree: refused "
                 "(allow_outside=True permits it)",
                 md,
                 attr="Source",
@@ -163,20 +163,20 @@ class Resources:
         self, path: Path, label: str, ref: etree._Element | None
     ) -> Dictionary | None:
         if path in self._loading:
-            msg = f"merged dictionary {label!r} includes itself (cycle)"
+            msg = f"merged dictionary {as_written(label)} includes itself (cycle)"
             self.ctx.diag("RES003", msg, ref, attr="Source")
             return None
         if path in self._files:
             return self._files[path]
         if not path.is_file():
-            msg = f"merged dictionary {label!r} not found ({path})"
+            msg = f"merged dictionary {as_written(label)} not found ({path})"
             self.ctx.diag("RES005", msg, ref, attr="Source")
             return None
         self._loading.add(path)
         try:
             doc = parse_document(path, limits=self.ctx.limits, file=str(path))
         except XamlError as exc:
-            msg = f"merged dictionary {label!r} unreadable: {exc.message}"
+            msg = f"merged dictionary {as_written(label)} unreadable: {exc.message}"
             self.ctx.diag("RES005", msg, ref, attr="Source")
             self._loading.discard(path)
             self._files[path] = None
@@ -201,7 +201,7 @@ class Resources:
                 self.ctx.diag("RES005", msg, line=exc.line, column=exc.column, file=label)
                 return
             raise ResourceError(
-                f"resource file {label!r} cannot be read: {exc.message}",
+                f"resource file {as_written(label)} cannot be read: {exc.message}",
                 code="RES009",
                 file=label,
                 line=exc.line,

@@ -1,0 +1,112 @@
+"""Diagnostics as a reader sees them on real files: the text of a path as written, one finding
+per fact, mesh findings at the attribute (and number) at fault, every unresolved StaticResource,
+and ``info`` counting what ``validate`` lists. Each behaviour has a small self-contained scene;
+the corpus tests check the same on the real files (skipped in a bare clone)."""
+
+from __future__ import annotations
+
+from conftest import CORPUS, needs_corpus
+from test_cli_subprocess import xaml3d
+
+NS = (
+    'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+    'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+)
+
+
+def _corpus(prefix: str):
+    [path] = CORPUS.glob(f"{prefix}_*.xaml")
+    return path
+
+
+def _rows(out: bytes, code: str | None = None) -> list[tuple]:
+    """(line, column, severity, code, message) of each printed finding."""
+    rows = []
+    for text in out.decode().splitlines():
+        where, severity, c, message = text.split(" ", 3)
+        _, line, column, _ = where.rsplit(":", 3)
+        if code is None or c == code:
+            rows.append((int(line), int(column), severity, c, message))
+    return rows
+
+
+# --------------------------------------------------------------------------- paths as written
+
+IMAGE_SCENE = f"""<Viewport3D {NS} Width="40" Height="30">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>
+  <ModelVisual3D>
+    <ModelVisual3D.Content>
+      <GeometryModel3D>
+        <GeometryModel3D.Geometry>
+          <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2"/>
+        </GeometryModel3D.Geometry>
+        <GeometryModel3D.Material>
+          <EmissiveMaterial><EmissiveMaterial.Brush>
+            <ImageBrush ImageSource="images\\round.png"/>
+          </EmissiveMaterial.Brush></EmissiveMaterial>
+        </GeometryModel3D.Material>
+      </GeometryModel3D>
+    </ModelVisual3D.Content>
+  </ModelVisual3D>
+</Viewport3D>
+"""
+
+
+def test_an_image_path_is_printed_as_written(tmp_path):
+    (tmp_path / "s.xaml").write_text(IMAGE_SCENE)
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    [(line, column, _, _, message)] = _rows(p.stdout, "BRU002")
+    assert (line, column) == (11, 25)
+    assert message.startswith("image 'images\\round.png' not found (")
+
+
+@needs_corpus
+def test_corpus_image_paths_keep_one_backslash():
+    p = xaml3d("validate", _corpus("006"), "-r", _corpus("008"))
+    messages = [row[4] for row in _rows(p.stdout, "BRU002")]
+    assert len(messages) == 6
+    assert messages[0].startswith("image 'sample_images\\leaves_closeup.png' not found")
+    assert not any("\\\\" in m for m in messages)
+
+
+# --------------------------------------------------------------------------- one finding per fact
+
+NO_MATERIAL = f"""<Viewport3D {NS} Width="40" Height="30">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>
+  <ModelVisual3D>
+    <ModelVisual3D.Content>
+      <Model3DGroup>
+        <AmbientLight/>
+        <GeometryModel3D x:Name="bare">
+          <GeometryModel3D.Geometry>
+            <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2"/>
+          </GeometryModel3D.Geometry>
+        </GeometryModel3D>
+      </Model3DGroup>
+    </ModelVisual3D.Content>
+  </ModelVisual3D>
+</Viewport3D>
+"""
+
+
+def test_a_model_without_material_is_one_warning(tmp_path):
+    (tmp_path / "s.xaml").write_text(NO_MATERIAL)
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    at = [row for row in _rows(p.stdout) if row[:2] == (7, 9)]
+    assert at == [
+        (7, 9, "warning", "CHK005", "model 'bare' has neither Material nor BackMaterial: "
+         "draws nothing"),
+    ]  # fmt: skip
+
+
+@needs_corpus
+def test_corpus_003_models_without_material_once_each():
+    p = xaml3d("validate", _corpus("003"))
+    rows = _rows(p.stdout)
+    assert not [r for r in rows if r[3] == "SCN011"]
+    assert [r[:4] for r in rows if r[3] == "CHK005"] == [
+        (168, 41, "warning", "CHK005"),
+        (191, 41, "warning", "CHK005"),
+        (235, 41, "warning", "CHK005"),
+        (256, 41, "warning", "CHK005"),
+    ]
