@@ -5,6 +5,9 @@ the corpus tests check the same on the real files (skipped in a bare clone)."""
 
 from __future__ import annotations
 
+import json
+
+import pytest
 from conftest import CORPUS, needs_corpus
 from test_cli_subprocess import xaml3d
 
@@ -110,3 +113,68 @@ def test_corpus_003_models_without_material_once_each():
         (235, 41, "warning", "CHK005"),
         (256, 41, "warning", "CHK005"),
     ]
+
+
+# --------------------------------------------------------------------------- info counts = validate
+
+# no light over a diffuse material (CHK002), a model without material (CHK005), an unused
+# storyboard (ANIM007), a code-behind handler (XAML008, info)
+COUNTED = f"""<Viewport3D {NS} Width="40" Height="30" Loaded="OnLoaded">
+  <Viewport3D.Resources>
+    <Storyboard x:Key="idle">
+      <DoubleAnimation Storyboard.TargetName="cam" Storyboard.TargetProperty="FieldOfView"
+                       To="60" Duration="0:0:1"/>
+    </Storyboard>
+  </Viewport3D.Resources>
+  <Viewport3D.Camera><PerspectiveCamera x:Name="cam" Position="0,0,5"/></Viewport3D.Camera>
+  <ModelVisual3D>
+    <ModelVisual3D.Content>
+      <Model3DGroup>
+        <GeometryModel3D Material="{{x:Null}}">
+          <GeometryModel3D.Geometry>
+            <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0"/>
+          </GeometryModel3D.Geometry>
+        </GeometryModel3D>
+        <GeometryModel3D>
+          <GeometryModel3D.Geometry>
+            <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0"/>
+          </GeometryModel3D.Geometry>
+          <GeometryModel3D.Material><DiffuseMaterial Brush="Red"/></GeometryModel3D.Material>
+        </GeometryModel3D>
+      </Model3DGroup>
+    </ModelVisual3D.Content>
+  </ModelVisual3D>
+</Viewport3D>
+"""
+
+
+def _validate_counts(*args, cwd=None) -> dict:
+    p = xaml3d("validate", "--format", "json", *args, cwd=cwd)
+    found = json.loads(p.stdout)
+    return {s: sum(d["severity"] == s for d in found) for s in ("error", "warning", "info")}
+
+
+def _info_counts(*args, cwd=None) -> dict:
+    p = xaml3d("info", "--json", *args, cwd=cwd)
+    assert p.returncode == 0, p.stderr
+    return json.loads(p.stdout)["diagnostics"]
+
+
+def test_info_counts_what_validate_lists(tmp_path):
+    (tmp_path / "s.xaml").write_text(COUNTED)
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    assert {r[3] for r in _rows(p.stdout) if r[2] == "warning"} == {"ANIM007", "CHK002", "CHK005"}
+    counts = _validate_counts("s.xaml", cwd=tmp_path)
+    assert counts["warning"] == 3 and counts["info"] >= 1
+    assert _info_counts("s.xaml", cwd=tmp_path) == counts
+    text = xaml3d("info", "s.xaml", cwd=tmp_path).stdout.decode()
+    assert f"diagnostics: 0 error(s), 3 warning(s), {counts['info']} info(s)" in text
+
+
+@needs_corpus
+@pytest.mark.parametrize("prefix", ["003", "004", "059", "060"])
+def test_corpus_info_counts_what_validate_lists(prefix):
+    path = _corpus(prefix)
+    counts = _validate_counts(path)
+    assert counts["warning"] == {"003": 5, "004": 1, "059": 2, "060": 2}[prefix]
+    assert _info_counts(path) == counts
