@@ -178,3 +178,100 @@ def test_corpus_info_counts_what_validate_lists(prefix):
     counts = _validate_counts(path)
     assert counts["warning"] == {"003": 5, "004": 1, "059": 2, "060": 2}[prefix]
     assert _info_counts(path) == counts
+
+
+# --------------------------------------------------------------------------- mesh findings
+
+
+def _mesh_scene(mesh: str, resources: str = "") -> str:
+    return f"""<Viewport3D {NS} Width="40" Height="30">{resources}
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>
+  <ModelVisual3D>
+    <ModelVisual3D.Content>
+      <Model3DGroup>
+        <AmbientLight/>
+        <GeometryModel3D Material="{{StaticResource red}}">
+          <GeometryModel3D.Geometry>{mesh}
+          </GeometryModel3D.Geometry>
+        </GeometryModel3D>
+      </Model3DGroup>
+    </ModelVisual3D.Content>
+  </ModelVisual3D>
+</Viewport3D>
+"""
+
+
+RED = '\n  <Viewport3D.Resources><EmissiveMaterial x:Key="red" Brush="Red"/></Viewport3D.Resources>'
+# the element on line 10 at column 13, its collections on the lines after it
+MESH = """
+            <MeshGeometry3D
+    Positions="0,0,0 1,0,0 1,1,0  0,0,0 1,1,0 1,1,0"
+      TriangleIndices="0 1 2  3 4 5  0 9 1"
+    Normals="0,0,1"
+        TextureCoordinates="0,0 1,0 1,1 0,0 1,1 1,1 9,9"/>"""
+
+
+def test_mesh_findings_point_at_the_number_at_fault(tmp_path):
+    (tmp_path / "s.xaml").write_text(_mesh_scene(MESH, RED))
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    mesh = [r for r in _rows(p.stdout) if r[3].startswith("MSH")]
+    assert mesh == [
+        # triangle #1 (3 4 5) has no area: its first index (the value starts at column 24)
+        (12, 31, "info", "MSH005", "1 of 2 triangles are degenerate (zero area), the first is "
+         "triangle #1"),
+        # the 8th index, 9
+        (12, 40, "warning", "MSH001", "TriangleIndices[7] = 9 is out of range (0..5 for 6 "
+         "positions): WPF draws only the 2 triangle(s) before it, 3 of 9 indices ignored"),
+        # fewer normals than positions: the collection
+        (13, 5, "warning", "MSH003", "1 Normals for 6 Positions: the rest are generated"),
+        # one texture coordinate too many: the first one ignored, 9,9
+        (14, 53, "warning", "MSH004", "7 TextureCoordinates for 6 Positions: the last 1 are "
+         "ignored"),
+    ]  # fmt: skip
+
+
+def test_mesh_findings_without_indices_point_at_positions(tmp_path):
+    mesh = """
+            <MeshGeometry3D
+      Positions="0,0,0 1,0,0 1,1,0  2,2,2 2,2,2 3,3,3  0,0,1"/>"""
+    (tmp_path / "s.xaml").write_text(_mesh_scene(mesh, RED))
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    mesh_rows = [r[:4] for r in _rows(p.stdout) if r[3].startswith("MSH")]
+    # the value starts at column 18
+    assert mesh_rows == [
+        (11, 37, "info", "MSH005"),  # triangle #1 (points 3, 4, 5): its first point's X
+        (11, 56, "warning", "MSH002"),  # the 7th point, left over: its X
+    ]
+
+
+def test_mesh_in_a_resource_file_is_located_in_that_file(tmp_path):
+    (tmp_path / "res.xaml").write_text(
+        f"""<ResourceDictionary {NS}>
+  <EmissiveMaterial x:Key="red" Brush="Red"/>
+    <MeshGeometry3D x:Key="tri"
+        Positions="0,0,0 1,0,0 1,1,0"
+        TriangleIndices="0 1 2 0 1 3"/>
+</ResourceDictionary>
+"""
+    )
+    mesh = '\n            <StaticResource ResourceKey="tri"/>'
+    (tmp_path / "s.xaml").write_text(_mesh_scene(mesh))
+    p = xaml3d("validate", "s.xaml", "-r", "res.xaml", cwd=tmp_path)
+    [msh] = [line for line in p.stdout.decode().splitlines() if " MSH" in line]
+    assert msh.startswith("res.xaml:5:36: warning MSH001 TriangleIndices[5] = 3 is out of range")
+
+
+@needs_corpus
+def test_corpus_mesh_findings_at_the_number():
+    p = xaml3d("validate", _corpus("006"), "-r", _corpus("008"))
+    assert f"{_corpus('008')}:504:36: warning MSH001 TriangleIndices[6] = 6" in p.stdout.decode()
+    p = xaml3d("validate", _corpus("012"))
+    assert [r[:4] for r in _rows(p.stdout) if r[3].startswith("MSH")] == [
+        (123, 63, "warning", "MSH001"),  # "11", the 7th index
+        (124, 85, "warning", "MSH004"),  # the 7th texture coordinate, the first ignored
+    ]
+    p = xaml3d("validate", _corpus("013"))
+    # triangle #1 of TriangleIndices="0 1 2 3 4 5 ...", on the line after the element's
+    assert [r[:4] for r in _rows(p.stdout) if r[3].startswith("MSH")] == [
+        (51, 1842, "info", "MSH005")
+    ]

@@ -74,10 +74,10 @@ EXPECTED = [
     (30, 48, "error", "VAL001", "MeshGeometry3D.Positions: Point3DCollection: bad number 'nan' "
      "(token 5, character 11)"),
     (33, 24, "error", "RES001", "StaticResource 'Missing' not found"),
-    (45, 67, "warning", "MSH002", "TriangleIndices has 4 entries, not a multiple of 3; the last "
+    (45, 90, "warning", "MSH002", "TriangleIndices has 4 entries, not a multiple of 3; the last "
      "1 are ignored"),
     (48, 7, "warning", "CHK001", "model #7 has no triangles (0 positions): draws nothing"),
-    (50, 11, "warning", "MSH006", "MeshGeometry3D has no Positions: nothing is drawn"),
+    (50, 27, "warning", "MSH006", "MeshGeometry3D has no Positions: nothing is drawn"),
     (53, 7, "warning", "CHK005", "model #8 has neither Material nor BackMaterial: draws nothing"),
 ]  # fmt: skip
 
