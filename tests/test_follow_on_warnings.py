@@ -61,19 +61,21 @@ SCENE = f"""<Viewport3D {NS} Width="40" Height="30">
 </Viewport3D>
 """
 
+# no application resources are read: a missing key may be the App.xaml's
+APP_HINT = " (if the application's App.xaml defines it, give it with -r App.xaml)"
 # (line, column, severity, code, message) as validate prints them; a bad number's column is
 # that of its offending character in the value
 EXPECTED = [
     (4, 34, "error", "VAL004", "DiffuseMaterial.Brush: Color: 'Oragne' is not a colour "
      "('#AARRGGBB', 'sc#a,r,g,b' or one of WPF's names) (did you mean Orange?)"),
-    (5, 35, "error", "RES001", "StaticResource 'Nope' not found"),
+    (5, 35, "error", "RES001", f"StaticResource 'Nope' not found{APP_HINT}"),
     (6, 5, "warning", "CHK004", "DiffuseMaterial in model #5's Material has no Brush: it draws "
      "nothing (Color only multiplies the brush)"),
     (25, 94, "error", "VAL001", "MeshGeometry3D.TriangleIndices: Int32Collection: bad integer "
      "'x' (token 6, character 11)"),
     (30, 48, "error", "VAL001", "MeshGeometry3D.Positions: Point3DCollection: bad number 'nan' "
      "(token 5, character 11)"),
-    (33, 24, "error", "RES001", "StaticResource 'Missing' not found"),
+    (33, 24, "error", "RES001", f"StaticResource 'Missing' not found{APP_HINT}"),
     (45, 90, "warning", "MSH002", "TriangleIndices has 4 entries, not a multiple of 3; the last "
      "1 are ignored"),
     (48, 7, "warning", "CHK001", "model #7 has no triangles (0 positions): draws nothing"),

@@ -345,6 +345,8 @@ def build_scene(
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
 
+    if frame is None:
+        resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
     diags = sorted(ctx.diagnostics, key=lambda g: (g.file or "", g.line or 0, g.column or 0))
     return Scene(
         file=doc.file,

@@ -16,12 +16,20 @@ them: a reference inside an App.xaml entry resolves from App.xaml's tree.
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from lxml import etree
 
 from xaml3d.errors import ResourceError, XamlError
-from xaml3d.xaml.context import ReadContext, as_written, doc_position, qname, x_attr
+from xaml3d.xaml.context import (
+    ReadContext,
+    as_written,
+    doc_position,
+    markup_key,
+    qname,
+    x_attr,
+)
 from xaml3d.xaml.parser import ParsedDocument, parse_document
 
 APP_FILE_NAMES = ("app.xaml",)
@@ -276,8 +284,61 @@ class Resources:
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
+            msg = f"StaticResource {key!r} not found{self._app_hint()}"
+            self.ctx.diag("RES001", msg, from_el, attr=attr)
         return None
+
+    def _app_hint(self) -> str:
+        """For a key no dictionary defines: the application's resources may (an App.xaml is
+        read only when found beside the scene or above it, or given with -r)."""
+        if self.app:
+            return ""
+        return " (if the application's App.xaml defines it, give it with -r App.xaml)"
+
+    # ----------------------------------------------------------------- every reference
+    def report_unresolved(self, root: etree._Element) -> None:
+        """Look up every ``{StaticResource}`` of the document under ``root`` (attributes, the
+        extensions nested in others, ``<StaticResource ResourceKey=.../>`` elements), wherever
+        it is: 2D elements, styles, triggers, templates in use... WPF's loader resolves each one
+        and fails on a key it cannot find, even where xaml3d reads nothing. A missing key is
+        reported (RES001, RES002) once, at its attribute: references the reader already looked
+        up are not looked up again. The content of resource dictionaries is skipped: an entry
+        is built (and its references resolved) where it is used, as WPF defers it."""
+        done = {
+            (d.file, d.line, d.column)
+            for d in self.ctx.diagnostics
+            if d.code in ("RES001", "RES002", "RES003", "RES008")
+        }
+        file = self.ctx.file_of(root)
+        stack = [root]
+        while stack:
+            el = stack.pop()
+            ns, local = qname(el.tag)
+            if local.endswith(".Resources") or local == "ResourceDictionary":
+                continue  # resource entries: resolved when used
+            stack.extend(k for k in reversed(el) if isinstance(k.tag, str))
+            if local in ("StaticResource", "StaticResourceExtension"):
+                key = el.get("ResourceKey")
+                if key is not None and (file, *self.ctx.locate(el, "ResourceKey")) not in done:
+                    self.lookup(key, el, attr="ResourceKey")
+                continue
+            for attr, value in el.attrib.items():
+                if not _MARKUP_START.match(value) or "StaticResource" not in value:
+                    continue
+                for key in static_resource_keys(value):
+                    if (file, *self.ctx.locate(el, attr)) not in done:
+                        self.lookup(key, el, attr=attr)
+
+
+_MARKUP_START = re.compile(r"\s*\{(?!\})")  # a markup extension ("{}" escapes a brace)
+# a StaticResource extension (prefixed or not) with no other extension inside it
+_STATIC = re.compile(r"\{\s*(?:[\w.]+:)?StaticResource(?:Extension)?(?=[\s}])([^{}]*)\}")
+
+
+def static_resource_keys(value: str) -> list[str]:
+    """The keys of the ``{StaticResource key}`` extensions in an attribute's value, also those
+    nested in another extension (``{Binding Source={StaticResource key}}``)."""
+    return [markup_key(m.group(1)) for m in _STATIC.finditer(value)]
 
 
 def _found_where(app: Path, scene: Path) -> str:
