@@ -383,3 +383,32 @@ def test_corpus_unresolved_static_resources():
     for prefix in ("009", "010"):
         p = xaml3d("validate", _corpus(prefix), "-r", _corpus("008"))
         assert _res_rows(p.stdout) == [] and p.returncode == 0
+
+
+# --------------------------------------------------------------------------- conformance status
+
+
+def test_conformance_status_is_the_command_lines_verdict(tmp_path):
+    import importlib.util
+
+    from conftest import ROOT
+
+    from xaml3d.corpus import run_file
+
+    spec = importlib.util.spec_from_file_location("conformance", ROOT / "tools" / "conformance.py")
+    conformance = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(conformance)
+
+    (tmp_path / "bad.xaml").write_text(_mesh_scene(MESH))  # Material: StaticResource red, undefined
+    (tmp_path / "ok.xaml").write_text(_mesh_scene(MESH, RED))
+    bad = run_file(tmp_path / "bad.xaml", size=(40, 30), ssaa=1)
+    ok = run_file(tmp_path / "ok.xaml", size=(40, 30), ssaa=1)
+    assert xaml3d("render", "bad.xaml", "-o", "b.png", cwd=tmp_path).returncode == 1
+    assert bad.status == "refused (errors)"
+    assert [m.error for m in bad.modes] == [None, None, None]  # drawn as --lenient draws it
+    assert ok.status == "rendered with warnings"  # the MSH warnings
+    page = conformance.report([bad, ok], tmp_path, {})
+    assert (
+        "| bad.xaml | refused (errors) |" in page and "| ok.xaml | rendered with warnings |" in page
+    )
+    assert "| refused (errors) | 1 |" in page
