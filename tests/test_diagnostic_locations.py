@@ -412,3 +412,19 @@ def test_conformance_status_is_the_command_lines_verdict(tmp_path):
         "| bad.xaml | refused (errors) |" in page and "| ok.xaml | rendered with warnings |" in page
     )
     assert "| refused (errors) | 1 |" in page
+
+
+def test_ignorable_references_are_not_looked_up(tmp_path):
+    scene = f"""<Window {NS} xmlns:d="http://schemas.microsoft.com/expression/blend/2008"
+    xmlns:mc="http://schemas.openxmlformats.org/markup-compatibility/2006" mc:Ignorable="d"
+    Width="300" Height="200">
+  <Grid d:Style="{{StaticResource DesignOnly}}">
+    <d:Thing Tag="{{StaticResource AlsoDesignOnly}}"/>
+    <Rectangle Fill="{{StaticResource Real}}"/>
+    <Viewport3D><Viewport3D.Camera><PerspectiveCamera/></Viewport3D.Camera></Viewport3D>
+  </Grid>
+</Window>
+"""
+    (tmp_path / "s.xaml").write_text(scene)
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    assert [r[:4] for r in _res_rows(p.stdout)] == [(6, 16, "error", "RES001")]

@@ -26,6 +26,8 @@ from xaml3d.xaml.context import (
     ReadContext,
     as_written,
     doc_position,
+    ignorable_namespaces,
+    is_presentation,
     markup_key,
     qname,
     x_attr,
@@ -83,6 +85,8 @@ class Resources:
         self._files: dict[Path, Dictionary | None] = {}
         self._loading: set[Path] = set()
         self.app: list[tuple[ParsedDocument, Dictionary]] = []
+        # the references looked up so far: id(element) -> (element, its attributes)
+        self._looked: dict[int, tuple[etree._Element, set[str | None]]] = {}
 
     # ----------------------------------------------------------------- dictionaries
     def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
@@ -251,6 +255,10 @@ class Resources:
     ) -> etree._Element | None:
         """The entry for ``key`` seen from ``from_el``; reports RES001/RES002 when missing (at
         ``from_el``'s attribute ``attr`` when the reference is an attribute)."""
+        seen = self._looked.get(id(from_el))
+        if seen is None or seen[0] is not from_el:
+            seen = self._looked[id(from_el)] = (from_el, set())
+        seen[1].add(attr)
         here = doc_position(from_el)
         later = None
         node = from_el
@@ -304,29 +312,35 @@ class Resources:
         reported (RES001, RES002) once, at its attribute: references the reader already looked
         up are not looked up again. The content of resource dictionaries is skipped: an entry
         is built (and its references resolved) where it is used, as WPF defers it."""
-        done = {
-            (d.file, d.line, d.column)
-            for d in self.ctx.diagnostics
-            if d.code in ("RES001", "RES002", "RES003", "RES008")
-        }
-        file = self.ctx.file_of(root)
+
+        def looked_up(el, attr) -> bool:
+            seen = self._looked.get(id(el))
+            return seen is not None and seen[0] is el and attr in seen[1]
+
         stack = [root]
         while stack:
             el = stack.pop()
             ns, local = qname(el.tag)
             if local.endswith(".Resources") or local == "ResourceDictionary":
                 continue  # resource entries: resolved when used
+            if ns is not None and not is_presentation(ns) and ns in ignorable_namespaces(el):
+                continue  # an element of an mc:Ignorable namespace: WPF skips it
             stack.extend(k for k in reversed(el) if isinstance(k.tag, str))
             if local in ("StaticResource", "StaticResourceExtension"):
                 key = el.get("ResourceKey")
-                if key is not None and (file, *self.ctx.locate(el, "ResourceKey")) not in done:
+                if key is not None and not looked_up(el, "ResourceKey"):
                     self.lookup(key, el, attr="ResourceKey")
                 continue
+            ignorable = None
             for attr, value in el.attrib.items():
                 if not _MARKUP_START.match(value) or "StaticResource" not in value:
                     continue
+                if ignorable is None:
+                    ignorable = ignorable_namespaces(el)
+                if qname(attr)[0] in ignorable:
+                    continue  # d:Style="{StaticResource ...}" (mc:Ignorable): WPF skips it
                 for key in static_resource_keys(value):
-                    if (file, *self.ctx.locate(el, attr)) not in done:
+                    if not looked_up(el, attr):
                         self.lookup(key, el, attr=attr)
 
 
