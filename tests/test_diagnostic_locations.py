@@ -428,3 +428,15 @@ def test_ignorable_references_are_not_looked_up(tmp_path):
     (tmp_path / "s.xaml").write_text(scene)
     p = xaml3d("validate", "s.xaml", cwd=tmp_path)
     assert [r[:4] for r in _res_rows(p.stdout)] == [(6, 16, "error", "RES001")]
+
+
+def test_a_collection_written_as_a_property_element_is_pointed_at(tmp_path):
+    mesh = """
+            <MeshGeometry3D Positions="0,0,0 1,0,0 1,1,0">
+              <MeshGeometry3D.TriangleIndices>0 1 2 0 1 5</MeshGeometry3D.TriangleIndices>
+            </MeshGeometry3D>"""
+    (tmp_path / "s.xaml").write_text(_mesh_scene(mesh, RED))
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    assert [r[:4] for r in _rows(p.stdout) if r[3].startswith("MSH")] == [
+        (11, 15, "warning", "MSH001")
+    ]

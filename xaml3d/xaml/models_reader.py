@@ -153,12 +153,13 @@ _NUMBER = re.compile(r"[^\s,]+")
 def _mesh_locator(r, el, p):
     """``Locate`` for build_mesh: a collection's attribute, or the number ``item`` (counted
     from 0 over the value) in it when the value is written there as text; the element when the
-    collection is not an attribute (property element, or absent)."""
+    collection is not an attribute: its property element (``<MeshGeometry3D.Positions>``), or
+    the mesh when it is absent."""
 
     def locate(name: str, item: int | None):
         key = p.attr_keys.get(name)
         if key is None:
-            return r.ctx.locate(el)
+            return r.ctx.locate(p.line_of(name))
         index = None
         value = el.get(key) or ""
         if item is not None and not value.lstrip().startswith("{"):
