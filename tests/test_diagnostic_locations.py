@@ -1,6 +1,7 @@
 """Diagnostics as a reader sees them on real files: the text of a path as written, one finding
 per fact, mesh findings at the attribute (and number) at fault, every unresolved StaticResource,
-and ``info`` counting what ``validate`` lists. Each behaviour has a small self-contained scene;
+``info`` counting what ``validate`` lists, and the conformance status following the command
+line's verdict. Each behaviour has a small self-contained scene;
 the corpus tests check the same on the real files (skipped in a bare clone)."""
 
 from __future__ import annotations
