@@ -39,11 +39,12 @@ LAY001 = (
     "gives each child its desired height, and a Viewport3D without Height wants 0): WPF draws "
     "nothing"
 )
-# the mesh's own warnings come after the viewport's line: the order is the line order
+# the mesh's own warnings come after the viewport's line: the order is the line order; both
+# point at the index at fault, the 4th (the first ignored, and the first out of range)
 MESH = [
-    "s.xaml:12:64: warning MSH002 TriangleIndices has 4 entries, not a multiple of 3; the last 1 "
+    "s.xaml:12:87: warning MSH002 TriangleIndices has 4 entries, not a multiple of 3; the last 1 "
     "are ignored",
-    "s.xaml:12:64: warning MSH001 TriangleIndices[3] = 3 is out of range (0..2 for 3 positions): "
+    "s.xaml:12:87: warning MSH001 TriangleIndices[3] = 3 is out of range (0..2 for 3 positions): "
     "WPF draws only the 1 triangle(s) before it, 1 of 4 indices ignored",
 ]
 RND008 = (

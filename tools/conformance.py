@@ -2,7 +2,8 @@
 
     python tools/conformance.py [CORPUS_DIR] [--out docs]
 
-Writes ``docs/conformance.md`` (per file: status, warnings, refusal, triangles, times, running
+Writes ``docs/conformance.md`` (per file: status -- the command line's verdict, "refused
+(errors)" for a file whose findings hold an error --, warnings, refusal, triangles, times, running
 animations), ``docs/conformance-sheet.png`` (a contact sheet of every shaded render) and, for
 every file that animates, ``docs/conformance-anim/<file>.gif`` (one cycle of what runs at load;
 a storyboard that only code-behind begins is begun by name). The default corpus is
@@ -107,6 +108,12 @@ def report(results, corpus: Path, anims: dict) -> str:
         "storyboard begun by name (`--storyboard`). Each animated file has a GIF in "
         "`conformance-anim/` (one cycle, at most 4 s, 160 px wide, 12 frames per second, on "
         "the contact sheet's blue-grey).",
+        "",
+        "The status is the command line's verdict: `rendered with warnings` when `xaml3d "
+        "validate` lists warnings (the diagnostics column counts its warnings and errors), "
+        "`refused (errors)` when it lists an error, so that `xaml3d render` refuses the file "
+        "(exit 1; the timings and the picture are those of `render --lenient`), `refused` "
+        "when loading or rendering stops, `no viewport` for resource dictionaries.",
         "",
         "| status | files |",
         "|---|---|",

@@ -1,5 +1,7 @@
 """``xaml3d info``: what a scene holds -- viewports (size and where it came from), cameras,
-models, triangles, lights, world bounds, resource files read, and a diagnostics summary."""
+models, triangles, lights, world bounds, resource files read, and a diagnostics summary: the
+count per severity of the findings ``xaml3d validate`` lists (``xaml3d.findings``: the
+reader's, the camera checks' and the scene checks' of WPF's first frame)."""
 
 from __future__ import annotations
 
@@ -16,12 +18,24 @@ from xaml3d.cli_common import (
     resources_option,
     window_size_option,
 )
-from xaml3d.errors import SEVERITIES
+from xaml3d.errors import SEVERITIES, Diagnostic
 from xaml3d.scene.types import Scene
 
 
-def scene_info(scene: Scene, name: str | None = None) -> dict:
-    """A JSON-ready summary of ``scene``."""
+def findings_of(scene: Scene, name: str | None = None) -> list[Diagnostic]:
+    """The findings ``xaml3d validate`` lists for ``scene`` (at each viewport's own size):
+    those of WPF's first frame, the storyboards a Loaded trigger begins applied at t = 0."""
+    from xaml3d.findings import scene_findings
+    from xaml3d.render.api import scene_at
+
+    return scene_findings(scene_at(scene, 0.0), file=name)
+
+
+def scene_info(
+    scene: Scene, name: str | None = None, findings: list[Diagnostic] | None = None
+) -> dict:
+    """A JSON-ready summary of ``scene``; its diagnostics counts are those of ``findings``
+    (default: ``findings_of(scene)``, the list ``xaml3d validate`` prints)."""
     viewports = []
     for vp in scene.viewports:
         b = vp.bounds()
@@ -44,7 +58,9 @@ def scene_info(scene: Scene, name: str | None = None) -> dict:
                 "line": vp.line,
             }
         )
-    counts = Counter(d.severity for d in scene.diagnostics)
+    if findings is None:
+        findings = findings_of(scene, name)
+    counts = Counter(d.severity for d in findings)
     return {
         **_head(scene, name, viewports),
         "animations": animation_info(scene),
@@ -173,7 +189,8 @@ def info_command(scene, resources, window_size, as_json) -> None:
     name = display_name(scene)
     with exit_on_input_error(name):
         sc = load_scene(scene, tuple(resources), window_size)
-    info = scene_info(sc, name)
+        findings = findings_of(sc, name)
+    info = scene_info(sc, name, findings)
     if as_json:
         click.echo(json.dumps(info, indent=2))
     else:

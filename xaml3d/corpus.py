@@ -2,8 +2,12 @@
 
 Renders every file (with the companion resource dictionaries it needs) in every mode and
 records, per file, whether it rendered, rendered with warnings, or was refused with which
-diagnostic, plus triangle counts and timings. Used by ``tools/conformance.py`` (which writes
-``docs/conformance.md`` and a contact sheet) and by the corpus robustness test.
+diagnostic, plus triangle counts and timings. The verdict is the command line's: the findings
+are those ``xaml3d validate`` lists (``xaml3d.findings``), and a file whose findings hold an
+error is "refused (errors)", as ``xaml3d render`` refuses it (exit 1); it is still drawn, as
+``render --lenient`` draws it, for the timings and the contact sheet. Used by
+``tools/conformance.py`` (which writes ``docs/conformance.md`` and a contact sheet) and by the
+corpus robustness test.
 """
 
 from __future__ import annotations
@@ -43,7 +47,10 @@ class ModeResult:
 @dataclass
 class FileResult:
     name: str
-    status: str  # "rendered" | "rendered with warnings" | "refused" | "no viewport"
+    # "rendered" | "rendered with warnings" | "refused (errors)" (findings with an error: the
+    # command line refuses it, drawn here as --lenient draws it) | "refused" (the load or a
+    # render raised) | "no viewport"
+    status: str
     viewports: int = 0
     triangles: int = 0
     lights: int = 0
@@ -74,7 +81,8 @@ def run_file(
 ) -> FileResult:
     """Load and render one file in every mode (and, with ``window``, as ``render --window``
     when its root is a Window, Page or UserControl); never raises for a XamlError."""
-    from xaml3d.render.api import render_arrays
+    from xaml3d.findings import has_errors, scene_findings
+    from xaml3d.render.api import render_arrays, scene_at
     from xaml3d.xaml.loader import load
 
     result = FileResult(name=path.name, status="refused")
@@ -87,7 +95,13 @@ def run_file(
         return result
     result.load_seconds = time.perf_counter() - t0
     result.viewports = len(scene.viewports)
-    result.warnings = [d for d in scene.diagnostics if d.severity in (WARNING, ERROR)]
+    width, height = size if size else (None, None)
+
+    def size_of(vp):
+        return (float(width), float(height)) if size else (vp.width, vp.height)
+
+    findings = scene_findings(scene_at(scene, 0.0), size_of)  # what validate and render list
+    result.warnings = [d for d in findings if d.severity in (WARNING, ERROR)]
     if not scene.viewports:
         result.status = "no viewport"
         return result
@@ -97,7 +111,6 @@ def run_file(
     vp = scene.viewports[0]
     result.triangles = vp.triangle_count
     result.lights = len(vp.lights)
-    width, height = size if size else (None, None)
     refused = False
     for mode in modes:
         t1 = time.perf_counter()
@@ -115,7 +128,9 @@ def run_file(
         for d in rendering.diagnostics:
             if d.severity in (WARNING, ERROR) and d not in result.warnings:
                 result.warnings.append(d)
-    if refused:
+    if has_errors(findings):
+        result.status = "refused (errors)"
+    elif refused:
         result.status = "refused"
     else:
         result.status = "rendered with warnings" if result.warnings else "rendered"

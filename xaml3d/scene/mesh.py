@@ -17,6 +17,8 @@ Everything is vectorized: a million triangles take one pass of numpy per step.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from xaml3d.errors import INFO, WARNING, Diagnostic
@@ -107,7 +109,13 @@ def vertex_normals(positions, indices) -> np.ndarray:
     return _accumulate(face_normals(p, tri), tri, p.shape[0])
 
 
-def _triangles(n: int, idx: np.ndarray | None, line: int | None, out: list[Diagnostic]):
+# Where a mesh finding points: (line, column) of item ``item`` (a number's index, counted from
+# 0 over the whole value) of collection ``name`` ("Positions", "TriangleIndices", "Normals",
+# "TextureCoordinates"), or of the collection itself when ``item`` is None; None when unknown.
+Locate = Callable[[str, "int | None"], "tuple[int | None, int | None] | None"]
+
+
+def _triangles(n: int, idx: np.ndarray | None, line: int | None, out: list[Diagnostic], locate):
     """The (T, 3) triangles WPF draws from ``idx`` over ``n`` positions."""
     if idx is None or idx.size == 0:
         t = n // 3
@@ -118,6 +126,8 @@ def _triangles(n: int, idx: np.ndarray | None, line: int | None, out: list[Diagn
                     f"Positions has {n} points, not a multiple of 3; with no TriangleIndices "
                     f"the last {n % 3} are not part of any triangle",
                     line,
+                    locate,
+                    ("Positions", 3 * (n - n % 3)),  # the first leftover point
                 )
             )
         return np.arange(3 * t, dtype=np.int64).reshape(t, 3)
@@ -129,6 +139,8 @@ def _triangles(n: int, idx: np.ndarray | None, line: int | None, out: list[Diagn
                 f"TriangleIndices has {total} entries, not a multiple of 3; "
                 f"the last {total % 3} are ignored",
                 line,
+                locate,
+                ("TriangleIndices", total - total % 3),  # the first one ignored
             )
         )
     bad = (idx < 0) | (idx >= n)
@@ -143,20 +155,38 @@ def _triangles(n: int, idx: np.ndarray | None, line: int | None, out: list[Diagn
                 f"{n} positions): WPF draws only the {used // 3} triangle(s) before it, "
                 f"{total - used} of {total} indices ignored",
                 line,
+                locate,
+                ("TriangleIndices", keep),
             )
         )
     keep -= keep % 3
     return idx[:keep].reshape(-1, 3)
 
 
-def _diag(code: str, message: str, line: int | None) -> Diagnostic:
-    return Diagnostic(code, MESH_CODES[code][0], message, line=line)
+def _diag(
+    code: str,
+    message: str,
+    line: int | None,
+    locate: Locate | None = None,
+    at: tuple[str, int | None] | None = None,
+) -> Diagnostic:
+    """A mesh finding at ``line``, or where ``locate`` finds ``at`` (collection, item)."""
+    column = None
+    if locate is not None and at is not None:
+        found = locate(*at)
+        if found is not None and found[0] is not None:
+            line, column = found
+    return Diagnostic(code, MESH_CODES[code][0], message, line=line, column=column)
 
 
-def _count_mismatch(code: str, what: str, have: int, n: int, fewer: str, line) -> Diagnostic:
-    """A per-vertex collection whose count differs from the Positions count."""
+def _count_mismatch(
+    code: str, what: str, have: int, n: int, fewer: str, line, locate, width: int
+) -> Diagnostic:
+    """A per-vertex collection whose count differs from the Positions count: located at the
+    first item ignored when there are too many, else at the collection."""
     rest = fewer if have < n else f"the last {have - n} are ignored"
-    return _diag(code, f"{have} {what} for {n} Positions: {rest}", line)
+    at = (what, width * n if have > n else None)
+    return _diag(code, f"{have} {what} for {n} Positions: {rest}", line, locate, at)
 
 
 def build_mesh(
@@ -165,18 +195,23 @@ def build_mesh(
     normals=None,
     texcoords=None,
     line: int | None = None,
+    locate: Locate | None = None,
 ) -> tuple[Mesh, list[Diagnostic]]:
     """The ``Mesh`` WPF draws from a MeshGeometry3D's collections, with diagnostics.
 
     ``positions`` (N, 3) or flat, ``indices`` flat or (T, 3) ints, ``normals`` (M, 3),
     ``texcoords`` (K, 2); any may be None. The Mesh keeps all N positions, normals (N, 3)
     and texcoords (N, 2), and only the triangles WPF draws. Arrays are read-only copies.
+    Diagnostics are at ``line``, or where ``locate`` (see ``Locate``) finds the number at
+    fault (an index out of range, the first degenerate triangle, the first extra normal...)
+    or the collection concerned.
     """
     diags: list[Diagnostic] = []
     p = _rows(positions, 3)
     n = p.shape[0]
     if n == 0:
-        diags.append(_diag("MSH006", "MeshGeometry3D has no Positions: nothing is drawn", line))
+        msg = "MeshGeometry3D has no Positions: nothing is drawn"
+        diags.append(_diag("MSH006", msg, line, locate, ("Positions", None)))
         empty = Mesh(
             positions=_frozen(np.zeros((0, 3))),
             indices=_frozen(np.zeros((0, 3)), np.int64),
@@ -187,7 +222,9 @@ def build_mesh(
         return empty, diags
 
     idx = None if indices is None else np.asarray(indices, dtype=np.int64).ravel()
-    tri = _triangles(n, idx, line, diags)
+    tri = _triangles(n, idx, line, diags, locate)
+    implicit = idx is None or idx.size == 0
+    tri_ids = np.arange(tri.shape[0])  # each triangle's number among those given
     finite = np.isfinite(p).all(axis=1)
     if not finite.all():
         # A NaN or infinite vertex has no place on screen (and would poison the scene's bounds
@@ -201,27 +238,39 @@ def build_mesh(
                 f"(the first is #{first}): {int(np.count_nonzero(bad))} triangle(s) using them "
                 "are not drawn",
                 line,
+                locate,
+                ("Positions", 3 * first),
             )
         )
-        tri = tri[~bad]
+        tri, tri_ids = tri[~bad], tri_ids[~bad]
     if tri.shape[0] == 0:
-        diags.append(_diag("MSH006", "MeshGeometry3D has no complete triangle to draw", line))
+        at = ("Positions" if implicit else "TriangleIndices", None)
+        msg = "MeshGeometry3D has no complete triangle to draw"
+        diags.append(_diag("MSH006", msg, line, locate, at))
 
     fn = face_normals(p, tri)
-    degenerate = int(np.count_nonzero(~fn.any(axis=1)))
+    flat = ~fn.any(axis=1)
+    degenerate = int(np.count_nonzero(flat))
     if degenerate:
+        k = int(tri_ids[np.argmax(flat)])  # the first degenerate triangle, as given
+        at = ("Positions", 9 * k) if implicit else ("TriangleIndices", 3 * k)
         diags.append(
             _diag(
                 "MSH005",
-                f"{degenerate} of {tri.shape[0]} triangles are degenerate (zero area)",
+                f"{degenerate} of {tri.shape[0]} triangles are degenerate (zero area), "
+                f"the first is triangle #{k}",
                 line,
+                locate,
+                at,
             )
         )
 
     user_n = _rows(normals, 3)
     m = user_n.shape[0]
     if m and m != n:
-        diags.append(_count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line))
+        diags.append(
+            _count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line, locate, 3)
+        )
     if m >= n:
         nrm = _normalize_rows(user_n[:n])
     else:
@@ -231,9 +280,8 @@ def build_mesh(
     uv = _rows(texcoords, 2)
     k = uv.shape[0]
     if k and k != n:
-        diags.append(
-            _count_mismatch("MSH004", "TextureCoordinates", k, n, "the rest are (0, 0)", line)
-        )
+        fewer = "the rest are (0, 0)"
+        diags.append(_count_mismatch("MSH004", "TextureCoordinates", k, n, fewer, line, locate, 2))
     tex = np.zeros((n, 2))
     tex[: min(k, n)] = uv[:n]
 

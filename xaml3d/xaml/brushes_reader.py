@@ -31,6 +31,7 @@ from xaml3d.scene.types import (
     placeholder_image,
 )
 from xaml3d.xaml import values as V
+from xaml3d.xaml.context import as_written
 from xaml3d.xaml.resources import reduce_uri
 
 _MAPPING = ("RelativeToBoundingBox", "Absolute")
@@ -182,7 +183,8 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
     if rel is None:
         r.ctx.diag(
             "BRU004",
-            f"ImageSource {source!r}: network URIs are never fetched; a grey checker stands in",
+            f"ImageSource {as_written(source)}: network URIs are never fetched; "
+            "a grey checker stands in",
             el,
             attr=attr,
         )
@@ -193,7 +195,8 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
     if not r.ctx.path_allowed(path):
         r.ctx.diag(
             "BRU005",
-            f"ImageSource {source!r} leaves the scene's folder tree; a grey checker stands in",
+            f"ImageSource {as_written(source)} leaves the scene's folder tree; "
+            "a grey checker stands in",
             el,
             attr=attr,
         )
@@ -202,7 +205,7 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
         # Windows file names are case-insensitive: try a case-insensitive match
         alt = _case_insensitive(path)
         if alt is None:
-            msg = f"image {source!r} not found ({path}); a grey checker stands in"
+            msg = f"image {as_written(source)} not found ({path}); a grey checker stands in"
             r.ctx.diag("BRU002", msg, el, attr=attr)
             return str(path), None
         path = alt
@@ -213,7 +216,7 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
         with Image.open(path) as im:
             arr = np.asarray(im.convert("RGBA"), dtype=np.uint8)
     except Exception as exc:  # Pillow raises many kinds for a corrupt or unknown file
-        msg = f"image {source!r} cannot be decoded ({exc}); a grey checker stands in"
+        msg = f"image {as_written(source)} cannot be decoded ({exc}); a grey checker stands in"
         r.ctx.diag("BRU003", msg, el, attr=attr)
         return str(path), None
     return str(path), frozen_array(arr, dtype=np.uint8)

@@ -147,8 +147,7 @@ def _geometry_model(r: Reader, p: Props, parent: np.ndarray, acc: _Acc) -> None:
         return
     mat = p.obj("Material", lambda e: material(r, e), ())
     back = p.obj("BackMaterial", lambda e: material(r, e), ())
-    if not mat and not back and not p.rejected & {"Material", "BackMaterial"}:
-        r.ctx.diag("SCN011", "GeometryModel3D without Material draws nothing", el)
+    # no Material and no BackMaterial: the scene checks' CHK005 says it (one finding per fact)
     world = T.compose(transform_property(r, p), parent)
     name, rejected = element_name(el), frozenset(p.rejected)
     acc.models.append(
@@ -346,6 +345,8 @@ def build_scene(
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
 
+    if frame is None:
+        resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
     diags = sorted(ctx.diagnostics, key=lambda g: (g.file or "", g.line or 0, g.column or 0))
     return Scene(
         file=doc.file,

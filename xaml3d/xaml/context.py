@@ -28,6 +28,12 @@ def severity_of(code: str) -> str:
     return severity(code)
 
 
+def as_written(text: str) -> str:
+    """``text`` in quotes exactly as the file has it, for messages: a path such as
+    ``images\\a.png`` keeps its single backslash (``repr`` would double it)."""
+    return f"'{text}'"
+
+
 def qname(el_or_attr: str) -> tuple[str | None, str]:
     """(namespace, local name) of a Clark-notation tag or attribute name."""
     if el_or_attr.startswith("{"):

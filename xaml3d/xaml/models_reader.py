@@ -9,7 +9,9 @@ rules); AmbientLight, DirectionalLight, PointLight and SpotLight with their worl
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -145,14 +147,27 @@ def camera(r, el):
 # that error.
 _FOLLOW_ON = {"MSH002", "MSH005", "MSH006"}
 
-# the mesh property each MSH code is about (its diagnostic points at that attribute)
-_MESH_ATTRS = {
-    "MSH001": "TriangleIndices",
-    "MSH002": "TriangleIndices",
-    "MSH003": "Normals",
-    "MSH004": "TextureCoordinates",
-    "MSH007": "Positions",
-}
+_NUMBER = re.compile(r"[^\s,]+")
+
+
+def _mesh_locator(r, el, p):
+    """``Locate`` for build_mesh: a collection's attribute, or the number ``item`` (counted
+    from 0 over the value) in it when the value is written there as text; the element when the
+    collection is not an attribute: its property element (``<MeshGeometry3D.Positions>``), or
+    the mesh when it is absent."""
+
+    def locate(name: str, item: int | None):
+        key = p.attr_keys.get(name)
+        if key is None:
+            return r.ctx.locate(p.line_of(name))
+        index = None
+        value = el.get(key) or ""
+        if item is not None and not value.lstrip().startswith("{"):
+            m = next(itertools.islice(_NUMBER.finditer(value), item, None), None)
+            index = None if m is None else m.start()
+        return r.ctx.locate(el, key, index)
+
+    return locate
 
 
 def mesh(r, el):
@@ -175,16 +190,13 @@ def mesh(r, el):
         p.value("Normals", V.parse_vector3d_collection, None),
         p.value("TextureCoordinates", V.parse_point_collection, None),
         line=r.ctx.position(el)["line"],
+        locate=_mesh_locator(r, el, p),
     )
     if p.rejected & {"Positions", "TriangleIndices"}:
         diags = [dg for dg in diags if dg.code not in _FOLLOW_ON]
     result = replace(result, rejected=frozenset(p.rejected))
     for dg in diags:
-        attr = _MESH_ATTRS.get(dg.code)
-        key = p.attr_keys.get(attr) if attr else None
-        if key is None and dg.code == "MSH002":  # no TriangleIndices: about the Positions count
-            key = p.attr_keys.get("Positions")
-        r.ctx.add(dg, el, key)
+        r.ctx.add(dg, el)
     if r.cache is not None:
         r.cache["mesh", id(el)] = (el, result)  # the element kept: its id stays its own
     return result

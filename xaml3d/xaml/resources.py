@@ -16,12 +16,22 @@ them: a reference inside an App.xaml entry resolves from App.xaml's tree.
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from lxml import etree
 
 from xaml3d.errors import ResourceError, XamlError
-from xaml3d.xaml.context import ReadContext, doc_position, qname, x_attr
+from xaml3d.xaml.context import (
+    ReadContext,
+    as_written,
+    doc_position,
+    ignorable_namespaces,
+    is_presentation,
+    markup_key,
+    qname,
+    x_attr,
+)
 from xaml3d.xaml.parser import ParsedDocument, parse_document
 
 APP_FILE_NAMES = ("app.xaml",)
@@ -75,6 +85,8 @@ class Resources:
         self._files: dict[Path, Dictionary | None] = {}
         self._loading: set[Path] = set()
         self.app: list[tuple[ParsedDocument, Dictionary]] = []
+        # the references looked up so far: id(element) -> (element, its attributes)
+        self._looked: dict[int, tuple[etree._Element, set[str | None]]] = {}
 
     # ----------------------------------------------------------------- dictionaries
     def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
@@ -147,7 +159,7 @@ class Resources:
         doc = self.ctx.doc_of(md)
         rel = reduce_uri(source)
         if rel is None:
-            msg = f"merged dictionary {source!r}: network URIs are refused"
+            msg = f"merged dictionary {as_written(source)}: network URIs are refused"
             self.ctx.diag("RES004", msg, md, attr="Source")
             return None
         base = doc.directory if doc and doc.directory else Path.cwd()
@@ -155,7 +167,7 @@ class Resources:
         if not self.ctx.path_allowed(path):
             self.ctx.diag(
                 "RES004",
-                f"merged dictionary {source!r} leaves the scene's folder tree: refused "
+                f"merged dictionary {as_written(source)} leaves the scene's folder tree: refused "
                 "(allow_outside=True permits it)",
                 md,
                 attr="Source",
@@ -167,20 +179,20 @@ class Resources:
         self, path: Path, label: str, ref: etree._Element | None
     ) -> Dictionary | None:
         if path in self._loading:
-            msg = f"merged dictionary {label!r} includes itself (cycle)"
+            msg = f"merged dictionary {as_written(label)} includes itself (cycle)"
             self.ctx.diag("RES003", msg, ref, attr="Source")
             return None
         if path in self._files:
             return self._files[path]
         if not path.is_file():
-            msg = f"merged dictionary {label!r} not found ({path})"
+            msg = f"merged dictionary {as_written(label)} not found ({path})"
             self.ctx.diag("RES005", msg, ref, attr="Source")
             return None
         self._loading.add(path)
         try:
             doc = parse_document(path, limits=self.ctx.limits, file=str(path))
         except XamlError as exc:
-            msg = f"merged dictionary {label!r} unreadable: {exc.message}"
+            msg = f"merged dictionary {as_written(label)} unreadable: {exc.message}"
             self.ctx.diag("RES005", msg, ref, attr="Source")
             self._loading.discard(path)
             self._files[path] = None
@@ -205,7 +217,7 @@ class Resources:
                 self.ctx.diag("RES005", msg, line=exc.line, column=exc.column, file=label)
                 return
             raise ResourceError(
-                f"resource file {label!r} cannot be read: {exc.message}",
+                f"resource file {as_written(label)} cannot be read: {exc.message}",
                 code="RES009",
                 file=label,
                 line=exc.line,
@@ -264,6 +276,10 @@ class Resources:
     ) -> etree._Element | None:
         """The entry for ``key`` seen from ``from_el``; reports RES001/RES002 when missing (at
         ``from_el``'s attribute ``attr`` when the reference is an attribute)."""
+        seen = self._looked.get(id(from_el))
+        if seen is None or seen[0] is not from_el:
+            seen = self._looked[id(from_el)] = (from_el, set())
+        seen[1].add(attr)
         here = doc_position(from_el)
         later = None
         node = from_el
@@ -297,8 +313,67 @@ class Resources:
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
+            msg = f"StaticResource {key!r} not found{self._app_hint()}"
+            self.ctx.diag("RES001", msg, from_el, attr=attr)
         return None
+
+    def _app_hint(self) -> str:
+        """For a key no dictionary defines: the application's resources may (an App.xaml is
+        read only when found beside the scene or above it, or given with -r)."""
+        if self.app:
+            return ""
+        return " (if the application's App.xaml defines it, give it with -r App.xaml)"
+
+    # ----------------------------------------------------------------- every reference
+    def report_unresolved(self, root: etree._Element) -> None:
+        """Look up every ``{StaticResource}`` of the document under ``root`` (attributes, the
+        extensions nested in others, ``<StaticResource ResourceKey=.../>`` elements), wherever
+        it is: 2D elements, styles, triggers, templates in use... WPF's loader resolves each one
+        and fails on a key it cannot find, even where xaml3d reads nothing. A missing key is
+        reported (RES001, RES002) once, at its attribute: references the reader already looked
+        up are not looked up again. The content of resource dictionaries is skipped: an entry
+        is built (and its references resolved) where it is used, as WPF defers it."""
+
+        def looked_up(el, attr) -> bool:
+            seen = self._looked.get(id(el))
+            return seen is not None and seen[0] is el and attr in seen[1]
+
+        stack = [root]
+        while stack:
+            el = stack.pop()
+            ns, local = qname(el.tag)
+            if local.endswith(".Resources") or local == "ResourceDictionary":
+                continue  # resource entries: resolved when used
+            if ns is not None and not is_presentation(ns) and ns in ignorable_namespaces(el):
+                continue  # an element of an mc:Ignorable namespace: WPF skips it
+            stack.extend(k for k in reversed(el) if isinstance(k.tag, str))
+            if local in ("StaticResource", "StaticResourceExtension"):
+                key = el.get("ResourceKey")
+                if key is not None and not looked_up(el, "ResourceKey"):
+                    self.lookup(key, el, attr="ResourceKey")
+                continue
+            ignorable = None
+            for attr, value in el.attrib.items():
+                if not _MARKUP_START.match(value) or "StaticResource" not in value:
+                    continue
+                if ignorable is None:
+                    ignorable = ignorable_namespaces(el)
+                if qname(attr)[0] in ignorable:
+                    continue  # d:Style="{StaticResource ...}" (mc:Ignorable): WPF skips it
+                for key in static_resource_keys(value):
+                    if not looked_up(el, attr):
+                        self.lookup(key, el, attr=attr)
+
+
+_MARKUP_START = re.compile(r"\s*\{(?!\})")  # a markup extension ("{}" escapes a brace)
+# a StaticResource extension (prefixed or not) with no other extension inside it
+_STATIC = re.compile(r"\{\s*(?:[\w.]+:)?StaticResource(?:Extension)?(?=[\s}])([^{}]*)\}")
+
+
+def static_resource_keys(value: str) -> list[str]:
+    """The keys of the ``{StaticResource key}`` extensions in an attribute's value, also those
+    nested in another extension (``{Binding Source={StaticResource key}}``)."""
+    return [markup_key(m.group(1)) for m in _STATIC.finditer(value)]
 
 
 def type_key(target: str) -> str:

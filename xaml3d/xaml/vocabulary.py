@@ -374,7 +374,10 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "SCN008": (ERROR, "element of the wrong kind in a 3D tree (a bare Model3D among Visual3Ds)"),
     "SCN009": (INFO, "Camera is {x:Null}: the viewport draws nothing"),
     "SCN010": (WARNING, "transform cannot be built: identity used"),
-    "SCN011": (INFO, "GeometryModel3D without Material or BackMaterial draws nothing"),
+    "SCN011": (
+        INFO,
+        "GeometryModel3D without Material or BackMaterial: no longer reported (CHK005 says it)",
+    ),
     "SCN012": (ERROR, "negative Width or Height (invalid in WPF): taken as 0"),
     "BRU001": (WARNING, "VisualBrush/DrawingBrush content drawn as a placeholder"),
     "BRU002": (WARNING, "image file not found: a grey checker stands in"),
