@@ -91,7 +91,7 @@ def run_file(
         scene = load(path, resources=companions_for(path))
     except XamlError as exc:
         result.load_seconds = time.perf_counter() - t0
-        result.refusal = exc.format()
+        result.refusal = _named(exc.format(), path)
         return result
     result.load_seconds = time.perf_counter() - t0
     result.viewports = len(scene.viewports)
@@ -117,9 +117,10 @@ def run_file(
         try:
             rendering = render_arrays(scene, width=width, height=height, mode=mode, ssaa=ssaa)
         except XamlError as exc:
-            result.modes.append(ModeResult(mode, time.perf_counter() - t1, error=exc.format()))
+            error = _named(exc.format(), path)
+            result.modes.append(ModeResult(mode, time.perf_counter() - t1, error=error))
             refused = True
-            result.refusal = exc.format()
+            result.refusal = error
             continue
         drawn = int(np.count_nonzero(rendering.rgba[..., 3]))
         result.modes.append(
@@ -152,3 +153,9 @@ def window_check(scene, ssaa: int | None = None) -> str:
     except XamlError as exc:
         return exc.format()
     return "ok"
+
+
+def _named(message: str, path: Path) -> str:
+    """A message with the file's full path cut to its name: the report reads the same on
+    every machine."""
+    return message.replace(str(path), path.name)
