@@ -392,3 +392,16 @@ def test_together_renames_every_file_at_the_end_or_none(tmp_path):
             write_atomically(tmp_path / "no" / "c.bin", lambda fh: fh.write(b"c"))
     assert info.value.code == "RND007"
     assert _files(tmp_path) == ["a.bin", "b.bin"] and (tmp_path / "a.bin").read_bytes() == b"a"
+
+
+@pytest.mark.parametrize("mode", ["shaded", "wireframe"])
+def test_depth_and_ids_agree_on_every_pixel_with_supersampling(tmp_path, mode):
+    # the id image and the depth come from the same (nearest) sample of each pixel, also for
+    # a wireframe, whose surfaces' depth is rendered on the wireframe's own sample grid
+    p = xaml3d("render", SAMPLES / "cube.xaml", "-o", "c.png", "-W", "160", "--ssaa", "3",
+               "--mode", mode, "--depth", "d.npy", "--ids", "i.png", cwd=tmp_path)  # fmt: skip
+    assert p.returncode == 0, p.stderr
+    depth = np.load(tmp_path / "d.npy")
+    ids = np.asarray(Image.open(tmp_path / "i.png"))
+    assert np.array_equal(~np.isnan(depth), ids > 0)
+    assert (ids > 0).any()

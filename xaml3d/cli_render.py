@@ -294,8 +294,9 @@ def _render_viewport(
         if opts.mode == "wireframe" and not opts.hide_hidden_lines:
             from xaml3d.render.buffers import surface_buffers
 
-            def surfaces():
-                return surface_buffers(scene, vp, width, height, aspect)[1]
+            def surfaces():  # on the wireframe's own sample grid, as its ids
+                grid = opts.ssaa or 1
+                return surface_buffers(scene, vp, width, height, aspect, grid=grid)[1]
 
         diags.extend(write_buffers(opts.extras, result, vp, file, surfaces))
     return image
