@@ -41,6 +41,8 @@ CASES = {
     "material-for-brush": ("XAML013", 14, 53, "not a Brush"),
     "camera-up-parallel": ("CAM003", 3, 5, "parallel"),
     "camera-fov-180": ("CAM004", 3, 5, "FieldOfView 180"),
+    "name-invalid": ("XAML019", 9, 26, "'1cube' is not a valid name"),
+    "name-twice": ("XAML020", 9, 26, "'sun' is already used in this namescope (line 8)"),
 }
 NOT_RENDERABLE = {"malformed-xml", "namespace-typo"}  # fatal even with --lenient
 
@@ -103,3 +105,17 @@ def test_validate_and_render_print_the_same_findings(tmp_path):
         r = CliRunner().invoke(main, ["render", path, "-o", str(tmp_path / "o.png"), "-v"])
         shown = [ln for ln in r.stderr.splitlines() if re.match(re.escape(path) + r":\d", ln)]
         assert shown == v, name
+
+
+def test_names_in_styles_templates_and_resources_are_scopes_of_their_own():
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"><Grid.Resources>'
+        '<ControlTemplate x:Key="t"><Border x:Name="b"/></ControlTemplate>'
+        '<ControlTemplate x:Key="u"><Border x:Name="b"/></ControlTemplate></Grid.Resources>'
+        '<Border x:Name="b"/><Border x:Name="_ok2"/><Viewport3D/></Grid>'
+    )
+    codes = {d.code for d in load(x, text=True).diagnostics}
+    assert not codes & {"XAML019", "XAML020"}

@@ -39,6 +39,7 @@ from xaml3d.xaml.context import (
 )
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
+from xaml3d.xaml.names import check_names
 from xaml3d.xaml.parser import XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
@@ -324,6 +325,8 @@ def build_scene(
     with ``frame`` (animation_scene.Frame) its viewports at one moment of the storyboards,
     which are not read again."""
     r = Reader(ctx, resources, frame)
+    if frame is None:
+        check_names(ctx, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)

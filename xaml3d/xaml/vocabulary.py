@@ -354,6 +354,8 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML016": (ERROR, "malformed markup extension"),
     "XAML017": (WARNING, "unknown element among the framework (2D) elements: walked through"),
     "XAML018": (ERROR, "namespace one edit away from WPF's presentation namespace (a typo)"),
+    "XAML019": (ERROR, "x:Name or Name that is not a valid name (not an identifier)"),
+    "XAML020": (ERROR, "the same name given to two elements of one namescope"),
     "RES001": (ERROR, "StaticResource key not found"),
     "RES002": (ERROR, "StaticResource used before its definition"),
     "RES003": (ERROR, "resource reference cycle"),

@@ -1,0 +1,42 @@
+"""Element names (``x:Name`` and the ``Name`` property) as WPF's XAML loader checks them.
+
+A name must be an identifier (a letter or underscore, then letters, digits or underscores):
+``x:Name="1"`` or ``Name="left cube"`` make the loader throw (XAML019). A name may be
+registered once per namescope: two elements named alike in one scope make it throw "Cannot
+register duplicate name" (XAML020). Styles, templates and resource dictionaries are namescopes
+of their own, so names inside them are only checked against each other's scope.
+"""
+
+from __future__ import annotations
+
+from xaml3d.xaml.context import ReadContext, qname, x_attr
+from xaml3d.xaml.parser import XAML_NS
+
+X_NAME = f"{{{XAML_NS}}}Name"
+_SCOPES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
+           "HierarchicalDataTemplate", "ResourceDictionary"}  # fmt: skip
+
+
+def check_names(ctx: ReadContext, root) -> None:
+    """Report names that are not identifiers and names defined twice in one namescope."""
+    stack = [(root, {})]
+    while stack:
+        el, scope = stack.pop()
+        local = qname(el.tag)[1]
+        attr, name = (X_NAME, x_attr(el, "Name")) if x_attr(el, "Name") is not None else (
+            "Name", el.get("Name") if "." not in local else None)  # fmt: skip
+        if name is not None:
+            if not name.isidentifier():
+                ctx.diag("XAML019", f"{name!r} is not a valid name: a name starts with a letter "
+                         "or underscore and holds only letters, digits and underscores", el,
+                         attr=attr)  # fmt: skip
+            elif name in scope:
+                line = ctx.locate(scope[name])[0]
+                ctx.diag("XAML020", f"the name {name!r} is already used in this namescope "
+                         f"(line {line}): WPF cannot register it twice", el, attr=attr)  # fmt: skip
+            else:
+                scope[name] = el
+        inner = {} if local in _SCOPES or local.endswith(".Resources") else scope
+        for child in reversed(el):
+            if isinstance(child.tag, str):
+                stack.append((child, inner))
