@@ -410,3 +410,13 @@ def test_depth_and_ids_agree_on_every_pixel_with_supersampling(tmp_path, mode):
     ids = np.asarray(Image.open(tmp_path / "i.png"))
     assert np.array_equal(~np.isnan(depth), ids > 0)
     assert (ids > 0).any()
+
+
+@pytest.mark.parametrize(("stereo", "size"), [("side-by-side", (80, 20)), ("over-under", (40, 40))])
+def test_lenient_pair_of_a_camera_without_an_image_keeps_the_pair_shape(tmp_path, stereo, size):
+    (tmp_path / "s.xaml").write_text(PARALLEL)
+    p = xaml3d("render", "s.xaml", "-o", "x.png", "-W", "40", "-H", "20", "--stereo", stereo,
+               "--lenient", cwd=tmp_path)  # fmt: skip
+    assert p.returncode == 0, p.stderr
+    img = Image.open(tmp_path / "x.png")
+    assert img.size == size and img.getextrema()[3] == (0, 0)  # empty, as WPF draws nothing

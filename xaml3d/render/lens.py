@@ -132,7 +132,11 @@ def render_through_lens(
     shading = Shading()
     pinhole = draw(vp, shading, ids)
     if any(d.severity == ERROR for d in pinhole.diagnostics):
-        return pinhole  # a camera that cannot produce an image: WPF draws nothing
+        # a camera that cannot produce an image: WPF draws nothing; a pair keeps its shape
+        if stereo in ("side-by-side", "over-under"):
+            rgba = np.concatenate([pinhole.rgba] * 2, axis=1 if stereo == "side-by-side" else 0)
+            return replace(pinhole, rgba=rgba, width=rgba.shape[1], height=rgba.shape[0])
+        return pinhole
     frame = lens_frame(vp.camera, width, height, focus, vp.bounds(), aspect)
     if fstop is not None:
         if aperture:
