@@ -119,3 +119,21 @@ def test_names_in_styles_templates_and_resources_are_scopes_of_their_own():
     )
     codes = {d.code for d in load(x, text=True).diagnostics}
     assert not codes & {"XAML019", "XAML020"}
+
+
+def test_system_resource_keys_are_not_load_errors():
+    # {StaticResource {x:Static SystemColors.ControlBrushKey}} is found by WPF in the system
+    # resources: no RES001, an info that the property keeps its default; a {x:Type} key finds
+    # the implicit Style of that type
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"><Grid.Resources>'
+        '<Style TargetType="Border"><Setter Property="Width" Value="30"/></Style></Grid.Resources>'
+        '<Border Background="{StaticResource {x:Static SystemColors.ControlBrushKey}}"/>'
+        '<Border Style="{StaticResource {x:Type Border}}"/><Viewport3D/></Grid>'
+    )
+    diags = load(x, text=True).diagnostics
+    assert [d.code for d in diags if d.code.startswith("RES")] == ["RES011"]
+    assert all(d.severity != "error" for d in diags)

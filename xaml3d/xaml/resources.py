@@ -280,6 +280,9 @@ class Resources:
         if seen is None or seen[0] is not from_el:
             seen = self._looked[id(from_el)] = (from_el, set())
         seen[1].add(attr)
+        system = key.lstrip().startswith("{")  # {x:Static SystemColors...Key}, {x:Type T}...
+        if system and key.replace(" ", "").startswith(("{x:Type", "{Type")):
+            key = type_key(key)  # an implicit Style's key, as the dictionaries store it
         here = doc_position(from_el)
         later = None
         node = from_el
@@ -300,7 +303,13 @@ class Resources:
             hit = d.find(key)
             if hit is not None:
                 return hit[0]
-        if later is not None:
+        if system and later is None:
+            # a key that is an object (x:Static, ComponentResourceKey, a type) names a system or
+            # theme resource WPF finds outside the markup: no load error, but not available here
+            msg = (f"resource {key!r} is a system or theme resource: not available to xaml3d, "
+                   "the property keeps its default")  # fmt: skip
+            self.ctx.diag("RES011", msg, from_el, attr=attr)
+        elif later is not None:
             self.ctx.diag(
                 "RES002",
                 f"StaticResource {key!r} is used before its definition "

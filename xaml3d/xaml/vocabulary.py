@@ -366,6 +366,10 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "RES008": (ERROR, "resource of the wrong type for this property"),
     "RES010": (WARNING, "DynamicResource key not found: the property keeps its default"),
     "RES009": (ERROR, "resource file named by the user cannot be read (fatal)"),
+    "RES011": (
+        INFO,
+        "system or theme resource (x:Static or type key): property keeps its default",
+    ),
     "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
     "SCN013": (INFO, "a ResourceDictionary or Application file: no scene to render"),
     "SCN003": (INFO, "viewport size and how the layout derived it (docs/layout.md)"),
