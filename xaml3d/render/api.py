@@ -334,7 +334,7 @@ def _draw_viewport(
         else:
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
-    rgba, depth = fb.resolve_nearest(grid) if nearest else fb.resolve(grid)
+    rgba, depth = fb.resolve(grid, nearest=nearest)
     result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
     if pipeline is not None:
         from xaml3d.render.buffers import eye_depth, model_ids

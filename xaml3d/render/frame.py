@@ -193,49 +193,37 @@ class Framebuffer:
         self.fragments_drawn += int(p.size)
 
     # ------------------------------------------------------------------ output
-    def resolve(self, ssaa: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    def resolve(self, ssaa: int = 1, nearest: bool = False) -> tuple[np.ndarray, np.ndarray]:
         """Box-filter ``ssaa`` x ``ssaa`` blocks of premultiplied colour; return straight-alpha
         uint8 rgba (H, W, 4) and the depth (H, W): the nearest sample of each block (+inf where
-        the block is empty)."""
+        the block is empty). ``nearest``: each pixel takes the colour of that nearest sample
+        (the first in row order on a tie) instead of the average: the model-id render, whose
+        colours are codes that must never mix, and whose ids then belong to the very sample
+        that gives the depth."""
         s = int(ssaa)
         h, w = self.height // s, self.width // s
-        if s == 1:
-            col = self.color.reshape(h, w, 4)
-            z = self.zbuf.reshape(h, w)
-        else:
-            # s * s strided slices added: about 5x faster here than a float32 sum over the two
-            # sample axes of a 5-D reshape (numpy reduces non-adjacent axes slowly).
-            c5 = self.color.reshape(h, s, w, s, 4)
-            z4 = self.zbuf.reshape(h, s, w, s)
-            col = c5[:, 0, :, 0].copy()
-            z = z4[:, 0, :, 0].copy()
-            for a in range(s):
-                for b in range(s):
-                    if a or b:
-                        col += c5[:, a, :, b]
-                        np.minimum(z, z4[:, a, :, b], out=z)
-            col *= 1.0 / (s * s)
-        depth = np.where(z < 0.0, z + DEPTH_OFFSET, np.inf)  # back from the stored d - 2
-        return straight_uint8(col), depth
-
-    def resolve_nearest(self, ssaa: int = 1) -> tuple[np.ndarray, np.ndarray]:
-        """Like ``resolve`` but each pixel takes the colour of its block's nearest sample (the
-        first in row order on a tie) instead of the average: the model-id render, whose colours
-        are codes that must never mix, and whose ids then belong to the very sample that gives
-        ``resolve``'s depth."""
-        s = int(ssaa)
-        h, w = self.height // s, self.width // s
+        # s * s strided slices: about 5x faster here than a float32 sum over the two sample
+        # axes of a 5-D reshape (numpy reduces non-adjacent axes slowly).
         c5 = self.color.reshape(h, s, w, s, 4)
         z4 = self.zbuf.reshape(h, s, w, s)
-        col = c5[:, 0, :, 0].copy()
-        z = z4[:, 0, :, 0].copy()
+        if s == 1:  # one sample a pixel: the buffers themselves, no copies
+            col, z = c5[:, 0, :, 0], z4[:, 0, :, 0]
+        else:
+            col, z = c5[:, 0, :, 0].copy(), z4[:, 0, :, 0].copy()
         for a in range(s):
             for b in range(s):
-                if a or b:
+                if not (a or b):
+                    continue
+                if nearest:
                     nearer = z4[:, a, :, b] < z
                     col[nearer] = c5[:, a, :, b][nearer]
                     z[nearer] = z4[:, a, :, b][nearer]
-        depth = np.where(z < 0.0, z + DEPTH_OFFSET, np.inf)
+                else:
+                    col += c5[:, a, :, b]
+                    np.minimum(z, z4[:, a, :, b], out=z)
+        if s > 1 and not nearest:
+            col *= 1.0 / (s * s)
+        depth = np.where(z < 0.0, z + DEPTH_OFFSET, np.inf)  # back from the stored d - 2
         return straight_uint8(col), depth
 
 
