@@ -131,7 +131,7 @@ class ElementValues:
         if self.p is not None:
             p = self.p
             raw = self.style.get(prop)
-            if raw is None or prop in p.attrs or prop in p.elem_text or p.items(prop):
+            if raw is None or prop in p.attrs or prop in p.elem_text or prop in p.elems:
                 return p.value(prop, conv, default)
             # not set on the element: its Style's Setter (an animation still applies on top)
             if split_markup(raw) is None:
@@ -277,7 +277,10 @@ class PanelsReader:
                 return {}
             entry = res.find(markup_key(m[1]), el)
         else:
-            entry = res.find(type_key(local), el)
+            # (every dictionary of the document is read by now: the walk before layout reads
+            # each element's resources, so a type no implicit Style names needs no search)
+            key = type_key(local)
+            entry = res.find(key, el) if key in res.type_keys else None
         chain = []
         while entry is not None and qname(entry.tag)[1] == "Style" and len(chain) < _STYLE_DEPTH:
             chain.append(entry)

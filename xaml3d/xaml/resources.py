@@ -85,6 +85,7 @@ class Resources:
         self._files: dict[Path, Dictionary | None] = {}
         self._loading: set[Path] = set()
         self.app: list[tuple[ParsedDocument, Dictionary]] = []
+        self.type_keys: set[str] = set()  # keys of the implicit Styles read so far
         # the references looked up so far: id(element) -> (element, its attributes)
         self._looked: dict[int, tuple[etree._Element, set[str | None]]] = {}
 
@@ -149,6 +150,8 @@ class Resources:
                 continue
             self.ctx.keep(child)
             d.entries[key] = child
+            if key.startswith("{x:Type "):
+                self.type_keys.add(key)
 
     def _merged(self, md: etree._Element) -> Dictionary | None:
         source = md.get("Source")
