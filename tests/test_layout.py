@@ -407,6 +407,44 @@ def test_markup_style_setters_size_elements():
         640, 480)  # fmt: skip
 
 
+def test_markup_style_setters_with_attached_properties_and_element_values():
+    grid = (
+        f"<Page {NS} {XNS} Width='400' Height='300'><Page.Resources>"
+        "<Style x:Key='R' TargetType='Viewport3D'><Setter Property='Grid.Row' Value='1'/>"
+        "<Setter Property='Grid.ColumnSpan' Value='2'/></Style>"
+        "<Style x:Key='M' TargetType='Border'><Setter Property='Margin'><Setter.Value>"
+        "<Thickness>50</Thickness></Setter.Value></Setter></Style></Page.Resources>"
+        "<Grid><Grid.RowDefinitions><RowDefinition/><RowDefinition/></Grid.RowDefinitions>"
+        "<Grid.ColumnDefinitions><ColumnDefinition/><ColumnDefinition/></Grid.ColumnDefinitions>"
+        "<Viewport3D Style='{StaticResource R}'/></Grid></Page>"
+    )
+    assert size(grid) == (400, 150)
+    dock = _dock_left(
+        "<Border Style='{StaticResource T}' Height='60'/>",
+        "<Style x:Key='T' TargetType='Border'>"
+        "<Setter Property='DockPanel.Dock' Value='Top'/></Style>",
+    )
+    assert size(dock) == (640, 420)
+    margin = grid.replace("<Viewport3D Style='{StaticResource R}'/></Grid>",
+                          "<Border Grid.RowSpan='2' Grid.ColumnSpan='2' Style='{StaticResource M}'>"
+                          "<Viewport3D/></Border></Grid>")  # fmt: skip
+    assert size(margin) == (300, 200)
+
+
+def test_markup_out_of_range_cells_and_infinite_sizes_are_errors():
+    x = (f"<Grid {NS}><Grid.RowDefinitions><RowDefinition/><RowDefinition/>"
+         "</Grid.RowDefinitions><Viewport3D Grid.Row='-1' Grid.RowSpan='0'/></Grid>")  # fmt: skip
+    s = load(x, text=True)
+    found = [(d.severity, d.column) for d in s.diagnostics if d.code == "LAY005"]
+    # at the attributes (columns are 1-based)
+    assert found == [("error", x.index("Grid.Row=") + 1), ("error", x.index("Grid.RowSpan") + 1)]
+    s = load(f"<Grid {NS}><Viewport3D Height='Infinity'/></Grid>", text=True)
+    assert [d.severity for d in s.diagnostics if d.code == "SCN012"] == ["error"]
+    s = load(f"<Grid {NS}><Grid.LayoutTransform><ScaleTransform ScaleX='2'/></Grid.LayoutTransform>"
+             "<Viewport3D/></Grid>", text=True)  # fmt: skip
+    assert [d.severity for d in s.diagnostics if d.code == "LAY006"] == ["info"]
+
+
 def test_markup_text_after_a_property_element_and_layout_transform():
     text = "KeyFrame Progress (Output)"  # 26 characters: 182 px estimated
     plain = f"<TextBlock DockPanel.Dock='Left'>{text}</TextBlock>"

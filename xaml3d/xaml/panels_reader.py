@@ -148,6 +148,12 @@ class ElementValues:
         except ValueSyntaxError:
             return default
 
+    def attr_key(self, prop: str) -> str | None:
+        """The attribute key of an attached property set on the element (None: from a Style)."""
+        if self.p is None:
+            return prop if prop in self.el.attrib else None
+        return prop if prop in self.p.attached else None
+
     def attached(self, prop: str, conv, default):
         if self.p is None:
             raw = self.el.get(prop)
@@ -157,12 +163,15 @@ class ElementValues:
             if raw is None and owner == self.p.type:  # Grid.Row on a Grid: read as its own
                 raw = self.p.attrs.get(short)
                 prop = self.p.attr_keys.get(short, prop)
+        from_style = raw is None and prop in self.style
+        if from_style:  # Grid.Row (DockPanel.Dock ...) set by the element's Style
+            raw = self.style[prop]
         if raw is None or split_markup(raw) is not None:
             return default  # a {Binding} row cannot be evaluated: WPF's default
         try:
             return conv(raw)
         except ValueSyntaxError as exc:
-            if self.p is not None:
+            if self.p is not None and not from_style:
                 exc.message = f"{prop}: {exc.message}"
                 self.r.ctx.error(exc, self.el, attr=prop)
             return default
@@ -187,6 +196,22 @@ def _style_setter_elements(style):
             yield from (k for k in child if isinstance(k.tag, str) and qname(k.tag)[1] == "Setter")
 
 
+def _setter_value(setter) -> str | None:
+    """A Setter's value as text: its Value attribute, or a ``<Setter.Value>`` holding plain text
+    or one element whose text is the value (``<Thickness>50</Thickness>``)."""
+    value = setter.get("Value")
+    if value is not None:
+        return value
+    for child in setter:
+        if isinstance(child.tag, str) and qname(child.tag)[1] == "Setter.Value":
+            kids = [k for k in child if isinstance(k.tag, str)]
+            if not kids:
+                return (child.text or "").strip() or None
+            if len(kids) == 1 and len(kids[0]) == 0 and (kids[0].text or "").strip():
+                return kids[0].text.strip()
+    return None
+
+
 def _enum(allowed):
     return lambda s: V.parse_enum(s, allowed)
 
@@ -203,8 +228,11 @@ class PanelsReader:
                 node = node.getparent()
         self.viewports: dict[int, L.Node] = {}
 
-    def note(self, code: str, message: str, el) -> None:
-        self.r.ctx.add(Diagnostic(code, LAYOUT_CODES[code][0], message), el)
+    def note(self, code: str, message: str, el, attr: str | None = None) -> None:
+        if attr is not None:
+            self.r.ctx.diag(code, message, el, attr=attr)
+        else:
+            self.r.ctx.add(Diagnostic(code, LAYOUT_CODES[code][0], message), el)
 
     # ----------------------------------------------------------------- elements
     def kind_of(self, el) -> str | None:
@@ -254,6 +282,10 @@ class PanelsReader:
         if kind == L.CONTROL:
             self._estimate(n, v, el)
             return n
+        if _layout_transform_set(el):
+            where = "around a viewport" if id(el) in self.holds_viewport else "of a panel"
+            self.note("LAY006", f"the LayoutTransform of this {local} ({where}) is not applied: "
+                      "it is laid out and drawn untransformed", el)  # fmt: skip
         if kind == L.CONTAINER and (local not in _PLAIN):
             what = "custom element" if not is_presentation(ns) else local
             self.note("LAY004", f"{what} {local!r} holding a Viewport3D is laid out as a plain "
@@ -297,21 +329,23 @@ class PanelsReader:
         setters: dict[str, str] = {}
         for style in reversed(chain):
             for child in _style_setter_elements(style):
-                prop, value = child.get("Property"), child.get("Value")
+                prop, value = child.get("Property"), _setter_value(child)
                 if not prop or value is None or child.get("TargetName"):
                     continue
                 owner, _, short = prop.rpartition(".")
-                if owner not in _ATTACHED_OWNERS:  # Grid.Row in a Setter: not read from styles
-                    setters[short] = value
+                owner = owner.split(":")[-1]
+                # attached properties keep their owner (Grid.Row); others their own name
+                setters[f"{owner}.{short}" if owner in _ATTACHED_OWNERS else short] = value
         return setters
 
     def _framework(self, n: L.Node, v: ElementValues) -> None:
         for prop in ("Width", "Height"):
             x = v.get(prop, parse_length, math.nan)
-            if x == x and x < 0:
-                # WPF refuses a negative size outright; xaml3d treats it as empty.
+            if x == x and (x < 0 or x == math.inf):
+                # WPF refuses a negative or infinite size outright; xaml3d draws it empty.
+                what = "negative" if x < 0 else "infinite"
                 self.r.ctx.diag(
-                    "SCN012", f"{n.type}.{prop} = {x:g} is negative (invalid in WPF): taken as 0",
+                    "SCN012", f"{n.type}.{prop} = {x:g} is {what} (invalid in WPF): taken as 0",
                     v.el, attr=v.p.attr_keys.get(prop) if v.p else None,
                 )  # fmt: skip
                 x = 0.0
@@ -325,10 +359,17 @@ class PanelsReader:
         n.v_align = v.get("VerticalAlignment", _enum(_ALIGN_V), n.v_align)
         n.visibility = v.get("Visibility", _enum(("Visible", "Hidden", "Collapsed")), "Visible")
         n.rounding = v.get("UseLayoutRounding", V.parse_bool, None)
-        n.row = max(0, v.attached("Grid.Row", V.parse_int, 0))
-        n.col = max(0, v.attached("Grid.Column", V.parse_int, 0))
-        n.row_span = max(1, v.attached("Grid.RowSpan", V.parse_int, 1))
-        n.col_span = max(1, v.attached("Grid.ColumnSpan", V.parse_int, 1))
+        for attr, name, low in (
+            ("Grid.Row", "row", 0),
+            ("Grid.Column", "col", 0),
+            ("Grid.RowSpan", "row_span", 1),
+            ("Grid.ColumnSpan", "col_span", 1),
+        ):
+            x = v.attached(attr, V.parse_int, low)
+            if x < low:  # WPF's value check refuses it at load
+                self.note("LAY005", f"{attr} = {x} is out of range (at least {low} in WPF): "
+                          f"taken as {low}", v.el, attr=v.attr_key(attr))  # fmt: skip
+            setattr(n, name, max(low, x))
         n.dock = v.attached("DockPanel.Dock", _enum(("Left", "Top", "Right", "Bottom")), "Left")
         for side in ("Left", "Top", "Right", "Bottom"):
             setattr(n, side.lower(), v.attached(f"Canvas.{side}", parse_length, math.nan))
@@ -464,6 +505,17 @@ def _layout_transform(el):
     except (ValueError, ZeroDivisionError, OverflowError):
         return None
     return None
+
+
+def _layout_transform_set(el) -> bool:
+    """Whether an element sets a LayoutTransform other than the identity."""
+    t = _layout_transform(el)
+    if t is not None:
+        return t != ((1.0, 0.0), (0.0, 1.0))
+    local = qname(el.tag)[1]
+    return el.get("LayoutTransform") is not None or any(
+        isinstance(k.tag, str) and qname(k.tag)[1] == f"{local}.LayoutTransform" for k in el
+    )
 
 
 def _matrix_text(s: str):

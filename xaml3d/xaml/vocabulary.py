@@ -384,7 +384,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
         INFO,
         "GeometryModel3D without Material or BackMaterial: no longer reported (CHK005 says it)",
     ),
-    "SCN012": (ERROR, "negative Width or Height (invalid in WPF): taken as 0"),
+    "SCN012": (ERROR, "negative or infinite Width or Height (invalid in WPF): taken as 0"),
     "BRU001": (WARNING, "VisualBrush/DrawingBrush content drawn as a placeholder"),
     "BRU002": (WARNING, "image file not found: a grey checker stands in"),
     "BRU003": (WARNING, "image file cannot be decoded: a grey checker stands in"),
