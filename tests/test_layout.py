@@ -342,6 +342,18 @@ def test_markup_window_toolbar_example():
     assert size(x, window_size=(1000, 700)) == (1000, 660)
 
 
+def test_markup_window_without_caption_or_frame():
+    def win(attrs: str) -> str:
+        return (f"<Window {NS} Width='816' Height='639' {attrs}><Grid><Grid.RowDefinitions>"
+                "<RowDefinition Height='40'/><RowDefinition/></Grid.RowDefinitions>"
+                "<Viewport3D Grid.Row='1'/></Grid></Window>")  # fmt: skip
+
+    assert size(win("")) == (800, 560)
+    assert size(win("WindowStyle='None'")) == (800, 583)  # the resize border stays
+    assert size(win("WindowStyle='None' ResizeMode='NoResize'")) == (816, 599)
+    assert size(win("WindowStyle='None' AllowsTransparency='True'")) == (816, 599)
+
+
 def test_markup_values_units_and_bad_values():
     x = (
         f"<Grid {NS} Width='1in' Height='2cm' UseLayoutRounding='True'>"

@@ -47,7 +47,6 @@ from xaml3d.layout.tree import (
     VIEWBOX,
     VIEWPORT,
     WINDOW,
-    WINDOW_FRAME,
     Node,
 )
 
@@ -480,7 +479,7 @@ def root_client(root: Node, override: tuple[float, float] | None = None):
         return override[0], override[1], f"--window-size {override[0]:g}x{override[1]:g}"
     dw, dh = DEFAULT_CLIENT
     if root.kind == WINDOW:
-        fw, fh = WINDOW_FRAME
+        fw, fh = root.frame
         stc = root.size_to_content
         lo_w, hi_w, lo_h, hi_h = min_max(root)
         w = INF if stc in ("Width", "WidthAndHeight") else (

@@ -35,6 +35,9 @@ KINDS = (WINDOW, PAGE, USER_CONTROL, GRID, DOCK, STACK, BORDER, CANVAS, VIEWBOX,
 # OUTER size; its client area (where the content is laid out) is smaller by these amounts
 # (8 px resize border on each side; 31 px caption + 8 px bottom border).
 WINDOW_FRAME = (16.0, 39.0)
+# WindowStyle="None" keeps only the 8 px resize border of a resizable window (nothing when it
+# cannot be resized); AllowsTransparency="True" (which needs WindowStyle None) has no frame.
+WINDOW_FRAME_NO_CAPTION = (16.0, 16.0)
 # The size a root is laid out at when nothing in the markup gives one (the viewport default of
 # wpf3d.md section 2, so a bare Viewport3D keeps its historic 640 x 480).
 DEFAULT_CLIENT = (640.0, 480.0)
@@ -103,6 +106,7 @@ class Node:
     stretch: str = "Uniform"
     stretch_direction: str = "Both"
     size_to_content: str = "Manual"  # Window: Manual | Width | Height | WidthAndHeight
+    frame: tuple[float, float] = WINDOW_FRAME  # Window: outer size less client size (w, h)
     scroll_h: str = "Disabled"  # ScrollViewer.HorizontalScrollBarVisibility
     scroll_v: str = "Visible"  # ScrollViewer.VerticalScrollBarVisibility
     # a root UserControl's d:DesignWidth/Height, a root Page's WindowWidth/Height less the frame

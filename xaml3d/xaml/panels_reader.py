@@ -196,6 +196,10 @@ def _style_setter_elements(style):
             yield from (k for k in child if isinstance(k.tag, str) and qname(k.tag)[1] == "Setter")
 
 
+_WINDOW_STYLES = ("None", "SingleBorderWindow", "ThreeDBorderWindow", "ToolWindow")
+_RESIZE_MODES = ("NoResize", "CanMinimize", "CanResize", "CanResizeWithGrip")
+
+
 def _setter_value(setter) -> str | None:
     """A Setter's value as text: its Value attribute, or a ``<Setter.Value>`` holding plain text
     or one element whose text is the value (``<Thickness>50</Thickness>``)."""
@@ -381,6 +385,13 @@ class PanelsReader:
             n.size_to_content = v.get(
                 "SizeToContent", _enum(("Manual", "Width", "Height", "WidthAndHeight")), "Manual"
             )
+            style = v.get("WindowStyle", _enum(_WINDOW_STYLES), "SingleBorderWindow")
+            resize = v.get("ResizeMode", _enum(_RESIZE_MODES), "CanResize")
+            if v.get("AllowsTransparency", V.parse_bool, False):
+                n.frame = (0.0, 0.0)
+            elif style == "None":
+                resizable = resize in ("CanResize", "CanResizeWithGrip")
+                n.frame = L.WINDOW_FRAME_NO_CAPTION if resizable else (0.0, 0.0)
         if kind == L.SCROLL:
             n.scroll_h = v.get("HorizontalScrollBarVisibility", _enum(bars), "Disabled")
             n.scroll_v = v.get("VerticalScrollBarVisibility", _enum(bars), "Visible")
