@@ -475,6 +475,32 @@ def test_markup_text_after_a_property_element_and_layout_transform():
     assert (round(w, 9), h) == (640 - 20, 480)
 
 
+def test_markup_estimates_follow_font_size_padding_and_toolbar_items():
+    def top(item: str, resources: str = "", attrs: str = "") -> tuple[float, float]:
+        return size(
+            f"<Page {NS} {XNS} Width='400' Height='300' {attrs}><Page.Resources>{resources}"
+            f"</Page.Resources><DockPanel>{item}<Viewport3D/></DockPanel></Page>"
+        )
+
+    # one 16 px line at FontSize 12; at 24: 32 px (direct, inherited, or from a Style)
+    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>") == (400, 284)
+    assert top("<TextBlock DockPanel.Dock='Top' FontSize='24' Text='Title'/>") == (400, 268)
+    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>", attrs="FontSize='24'") == (
+        400,
+        268,
+    )
+    style = "<Style TargetType='TextBlock'><Setter Property='FontSize' Value='18pt'/></Style>"
+    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>", style) == (400, 268)
+    # an own Padding replaces the template's (a Label's default Padding is 5)
+    assert top("<Label DockPanel.Dock='Top' Content='x'/>") == (400, 274)
+    assert top("<Label DockPanel.Dock='Top' Content='x' Padding='4,0'/>") == (400, 284)
+    assert top("<TextBlock DockPanel.Dock='Top' FontSize='24' Padding='4' Text='T'/>") == (400, 260)
+    # a ToolBarTray holding a ToolBar of Buttons: the items' height plus the bar's chrome
+    tray = ("<ToolBarTray DockPanel.Dock='Top'><ToolBar><Button Content='Open'/><Separator/>"
+            "<Button Content='Save'/></ToolBar></ToolBarTray>")  # fmt: skip
+    assert top(tray) == (400, 300 - 30)
+
+
 def test_auto_row_sized_by_a_cell_in_a_star_column():
     # the TextBlock (an Auto row, star column: WPF's last measure group) still sizes the row
     text = Node(L.CONTROL, "TextBlock", estimate=(30, 16), col=1)

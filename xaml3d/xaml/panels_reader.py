@@ -53,6 +53,7 @@ _SHAPES = {"Rectangle", "Ellipse", "Path", "Line", "Polygon", "Polyline", "Image
 # (Segoe UI 12 px), one 16 px text line, plus the chrome (padding + border) of its default
 # template, (width, height) in px.
 CHAR_WIDTH, LINE_HEIGHT = 7.0, 16.0
+FONT_SIZE = 12.0  # WPF's default FontSize (px); the estimate scales with the FontSize in effect
 _CHROME = {
     "TextBlock": (0, 0), "Label": (10, 10), "Button": (4, 4), "ToggleButton": (4, 4),
     "RepeatButton": (4, 4), "CheckBox": (20, 0), "RadioButton": (20, 0), "TextBox": (6, 6),
@@ -60,6 +61,13 @@ _CHROME = {
     "Separator": (0, -12), "Menu": (0, 4), "MenuItem": (14, 6), "ToolBar": (12, 10),
     "StatusBar": (0, 6), "GroupBox": (12, 30), "Expander": (24, 8), "TabControl": (8, 32),
 }  # fmt: skip
+# The default templates' Padding, replaced by an element's own Padding in the estimate.
+_DEFAULT_PADDING = {
+    "Label": (5, 5, 5, 5), "Button": (1, 1, 1, 1), "ToggleButton": (1, 1, 1, 1),
+    "RepeatButton": (1, 1, 1, 1), "TextBox": (1, 1, 1, 1), "PasswordBox": (1, 1, 1, 1),
+}  # fmt: skip
+# Bars whose items sit side by side: their estimate is the sum of the items' sizes.
+_BARS = {"ToolBar", "ToolBarTray", "StatusBar"}
 # Property elements whose children are not laid out as content.
 _NOT_CONTENT = ("Resources", "Triggers", "MergedDictionaries", "RowDefinitions",
                 "ColumnDefinitions", "Style", "Template", "ToolTip", "ContextMenu",
@@ -270,7 +278,8 @@ class PanelsReader:
             else:
                 yield child
 
-    def build(self, el) -> L.Node | None:
+    def build(self, el, font: float = FONT_SIZE) -> L.Node | None:
+        """The layout node of ``el`` and its content; ``font``: the FontSize it inherits."""
         kind = self.kind_of(el)
         if kind is None:
             return None
@@ -278,13 +287,18 @@ class PanelsReader:
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
+        size = v.get("FontSize", parse_length, None)
+        if size is None:
+            size = v.attached("TextElement.FontSize", parse_length, None)
+        if size is not None and math.isfinite(size) and size > 0:
+            font = size  # inherited by the content, as WPF's FontSize is
         if kind == L.VIEWPORT:
             n.viewport = self.index[id(el)]
             self.viewports[n.viewport] = n
             return n
         self._panel(n, v, el)
         if kind == L.CONTROL:
-            self._estimate(n, v, el)
+            self._estimate(n, v, el, font)
             return n
         if _layout_transform_set(el):
             where = "around a viewport" if id(el) in self.holds_viewport else "of a panel"
@@ -295,7 +309,7 @@ class PanelsReader:
             self.note("LAY004", f"{what} {local!r} holding a Viewport3D is laid out as a plain "
                       "container (its own chrome and rules are not known)", el)  # fmt: skip
         for child in self.content_of(el):
-            k = self.build(child)
+            k = self.build(child, font)
             if k is not None:
                 n.children.append(k)
         return n
@@ -447,7 +461,7 @@ class PanelsReader:
             out.append(L.Definition(unit, value, lo, hi))
         return tuple(out)
 
-    def _estimate(self, n: L.Node, v: ElementValues, el) -> None:
+    def _estimate(self, n: L.Node, v: ElementValues, el, font: float = FONT_SIZE) -> None:
         local = n.type
         if local in _SHAPES or not is_presentation(qname(el.tag)[0]):
             n.estimate = (0.0, 0.0)  # shapes and images without a size: nothing to measure
@@ -461,8 +475,19 @@ class PanelsReader:
         if text is None:
             text = _content_text(el)
         cw, ch = _CHROME.get(local, (0, 0))
-        w = CHAR_WIDTH * len(text) + cw
-        h = LINE_HEIGHT + ch
+        pad = v.get("Padding", parse_thickness, None)
+        if pad is not None:  # the element's own Padding instead of its template's default
+            dl, dt, dr, db = _DEFAULT_PADDING.get(local, (0, 0, 0, 0))
+            cw += pad[0] + pad[2] - dl - dr
+            ch += pad[1] + pad[3] - dt - db
+        scale = font / FONT_SIZE
+        w = CHAR_WIDTH * scale * len(text) + cw
+        h = LINE_HEIGHT * scale + ch
+        if local in _BARS:  # a toolbar of buttons: its items side by side
+            items = [k for k in (self.build(c, font) for c in self.content_of(el)) if k is not None]
+            if items:
+                w = sum(_outer(k)[0] for k in items) + cw
+                h = max(LINE_HEIGHT * scale, max(_outer(k)[1] for k in items)) + ch
         n.estimate = (max(0.0, w), max(0.0, h))
         turned = _layout_transform(el)
         if turned is not None:
@@ -487,6 +512,15 @@ class PanelsReader:
         elif n.width != n.width or n.height != n.height:
             self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
                       f"estimated as {w:g} x {h:g}", el)  # fmt: skip
+
+
+def _outer(k: L.Node) -> tuple[float, float]:
+    """An estimated item's size with its margin: its Width/Height, else its estimate."""
+    est = k.estimate or (0.0, 0.0)
+    w = k.width if k.width == k.width else max(k.min_width, min(est[0], k.max_width))
+    h = k.height if k.height == k.height else max(k.min_height, min(est[1], k.max_height))
+    ml, mt, mr, mb = k.margin
+    return w + ml + mr, h + mt + mb
 
 
 def _content_text(el) -> str:
