@@ -137,3 +137,49 @@ def test_system_resource_keys_are_not_load_errors():
     diags = load(x, text=True).diagnostics
     assert [d.code for d in diags if d.code.startswith("RES")] == ["RES011"]
     assert all(d.severity != "error" for d in diags)
+
+
+def _name_codes(body: str, extra_ns: str = "") -> list[str]:
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" xmlns:local="clr-namespace:Demo" '
+        'xmlns:mc="http://schemas.openxmlformats.org/markup-compatibility/2006" '
+        f'xmlns:d="http://schemas.microsoft.com/expression/blend/2008" mc:Ignorable="d"{extra_ns}>'
+        f"{body}<Viewport3D/></Grid>"
+    )
+    return [d.code for d in load(x, text=True).diagnostics if d.code in ("XAML019", "XAML020")]
+
+
+def test_name_of_a_custom_type_is_an_ordinary_property():
+    # WPF: Name is the name property of its framework elements; on a clr-namespace type it is
+    # a plain property, so spaces and repeats are fine there (x:Name is still checked)
+    people = '<local:Person Name="Bob Jones"/><local:Person Name="Bob Jones"/>'
+    assert _name_codes(f'<TextBlock x:Name="Bob"/>{people}<local:Person Name="Bob"/>') == []
+    assert _name_codes('<local:Person x:Name="a b"/>') == ["XAML019"]
+    assert _name_codes('<TextBlock Name="a b"/>') == ["XAML019"]
+
+
+def test_what_the_loader_never_reads_is_not_checked_for_names():
+    xdata = (
+        '<XmlDataProvider><x:XData><Books xmlns=""><Book Name="Two Words"/></Books></x:XData>'
+        "</XmlDataProvider>"
+    )
+    alt = (
+        '<mc:AlternateContent><mc:Choice Requires="d"><TextBlock x:Name="alt"/></mc:Choice>'
+        '<mc:Fallback><TextBlock x:Name="alt"/></mc:Fallback></mc:AlternateContent>'
+    )
+    ignorable = '<d:Thing x:Name="dup"><TextBlock x:Name="dup"/></d:Thing><TextBlock x:Name="dup"/>'
+    assert _name_codes(xdata) == []
+    assert _name_codes(alt) == []
+    assert _name_codes(ignorable) == []
+    assert _name_codes('<d:Thing Name="two words"/>') == []
+
+
+def test_item_container_template_is_a_namescope():
+    body = (
+        '<TextBlock x:Name="t"/><Menu><Menu.ItemTemplate><ItemContainerTemplate>'
+        '<MenuItem x:Name="t"/></ItemContainerTemplate></Menu.ItemTemplate></Menu>'
+    )
+    assert _name_codes(body) == []

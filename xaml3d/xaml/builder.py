@@ -45,7 +45,7 @@ from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
 
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
-              "HierarchicalDataTemplate"}  # fmt: skip
+              "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
 _REFERENCE = {"StaticResource", "DynamicResource"}
 
 

@@ -253,6 +253,7 @@ ScrollViewer Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox
 ListBox ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline
 Frame ContentPresenter ContentControl AdornerDecorator Decorator ColumnDefinition RowDefinition
 Style Setter ControlTemplate DataTemplate ItemsPanelTemplate HierarchicalDataTemplate Trigger
+ItemContainerTemplate ItemContainerTemplateSelector
 MultiTrigger Condition DataTrigger MultiDataTrigger EventSetter ToolTip Menu MenuItem Separator
 Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar InkCanvas
 MediaElement KeyBinding MouseBinding BooleanToVisibilityConverter Run Span Bold Italic Underline
