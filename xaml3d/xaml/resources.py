@@ -57,13 +57,32 @@ def reduce_uri(source: str) -> str | None:
     return s
 
 
-class Dictionary:
-    """One resource dictionary: own entries plus merged dictionaries."""
+_ASSEMBLY = re.compile(r"(?:^|/)([^/;]+);component/", re.IGNORECASE)
 
-    def __init__(self, owner: etree._Element) -> None:
+
+def uri_assembly(source: str) -> str | None:
+    """The assembly a XAML URI names (``/Name;component/...``, also in a pack URI), else None:
+    such a dictionary is compiled into that library."""
+    m = _ASSEMBLY.search(source.strip().replace("\\", "/"))
+    return m.group(1) if m else None
+
+
+class Dictionary:
+    """One resource dictionary: own entries plus merged dictionaries. ``assembly`` names the
+    library of a merged dictionary xaml3d cannot read (its entries are unknown)."""
+
+    def __init__(self, owner: etree._Element, assembly: str | None = None) -> None:
         self.owner = owner
         self.entries: dict[str, etree._Element] = {}
         self.merged: list[Dictionary] = []
+        self.assembly = assembly
+
+    def unavailable(self) -> list[str]:
+        """The assemblies of the merged dictionaries (at any depth) that could not be read."""
+        out = [self.assembly] if self.assembly else []
+        for d in self.merged:
+            out.extend(d.unavailable())
+        return out
 
     def find(self, key: str) -> tuple[etree._Element, bool] | None:
         """(entry, is_local): local entries first, then merged ones, the last merged first."""
@@ -167,6 +186,14 @@ class Resources:
             return None
         base = doc.directory if doc and doc.directory else Path.cwd()
         path = (base / rel).resolve()
+        assembly = uri_assembly(source)
+        if assembly is not None and not path.is_file():
+            # compiled into another library (a theme, a control toolkit): WPF loads it from
+            # there, xaml3d cannot read it
+            msg = (f"merged dictionary from assembly {assembly} is not available: the resources "
+                   f"it defines are unknown ({as_written(source)})")  # fmt: skip
+            self.ctx.diag("RES012", msg, md, attr="Source")
+            return Dictionary(md, assembly)
         if not self.ctx.path_allowed(path):
             self.ctx.diag(
                 "RES004",
@@ -288,10 +315,12 @@ class Resources:
             key = type_key(key)  # an implicit Style's key, as the dictionaries store it
         here = doc_position(from_el)
         later = None
+        unavailable: list[str] = []  # assemblies of merged dictionaries in scope not read
         node = from_el
         while node is not None:
             d = self.dictionary_of(node)
             if d is not None:
+                unavailable.extend(d.unavailable())
                 hit = d.find(key)
                 if hit is not None:
                     entry, local = hit
@@ -303,6 +332,7 @@ class Resources:
         for doc, d in reversed(self.app):
             if doc.root is own_root:
                 continue  # already searched (with the order rule) on the way up
+            unavailable.extend(d.unavailable())
             hit = d.find(key)
             if hit is not None:
                 return hit[0]
@@ -321,6 +351,13 @@ class Resources:
                 from_el,
                 attr=attr,
             )
+        elif unavailable:
+            names = ", ".join(dict.fromkeys(unavailable))
+            kind = "DynamicResource" if dynamic else "StaticResource"
+            msg = (f"{kind} {key!r} not found: it may be defined in the merged dictionary from "
+                   f"assembly {names}, which xaml3d cannot read; "
+                   "the property keeps its default")  # fmt: skip
+            self.ctx.diag("RES013", msg, from_el, attr=attr)
         elif dynamic:  # WPF keeps the default and waits for the key to appear: no load error
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)

@@ -371,6 +371,11 @@ READER_CODES: dict[str, tuple[str, str]] = {
         INFO,
         "system or theme resource (x:Static or type key): property keeps its default",
     ),
+    "RES012": (WARNING, "merged dictionary from another assembly not available: its keys unknown"),
+    "RES013": (
+        WARNING,
+        "resource key not found while a dictionary of another assembly is in scope",
+    ),
     "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
     "SCN013": (INFO, "a ResourceDictionary or Application file: no scene to render"),
     "SCN003": (INFO, "viewport size and how the layout derived it (docs/layout.md)"),
