@@ -115,7 +115,7 @@ APP_FROM_ASSEMBLY = """<Application xmlns="http://schemas.microsoft.com/winfx/20
  <ResourceDictionary><ResourceDictionary.MergedDictionaries>
   <ResourceDictionary Source="pack://application:,,,/MahApps.Metro;component/Styles/Controls.xaml"/>
  </ResourceDictionary.MergedDictionaries>
- <DiffuseMaterial x:Key="Gold" Brush="Goldenrod"/></ResourceDictionary>
+ <SolidColorBrush x:Key="Gold" Color="Goldenrod"/></ResourceDictionary>
 </Application.Resources></Application>
 """
 
@@ -167,3 +167,30 @@ def test_assembly_dictionary_without_pack_prefix_and_a_missing_plain_one(tmp_pat
         p.returncode == 1
         and "error RES005 merged dictionary 'themes/missing.xaml' not found" in (p.stdout.decode())
     )
+
+
+def test_no_app_reads_no_app_xaml_found_above_the_scene(tmp_path):
+    (tmp_path / "App.xaml").write_text(APP_FROM_ASSEMBLY)
+    (tmp_path / "views").mkdir()
+    (tmp_path / "views" / "s.xaml").write_text(_scene_using("Gold"))
+    p = xaml3d("validate", "views/s.xaml", cwd=tmp_path)
+    assert p.returncode == 0 and b"RES012" in p.stdout
+    p = xaml3d("validate", "views/s.xaml", "--no-app", cwd=tmp_path)
+    out = p.stdout.decode()
+    assert p.returncode == 1 and "RES012" not in out
+    assert "views/s.xaml:14:30: error RES001 StaticResource 'Gold' not found" in out
+    for command in (
+        ["render", "views/s.xaml", "-o", "s.png"],
+        ["animate", "views/s.xaml", "-o", "s.gif", "--duration", "0.1", "--fps", "10"],
+    ):
+        with_app = xaml3d(*command, cwd=tmp_path)
+        assert with_app.returncode == 0, (command, with_app.stderr)
+        without = xaml3d(*command, "--no-app", cwd=tmp_path)
+        assert without.returncode == 1, command
+        assert b"error RES001 StaticResource 'Gold' not found" in without.stderr, command
+    # info and camera show what they read; neither fails on a scene error
+    info = xaml3d("info", "views/s.xaml", cwd=tmp_path).stdout.decode()
+    assert f"resource files: {tmp_path / 'App.xaml'}" in info
+    info = xaml3d("info", "views/s.xaml", "--no-app", cwd=tmp_path).stdout.decode()
+    assert "resource files: none" in info and "1 error(s)" in info
+    assert xaml3d("camera", "views/s.xaml", "--no-app", cwd=tmp_path).returncode == 0

@@ -15,6 +15,7 @@ from xaml3d.cli_common import (
     display_name,
     exit_on_input_error,
     load_scene,
+    no_app_option,
     resources_option,
     window_size_option,
 )
@@ -183,12 +184,13 @@ Examples:
 @click.command("info", help=HELP, short_help="Summarize what a scene holds.")
 @click.argument("scene", metavar="SCENE")
 @resources_option
+@no_app_option
 @window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def info_command(scene, resources, window_size, as_json) -> None:
+def info_command(scene, resources, no_app, window_size, as_json) -> None:
     name = display_name(scene)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources), window_size)
+        sc = load_scene(scene, tuple(resources), window_size, discover_app=not no_app)
         findings = findings_of(sc, name)
     info = scene_info(sc, name, findings)
     if as_json:
