@@ -35,6 +35,7 @@ CASES = {
     "element-unknown": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
     "element-wrong-case": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
     "namespace-typo": ("XAML018", 1, 1, "did you mean 'http://schemas.microsoft.com/winfx/2006"),
+    "namespace-missing": ("XAML021", 1, 1, 'add xmlns="http://schemas.microsoft.com/winfx/2006'),
     "property-set-twice": ("XAML012", 15, 15, "set both"),
     "model3d-among-visuals": ("SCN008", 20, 18, "ModelVisual3D around it"),
     "static-resource-missing": ("RES001", 14, 30, "'Paint'"),
@@ -44,7 +45,11 @@ CASES = {
     "name-invalid": ("XAML019", 9, 26, "'1cube' is not a valid name"),
     "name-twice": ("XAML020", 9, 26, "'sun' is already used in this namescope (line 8)"),
 }
-NOT_RENDERABLE = {"malformed-xml", "namespace-typo"}  # fatal even with --lenient
+NOT_RENDERABLE = {
+    "malformed-xml",
+    "namespace-typo",
+    "namespace-missing",
+}  # fatal even with --lenient
 
 
 def test_every_case_file_is_listed():
@@ -183,3 +188,18 @@ def test_item_container_template_is_a_namescope():
         '<MenuItem x:Name="t"/></ItemContainerTemplate></Menu.ItemTemplate></Menu>'
     )
     assert _name_codes(body) == []
+
+
+def test_a_document_without_namespace_gets_one_error_in_a_real_process():
+    import subprocess
+    import sys
+
+    path = HERE / "namespace-missing.xaml"
+    p = subprocess.run([sys.executable, "-m", "xaml3d", "validate", str(path)], capture_output=True)
+    assert p.returncode == 1
+    assert p.stdout.decode().splitlines() == [
+        f"{path}:1:1: error XAML021 element 'Viewport3D' has no XML namespace: WPF cannot resolve "
+        'its type; add xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" to the '
+        "root element"
+    ]
+    assert p.stderr == b"xaml3d: 1 error(s), 0 warning(s) in 1 file\n"

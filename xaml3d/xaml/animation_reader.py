@@ -23,7 +23,7 @@ from dataclasses import replace
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
 from xaml3d.xaml import values as V
-from xaml3d.xaml.context import element_name, qname, x_attr
+from xaml3d.xaml.context import a_an, element_name, qname, x_attr
 from xaml3d.xaml.models_reader import rotation, rotation_as_quaternion
 
 _CONVERTERS = {
@@ -224,7 +224,7 @@ def _key_frame(r, el, vtype: str) -> KeyFrame | None:
     t = p.type
     kind = next((k for k in _KF_KINDS if t.startswith(k)), None)
     if kind is None or not t.endswith("KeyFrame") or vtype not in t:
-        r.ctx.diag("ANI004", f"{t} is not a {vtype} key frame: ignored", el)
+        r.ctx.diag("ANI004", f"{t} is not {a_an(vtype)} key frame: ignored", el)
         return None
     _days_warning(r, p, ("KeyTime",))
     key_time = p.string("KeyTime")

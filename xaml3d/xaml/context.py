@@ -34,6 +34,14 @@ def as_written(text: str) -> str:
     return f"'{text}'"
 
 
+def a_an(word: str) -> str:
+    """``word`` with its indefinite article: "an Application", "a Viewport3D", "a UserControl"
+    (a "u" read as "you": uni-, use-), "an Unknown"."""
+    w = word.lower()
+    vowel = w[:1] in ("a", "e", "i", "o") or (w.startswith("u") and not w.startswith(("uni", "us")))
+    return f"{'an' if vowel else 'a'} {word}"
+
+
 def qname(el_or_attr: str) -> tuple[str | None, str]:
     """(namespace, local name) of a Clark-notation tag or attribute name."""
     if el_or_attr.startswith("{"):
