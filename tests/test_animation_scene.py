@@ -391,3 +391,29 @@ def test_camera_and_validate_see_wpfs_first_frame(tmp_path):
     r = _run("render", "s.xaml", "-o", "r.png", "-v", cwd=tmp_path)
     found = [ln for ln in v.stdout.decode().splitlines() if " CHK" in ln or " CAM" in ln]
     assert found and all(ln in r.stderr.decode() for ln in found)
+
+
+def test_storyboard_option_accepts_the_storyboards_own_name(tmp_path):
+    # --storyboard takes the BeginStoryboard's x:Name or the Storyboard's own
+    first = ('<DoubleAnimation Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX" '
+             'To="10" Duration="0:0:1"/>')  # fmt: skip
+    click = """<EventTrigger RoutedEvent="Button.Click"><BeginStoryboard x:Name="begin"><Storyboard
+        x:Name="story"><DoubleAnimation Storyboard.TargetName="move"
+        Storyboard.TargetProperty="OffsetX" To="-20" Duration="0:0:1"/></Storyboard>
+        </BeginStoryboard></EventTrigger>"""
+    s = xaml3d.load(scene(first, click), text=True)
+    for name in ("begin", "story"):
+        assert s.timeline.at(0.5, name).viewports[0].models[0].world[0, 3] == -8.0
+    (tmp_path / "s.xaml").write_text(scene(first, click))
+    for name in ("begin", "story"):
+        p = _run("render", "s.xaml", "-o", f"{name}.png", "--storyboard", name, "--time", "0.5",
+                 cwd=tmp_path)  # fmt: skip
+        assert p.returncode == 0, p.stderr
+    a, b = (np.array(Image.open(tmp_path / f"{n}.png")) for n in ("begin", "story"))
+    assert np.array_equal(a, b)
+    p = _cli("render", "s.xaml", "-o", "x.png", "--storyboard", "nope", cwd=tmp_path)
+    assert p.returncode == 1 and not (tmp_path / "x.png").exists()
+    assert p.stderr.decode() == (
+        "s.xaml: error ANIM010 no storyboard named 'nope': the storyboards are named: "
+        "'begin', 'story'\n"
+    )

@@ -438,6 +438,13 @@ class Storyboard:
     handoff: str = "SnapshotAndReplace"  # BeginStoryboard.HandoffBehavior, or "Compose"
     line: int | None = None
     column: int | None = None
+    # the Storyboard's own x:Name (or x:Key) when ``name`` is its BeginStoryboard's
+    other_names: tuple[str, ...] = ()
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        """Every name ``--storyboard`` accepts for it: ``name``, then ``other_names``."""
+        return ((self.name,) if self.name else ()) + self.other_names
 
 
 # --------------------------------------------------------------------------- viewport & scene

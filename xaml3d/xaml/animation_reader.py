@@ -271,8 +271,10 @@ def read_trigger(r, trigger_el, out: list, begun: set) -> None:
             if qname(sb.tag)[1] != "Storyboard":
                 r.ctx.diag("ANI004", f"{qname(sb.tag)[1]} is not a Storyboard: ignored", sb)
                 return None
-            story = read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
-            return replace(story, handoff=hb)
+            own = element_name(sb) or x_attr(sb, "Key")
+            story = read_storyboard(r, sb, ev, nm or own)
+            other = (own,) if nm and own and own != nm else ()
+            return replace(story, handoff=hb, other_names=other)
 
         sb = ap.obj("Storyboard", build, None)
         if sb is not None:

@@ -113,17 +113,18 @@ class SceneTimeline:
 
     # ----------------------------------------------------------------- what runs
     def storyboard_names(self) -> list[str]:
-        return [sb.name for sb in self.base.storyboards if sb.name]
+        return [n for sb in self.base.storyboards for n in sb.names]
 
     def running(self, storyboard: str | None = None) -> list[Storyboard]:
         """The storyboards that run: Loaded ones, then the one named ``storyboard``."""
         out = [sb for sb in self.base.storyboards if sb.starts_at_load]
         if storyboard is not None:
-            hit = [sb for sb in self.base.storyboards if sb.name == storyboard]
+            hit = [sb for sb in self.base.storyboards if storyboard in sb.names]
             if not hit:
-                names = ", ".join(repr(n) for n in self.storyboard_names()) or "none named"
+                names = ", ".join(repr(n) for n in self.storyboard_names())
+                named = f"the storyboards are named: {names}" if names else "none has a name"
                 raise SceneError(
-                    f"no storyboard named {storyboard!r} ({names})",
+                    f"no storyboard named {storyboard!r}: {named}",
                     code="ANIM010",
                     file=self.base.file,
                 )
