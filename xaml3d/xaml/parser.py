@@ -63,6 +63,10 @@ class ParsedDocument:
         character ``index`` of that attribute's value: SourceMap.locate)."""
         return None if self.source is None else self.source.locate(el, attr, index)
 
+    def locate_text(self, el: etree._Element, index: int) -> tuple[int, int] | None:
+        """(line, column) of character ``index`` of the element's text (SourceMap.locate_text)."""
+        return None if self.source is None else self.source.locate_text(el, index)
+
     @property
     def directory(self) -> Path | None:
         return None if self.path is None else self.path.parent

@@ -80,8 +80,13 @@ class Props:
             ctx.diag("XAML008", msg, node, attr=attr)
             return False
         if not self._known(prop):
-            hint = voc.did_you_mean(prop, self.etype.properties)
+            meant = voc.suggest(prop, self.etype.properties)
+            hint = f" (did you mean {meant}?)" if meant else ""
             ctx.diag("XAML004", f"{self.type} has no property {prop!r}{hint}", node, attr=attr)
+            if meant is not None:
+                # the property meant is unset because of this error: no follow-on warning
+                # ("no Material" after <GeometryModel3D.Materail>)
+                self.rejected.add(meant)
             return False
         return True
 
