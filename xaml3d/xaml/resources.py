@@ -22,6 +22,7 @@ from pathlib import Path
 from lxml import etree
 
 from xaml3d.errors import ResourceError, XamlError
+from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import (
     ReadContext,
     as_written,
@@ -76,6 +77,13 @@ class Dictionary:
         self.entries: dict[str, etree._Element] = {}
         self.merged: list[Dictionary] = []
         self.assembly = assembly
+
+    def keys(self) -> list[str]:
+        """Every key this dictionary defines, its merged dictionaries' too."""
+        out = list(self.entries)
+        for d in self.merged:
+            out.extend(d.keys())
+        return out
 
     def unavailable(self) -> list[str]:
         """The assemblies of the merged dictionaries (at any depth) that could not be read."""
@@ -362,9 +370,25 @@ class Resources:
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            msg = f"StaticResource {key!r} not found{self._app_hint()}"
+            hint = voc.did_you_mean(key, self._keys_in_scope(from_el))
+            # a near key in scope is the likelier cause than an application resource
+            msg = f"StaticResource {key!r} not found{hint or self._app_hint()}"
             self.ctx.diag("RES001", msg, from_el, attr=attr)
         return None
+
+    def _keys_in_scope(self, from_el: etree._Element) -> set[str]:
+        """The keys of the dictionaries seen from ``from_el`` (enclosing elements, then the
+        application), implicit Styles' type keys left out: the did-you-mean candidates."""
+        keys: set[str] = set()
+        node = from_el
+        while node is not None:
+            d = self.dictionary_of(node)
+            if d is not None:
+                keys.update(d.keys())
+            node = node.getparent()
+        for _, d in self.app:
+            keys.update(d.keys())
+        return {k for k in keys if not k.startswith("{")}
 
     def _app_hint(self) -> str:
         """For a key no dictionary defines: the application's resources may (an App.xaml is
