@@ -15,6 +15,7 @@ them: a reference inside an App.xaml entry resolves from App.xaml's tree.
 
 from __future__ import annotations
 
+import difflib
 import os
 import re
 from pathlib import Path
@@ -22,7 +23,6 @@ from pathlib import Path
 from lxml import etree
 
 from xaml3d.errors import ResourceError, XamlError
-from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import (
     ReadContext,
     as_written,
@@ -370,7 +370,8 @@ class Resources:
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            hint = voc.did_you_mean(key, self._keys_in_scope(from_el))
+            near = difflib.get_close_matches(key, sorted(self._keys_in_scope(from_el)), 1, 0.8)
+            hint = f" (did you mean {near[0]}?)" if near else ""
             # a near key in scope is the likelier cause than an application resource
             msg = f"StaticResource {key!r} not found{hint or self._app_hint()}"
             self.ctx.diag("RES001", msg, from_el, attr=attr)
