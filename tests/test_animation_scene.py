@@ -417,3 +417,39 @@ def test_storyboard_option_accepts_the_storyboards_own_name(tmp_path):
         "s.xaml: error ANIM010 no storyboard named 'nope': the storyboards are named: "
         "'begin', 'story'\n"
     )
+
+
+def test_anim001_points_at_the_target_name_attribute_and_storyboard_passes_it_on(tmp_path):
+    text = f"""<Viewport3D {NS} Width="64" Height="48">
+  <ModelVisual3D><ModelVisual3D.Transform><TranslateTransform3D x:Name="move"/>
+  </ModelVisual3D.Transform></ModelVisual3D>
+  <Viewport3D.Triggers>
+    <EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard><Storyboard>
+      <DoubleAnimation Storyboard.TargetProperty="OffsetX"
+          Storyboard.TargetName="rot" To="10"/>
+    </Storyboard></BeginStoryboard></EventTrigger>
+    <EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+      <Storyboard Storyboard.TargetName="gone"><DoubleAnimation
+          Storyboard.TargetProperty="OffsetX" To="10"/></Storyboard></BeginStoryboard>
+    </EventTrigger>
+    <EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+      <Storyboard Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX">
+        <DoubleAnimation To="10" Duration="0:0:1"/></Storyboard></BeginStoryboard>
+    </EventTrigger>
+  </Viewport3D.Triggers>
+</Viewport3D>"""
+    (tmp_path / "s.xaml").write_text(text)
+    p = _cli("validate", "s.xaml", cwd=tmp_path)
+    errors = [ln for ln in p.stdout.decode().splitlines() if " error " in ln]
+    # WPF's Storyboard.TargetName is attached: written on the Storyboard, its animations
+    # inherit it (no XAML004); ANIM001 is at the attribute that names the missing object
+    assert p.returncode == 1 and errors == [
+        "s.xaml:7:11: error ANIM001 DoubleAnimation -> rot.OffsetX: Storyboard.TargetName 'rot' "
+        "names no object",
+        "s.xaml:10:19: error ANIM001 DoubleAnimation -> gone.OffsetX: Storyboard.TargetName "
+        "'gone' names no object",
+    ]
+    s = xaml3d.load(text, text=True)
+    third = s.storyboards[2].animations[0]
+    assert (third.target_name, third.target_property) == ("move", "OffsetX")
+    assert s.timeline.targets[id(third)] is not None

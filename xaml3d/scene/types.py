@@ -407,6 +407,9 @@ class Animation:
     evaluated: bool = True  # False: a type xaml3d reads but does not evaluate (path animations)
     line: int | None = None
     column: int | None = None
+    # (line, column) of the Storyboard.TargetName attribute that names the target (its own, or
+    # an enclosing timeline's), None when none is written
+    target_name_at: tuple[int | None, int | None] | None = None
 
     @property
     def timing(self) -> Timing:

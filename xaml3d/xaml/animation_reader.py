@@ -134,9 +134,11 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
     """One timeline element -> TimelineGroup | Animation | None (not a timeline)."""
     p = r.props(el)
     t = p.type
+    own = "Storyboard.TargetName" in p.attached
     target = {
         "name": p.attached.get("Storyboard.TargetName", inherited.get("name")),
         "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
+        "name_at": r.ctx.locate(el, "Storyboard.TargetName") if own else inherited.get("name_at"),
     }
     if t in _GROUPS:
         if t == "Storyboard" and not top:
@@ -194,6 +196,7 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
         path_source=source,
         value_type=vtype,
         evaluated=p.etype.supported and (path is not None or not t.endswith("UsingPath")),
+        target_name_at=target["name_at"],
         **r.ctx.position(el),
     )
     out.append(anim)
