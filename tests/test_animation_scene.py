@@ -453,3 +453,16 @@ def test_anim001_points_at_the_target_name_attribute_and_storyboard_passes_it_on
     third = s.storyboards[2].animations[0]
     assert (third.target_name, third.target_property) == ("move", "OffsetX")
     assert s.timeline.targets[id(third)] is not None
+
+
+def test_time_option_forms():
+    import click
+
+    from xaml3d.cli_animate import parse_time
+
+    assert [parse_time(v) for v in ("1.5", "1.5s", "5s", "0:0:1.5", "0:1", "none")] == [
+        1.5, 1.5, 5.0, 1.5, 60.0, None
+    ]  # fmt: skip
+    for bad in ("5ss", "-1", "1.5m", "s"):
+        with pytest.raises(click.BadParameter):
+            parse_time(bad)

@@ -355,3 +355,22 @@ def test_bad_number_in_multiline_element_text_is_located_at_its_character():
     # element's place is given
     s = load(text.replace("\t1,-1,0", "&#9;1,-1,0"), text=True)
     assert where(s, "VAL001") == [(3, 3)]
+
+
+def test_xml_error_of_a_mismatched_end_tag_is_at_its_start_and_within_the_line():
+    data = b"<Grid>\n  <Border>\n  </Bordr>\n</Grid>\n"
+    with pytest.raises(XamlSyntaxError) as exc:
+        parse_bytes(data)
+    # libxml2 stops after the ">" (column 12, one past the line's end): the end tag's "<"
+    assert (exc.value.line, exc.value.column) == (3, 3)
+    assert "mismatch" in exc.value.message and "column" not in exc.value.message
+    for bad in (
+        b"<Grid>\n<Border",
+        b"<Grid a='1' a='2'/>",
+        b"<Grid>\n  </Grid>\n<x/>",
+        b"<a>&b;</a>",
+    ):
+        with pytest.raises(XamlSyntaxError) as exc:
+            parse_bytes(bad)
+        lines = bad.decode().split("\n")
+        assert exc.value.column <= len(lines[exc.value.line - 1]) + 1, bad

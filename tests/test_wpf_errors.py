@@ -22,7 +22,8 @@ PNG = b"\x89PNG\r\n\x1a\n"
 
 # file -> (code, line, column, a word the message must hold)
 CASES = {
-    "malformed-xml": ("XML001", 18, 30, "mismatch"),
+    # a mismatched end tag: at its "<" (libxml2 gives the place after its ">")
+    "malformed-xml": ("XML001", 18, 5, "mismatch"),
     "point3d-two-numbers": ("VAL003", 3, 24, "needs 3 numbers"),
     # a bad number or comma: the column of the offending character in the value
     "double-not-a-number": ("VAL001", 3, 54, "'abc'"),

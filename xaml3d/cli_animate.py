@@ -45,7 +45,8 @@ DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
 
 
 def parse_time(value: str, what: str = "--time") -> float | None:
-    """A time option: seconds ('1.5'), a TimeSpan with a colon ('0:0:1.5'), or 'none'."""
+    """A time option: seconds ('1.5', or '1.5s'), a TimeSpan with a colon ('0:0:1.5'), or
+    'none'."""
     from xaml3d.errors import ValueSyntaxError
     from xaml3d.xaml.values import parse_double, parse_timespan
 
@@ -53,7 +54,7 @@ def parse_time(value: str, what: str = "--time") -> float | None:
     if v.lower() == "none":
         return None
     try:
-        t = parse_timespan(v) if ":" in v else parse_double(v.rstrip("s"))
+        t = parse_timespan(v) if ":" in v else parse_double(v.removesuffix("s"))
     except ValueSyntaxError:
         raise click.BadParameter(
             f"{value!r} is not a time (seconds like 1.5, or a TimeSpan like 0:0:1.5)",
