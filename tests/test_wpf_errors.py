@@ -204,3 +204,68 @@ def test_a_document_without_namespace_gets_one_error_in_a_real_process():
         "root element"
     ]
     assert p.stderr == b"xaml3d: 1 error(s), 0 warning(s) in 1 file\n"
+
+
+def _style_codes(resources: str, viewport: str = "<Viewport3D/>") -> list[tuple[str, str]]:
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">'
+        f"<Grid.Resources>{resources}</Grid.Resources>{viewport}</Grid>"
+    )
+    return [
+        (d.code, d.message)
+        for d in load(x, text=True).diagnostics
+        if d.code in ("RES001", "RES003", "XAML004")
+    ]
+
+
+def test_style_based_on_itself_is_an_error_in_a_real_process(tmp_path):
+    import subprocess
+    import sys
+
+    (tmp_path / "s.xaml").write_text(
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">\n<Grid.Resources>'
+        '<Style x:Key="a" TargetType="Viewport3D" BasedOn="{StaticResource a}"/></Grid.Resources>'
+        '\n<Viewport3D Style="{StaticResource a}"/></Grid>'
+    )
+    p = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "validate", "s.xaml"], capture_output=True, cwd=tmp_path
+    )
+    assert p.returncode == 1
+    assert [ln for ln in p.stdout.decode().splitlines() if " error " in ln] == [
+        "s.xaml:2:58: error RES003 Style 'a' is BasedOn itself: WPF looks the key up while "
+        "creating the Style, before it is defined, and fails (cycle)"
+    ]
+
+
+def test_style_based_on_an_outer_style_of_the_same_key_is_fine():
+    inner = (
+        '<Grid><Grid.Resources><Style x:Key="a" TargetType="Viewport3D" '
+        'BasedOn="{StaticResource a}"/></Grid.Resources><Viewport3D/></Grid>'
+    )
+    assert _style_codes('<Style x:Key="a" TargetType="Viewport3D"/>', inner) == []
+
+
+def test_setter_naming_no_property_of_a_known_target_type():
+    bad = '<Style TargetType="Viewport3D"><Setter Property="Widht" Value="10"/></Style>'
+    assert _style_codes(bad) == [
+        ("XAML004", "Setter Property 'Widht': Viewport3D has no property 'Widht' "
+         "(did you mean Width?)")
+    ]  # fmt: skip
+    fine = (
+        '<Style TargetType="{x:Type Viewport3D}"><Setter Property="Width" Value="10"/>'
+        '<Setter Property="Viewport3D.Height" Value="10"/><Setter Property="Grid.Row" Value="0"/>'
+        '<Style.Triggers><Trigger Property="IsEnabled" Value="False">'
+        '<Setter Property="Opacity" Value="0.5"/></Trigger></Style.Triggers></Style>'
+        # framework types are open: their property lists are not closed
+        '<Style TargetType="Button" x:Key="b"><Setter Property="Widht" Value="1"/></Style>'
+    )
+    assert _style_codes(fine) == []
+    trig = (
+        '<Style TargetType="Viewport3D"><Style.Triggers><Trigger Property="IsEnabled" '
+        'Value="False"><Setter Property="Opacity2" Value="0.5"/></Trigger></Style.Triggers></Style>'
+    )
+    assert [c for c, _ in _style_codes(trig)] == ["XAML004"]

@@ -44,6 +44,7 @@ from xaml3d.xaml.names import check_names
 from xaml3d.xaml.parser import PRESENTATION_NS, XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
+from xaml3d.xaml.styles_check import check_styles
 
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
@@ -340,6 +341,7 @@ def build_scene(
     r = Reader(ctx, resources, frame)
     if frame is None:
         check_names(ctx, doc.root)
+        check_styles(ctx, resources, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
