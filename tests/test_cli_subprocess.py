@@ -194,3 +194,14 @@ def test_no_app_reads_no_app_xaml_found_above_the_scene(tmp_path):
     info = xaml3d("info", "views/s.xaml", "--no-app", cwd=tmp_path).stdout.decode()
     assert "resource files: none" in info and "1 error(s)" in info
     assert xaml3d("camera", "views/s.xaml", "--no-app", cwd=tmp_path).returncode == 0
+
+
+def test_camera_viewport_all_is_a_usage_error(tmp_path):
+    (tmp_path / "s.xaml").write_text(SQUARE)
+    p = xaml3d("camera", "s.xaml", "--viewport", "all", cwd=tmp_path)
+    assert p.returncode == 2 and p.stdout == b""
+    assert p.stderr.decode().splitlines()[-1] == (
+        "Error: camera shows one viewport: --viewport all is for render; give an index or an "
+        "x:Name (the scene has 1 viewport)"
+    )
+    assert xaml3d("camera", "s.xaml", "--viewport", "0", cwd=tmp_path).returncode == 0

@@ -259,6 +259,12 @@ def camera_command(
     with exit_on_input_error(name):
         loaded = load_scene(scene, tuple(resources), window_size, discover_app=not no_app)
         sc = scene_at(loaded, at_time)
+        if viewport == "all" and not any(v.name == "all" for v in sc.viewports):
+            n = len(sc.viewports)
+            raise click.UsageError(
+                "camera shows one viewport: --viewport all is for render; give an index or an "
+                f"x:Name (the scene has {n} viewport{'' if n == 1 else 's'})"
+            )
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
     if fit:
