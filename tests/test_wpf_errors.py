@@ -269,3 +269,17 @@ def test_setter_naming_no_property_of_a_known_target_type():
         'Value="False"><Setter Property="Opacity2" Value="0.5"/></Trigger></Style.Triggers></Style>'
     )
     assert [c for c, _ in _style_codes(trig)] == ["XAML004"]
+
+
+def test_name_and_x_name_on_one_wpf_element_is_set_twice():
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" xmlns:local="clr-namespace:D">\n'
+        '<Border Name="a" x:Name="a"/><local:Person Name="p" x:Name="q"/><Viewport3D/></Grid>'
+    )
+    found = [
+        (d.code, d.line, d.column) for d in load(x, text=True).diagnostics if d.severity == "error"
+    ]
+    assert found == [("XAML012", 2, 9)]  # at Border's Name; a custom type's Name is its own

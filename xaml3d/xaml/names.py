@@ -3,7 +3,8 @@
 A name must be an identifier (a letter or underscore, then letters, digits or underscores):
 ``x:Name="1"`` or ``Name="left cube"`` make the loader throw (XAML019). A name may be
 registered once per namescope: two elements named alike in one scope make it throw "Cannot
-register duplicate name" (XAML020). Styles, templates and resource dictionaries are namescopes
+register duplicate name" (XAML020). Name and x:Name on one WPF element set the same property
+twice: the loader throws (XAML012). Styles, templates and resource dictionaries are namescopes
 of their own, so names inside them are only checked against each other's scope.
 
 ``Name`` is the name property of WPF's own elements only: on a type of a clr-namespace it is an
@@ -14,6 +15,7 @@ and ``mc:AlternateContent`` (whose Choice and Fallback branches would name thing
 
 from __future__ import annotations
 
+from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import ReadContext, ignorable_namespaces, is_presentation, qname, x_attr
 from xaml3d.xaml.parser import MC_NS, XAML_NS
 
@@ -32,6 +34,13 @@ def check_names(ctx: ReadContext, root) -> None:
         if el.tag in _UNREAD or (ns is not None and ns in ignorable_namespaces(el)):
             continue
         framework = "." not in local and is_presentation(ns)  # Name is WPF's name property
+        if framework and x_attr(el, "Name") is not None and el.get("Name") is not None:
+            et = voc.lookup(local)
+            if et is not None and (et.open or "Name" in et.properties):
+                # Name is x:Name's property on this type: the loader refuses it set twice
+                msg = (f"{local} has both Name and x:Name: they set one property, which WPF's "
+                       "loader refuses to set twice (keep one)")  # fmt: skip
+                ctx.diag("XAML012", msg, el, attr="Name")
         attr, name = (X_NAME, x_attr(el, "Name")) if x_attr(el, "Name") is not None else (
             "Name", el.get("Name") if framework else None)  # fmt: skip
         if name is not None:
