@@ -247,6 +247,11 @@ def test_style_based_on_an_outer_style_of_the_same_key_is_fine():
         'BasedOn="{StaticResource a}"/></Grid.Resources><Viewport3D/></Grid>'
     )
     assert _style_codes('<Style x:Key="a" TargetType="Viewport3D"/>', inner) == []
+    # the usual idiom: an implicit Style based on the theme's Style of its type
+    themed = (
+        '<Style TargetType="{x:Type TextBlock}" BasedOn="{StaticResource {x:Type TextBlock}}"/>'
+    )
+    assert _style_codes(themed) == []
 
 
 def test_setter_naming_no_property_of_a_known_target_type():

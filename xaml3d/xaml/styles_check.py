@@ -38,6 +38,8 @@ def _based_on_itself(ctx: ReadContext, resources: Resources, style) -> None:
     if m is None or m[0] != "StaticResource":
         return
     key = markup_key(m[1])
+    if key.startswith("{"):
+        return  # BasedOn="{StaticResource {x:Type T}}": the theme's Style of T, WPF finds it
     if resources.find(key, style) is not style:
         return
     # an outer scope's entry of that key is what WPF finds then: no error
