@@ -391,3 +391,78 @@ def test_camera_and_validate_see_wpfs_first_frame(tmp_path):
     r = _run("render", "s.xaml", "-o", "r.png", "-v", cwd=tmp_path)
     found = [ln for ln in v.stdout.decode().splitlines() if " CHK" in ln or " CAM" in ln]
     assert found and all(ln in r.stderr.decode() for ln in found)
+
+
+def test_storyboard_option_accepts_the_storyboards_own_name(tmp_path):
+    # --storyboard takes the BeginStoryboard's x:Name or the Storyboard's own
+    first = ('<DoubleAnimation Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX" '
+             'To="10" Duration="0:0:1"/>')  # fmt: skip
+    click = """<EventTrigger RoutedEvent="Button.Click"><BeginStoryboard x:Name="begin"><Storyboard
+        x:Name="story"><DoubleAnimation Storyboard.TargetName="move"
+        Storyboard.TargetProperty="OffsetX" To="-20" Duration="0:0:1"/></Storyboard>
+        </BeginStoryboard></EventTrigger>"""
+    s = xaml3d.load(scene(first, click), text=True)
+    for name in ("begin", "story"):
+        assert s.timeline.at(0.5, name).viewports[0].models[0].world[0, 3] == -8.0
+    (tmp_path / "s.xaml").write_text(scene(first, click))
+    for name in ("begin", "story"):
+        p = _run("render", "s.xaml", "-o", f"{name}.png", "--storyboard", name, "--time", "0.5",
+                 cwd=tmp_path)  # fmt: skip
+        assert p.returncode == 0, p.stderr
+    a, b = (np.array(Image.open(tmp_path / f"{n}.png")) for n in ("begin", "story"))
+    assert np.array_equal(a, b)
+    p = _cli("render", "s.xaml", "-o", "x.png", "--storyboard", "nope", cwd=tmp_path)
+    assert p.returncode == 1 and not (tmp_path / "x.png").exists()
+    assert p.stderr.decode() == (
+        "s.xaml: error ANIM010 no storyboard named 'nope': the storyboards are named: "
+        "'begin', 'story'\n"
+    )
+
+
+def test_anim001_points_at_the_target_name_attribute_and_storyboard_passes_it_on(tmp_path):
+    text = f"""<Viewport3D {NS} Width="64" Height="48">
+  <ModelVisual3D><ModelVisual3D.Transform><TranslateTransform3D x:Name="move"/>
+  </ModelVisual3D.Transform></ModelVisual3D>
+  <Viewport3D.Triggers>
+    <EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard><Storyboard>
+      <DoubleAnimation Storyboard.TargetProperty="OffsetX"
+          Storyboard.TargetName="rot" To="10"/>
+    </Storyboard></BeginStoryboard></EventTrigger>
+    <EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+      <Storyboard Storyboard.TargetName="gone"><DoubleAnimation
+          Storyboard.TargetProperty="OffsetX" To="10"/></Storyboard></BeginStoryboard>
+    </EventTrigger>
+    <EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+      <Storyboard Storyboard.TargetName="move" Storyboard.TargetProperty="OffsetX">
+        <DoubleAnimation To="10" Duration="0:0:1"/></Storyboard></BeginStoryboard>
+    </EventTrigger>
+  </Viewport3D.Triggers>
+</Viewport3D>"""
+    (tmp_path / "s.xaml").write_text(text)
+    p = _cli("validate", "s.xaml", cwd=tmp_path)
+    errors = [ln for ln in p.stdout.decode().splitlines() if " error " in ln]
+    # WPF's Storyboard.TargetName is attached: written on the Storyboard, its animations
+    # inherit it (no XAML004); ANIM001 is at the attribute that names the missing object
+    assert p.returncode == 1 and errors == [
+        "s.xaml:7:11: error ANIM001 DoubleAnimation -> rot.OffsetX: Storyboard.TargetName 'rot' "
+        "names no object",
+        "s.xaml:10:19: error ANIM001 DoubleAnimation -> gone.OffsetX: Storyboard.TargetName "
+        "'gone' names no object",
+    ]
+    s = xaml3d.load(text, text=True)
+    third = s.storyboards[2].animations[0]
+    assert (third.target_name, third.target_property) == ("move", "OffsetX")
+    assert s.timeline.targets[id(third)] is not None
+
+
+def test_time_option_forms():
+    import click
+
+    from xaml3d.cli_animate import parse_time
+
+    assert [parse_time(v) for v in ("1.5", "1.5s", "5s", "0:0:1.5", "0:1", "none")] == [
+        1.5, 1.5, 5.0, 1.5, 60.0, None
+    ]  # fmt: skip
+    for bad in ("5ss", "-1", "1.5m", "s"):
+        with pytest.raises(click.BadParameter):
+            parse_time(bad)

@@ -349,3 +349,21 @@ def test_diagnostics_sorted_by_file_and_line():
     s = load(f"<Grid {NS}>\n<Viewport3D/>\n<Viewport3D/>\n</Grid>", text=True)
     lines = [d.line for d in s.diagnostics]
     assert lines == sorted(lines)
+
+
+def test_indefinite_article_before_type_names():
+    from xaml3d.xaml.context import a_an
+    from xaml3d.xaml.loader import load
+
+    words = ["Application", "UserControl", "UniformGrid", "Int32", "Double", "object"]
+    assert [a_an(w) for w in words] == [
+        "an Application",
+        "a UserControl",
+        "a UniformGrid",
+        "an Int32",
+        "a Double",
+        "an object",
+    ]
+    app = '<Application xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"/>'
+    msgs = [d.message for d in load(app, text=True).diagnostics if d.code == "SCN013"]
+    assert msgs == ["an Application holds no Viewport3D: nothing to render (use it with -r)"]

@@ -255,3 +255,58 @@ def test_fit_viewport_replaces_the_camera():
     # D = sqrt(2) / sin 45 = 2 -> z = -5 + 2 = -3.
     assert new.camera.position == pytest.approx((0, 0, -3))
     assert new.models is vp.models
+
+
+def _mesh_with_brush(brush: str, texcoords: str = "") -> str:
+    tc = f' TextureCoordinates="{texcoords}"' if texcoords else ""
+    return (
+        '<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'Width="40" Height="30">\n'
+        '<Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>\n'
+        "<ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight/>\n"
+        "  <GeometryModel3D><GeometryModel3D.Geometry>\n"
+        f'<MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2"{tc}/>'
+        "</GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial>"
+        f"<DiffuseMaterial.Brush>{brush}</DiffuseMaterial.Brush></DiffuseMaterial>"
+        "</GeometryModel3D.Material></GeometryModel3D>\n"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+
+
+GRADIENT = (
+    '<LinearGradientBrush><GradientStop Color="Red"/><GradientStop Color="Blue" Offset="1"/>'
+    "</LinearGradientBrush>"
+)
+
+
+def test_varying_brush_without_texture_coordinates_is_chk008(tmp_path):
+    from test_cli_subprocess import xaml3d
+
+    (tmp_path / "s.xaml").write_text(_mesh_with_brush(GRADIENT))
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    assert p.returncode == 0
+    assert [ln for ln in p.stdout.decode().splitlines() if " info " not in ln] == [
+        "s.xaml:4:3: warning CHK008 the LinearGradientBrush of model #0 is drawn in one colour, "
+        "as in WPF: it has no TextureCoordinates (WPF takes 0,0 for each vertex), so the brush "
+        "is sampled at that one point; give the mesh TextureCoordinates spread over the surface "
+        "(e.g. 0,1 1,1 1,0 0,0 for a quad)"
+    ]
+
+
+def test_chk008_only_where_the_brush_is_sampled_at_one_point():
+    from xaml3d.xaml.loader import load
+
+    def chk008(brush, texcoords=""):
+        s = load(_mesh_with_brush(brush, texcoords), text=True)
+        return [d.message for d in check_scene(s) if d.code == "CHK008"]
+
+    assert chk008(GRADIENT, "0,0 1,0 1,1") == []  # spread: the gradient shows
+    assert chk008('<SolidColorBrush Color="Red"/>') == []  # one colour anyway
+    assert (
+        "all its TextureCoordinates are the point 0.5,0.5"
+        in chk008(GRADIENT, "0.5,0.5 0.5,0.5 0.5,0.5")[0]
+    )
+    assert "the RadialGradientBrush of" in chk008(GRADIENT.replace("Linear", "Radial"))[0]
+    assert "the DrawingBrush of" in chk008("<DrawingBrush/>")[0]
+    assert "the VisualBrush of" in chk008("<VisualBrush/>")[0]
+    assert "the ImageBrush of" in chk008('<ImageBrush ImageSource="none.png"/>')[0]

@@ -7,7 +7,7 @@ import json
 import subprocess
 import sys
 
-from test_cli import BAD, PNG_SIGNATURE, SQUARE, TYPO, WARN
+from test_cli import BAD, PNG_SIGNATURE, SQUARE, TYPO, WARN, square_scene
 
 
 def xaml3d(*args, input: bytes | None = None, cwd=None) -> subprocess.CompletedProcess:
@@ -108,3 +108,100 @@ def test_numeric_overflow_gives_diagnostics_not_numpy_warnings(tmp_path):
         err = xaml3d(*args).stderr.decode()
         assert "Warning" not in err and "Traceback" not in err, err
         assert all(": " in line for line in err.splitlines()), err
+
+
+APP_FROM_ASSEMBLY = """<Application xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+  xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"><Application.Resources>
+ <ResourceDictionary><ResourceDictionary.MergedDictionaries>
+  <ResourceDictionary Source="pack://application:,,,/MahApps.Metro;component/Styles/Controls.xaml"/>
+ </ResourceDictionary.MergedDictionaries>
+ <SolidColorBrush x:Key="Gold" Color="Goldenrod"/></ResourceDictionary>
+</Application.Resources></Application>
+"""
+
+
+def _scene_using(key: str) -> str:
+    return square_scene(brush=f'Brush="{{StaticResource {key}}}"')
+
+
+def test_merged_dictionary_of_another_assembly_is_a_warning(tmp_path):
+    # a pack URI naming an assembly (/Name;component/...) is a compiled library xaml3d cannot
+    # read: RES012 names the assembly (no made-up local path), and a key not found while it is
+    # in scope may be defined there: RES013, a warning, not RES001
+    (tmp_path / "App.xaml").write_text(APP_FROM_ASSEMBLY)
+    (tmp_path / "views").mkdir()
+    (tmp_path / "views" / "s.xaml").write_text(_scene_using("AccentBrush"))
+    p = xaml3d("render", "views/s.xaml", "-o", "s.png", cwd=tmp_path)
+    err = p.stderr.decode()
+    assert p.returncode == 0 and (tmp_path / "s.png").read_bytes().startswith(PNG_SIGNATURE)
+    assert (
+        f"{tmp_path / 'App.xaml'}:4:23: warning RES012 merged dictionary from assembly "
+        "MahApps.Metro is not available: the resources it defines are unknown "
+        "('pack://application:,,,/MahApps.Metro;component/Styles/Controls.xaml')"
+    ) in err
+    assert str(tmp_path / "Styles") not in err and str(tmp_path / "views" / "Styles") not in err
+    assert (
+        "warning RES013 StaticResource 'AccentBrush' not found: it may be defined in the merged "
+        "dictionary from assembly MahApps.Metro, which xaml3d cannot read; the property keeps "
+        "its default"
+    ) in err
+    assert "RES001" not in err and "RES005" not in err
+
+
+def test_assembly_dictionary_without_pack_prefix_and_a_missing_plain_one(tmp_path):
+    aero = "/PresentationFramework.Aero;component/themes/aero.normalcolor.xaml"
+    grid = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"><Grid.Resources>'
+        f'<ResourceDictionary Source="{aero}"/></Grid.Resources><Viewport3D/></Grid>'
+    )
+    (tmp_path / "a.xaml").write_text(grid)
+    p = xaml3d("validate", "a.xaml", cwd=tmp_path)
+    assert p.returncode == 0, p.stdout
+    assert "warning RES012 merged dictionary from assembly PresentationFramework.Aero " in (
+        p.stdout.decode()
+    )
+    # a plain relative Source that is missing stays an error (WPF fails to load it too)
+    (tmp_path / "b.xaml").write_text(grid.replace(aero, "themes/missing.xaml"))
+    p = xaml3d("validate", "b.xaml", cwd=tmp_path)
+    assert (
+        p.returncode == 1
+        and "error RES005 merged dictionary 'themes/missing.xaml' not found" in (p.stdout.decode())
+    )
+
+
+def test_no_app_reads_no_app_xaml_found_above_the_scene(tmp_path):
+    (tmp_path / "App.xaml").write_text(APP_FROM_ASSEMBLY)
+    (tmp_path / "views").mkdir()
+    (tmp_path / "views" / "s.xaml").write_text(_scene_using("Gold"))
+    p = xaml3d("validate", "views/s.xaml", cwd=tmp_path)
+    assert p.returncode == 0 and b"RES012" in p.stdout
+    p = xaml3d("validate", "views/s.xaml", "--no-app", cwd=tmp_path)
+    out = p.stdout.decode()
+    assert p.returncode == 1 and "RES012" not in out
+    assert "views/s.xaml:14:30: error RES001 StaticResource 'Gold' not found" in out
+    for command in (
+        ["render", "views/s.xaml", "-o", "s.png"],
+        ["animate", "views/s.xaml", "-o", "s.gif", "--duration", "0.1", "--fps", "10"],
+    ):
+        with_app = xaml3d(*command, cwd=tmp_path)
+        assert with_app.returncode == 0, (command, with_app.stderr)
+        without = xaml3d(*command, "--no-app", cwd=tmp_path)
+        assert without.returncode == 1, command
+        assert b"error RES001 StaticResource 'Gold' not found" in without.stderr, command
+    # info and camera show what they read; neither fails on a scene error
+    info = xaml3d("info", "views/s.xaml", cwd=tmp_path).stdout.decode()
+    assert f"resource files: {tmp_path / 'App.xaml'}" in info
+    info = xaml3d("info", "views/s.xaml", "--no-app", cwd=tmp_path).stdout.decode()
+    assert "resource files: none" in info and "1 error(s)" in info
+    assert xaml3d("camera", "views/s.xaml", "--no-app", cwd=tmp_path).returncode == 0
+
+
+def test_camera_viewport_all_is_a_usage_error(tmp_path):
+    (tmp_path / "s.xaml").write_text(SQUARE)
+    p = xaml3d("camera", "s.xaml", "--viewport", "all", cwd=tmp_path)
+    assert p.returncode == 2 and p.stdout == b""
+    assert p.stderr.decode().splitlines()[-1] == (
+        "Error: camera shows one viewport: --viewport all is for render; give an index or an "
+        "x:Name (the scene has 1 viewport)"
+    )
+    assert xaml3d("camera", "s.xaml", "--viewport", "0", cwd=tmp_path).returncode == 0

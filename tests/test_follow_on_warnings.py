@@ -147,3 +147,32 @@ def test_an_animation_frame_keeps_what_was_refused():
     assert [m.material[0].rejected for m in models[:2]] == [{"Brush"}, {"Brush"}]
     assert [m.mesh.rejected for m in models[2:4]] == [{"TriangleIndices"}, {"Positions"}]
     assert models[4].rejected == {"Material"}
+
+
+def test_a_misspelt_property_element_is_not_followed_by_its_warning(tmp_path):
+    # <GeometryModel3D.Materail>: XAML004 says it; no CHK005 "no Material" after it, nor MSH002
+    # after a misspelt Positions
+    text = (
+        f'<Viewport3D {NS} Width="40" Height="30"><Viewport3D.Resources>'
+        '<DiffuseMaterial x:Key="red" Brush="Red"/></Viewport3D.Resources>\n'
+        '<Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>\n'
+        "<ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight/>\n"
+        "<GeometryModel3D><GeometryModel3D.Geometry>\n"
+        '<MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2"/>\n'
+        "</GeometryModel3D.Geometry><GeometryModel3D.Materail>\n"
+        '<DiffuseMaterial Brush="Red"/></GeometryModel3D.Materail></GeometryModel3D>\n'
+        '<GeometryModel3D Material="{StaticResource red}"><GeometryModel3D.Geometry>\n'
+        '<MeshGeometry3D Positons="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2"/>\n'
+        "</GeometryModel3D.Geometry></GeometryModel3D>\n"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D>\n"
+    )
+    (tmp_path / "s.xaml").write_text(text)
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    assert p.returncode == 1
+    rows = [ln for ln in p.stdout.decode().splitlines() if " info " not in ln]
+    assert rows == [
+        "s.xaml:6:28: error XAML004 GeometryModel3D has no property 'Materail' "
+        "(did you mean Material?)",
+        "s.xaml:9:17: error XAML004 MeshGeometry3D has no property 'Positons' "
+        "(did you mean Positions?)",
+    ]

@@ -66,6 +66,21 @@ def test_transform_group_and_skew():
     assert np.allclose(b.relative_transform @ (1.0, 1.0, 1.0), (3.0, 4.0, 1.0))
 
 
+def test_brush_transforms_written_as_text():
+    # WPF's 2D Transform has a TypeConverter: "Identity" or a Matrix's six numbers (only 3D
+    # transforms need an element)
+    s = with_brush("<LinearGradientBrush Transform='Identity' RelativeTransform='2 0 0 1 1 3'/>")
+    b = brush_of(s)
+    assert [d for d in s.diagnostics if d.severity == "error"] == []
+    assert np.array_equal(b.transform, np.eye(3))
+    # M11=2 M12=0 M21=0 M22=1 OffsetX=1 OffsetY=3: (1, 1) -> (3, 4)
+    assert np.allclose(b.relative_transform @ (1.0, 1.0, 1.0), (3.0, 4.0, 1.0))
+    s = with_brush("<SolidColorBrush Color='Red' Transform='1,0,0,1,5,5'/>")
+    assert "XAML013" not in codes(s)
+    s = with_brush("<SolidColorBrush Color='Red' Transform='1,0,0'/>")
+    assert "VAL003" in codes(s)
+
+
 def test_visual_and_drawing_brush_placeholders():
     s = with_brush("<DrawingBrush><DrawingBrush.Drawing><GeometryDrawing Brush='Red'/>"
                    "</DrawingBrush.Drawing></DrawingBrush>")  # fmt: skip

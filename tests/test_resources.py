@@ -176,3 +176,27 @@ def test_explicit_resource_file_missing_is_fatal(tmp_path):
     with pytest.raises(ResourceError) as ei:
         load(scene, [tmp_path / "missing.xaml"])
     assert ei.value.code == "RES009"
+
+
+def test_missing_static_resource_suggests_the_closest_key_in_scope(tmp_path):
+    from test_cli_subprocess import xaml3d
+
+    scene = (
+        f"<Grid {NS}><Grid.Resources>{mat('Red')}</Grid.Resources>\n"
+        "<Viewport3D><Viewport3D.Resources><SolidColorBrush x:Key='CubeMaterial' Color='Red'/>"
+        "</Viewport3D.Resources><ModelVisual3D><ModelVisual3D.Content>\n"
+        "<GeometryModel3D><GeometryModel3D.Material>\n"
+        "<DiffuseMaterial Brush='{StaticResource CubeMaterail}'/>\n"
+        "</GeometryModel3D.Material></GeometryModel3D>\n"
+        "</ModelVisual3D.Content></ModelVisual3D></Viewport3D>\n"
+        "<Border Background='{StaticResource Unrelated}'/></Grid>"
+    )
+    (tmp_path / "s.xaml").write_text(scene)
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    rows = [ln for ln in p.stdout.decode().splitlines() if "RES001" in ln]
+    assert p.returncode == 1 and rows == [
+        "s.xaml:4:18: error RES001 StaticResource 'CubeMaterail' not found "
+        "(did you mean CubeMaterial?)",
+        "s.xaml:7:9: error RES001 StaticResource 'Unrelated' not found "
+        "(if the application's App.xaml defines it, give it with -r App.xaml)",
+    ]

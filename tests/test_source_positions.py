@@ -333,3 +333,44 @@ def test_scene_objects_carry_their_start_tag_position():
     assert (vp.models[0].line, vp.models[0].column) == (6, 5)
     [cam001] = [d for d in check_camera(vp.camera, 10, 10) if d.code == "CAM001"]
     assert (cam001.line, cam001.column) == (3, 7)
+
+
+def test_bad_number_in_multiline_element_text_is_located_at_its_character():
+    # <MeshGeometry3D.Positions> text of several lines: the offending character's own line and
+    # column, not the property element's
+    text = (
+        f"{VP}<ModelVisual3D><ModelVisual3D.Content><GeometryModel3D>\n"  # line 1
+        "<GeometryModel3D.Geometry><MeshGeometry3D TriangleIndices='0 1 2'>\n"  # line 2
+        '  <MeshGeometry3D.Positions a="1">\n'  # line 3
+        "      -1,-1,0\n"  # line 4
+        "\t1,-1,0\n"  # line 5
+        "      1,1,O\n"  # line 6: "O" at column 11
+        "  </MeshGeometry3D.Positions>\n"
+        "</MeshGeometry3D></GeometryModel3D.Geometry></GeometryModel3D>"
+        "</ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+    s = load(text, text=True)
+    assert where(s, "VAL001") == [(6, 11)]
+    # a character reference in the text: the characters no longer line up, the property
+    # element's place is given
+    s = load(text.replace("\t1,-1,0", "&#9;1,-1,0"), text=True)
+    assert where(s, "VAL001") == [(3, 3)]
+
+
+def test_xml_error_of_a_mismatched_end_tag_is_at_its_start_and_within_the_line():
+    data = b"<Grid>\n  <Border>\n  </Bordr>\n</Grid>\n"
+    with pytest.raises(XamlSyntaxError) as exc:
+        parse_bytes(data)
+    # libxml2 stops after the ">" (column 12, one past the line's end): the end tag's "<"
+    assert (exc.value.line, exc.value.column) == (3, 3)
+    assert "mismatch" in exc.value.message and "column" not in exc.value.message
+    for bad in (
+        b"<Grid>\n<Border",
+        b"<Grid a='1' a='2'/>",
+        b"<Grid>\n  </Grid>\n<x/>",
+        b"<a>&b;</a>",
+    ):
+        with pytest.raises(XamlSyntaxError) as exc:
+            parse_bytes(bad)
+        lines = bad.decode().split("\n")
+        assert exc.value.column <= len(lines[exc.value.line - 1]) + 1, bad

@@ -22,7 +22,8 @@ PNG = b"\x89PNG\r\n\x1a\n"
 
 # file -> (code, line, column, a word the message must hold)
 CASES = {
-    "malformed-xml": ("XML001", 18, 30, "mismatch"),
+    # a mismatched end tag: at its "<" (libxml2 gives the place after its ">")
+    "malformed-xml": ("XML001", 18, 5, "mismatch"),
     "point3d-two-numbers": ("VAL003", 3, 24, "needs 3 numbers"),
     # a bad number or comma: the column of the offending character in the value
     "double-not-a-number": ("VAL001", 3, 54, "'abc'"),
@@ -35,6 +36,7 @@ CASES = {
     "element-unknown": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
     "element-wrong-case": ("XAML003", 14, 13, "did you mean DiffuseMaterial?"),
     "namespace-typo": ("XAML018", 1, 1, "did you mean 'http://schemas.microsoft.com/winfx/2006"),
+    "namespace-missing": ("XAML021", 1, 1, 'add xmlns="http://schemas.microsoft.com/winfx/2006'),
     "property-set-twice": ("XAML012", 15, 15, "set both"),
     "model3d-among-visuals": ("SCN008", 20, 18, "ModelVisual3D around it"),
     "static-resource-missing": ("RES001", 14, 30, "'Paint'"),
@@ -44,7 +46,11 @@ CASES = {
     "name-invalid": ("XAML019", 9, 26, "'1cube' is not a valid name"),
     "name-twice": ("XAML020", 9, 26, "'sun' is already used in this namescope (line 8)"),
 }
-NOT_RENDERABLE = {"malformed-xml", "namespace-typo"}  # fatal even with --lenient
+NOT_RENDERABLE = {
+    "malformed-xml",
+    "namespace-typo",
+    "namespace-missing",
+}  # fatal even with --lenient
 
 
 def test_every_case_file_is_listed():
@@ -137,3 +143,148 @@ def test_system_resource_keys_are_not_load_errors():
     diags = load(x, text=True).diagnostics
     assert [d.code for d in diags if d.code.startswith("RES")] == ["RES011"]
     assert all(d.severity != "error" for d in diags)
+
+
+def _name_codes(body: str, extra_ns: str = "") -> list[str]:
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" xmlns:local="clr-namespace:Demo" '
+        'xmlns:mc="http://schemas.openxmlformats.org/markup-compatibility/2006" '
+        f'xmlns:d="http://schemas.microsoft.com/expression/blend/2008" mc:Ignorable="d"{extra_ns}>'
+        f"{body}<Viewport3D/></Grid>"
+    )
+    return [d.code for d in load(x, text=True).diagnostics if d.code in ("XAML019", "XAML020")]
+
+
+def test_name_of_a_custom_type_is_an_ordinary_property():
+    # WPF: Name is the name property of its framework elements; on a clr-namespace type it is
+    # a plain property, so spaces and repeats are fine there (x:Name is still checked)
+    people = '<local:Person Name="Bob Jones"/><local:Person Name="Bob Jones"/>'
+    assert _name_codes(f'<TextBlock x:Name="Bob"/>{people}<local:Person Name="Bob"/>') == []
+    assert _name_codes('<local:Person x:Name="a b"/>') == ["XAML019"]
+    assert _name_codes('<TextBlock Name="a b"/>') == ["XAML019"]
+
+
+def test_what_the_loader_never_reads_is_not_checked_for_names():
+    xdata = (
+        '<XmlDataProvider><x:XData><Books xmlns=""><Book Name="Two Words"/></Books></x:XData>'
+        "</XmlDataProvider>"
+    )
+    alt = (
+        '<mc:AlternateContent><mc:Choice Requires="d"><TextBlock x:Name="alt"/></mc:Choice>'
+        '<mc:Fallback><TextBlock x:Name="alt"/></mc:Fallback></mc:AlternateContent>'
+    )
+    ignorable = '<d:Thing x:Name="dup"><TextBlock x:Name="dup"/></d:Thing><TextBlock x:Name="dup"/>'
+    assert _name_codes(xdata) == []
+    assert _name_codes(alt) == []
+    assert _name_codes(ignorable) == []
+    assert _name_codes('<d:Thing Name="two words"/>') == []
+
+
+def test_item_container_template_is_a_namescope():
+    body = (
+        '<TextBlock x:Name="t"/><Menu><Menu.ItemTemplate><ItemContainerTemplate>'
+        '<MenuItem x:Name="t"/></ItemContainerTemplate></Menu.ItemTemplate></Menu>'
+    )
+    assert _name_codes(body) == []
+
+
+def test_a_document_without_namespace_gets_one_error_in_a_real_process():
+    import subprocess
+    import sys
+
+    path = HERE / "namespace-missing.xaml"
+    p = subprocess.run([sys.executable, "-m", "xaml3d", "validate", str(path)], capture_output=True)
+    assert p.returncode == 1
+    assert p.stdout.decode().splitlines() == [
+        f"{path}:1:1: error XAML021 element 'Viewport3D' has no XML namespace: WPF cannot resolve "
+        'its type; add xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" to the '
+        "root element"
+    ]
+    assert p.stderr == b"xaml3d: 1 error(s), 0 warning(s) in 1 file\n"
+
+
+def _style_codes(resources: str, viewport: str = "<Viewport3D/>") -> list[tuple[str, str]]:
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">'
+        f"<Grid.Resources>{resources}</Grid.Resources>{viewport}</Grid>"
+    )
+    return [
+        (d.code, d.message)
+        for d in load(x, text=True).diagnostics
+        if d.code in ("RES001", "RES003", "XAML004")
+    ]
+
+
+def test_style_based_on_itself_is_an_error_in_a_real_process(tmp_path):
+    import subprocess
+    import sys
+
+    (tmp_path / "s.xaml").write_text(
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">\n<Grid.Resources>'
+        '<Style x:Key="a" TargetType="Viewport3D" BasedOn="{StaticResource a}"/></Grid.Resources>'
+        '\n<Viewport3D Style="{StaticResource a}"/></Grid>'
+    )
+    p = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "validate", "s.xaml"], capture_output=True, cwd=tmp_path
+    )
+    assert p.returncode == 1
+    assert [ln for ln in p.stdout.decode().splitlines() if " error " in ln] == [
+        "s.xaml:2:58: error RES003 Style 'a' is BasedOn itself: WPF looks the key up while "
+        "creating the Style, before it is defined, and fails (cycle)"
+    ]
+
+
+def test_style_based_on_an_outer_style_of_the_same_key_is_fine():
+    inner = (
+        '<Grid><Grid.Resources><Style x:Key="a" TargetType="Viewport3D" '
+        'BasedOn="{StaticResource a}"/></Grid.Resources><Viewport3D/></Grid>'
+    )
+    assert _style_codes('<Style x:Key="a" TargetType="Viewport3D"/>', inner) == []
+    # the usual idiom: an implicit Style based on the theme's Style of its type
+    themed = (
+        '<Style TargetType="{x:Type TextBlock}" BasedOn="{StaticResource {x:Type TextBlock}}"/>'
+    )
+    assert _style_codes(themed) == []
+
+
+def test_setter_naming_no_property_of_a_known_target_type():
+    bad = '<Style TargetType="Viewport3D"><Setter Property="Widht" Value="10"/></Style>'
+    assert _style_codes(bad) == [
+        ("XAML004", "Setter Property 'Widht': Viewport3D has no property 'Widht' "
+         "(did you mean Width?)")
+    ]  # fmt: skip
+    fine = (
+        '<Style TargetType="{x:Type Viewport3D}"><Setter Property="Width" Value="10"/>'
+        '<Setter Property="Viewport3D.Height" Value="10"/><Setter Property="Grid.Row" Value="0"/>'
+        '<Style.Triggers><Trigger Property="IsEnabled" Value="False">'
+        '<Setter Property="Opacity" Value="0.5"/></Trigger></Style.Triggers></Style>'
+        # framework types are open: their property lists are not closed
+        '<Style TargetType="Button" x:Key="b"><Setter Property="Widht" Value="1"/></Style>'
+    )
+    assert _style_codes(fine) == []
+    trig = (
+        '<Style TargetType="Viewport3D"><Style.Triggers><Trigger Property="IsEnabled" '
+        'Value="False"><Setter Property="Opacity2" Value="0.5"/></Trigger></Style.Triggers></Style>'
+    )
+    assert [c for c, _ in _style_codes(trig)] == ["XAML004"]
+
+
+def test_name_and_x_name_on_one_wpf_element_is_set_twice():
+    from xaml3d.xaml.loader import load
+
+    x = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" xmlns:local="clr-namespace:D">\n'
+        '<Border Name="a" x:Name="a"/><local:Person Name="p" x:Name="q"/><Viewport3D/></Grid>'
+    )
+    found = [
+        (d.code, d.line, d.column) for d in load(x, text=True).diagnostics if d.severity == "error"
+    ]
+    assert found == [("XAML012", 2, 9)]  # at Border's Name; a custom type's Name is its own

@@ -22,6 +22,7 @@ from xaml3d.cli_common import (
     exit_on_input_error,
     io_error,
     load_scene,
+    no_app_option,
     render_size,
     resources_option,
     stderr_is_terminal,
@@ -44,7 +45,8 @@ DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
 
 
 def parse_time(value: str, what: str = "--time") -> float | None:
-    """A time option: seconds ('1.5'), a TimeSpan with a colon ('0:0:1.5'), or 'none'."""
+    """A time option: seconds ('1.5', or '1.5s'), a TimeSpan with a colon ('0:0:1.5'), or
+    'none'."""
     from xaml3d.errors import ValueSyntaxError
     from xaml3d.xaml.values import parse_double, parse_timespan
 
@@ -52,7 +54,7 @@ def parse_time(value: str, what: str = "--time") -> float | None:
     if v.lower() == "none":
         return None
     try:
-        t = parse_timespan(v) if ":" in v else parse_double(v.rstrip("s"))
+        t = parse_timespan(v) if ":" in v else parse_double(v.removesuffix("s"))
     except ValueSyntaxError:
         raise click.BadParameter(
             f"{value!r} is not a time (seconds like 1.5, or a TimeSpan like 0:0:1.5)",
@@ -127,6 +129,7 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("--msaa", type=click.IntRange(1, 4), help="Multisampling per axis, 1..4 (default 2).")
 @click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
 @resources_option
+@no_app_option
 @click.option("-j", "--jobs", type=click.IntRange(1),
               help="Worker processes for the frames (default: the number of cores).")  # fmt: skip
 @click.option("--lenient", is_flag=True, help="Animate a scene with errors anyway: each "
@@ -136,8 +139,8 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @animate_lens_options
 def animate_command(scene, output, fps, start, end, duration, loop, clean, storyboard, width,
-                    height, mode, background, ssaa, msaa, viewport, resources, jobs, lenient,
-                    quiet, verbose, extras) -> None:  # fmt: skip
+                    height, mode, background, ssaa, msaa, viewport, resources, no_app, jobs,
+                    lenient, quiet, verbose, extras) -> None:  # fmt: skip
     from xaml3d.cli_render import _parse_background
     from xaml3d.cli_render_extras import check_request, lens_arguments
 
@@ -160,7 +163,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     with exit_on_input_error(name):
         if not to_dir and _refused(name, [Path(output)], inputs):  # before reading the scene
             ctx.exit(1)
-        sc = load_scene(scene, resources)
+        sc = load_scene(scene, resources, discover_app=not no_app)
     from xaml3d.cli_render import scene_files_read
 
     inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images

@@ -21,6 +21,7 @@ from xaml3d.cli_common import (
     display_name,
     exit_on_input_error,
     load_scene,
+    no_app_option,
     render_size,
     resources_option,
     window_size_option,
@@ -240,12 +241,14 @@ Examples:
     help="World point to locate (repeatable).",
 )
 @resources_option
+@no_app_option
 @window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (matrices as nested lists).")
 @time_option
 @camera_lens_options
 def camera_command(
-    scene, viewport, width, height, scale, fit, points, resources, window_size, as_json, at_time,
+    scene, viewport, width, height, scale, fit, points, resources, no_app, window_size, as_json,
+    at_time,
     **lens,
 ) -> None:  # fmt: skip
     from xaml3d.render.api import scene_at
@@ -254,7 +257,14 @@ def camera_command(
     name = display_name(scene)
     at_time = parse_time(at_time)
     with exit_on_input_error(name):
-        sc = scene_at(load_scene(scene, tuple(resources), window_size), at_time)
+        loaded = load_scene(scene, tuple(resources), window_size, discover_app=not no_app)
+        sc = scene_at(loaded, at_time)
+        if viewport == "all" and not any(v.name == "all" for v in sc.viewports):
+            n = len(sc.viewports)
+            raise click.UsageError(
+                "camera shows one viewport: --viewport all is for render; give an index or an "
+                f"x:Name (the scene has {n} viewport{'' if n == 1 else 's'})"
+            )
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
     if fit:

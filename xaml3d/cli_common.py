@@ -64,11 +64,14 @@ def display_name(source: str) -> str:
     return STDIN_NAME if source == "-" else source
 
 
-def load_scene(source: str, resources: Iterable[str] = (), window_size=None) -> Scene:
+def load_scene(
+    source: str, resources: Iterable[str] = (), window_size=None, *, discover_app: bool = True
+) -> Scene:
     """Load a scene from a path, or from stdin (as bytes) when ``source`` is ``-``: its
     relative references then resolve against the current directory. ``window_size`` (client
-    width, height) lays the root out at that size (``--window-size``)."""
-    scene = _load(source, resources, window_size)
+    width, height) lays the root out at that size (``--window-size``); ``discover_app`` False
+    (``--no-app``) reads no App.xaml found beside the scene or above it."""
+    scene = _load(source, resources, window_size, discover_app)
     # The reader's tree, decoded text and number lists sit in reference cycles: collect them
     # now, before a render allocates its buffers, or they stay until the next automatic
     # collection and add about 180 MB to the peak of a 56 MB file.
@@ -76,11 +79,11 @@ def load_scene(source: str, resources: Iterable[str] = (), window_size=None) -> 
     return scene
 
 
-def _load(source: str, resources: Iterable[str], window_size) -> Scene:
+def _load(source: str, resources: Iterable[str], window_size, discover_app: bool) -> Scene:
     from xaml3d.xaml.loader import load
 
     if source != "-":
-        return load(source, tuple(resources), window_size=window_size)
+        return load(source, tuple(resources), window_size=window_size, discover_app=discover_app)
     data = sys.stdin.buffer.read()
     try:
         scene = load(data, tuple(resources), text=True, window_size=window_size)
@@ -176,6 +179,13 @@ resources_option = click.option(
     multiple=True,
     metavar="FILE",
     help="Extra resource dictionary (repeatable), like App.xaml.",
+)
+
+# An App.xaml beside the scene or in a folder above it is read unless -r names resource files.
+no_app_option = click.option(
+    "--no-app",
+    is_flag=True,
+    help="Do not read an App.xaml found beside the scene or in a folder above it.",
 )
 
 

@@ -15,6 +15,7 @@ from xaml3d.cli_common import (
     display_name,
     exit_on_input_error,
     load_scene,
+    no_app_option,
     resources_option,
     window_size_option,
 )
@@ -104,8 +105,9 @@ def animation_info(scene: Scene) -> dict:
                 "repeat": f"{rb[1]:g} s" if isinstance(rb, tuple) else rb,
                 "line": a.line,
             })  # fmt: skip
-        out.append({"name": sb.name, "trigger": sb.trigger, "at_load": sb.starts_at_load,
-                    "animations": anims, "line": sb.line})  # fmt: skip
+        out.append({"name": sb.name, "also_named": list(sb.other_names), "trigger": sb.trigger,
+                    "at_load": sb.starts_at_load, "animations": anims,
+                    "line": sb.line})  # fmt: skip
     cycle = 0.0 if tl is None else _seconds(tl.cycle())
     running = 0 if tl is None else len(tl.running_animations())
     return {"running_at_load": running, "cycle": cycle, "storyboards": out}
@@ -156,7 +158,7 @@ def _animation_text(anim: dict) -> list[str]:
     when = "for ever" if cycle is None else f"for {cycle:g} s"
     lines = [f"  animations: {anim['running_at_load']} run at load ({when})"]
     for sb in anim["storyboards"]:
-        name = repr(sb["name"]) if sb["name"] else "(unnamed)"
+        name = " or ".join(repr(n) for n in [sb["name"], *sb["also_named"]] if n) or "(unnamed)"
         start = "at load" if sb["at_load"] else (f"on {sb['trigger']}" if sb["trigger"]
                                                   else "never (no trigger)")  # fmt: skip
         lines.append(f"    storyboard {name}: starts {start}")
@@ -183,12 +185,13 @@ Examples:
 @click.command("info", help=HELP, short_help="Summarize what a scene holds.")
 @click.argument("scene", metavar="SCENE")
 @resources_option
+@no_app_option
 @window_size_option
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def info_command(scene, resources, window_size, as_json) -> None:
+def info_command(scene, resources, no_app, window_size, as_json) -> None:
     name = display_name(scene)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources), window_size)
+        sc = load_scene(scene, tuple(resources), window_size, discover_app=not no_app)
         findings = findings_of(sc, name)
     info = scene_info(sc, name, findings)
     if as_json:

@@ -25,6 +25,7 @@ from xaml3d.cli_common import (
     echo_diagnostics,
     io_error,
     load_scene,
+    no_app_option,
     render_size,
     resources_option,
     same_file,
@@ -67,6 +68,7 @@ class RenderOptions:
     storyboard: str | None = None
     lenient: bool = False
     extras: Extras = Extras()  # lens, stereo, depth/id images, line style (cli_render_extras)
+    discover_app: bool = True  # read an App.xaml found beside or above the scene (not --no-app)
 
 
 class _Failed(Exception):
@@ -436,7 +438,7 @@ def _draw_scene(source: str, target, opts: RenderOptions, inputs: list[Path], na
     _note_kinds([(source, "a scene of this command")] if source != "-" else [])
     _note_kinds([(r, "a resource dictionary given with -r") for r in opts.resources])
     _check_not_input(target, name, inputs)
-    scene = load_scene(source, opts.resources, opts.window_size)
+    scene = load_scene(source, opts.resources, opts.window_size, discover_app=opts.discover_app)
     scene = scene_at(scene, opts.time, opts.storyboard)
     file = scene.file or name
     _note_inputs(scene)
@@ -719,6 +721,7 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 )
 @window_size_option
 @resources_option
+@no_app_option
 @click.option(
     "--fit", is_flag=True, help="Move the camera (same direction) so the whole scene is framed."
 )
@@ -760,6 +763,7 @@ def render_command(
     msaa,
     viewport,
     resources,
+    no_app,
     fit,
     margin,
     quiet,
@@ -813,6 +817,7 @@ def render_command(
         storyboard,
         lenient,
         extras,
+        discover_app=not no_app,
     )
     _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_hidden_lines, antialias_lines)
     if directory is not None:

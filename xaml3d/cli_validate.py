@@ -17,6 +17,7 @@ from xaml3d.cli_common import (
     describe_os_error,
     display_name,
     load_scene,
+    no_app_option,
     render_size,
     resources_option,
 )
@@ -29,6 +30,8 @@ def collect_findings(
     resources: tuple[str, ...] = (),
     width: int | None = None,
     height: int | None = None,
+    *,
+    discover_app: bool = True,
 ) -> list[Diagnostic]:
     """All findings for one scene (``xaml3d.findings.scene_findings``, as ``render`` reports
     them), or its one fatal reading error, located and sorted by (file, line, column)."""
@@ -37,7 +40,7 @@ def collect_findings(
     name = display_name(source)
     try:
         # WPF's first frame (storyboards begun at load applied), as `render` checks it
-        scene = scene_at(load_scene(source, resources), 0.0)
+        scene = scene_at(load_scene(source, resources, discover_app=discover_app), 0.0)
     except XamlError as exc:
         exc.with_location(file=name)
         return [exc.as_diagnostic()]
@@ -73,6 +76,7 @@ Exit status: 0 no errors, 1 errors (or warnings with --strict), 2 usage error.
 @click.command("validate", help=HELP)
 @click.argument("scenes", nargs=-1, required=True, metavar="SCENE...")
 @resources_option
+@no_app_option
 @click.option(
     "--format",
     "fmt",
@@ -86,12 +90,13 @@ Exit status: 0 no errors, 1 errors (or warnings with --strict), 2 usage error.
 @click.option(
     "-H", "--height", type=click.IntRange(min=1), help="Check the cameras at this height."
 )
-def validate_command(scenes, resources, fmt, strict, width, height) -> None:
+def validate_command(scenes, resources, no_app, fmt, strict, width, height) -> None:
     if scenes.count("-") > 1:
         raise click.UsageError("stdin ('-') can be read only once")
     findings: list[Diagnostic] = []
     for source in scenes:
-        findings.extend(collect_findings(source, tuple(resources), width, height))
+        found = collect_findings(source, tuple(resources), width, height, discover_app=not no_app)
+        findings.extend(found)
     findings = sort_findings(findings)
     if fmt == "json":
         click.echo(json.dumps([d.to_dict() for d in findings], indent=2))

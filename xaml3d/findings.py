@@ -61,7 +61,7 @@ def begun_by_name(diags: Iterable[Diagnostic], scene: Scene, storyboard: str | N
     idle = {
         (sb.line, sb.column)
         for sb in scene.storyboards
-        if storyboard is not None and sb.name == storyboard and sb.trigger is None
+        if storyboard is not None and storyboard in sb.names and sb.trigger is None
     }
     return [d for d in diags if not (d.code == "ANIM007" and (d.line, d.column) in idle)]
 

@@ -19,7 +19,11 @@ from xaml3d.scene.types import (
     AmbientLight,
     DiffuseMaterial,
     EmissiveMaterial,
+    ImageBrush,
+    LinearGradientBrush,
     Model,
+    PlaceholderBrush,
+    RadialGradientBrush,
     Scene,
     SpecularMaterial,
     Viewport,
@@ -33,6 +37,10 @@ CHECK_CODES: dict[str, tuple[str, str]] = {
     "CHK005": (WARNING, "a model has neither Material nor BackMaterial: it draws nothing"),
     "CHK006": (WARNING, "a viewport holds no models: it draws nothing"),
     "CHK007": (INFO, "only ambient light: every surface is lit flat, without shading"),
+    "CHK008": (
+        WARNING,
+        "a brush that varies over the surface on a mesh without TextureCoordinates: one colour",
+    ),
 }
 
 
@@ -71,6 +79,7 @@ def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]
                 where,
             )
         )
+    out.extend(_check_texture_coordinates(model, label, file))
     for which, passes in (("Material", model.material), ("BackMaterial", model.back_material)):
         for p in passes:
             if p.brush is None and "Brush" not in p.rejected:
@@ -85,6 +94,41 @@ def _check_model(model: Model, index: int, file: str | None) -> list[Diagnostic]
                     )
                 )
     return out
+
+
+_VARYING = (LinearGradientBrush, RadialGradientBrush, ImageBrush)
+_PLACEHOLDERS_OF_BRUSHES = ("VisualBrush", "DrawingBrush", "BitmapCacheBrush")
+
+
+def _varies(brush) -> bool:
+    """Whether a brush can give different colours at different texture coordinates."""
+    if isinstance(brush, PlaceholderBrush):
+        return brush.kind in _PLACEHOLDERS_OF_BRUSHES
+    return isinstance(brush, _VARYING)
+
+
+def _check_texture_coordinates(model: Model, label: str, file: str | None) -> list[Diagnostic]:
+    """CHK008: a gradient, image, visual or drawing brush on a mesh whose texture coordinates
+    are all one point (none given: WPF uses (0,0) for each vertex, wpf3d.md section 5) is
+    sampled at that point only: the whole surface takes one colour, in WPF as here."""
+    mesh = model.mesh
+    if mesh.triangle_count == 0 or "TextureCoordinates" in mesh.rejected:
+        return []
+    uv = mesh.texcoords
+    if uv.shape[0] and np.ptp(uv, axis=0).any():
+        return []
+    brush = next((p.brush for p in model.material + model.back_material if _varies(p.brush)), None)
+    if brush is None:
+        return []
+    kind = brush.kind if isinstance(brush, PlaceholderBrush) else type(brush).__name__
+    if uv.shape[0] and uv.any():
+        reason = f"all its TextureCoordinates are the point {uv[0, 0]:g},{uv[0, 1]:g}"
+    else:
+        reason = "it has no TextureCoordinates (WPF takes 0,0 for each vertex)"
+    msg = (f"the {kind} of {label} is drawn in one colour, as in WPF: {reason}, so the brush is "
+           "sampled at that one point; give the mesh TextureCoordinates spread over the "
+           "surface (e.g. 0,1 1,1 1,0 0,0 for a quad)")  # fmt: skip
+    return [_diag("CHK008", msg, file, model if model.line is not None else mesh)]
 
 
 def _shows_without_light(model: Model) -> bool:

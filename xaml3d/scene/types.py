@@ -407,6 +407,9 @@ class Animation:
     evaluated: bool = True  # False: a type xaml3d reads but does not evaluate (path animations)
     line: int | None = None
     column: int | None = None
+    # (line, column) of the Storyboard.TargetName attribute that names the target (its own, or
+    # an enclosing timeline's), None when none is written
+    target_name_at: tuple[int | None, int | None] | None = None
 
     @property
     def timing(self) -> Timing:
@@ -438,6 +441,13 @@ class Storyboard:
     handoff: str = "SnapshotAndReplace"  # BeginStoryboard.HandoffBehavior, or "Compose"
     line: int | None = None
     column: int | None = None
+    # the Storyboard's own x:Name (or x:Key) when ``name`` is its BeginStoryboard's
+    other_names: tuple[str, ...] = ()
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        """Every name ``--storyboard`` accepts for it: ``name``, then ``other_names``."""
+        return ((self.name,) if self.name else ()) + self.other_names
 
 
 # --------------------------------------------------------------------------- viewport & scene

@@ -23,7 +23,7 @@ from dataclasses import replace
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
 from xaml3d.xaml import values as V
-from xaml3d.xaml.context import element_name, qname, x_attr
+from xaml3d.xaml.context import a_an, element_name, qname, x_attr
 from xaml3d.xaml.models_reader import rotation, rotation_as_quaternion
 
 _CONVERTERS = {
@@ -134,9 +134,11 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
     """One timeline element -> TimelineGroup | Animation | None (not a timeline)."""
     p = r.props(el)
     t = p.type
+    own = "Storyboard.TargetName" in p.attached
     target = {
         "name": p.attached.get("Storyboard.TargetName", inherited.get("name")),
         "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
+        "name_at": r.ctx.locate(el, "Storyboard.TargetName") if own else inherited.get("name_at"),
     }
     if t in _GROUPS:
         if t == "Storyboard" and not top:
@@ -194,6 +196,7 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
         path_source=source,
         value_type=vtype,
         evaluated=p.etype.supported and (path is not None or not t.endswith("UsingPath")),
+        target_name_at=target["name_at"],
         **r.ctx.position(el),
     )
     out.append(anim)
@@ -224,7 +227,7 @@ def _key_frame(r, el, vtype: str) -> KeyFrame | None:
     t = p.type
     kind = next((k for k in _KF_KINDS if t.startswith(k)), None)
     if kind is None or not t.endswith("KeyFrame") or vtype not in t:
-        r.ctx.diag("ANI004", f"{t} is not a {vtype} key frame: ignored", el)
+        r.ctx.diag("ANI004", f"{t} is not {a_an(vtype)} key frame: ignored", el)
         return None
     _days_warning(r, p, ("KeyTime",))
     key_time = p.string("KeyTime")
@@ -271,8 +274,10 @@ def read_trigger(r, trigger_el, out: list, begun: set) -> None:
             if qname(sb.tag)[1] != "Storyboard":
                 r.ctx.diag("ANI004", f"{qname(sb.tag)[1]} is not a Storyboard: ignored", sb)
                 return None
-            story = read_storyboard(r, sb, ev, nm or element_name(sb) or x_attr(sb, "Key"))
-            return replace(story, handoff=hb)
+            own = element_name(sb) or x_attr(sb, "Key")
+            story = read_storyboard(r, sb, ev, nm or own)
+            other = (own,) if nm and own and own != nm else ()
+            return replace(story, handoff=hb, other_names=other)
 
         sb = ap.obj("Storyboard", build, None)
         if sb is not None:

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import NamedTuple
 
 from xaml3d.animation.clock import animation_states, group_cycle, one_cycle
 from xaml3d.animation.evaluate import animation_value
@@ -25,6 +26,13 @@ from xaml3d.errors import Diagnostic, SceneError
 from xaml3d.scene.types import Animation, Scene, Storyboard
 from xaml3d.xaml.animation_targets import ANIM_CODES, Target, TargetError, name_map, resolve
 from xaml3d.xaml.models_reader import rotation_as_quaternion
+
+
+class _At(NamedTuple):
+    """A place in the file (what ``_diag`` needs of a scene object)."""
+
+    line: int | None
+    column: int | None
 
 
 @dataclass
@@ -108,22 +116,26 @@ class SceneTimeline:
             return resolve(r, names, a.target_name, a.target_property, a.value_type)
         except TargetError as exc:
             what = f"{a.type} -> {a.target_name}.{a.target_property}"
-            self._diag(exc.code, f"{what}: {exc.message}", file, a)
+            where = a
+            if exc.code == "ANIM001" and a.target_name_at is not None:
+                where = _At(*a.target_name_at)  # the Storyboard.TargetName attribute
+            self._diag(exc.code, f"{what}: {exc.message}", file, where)
             return None
 
     # ----------------------------------------------------------------- what runs
     def storyboard_names(self) -> list[str]:
-        return [sb.name for sb in self.base.storyboards if sb.name]
+        return [n for sb in self.base.storyboards for n in sb.names]
 
     def running(self, storyboard: str | None = None) -> list[Storyboard]:
         """The storyboards that run: Loaded ones, then the one named ``storyboard``."""
         out = [sb for sb in self.base.storyboards if sb.starts_at_load]
         if storyboard is not None:
-            hit = [sb for sb in self.base.storyboards if sb.name == storyboard]
+            hit = [sb for sb in self.base.storyboards if storyboard in sb.names]
             if not hit:
-                names = ", ".join(repr(n) for n in self.storyboard_names()) or "none named"
+                names = ", ".join(repr(n) for n in self.storyboard_names())
+                named = f"the storyboards are named: {names}" if names else "none has a name"
                 raise SceneError(
-                    f"no storyboard named {storyboard!r} ({names})",
+                    f"no storyboard named {storyboard!r}: {named}",
                     code="ANIM010",
                     file=self.base.file,
                 )

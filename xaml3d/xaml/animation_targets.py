@@ -22,7 +22,14 @@ from dataclasses import dataclass
 
 from xaml3d.errors import ERROR, INFO, WARNING
 from xaml3d.xaml import vocabulary as voc
-from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
+from xaml3d.xaml.context import (
+    a_an,
+    element_name,
+    is_presentation,
+    markup_key,
+    qname,
+    split_markup,
+)
 
 ANIM_CODES: dict[str, tuple[str, str]] = {
     "ANIM001": (ERROR, "Storyboard.TargetName names no object of the document"),
@@ -151,7 +158,7 @@ def _string_brush(el, prop: str, rest: list, vtype: str) -> Target | None:
         return None
     field, kind = _STRING_BRUSH_FIELDS[name]
     if kind not in _KINDS.get(vtype, ()):
-        raise TargetError("ANIM003", f"{vtype} animation on SolidColorBrush.{name}, a {kind}")
+        raise TargetError("ANIM003", f"{vtype} animation on SolidColorBrush.{name}, {a_an(kind)}")
     return Target(el, prop, kind, field)
 
 
@@ -190,7 +197,7 @@ def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: st
             if kind not in _KINDS.get(vtype, ()):
                 raise TargetError(
                     "ANIM003",
-                    f"{vtype} animation on {tname}.{prop}, a {kind} property",
+                    f"{vtype} animation on {tname}.{prop}, {a_an(kind)} property",
                 )
             return Target(el, prop, kind)
         if not indices and (et.property_kind(prop) or "").startswith("brush"):
@@ -212,5 +219,5 @@ def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: st
         else:
             raise TargetError("ANIM002", f"{tname}.{prop} is not set: nothing to animate in it")
         if last:
-            raise TargetError("ANIM003", f"{path!r} ends at an object, not a {vtype} value")
+            raise TargetError("ANIM003", f"{path!r} ends at an object, not {a_an(vtype)} value")
     raise TargetError("ANIM002", f"property path {path!r} cannot be read")

@@ -60,8 +60,10 @@ def brush_property(r, p, prop: str):
 def _common(r, p) -> dict:
     return {
         "opacity": p.value("Opacity", V.parse_double, 1.0),
-        "transform": p.obj("Transform", lambda el: transform2d(r, el), None),
-        "relative_transform": p.obj("RelativeTransform", lambda el: transform2d(r, el), None),
+        "transform": p.obj("Transform", lambda el: transform2d(r, el), None, from_string=_tr2d),
+        "relative_transform": p.obj(
+            "RelativeTransform", lambda el: transform2d(r, el), None, from_string=_tr2d
+        ),
         **r.ctx.position(p.el),
     }
 
@@ -304,6 +306,12 @@ def _matrix2d(s: str) -> np.ndarray:
     m11, m12, m21, m22, ox, oy = (float(x) for x in v)
     # WPF row form p' = p M: x' = m11 x + m21 y + ox, y' = m12 x + m22 y + oy
     return np.array([[m11, m21, ox], [m12, m22, oy], [0.0, 0.0, 1.0]])
+
+
+def _tr2d(s: str) -> np.ndarray:
+    """A 2D Transform written as text (WPF's TransformConverter): "Identity" or the six numbers
+    of a Matrix, as a MatrixTransform."""
+    return frozen_array(_matrix2d(s))
 
 
 def transform2d(r, el) -> np.ndarray | None:

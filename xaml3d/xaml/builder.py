@@ -30,6 +30,7 @@ from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
 from xaml3d.xaml.brushes_reader import material
 from xaml3d.xaml.context import (
     ReadContext,
+    a_an,
     element_name,
     is_presentation,
     namespace_typo,
@@ -40,13 +41,20 @@ from xaml3d.xaml.context import (
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
 from xaml3d.xaml.names import check_names
-from xaml3d.xaml.parser import XAML_NS, ParsedDocument
+from xaml3d.xaml.parser import PRESENTATION_NS, XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
+from xaml3d.xaml.styles_check import check_styles
 
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
-              "HierarchicalDataTemplate"}  # fmt: skip
+              "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
 _REFERENCE = {"StaticResource", "DynamicResource"}
+
+
+def no_namespace(local: str) -> str:
+    """XAML021's message: an element without an XML namespace (its xmlns is missing)."""
+    return (f"element {local!r} has no XML namespace: WPF cannot resolve its type; "
+            f'add xmlns="{PRESENTATION_NS}" to the root element')  # fmt: skip
 
 
 class Reader:
@@ -80,7 +88,9 @@ class Reader:
         ns, local = qname(el.tag)
         if not is_presentation(ns):
             wpf = namespace_typo(ns)
-            if wpf is not None:
+            if ns is None:
+                self.ctx.diag("XAML021", no_namespace(local), el, once="no namespace")
+            elif wpf is not None:
                 msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
                 self.ctx.diag("XAML018", msg, el)
             else:
@@ -258,9 +268,13 @@ class _Walk:
     def visit(self, el) -> None:
         r = self.r
         ns, local = qname(el.tag)
+        if el.tag == f"{{{XAML_NS}}}XData":
+            return  # plain XML data, not XAML
         if not is_presentation(ns):
             wpf = namespace_typo(ns)
-            if wpf is not None:
+            if ns is None:  # a snippet pasted without its xmlns: WPF resolves none of its types
+                r.ctx.diag("XAML021", no_namespace(local), el, once="no namespace")
+            elif wpf is not None:
                 msg = f"namespace {ns!r} is not WPF's (did you mean {wpf!r}?): {local!r} skipped"
                 r.ctx.diag("XAML018", msg, el, once=ns)
             else:
@@ -275,7 +289,7 @@ class _Walk:
             return
         if local in _TEMPLATES:
             if any(True for _ in el.iter("{*}Viewport3D")):
-                r.ctx.diag("XAML015", f"Viewport3D inside a {local} is not instantiated", el)
+                r.ctx.diag("XAML015", f"Viewport3D inside {a_an(local)} is not instantiated", el)
             return
         if local == "Viewport3D":
             self.viewports.append(el)
@@ -327,16 +341,17 @@ def build_scene(
     r = Reader(ctx, resources, frame)
     if frame is None:
         check_names(ctx, doc.root)
+        check_styles(ctx, resources, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
     viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
-        root = qname(doc.root.tag)[1]
+        ns, root = qname(doc.root.tag)
         if root in ("ResourceDictionary", "Application"):  # a valid WPF file, not a scene
-            msg = f"a {root} holds no Viewport3D: nothing to render (use it with -r)"
+            msg = f"{a_an(root)} holds no Viewport3D: nothing to render (use it with -r)"
             ctx.diag("SCN013", msg, doc.root)
-        else:
+        elif ns is not None:  # else XAML021 says why nothing could be read
             ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
 
     storyboards: list = []

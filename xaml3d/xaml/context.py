@@ -34,6 +34,14 @@ def as_written(text: str) -> str:
     return f"'{text}'"
 
 
+def a_an(word: str) -> str:
+    """``word`` with its indefinite article: "an Application", "a Viewport3D", "a UserControl"
+    (a "u" read as "you": uni-, use-), "an Unknown"."""
+    w = word.lower()
+    vowel = w[:1] in ("a", "e", "i", "o") or (w.startswith("u") and not w.startswith(("uni", "us")))
+    return f"{'an' if vowel else 'a'} {word}"
+
+
 def qname(el_or_attr: str) -> tuple[str | None, str]:
     """(namespace, local name) of a Clark-notation tag or attribute name."""
     if el_or_attr.startswith("{"):
@@ -193,10 +201,17 @@ class ReadContext:
         its code's table severity (errors stay errors: the property keeps its default only so
         that the rest of the scene can still be checked, or rendered with --lenient)."""
         if el is not None:
-            # a converter that names the offending character of the attribute's value
+            # a converter that names the offending character of the attribute's value, or of
+            # the element's text (a property element's value written over many lines)
             at = getattr(exc, "at", None)
             index = at[1] if at and attr is not None and at[0] == el.get(attr) else None
             line, column = self.locate(el, attr, index) if exc.line is None else (None, None)
+            text = el.text or ""
+            if exc.line is None and at and attr is None and at[0] == text.strip():
+                doc = self.doc_of(el)
+                lead = len(text) - len(text.lstrip())
+                where = doc.locate_text(el, lead + at[1]) if doc is not None else None
+                line, column = where if where is not None else (line, column)
             exc.with_location(self.file_of(el), line, column)
         severity = severity_of(exc.code)
         self.errors += severity == ERROR

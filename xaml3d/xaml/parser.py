@@ -63,6 +63,10 @@ class ParsedDocument:
         character ``index`` of that attribute's value: SourceMap.locate)."""
         return None if self.source is None else self.source.locate(el, attr, index)
 
+    def locate_text(self, el: etree._Element, index: int) -> tuple[int, int] | None:
+        """(line, column) of character ``index`` of the element's text (SourceMap.locate_text)."""
+        return None if self.source is None else self.source.locate_text(el, index)
+
     @property
     def directory(self) -> Path | None:
         return None if self.path is None else self.path.parent
@@ -173,6 +177,8 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
         line, col = exc.position if exc.position else (exc.lineno, None)
         line, col = max(line or 1, 1), max(col or 1, 1)
         msg = exc.msg or str(exc)
+        col = _error_column(data, line, col, msg)
+        msg = re.sub(r", line \d+, column \d+$", "", msg)  # the diagnostic gives the place
         code = "XML002" if ("entity" in msg.lower() or "doctype" in msg.lower()) else "XML001"
         raise XamlSyntaxError(
             f"not well-formed XML: {msg}", code=code, file=file, line=line, column=col
@@ -185,6 +191,25 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
             "DOCTYPE/ENTITY declarations are refused", code="XML002", file=file, line=1
         )
     return root
+
+
+def _error_column(data: bytes, line: int, col: int, msg: str) -> int:
+    """The column to report for libxml2's error at (line, col). libxml2 gives the place where it
+    stopped reading: after the ``>`` of a mismatched end tag (one past the end of its line when
+    the tag ends the line), so such an error is put at that end tag's ``<``; any column is kept
+    within the line (its length + 1 at most, the place of a missing character at its end)."""
+    from xaml3d.xaml.source_map import decode_source
+
+    lines = decode_source(data).split("\n")
+    if not 1 <= line <= len(lines):
+        return col
+    text = lines[line - 1].rstrip("\r")
+    col = min(col, len(text) + 1)
+    if "tag mismatch" in msg:
+        start = text.rfind("</", 0, col - 1)
+        if start >= 0:
+            col = start + 1
+    return col
 
 
 def _located(exc: XamlSyntaxError, data: bytes, el: etree._Element) -> XamlSyntaxError:

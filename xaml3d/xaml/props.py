@@ -80,8 +80,13 @@ class Props:
             ctx.diag("XAML008", msg, node, attr=attr)
             return False
         if not self._known(prop):
-            hint = voc.did_you_mean(prop, self.etype.properties)
+            meant = voc.suggest(prop, self.etype.properties)
+            hint = f" (did you mean {meant}?)" if meant else ""
             ctx.diag("XAML004", f"{self.type} has no property {prop!r}{hint}", node, attr=attr)
+            if meant is not None:
+                # the property meant is unset because of this error: no follow-on warning
+                # ("no Material" after <GeometryModel3D.Materail>)
+                self.rejected.add(meant)
             return False
         return True
 
@@ -114,8 +119,12 @@ class Props:
                 continue
             if "." in local:
                 owner, _, prop = local.rpartition(".")
-                if owner == self.type or (self.etype and prop in self.etype.properties
-                                          and owner not in voc.ATTACHED_OWNERS):  # fmt: skip
+                own = self.etype is not None and prop in self.etype.properties
+                # an attached property of the element's own type stays attached when the type
+                # does not list it (<Storyboard Storyboard.TargetName="...">)
+                attached = owner in voc.ATTACHED_OWNERS
+                if (owner == self.type and (own or not attached or self.etype is None)) or (
+                        own and not attached):  # fmt: skip
                     local = prop
                 else:
                     if voc.is_event_name(prop) and value.strip().isidentifier():

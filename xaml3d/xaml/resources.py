@@ -15,6 +15,7 @@ them: a reference inside an App.xaml entry resolves from App.xaml's tree.
 
 from __future__ import annotations
 
+import difflib
 import os
 import re
 from pathlib import Path
@@ -57,13 +58,39 @@ def reduce_uri(source: str) -> str | None:
     return s
 
 
-class Dictionary:
-    """One resource dictionary: own entries plus merged dictionaries."""
+_ASSEMBLY = re.compile(r"(?:^|/)([^/;]+);component/", re.IGNORECASE)
 
-    def __init__(self, owner: etree._Element) -> None:
+
+def uri_assembly(source: str) -> str | None:
+    """The assembly a XAML URI names (``/Name;component/...``, also in a pack URI), else None:
+    such a dictionary is compiled into that library."""
+    m = _ASSEMBLY.search(source.strip().replace("\\", "/"))
+    return m.group(1) if m else None
+
+
+class Dictionary:
+    """One resource dictionary: own entries plus merged dictionaries. ``assembly`` names the
+    library of a merged dictionary xaml3d cannot read (its entries are unknown)."""
+
+    def __init__(self, owner: etree._Element, assembly: str | None = None) -> None:
         self.owner = owner
         self.entries: dict[str, etree._Element] = {}
         self.merged: list[Dictionary] = []
+        self.assembly = assembly
+
+    def keys(self) -> list[str]:
+        """Every key this dictionary defines, its merged dictionaries' too."""
+        out = list(self.entries)
+        for d in self.merged:
+            out.extend(d.keys())
+        return out
+
+    def unavailable(self) -> list[str]:
+        """The assemblies of the merged dictionaries (at any depth) that could not be read."""
+        out = [self.assembly] if self.assembly else []
+        for d in self.merged:
+            out.extend(d.unavailable())
+        return out
 
     def find(self, key: str) -> tuple[etree._Element, bool] | None:
         """(entry, is_local): local entries first, then merged ones, the last merged first."""
@@ -167,6 +194,14 @@ class Resources:
             return None
         base = doc.directory if doc and doc.directory else Path.cwd()
         path = (base / rel).resolve()
+        assembly = uri_assembly(source)
+        if assembly is not None and not path.is_file():
+            # compiled into another library (a theme, a control toolkit): WPF loads it from
+            # there, xaml3d cannot read it
+            msg = (f"merged dictionary from assembly {assembly} is not available: the resources "
+                   f"it defines are unknown ({as_written(source)})")  # fmt: skip
+            self.ctx.diag("RES012", msg, md, attr="Source")
+            return Dictionary(md, assembly)
         if not self.ctx.path_allowed(path):
             self.ctx.diag(
                 "RES004",
@@ -288,10 +323,12 @@ class Resources:
             key = type_key(key)  # an implicit Style's key, as the dictionaries store it
         here = doc_position(from_el)
         later = None
+        unavailable: list[str] = []  # assemblies of merged dictionaries in scope not read
         node = from_el
         while node is not None:
             d = self.dictionary_of(node)
             if d is not None:
+                unavailable.extend(d.unavailable())
                 hit = d.find(key)
                 if hit is not None:
                     entry, local = hit
@@ -303,6 +340,7 @@ class Resources:
         for doc, d in reversed(self.app):
             if doc.root is own_root:
                 continue  # already searched (with the order rule) on the way up
+            unavailable.extend(d.unavailable())
             hit = d.find(key)
             if hit is not None:
                 return hit[0]
@@ -321,13 +359,37 @@ class Resources:
                 from_el,
                 attr=attr,
             )
+        elif unavailable:
+            names = ", ".join(dict.fromkeys(unavailable))
+            kind = "DynamicResource" if dynamic else "StaticResource"
+            msg = (f"{kind} {key!r} not found: it may be defined in the merged dictionary from "
+                   f"assembly {names}, which xaml3d cannot read; "
+                   "the property keeps its default")  # fmt: skip
+            self.ctx.diag("RES013", msg, from_el, attr=attr)
         elif dynamic:  # WPF keeps the default and waits for the key to appear: no load error
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
-            msg = f"StaticResource {key!r} not found{self._app_hint()}"
+            near = difflib.get_close_matches(key, sorted(self._keys_in_scope(from_el)), 1, 0.8)
+            hint = f" (did you mean {near[0]}?)" if near else ""
+            # a near key in scope is the likelier cause than an application resource
+            msg = f"StaticResource {key!r} not found{hint or self._app_hint()}"
             self.ctx.diag("RES001", msg, from_el, attr=attr)
         return None
+
+    def _keys_in_scope(self, from_el: etree._Element) -> set[str]:
+        """The keys of the dictionaries seen from ``from_el`` (enclosing elements, then the
+        application), implicit Styles' type keys left out: the did-you-mean candidates."""
+        keys: set[str] = set()
+        node = from_el
+        while node is not None:
+            d = self.dictionary_of(node)
+            if d is not None:
+                keys.update(d.keys())
+            node = node.getparent()
+        for _, d in self.app:
+            keys.update(d.keys())
+        return {k for k in keys if not k.startswith("{")}
 
     def _app_hint(self) -> str:
         """For a key no dictionary defines: the application's resources may (an App.xaml is

@@ -31,6 +31,7 @@ from lxml import etree
 _MARKUP = re.compile(r"<([^\s/>!?]+)|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>", re.S)
 # The next attribute of a start tag, up to its value's opening quote.
 _ATTR = re.compile(r"""\s*([^\s=/>"']+)\s*=\s*(["'])""")
+_TAG_END = re.compile(r"\s*>")  # what closes a start tag after its last attribute
 _XML_NS = "http://www.w3.org/XML/1998/namespace"
 _WALK_LIMIT = 4096  # steps back in document order before asking libxml2 for the index
 
@@ -177,6 +178,26 @@ class SourceMap:
             found = self._attribute(el, i, attr, index)
             offset = offset if found is None else found
         return self.position_at(offset)
+
+    def locate_text(self, el: etree._Element, index: int) -> tuple[int, int] | None:
+        """(line, column) of character ``index`` of ``el.text`` (the text right after its start
+        tag, ``<X.Positions>`` of many lines), when the text holds it as lxml gives it (no
+        character reference, no CDATA); None otherwise."""
+        value = el.text or ""
+        i = self._tag(el)
+        if i is None or not 0 <= index < len(value):
+            return None
+        text = self.text
+        pos = self._starts[i] + 1 + len(self._names[i])
+        while (m := _ATTR.match(text, pos)) is not None:
+            close = text.find(m.group(2), m.end())
+            if close < 0:
+                return None
+            pos = close + 1
+        end = _TAG_END.match(text, pos)
+        if end is None or text[end.end() : end.end() + len(value)] != value:
+            return None
+        return self.position_at(end.end() + index)
 
     def _attribute(self, el: etree._Element, i: int, attr: str, index=None) -> int | None:
         """Offset of attribute ``attr``'s name in start tag ``i`` (or of character ``index`` of

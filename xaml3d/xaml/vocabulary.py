@@ -253,6 +253,7 @@ ScrollViewer Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox
 ListBox ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline
 Frame ContentPresenter ContentControl AdornerDecorator Decorator ColumnDefinition RowDefinition
 Style Setter ControlTemplate DataTemplate ItemsPanelTemplate HierarchicalDataTemplate Trigger
+ItemContainerTemplate ItemContainerTemplateSelector
 MultiTrigger Condition DataTrigger MultiDataTrigger EventSetter ToolTip Menu MenuItem Separator
 Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar InkCanvas
 MediaElement KeyBinding MouseBinding BooleanToVisibilityConverter Run Span Bold Italic Underline
@@ -356,6 +357,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML018": (ERROR, "namespace one edit away from WPF's presentation namespace (a typo)"),
     "XAML019": (ERROR, "x:Name or Name that is not a valid name (not an identifier)"),
     "XAML020": (ERROR, "the same name given to two elements of one namescope"),
+    "XAML021": (ERROR, "element with no XML namespace (the xmlns declaration is missing)"),
     "RES001": (ERROR, "StaticResource key not found"),
     "RES002": (ERROR, "StaticResource used before its definition"),
     "RES003": (ERROR, "resource reference cycle"),
@@ -369,6 +371,11 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "RES011": (
         INFO,
         "system or theme resource (x:Static or type key): property keeps its default",
+    ),
+    "RES012": (WARNING, "merged dictionary from another assembly not available: its keys unknown"),
+    "RES013": (
+        WARNING,
+        "resource key not found while a dictionary of another assembly is in scope",
     ),
     "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
     "SCN013": (INFO, "a ResourceDictionary or Application file: no scene to render"),

@@ -1,0 +1,85 @@
+"""Styles as WPF's loader checks them, wherever they are (what the layout reads of them is in
+panels_reader.py).
+
+- A Style ``BasedOn`` a StaticResource that is the Style itself: WPF looks the key up while it
+  creates that Style, before it is in the dictionary, and fails (RES003, a cycle).
+- A Setter whose ``Property`` names no property of the Style's ``TargetType``, when that type is
+  one whose properties xaml3d lists in full (the 3D types, not the open framework ones): WPF
+  cannot resolve the property and refuses the file (XAML004, with the closest name).
+"""
+
+from __future__ import annotations
+
+from xaml3d.xaml import vocabulary as voc
+from xaml3d.xaml.context import ReadContext, is_presentation, markup_key, qname, split_markup
+from xaml3d.xaml.resources import Resources, type_key
+
+_SETTER_HOLDERS = {"Style.Setters", "Style.Triggers", "Trigger", "MultiTrigger", "DataTrigger",
+                   "MultiDataTrigger", "Trigger.Setters", "MultiTrigger.Setters",
+                   "DataTrigger.Setters", "MultiDataTrigger.Setters"}  # fmt: skip
+
+
+def check_styles(ctx: ReadContext, resources: Resources, root) -> None:
+    """Report Styles based on themselves and Setters naming no property of a known type."""
+    for style in root.iter("{*}Style"):
+        if not is_presentation(qname(style.tag)[0]):
+            continue
+        _based_on_itself(ctx, resources, style)
+        target = style.get("TargetType")
+        etype = voc.lookup(type_key(target)[len("{x:Type ") : -1]) if target else None
+        if etype is not None and not etype.open:
+            for setter in _setters(style):
+                _check_setter(ctx, etype, setter)
+
+
+def _based_on_itself(ctx: ReadContext, resources: Resources, style) -> None:
+    based = style.get("BasedOn")
+    m = split_markup(based) if based else None
+    if m is None or m[0] != "StaticResource":
+        return
+    key = markup_key(m[1])
+    if key.startswith("{"):
+        return  # BasedOn="{StaticResource {x:Type T}}": the theme's Style of T, WPF finds it
+    if resources.find(key, style) is not style:
+        return
+    # an outer scope's entry of that key is what WPF finds then: no error
+    node = style.getparent()  # <X.Resources> or the ResourceDictionary
+    node = None if node is None else node.getparent()
+    outer = None if node is None else node.getparent()
+    if outer is not None:
+        other = resources.find(key, outer)
+    else:  # the root's resources: the application's come next
+        hits = (d.find(key) for _, d in reversed(resources.app))
+        other = next((h[0] for h in hits if h is not None and h[0] is not style), None)
+    if other in (None, style):
+        msg = (f"Style {key!r} is BasedOn itself: WPF looks the key up while creating the Style, "
+               "before it is defined, and fails (cycle)")  # fmt: skip
+        ctx.diag("RES003", msg, style, attr="BasedOn")
+
+
+def _setters(style):
+    """The Setters of a Style and of its triggers (not those naming a TargetName in a template,
+    nor those of nested Styles)."""
+    stack = [k for k in style if isinstance(k.tag, str)]
+    while stack:
+        el = stack.pop()
+        local = qname(el.tag)[1]
+        if local == "Setter":
+            if el.get("TargetName") is None:
+                yield el
+        elif local in _SETTER_HOLDERS:
+            stack.extend(k for k in el if isinstance(k.tag, str))
+
+
+def _check_setter(ctx: ReadContext, etype, setter) -> None:
+    prop = (setter.get("Property") or "").strip()
+    if not prop or prop.startswith("{"):
+        return
+    owner, _, name = prop.rpartition(".")
+    if owner and owner.split(":")[-1] != etype.name:
+        return  # an attached property or another owner's: not checked
+    if name in etype.properties:
+        return
+    hint = voc.did_you_mean(name, etype.properties)
+    msg = f"Setter Property {prop!r}: {etype.name} has no property {name!r}{hint}"
+    ctx.diag("XAML004", msg, setter, attr="Property")
