@@ -281,3 +281,20 @@ def test_overlap_within_one_mesh_resolved_in_triangle_order():
              frozen_array(nrm), frozen_array(np.zeros((8, 2))))  # fmt: skip
     r = render([Model(m, (half,))], lights=light, background=(0.0, 0.0, 1.0, 1.0))
     assert (r.rgba[2:6, 2:6] == (64, 0, 64, 255)).all()
+
+
+def test_viewport_bounds_are_measured_once_and_shared_read_only():
+    from dataclasses import replace
+    from pathlib import Path
+
+    import pytest
+
+    from xaml3d.xaml.loader import load
+
+    vp = load(Path(__file__).resolve().parent.parent / "samples" / "cube.xaml").viewports[0]
+    lo, hi = vp.bounds()
+    assert vp.bounds()[0] is lo  # the same arrays: measured once
+    with pytest.raises(ValueError):
+        lo += 1.0  # never changed in place by a caller
+    moved = replace(vp, models=vp.models[:0])
+    assert moved.bounds() is None and np.array_equal(vp.bounds()[1], hi)

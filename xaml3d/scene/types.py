@@ -478,7 +478,19 @@ class Viewport:
         return sum(m.mesh.triangle_count for m in self.models)
 
     def bounds(self) -> tuple[np.ndarray, np.ndarray] | None:
-        """World-space axis-aligned bounds (min, max) of every model's vertices, or None."""
+        """World-space axis-aligned bounds (min, max) of every model's vertices, or None.
+        Measured once per Viewport (it is immutable): the checks, the camera and ``info`` all
+        ask, and a million vertices take a while."""
+        cached = self.__dict__.get("_bounds")
+        if cached is None:
+            found = self._measure_bounds()
+            for a in found or ():
+                a.flags.writeable = False  # shared by every caller: never changed in place
+            cached = (found,)
+            object.__setattr__(self, "_bounds", cached)  # not a field: replace() starts anew
+        return cached[0]
+
+    def _measure_bounds(self) -> tuple[np.ndarray, np.ndarray] | None:
         lo, hi = None, None
         for m in self.models:
             p = m.mesh.positions
