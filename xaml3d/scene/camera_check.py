@@ -99,13 +99,21 @@ def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagn
     return report.items
 
 
+def _num(x) -> str:
+    """A size as the markup would write it (300, not 300.0), whatever it is."""
+    try:
+        return f"{float(x):g}"
+    except (TypeError, ValueError):
+        return repr(x)
+
+
 def _check(camera, width, height, bounds, report: _Report) -> None:
     try:
         size_ok = float(width) > 0 and float(height) > 0 and _finite([width, height])
     except (TypeError, ValueError):
         size_ok = False
     if not size_ok:
-        report("CAM010", f"viewport size {width} x {height} is empty or invalid")
+        report("CAM010", f"viewport size {_num(width)} x {_num(height)} is empty or invalid")
     if camera is None:
         report("CAM104", "Viewport3D.Camera is null: WPF draws nothing")
         return
