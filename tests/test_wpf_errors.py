@@ -288,3 +288,23 @@ def test_name_and_x_name_on_one_wpf_element_is_set_twice():
         (d.code, d.line, d.column) for d in load(x, text=True).diagnostics if d.severity == "error"
     ]
     assert found == [("XAML012", 2, 9)]  # at Border's Name; a custom type's Name is its own
+
+
+def test_a_style_targeting_another_type_is_refused_where_certain():
+    from xaml3d.xaml.loader import load
+
+    def codes(style_target: str, element: str) -> list[str]:
+        x = (
+            '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+            'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" '
+            'xmlns:local="clr-namespace:App"><Grid.Resources>'
+            f'<Style x:Key="s" TargetType="{style_target}"/></Grid.Resources>'
+            f'<{element} Style="{{StaticResource s}}"/><Viewport3D/></Grid>'
+        )
+        return [d.code for d in load(x, text=True).diagnostics if d.severity == "error"]
+
+    assert codes("Button", "Viewport3D") == ["XAML022"]
+    assert codes("Viewport3D", "Border") == ["XAML022"]
+    assert codes("{x:Type Viewport3D}", "Viewport3D") == []
+    assert codes("FrameworkElement", "Viewport3D") == []
+    assert codes("Viewport3D", "local:MyViewport") == []  # may derive from Viewport3D

@@ -208,6 +208,20 @@ _WINDOW_STYLES = ("None", "SingleBorderWindow", "ThreeDBorderWindow", "ToolWindo
 _RESIZE_MODES = ("NoResize", "CanMinimize", "CanResize", "CanResizeWithGrip")
 
 
+# The base classes of a Viewport3D: the TargetTypes a Style may name to apply to it.
+_VIEWPORT_BASES = {"Viewport3D", "FrameworkElement", "UIElement", "Visual", "DependencyObject",
+                   "DispatcherObject", "Object", ""}  # fmt: skip
+
+
+def _mismatched(target: str, local: str) -> bool:
+    """Whether WPF refuses a Style of TargetType ``target`` on a ``local`` element; only the
+    cases that are certain without WPF's class tree: a Viewport3D's Style must target it or a
+    base class, and nothing but a Viewport3D derives from Viewport3D."""
+    if local == "Viewport3D":
+        return target not in _VIEWPORT_BASES
+    return target == "Viewport3D"
+
+
 def _setter_value(setter) -> str | None:
     """A Setter's value as text: its Value attribute, or a ``<Setter.Value>`` holding plain text
     or one element whose text is the value (``<Thickness>50</Thickness>``)."""
@@ -326,6 +340,13 @@ class PanelsReader:
             if m is None or m[0] not in ("StaticResource", "DynamicResource"):
                 return {}
             entry = res.find(markup_key(m[1]), el)
+            if entry is not None and qname(entry.tag)[1] == "Style":
+                target = type_key(entry.get("TargetType") or "")[len("{x:Type ") : -1]
+                if is_presentation(qname(el.tag)[0]) and _mismatched(target, local):
+                    self.r.ctx.diag("XAML022", f"the Style's TargetType {target} does not match "
+                                    f"this {local}: WPF refuses to apply it", el,
+                                    attr="Style")  # fmt: skip
+                    return {}
         else:
             # (every dictionary of the document is read by now: the walk before layout reads
             # each element's resources, so a type no implicit Style names needs no search)

@@ -358,6 +358,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML019": (ERROR, "x:Name or Name that is not a valid name (not an identifier)"),
     "XAML020": (ERROR, "the same name given to two elements of one namescope"),
     "XAML021": (ERROR, "element with no XML namespace (the xmlns declaration is missing)"),
+    "XAML022": (ERROR, "a Style whose TargetType does not match the element it is set on"),
     "RES001": (ERROR, "StaticResource key not found"),
     "RES002": (ERROR, "StaticResource used before its definition"),
     "RES003": (ERROR, "resource reference cycle"),
