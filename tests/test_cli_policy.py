@@ -65,9 +65,11 @@ def test_options_without_effect_warn(tmp_path):
     assert "warning OPT001 --margin has no effect without --fit" in r.stderr
     assert "--hide-hidden-lines applies to --mode wireframe only" in r.stderr
     assert "--antialias-lines applies to --mode wireframe only" in r.stderr
-    r = render(scene, "-o", out, "--format", "jpeg", "-q", "-v")
-    assert "--format jpeg disagrees with the suffix" in r.stderr and "-q and -v" in r.stderr
+    r = render(scene, "-o", out, "--format", "jpeg")
+    assert "--format jpeg disagrees with the suffix" in r.stderr
     assert Image.open(out).format == "JPEG"
+    r = render(scene, "-o", out, "--format", "jpeg", "-q", "-v")  # -q wins: errors only
+    assert r.exit_code == 0 and r.stderr == ""
     r = render(scene, "-o", out, "--fit", "--margin", "0.2", "--mode", "wireframe",
                "--hide-hidden-lines")  # fmt: skip
     assert r.exit_code == 0 and "OPT001" not in r.stderr

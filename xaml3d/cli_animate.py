@@ -26,6 +26,7 @@ from xaml3d.cli_common import (
     render_size,
     resources_option,
     stderr_is_terminal,
+    warn_option,
     with_file,
 )
 from xaml3d.cli_outputs import (
@@ -151,8 +152,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
         raise click.UsageError("choose one of --ssaa and --msaa")
     if clean and not to_dir:
-        click.echo("xaml3d: warning OPT001 --clean applies to a directory output (-o DIR/) only",
-                   err=True)  # fmt: skip
+        warn_option("--clean applies to a directory output (-o DIR/) only")  # fmt: skip
     name = display_name(scene)
     ctx = click.get_current_context()
     if to_dir and Path(output).exists() and not Path(output).is_dir():

@@ -223,3 +223,11 @@ def exit_on_input_error(name: str) -> Iterator[None]:
     except (OSError, ValueError) as exc:
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         click.get_current_context().exit(1)
+
+
+def warn_option(message: str) -> None:
+    """Print warning OPT001 (an option without effect), unless -q asked for errors only."""
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.params.get("quiet"):
+        return
+    click.echo(f"xaml3d: warning OPT001 {message}", err=True)

@@ -30,6 +30,7 @@ from xaml3d.cli_common import (
     resources_option,
     same_file,
     stderr_is_terminal,
+    warn_option,
     window_size_option,
 )
 from xaml3d.cli_jobs import default_jobs, run_ordered
@@ -131,7 +132,7 @@ def _encode(image, fmt: str) -> bytes:
     return buf.getvalue()
 
 
-def _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_lines, aa_lines) -> None:
+def _warn_idle_options(fmt, output, mode, fit, hide_lines, aa_lines) -> None:
     """OPT001: an option given on the command line that has no effect with the others."""
     ctx = click.get_current_context()
 
@@ -150,10 +151,8 @@ def _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_lines, aa_li
         implied = SUFFIX_FORMATS.get(Path(output).suffix.lower())
         if implied is not None and implied != fmt:
             idle.append(f"--format {fmt} disagrees with the suffix of {output!r}: {fmt} is written")
-    if quiet and verbose:
-        idle.append("-q and -v together: -q wins, only errors are printed")
     for msg in idle:
-        click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+        warn_option(msg)
 
 
 def _check_not_input(target, name: str, inputs: list[Path], what: str = "the image") -> None:
@@ -819,7 +818,7 @@ def render_command(
         extras,
         discover_app=not no_app,
     )
-    _warn_idle_options(fmt, output, mode, fit, quiet, verbose, hide_hidden_lines, antialias_lines)
+    _warn_idle_options(fmt, output, mode, fit, hide_hidden_lines, antialias_lines)
     if directory is not None:
         if directory.exists() and not directory.is_dir():
             msg = f"{directory} is a file, not a directory: it cannot hold the outputs"

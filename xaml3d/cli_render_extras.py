@@ -14,7 +14,7 @@ from pathlib import Path
 
 import click
 
-from xaml3d.cli_common import FiniteFloat
+from xaml3d.cli_common import FiniteFloat, warn_option
 from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
 from xaml3d.scene.lens import MAX_LENS_SAMPLES, STEREO_MODES
 from xaml3d.scene.types import PerspectiveCamera
@@ -165,7 +165,7 @@ def check_request(
     if (ex.line_color is not None or ex.line_width is not None) and mode != "wireframe":
         idle.append("--line-color and --line-width apply to --mode wireframe only")
     for msg in idle:
-        click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+        warn_option(msg)
     for opt, value in (("--depth", ex.depth), ("--ids", ex.ids)):
         if value is None:
             continue
@@ -222,7 +222,7 @@ def check_svg(ex: Extras, mode: str, window: bool = False, idle=None) -> None:
     for opt, on in (("--msaa", msaa is not None), ("--antialias-lines", aa_lines)):
         if on:
             msg = f"{opt} has no effect on an SVG output (its edges are vector paths)"
-            click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+            warn_option(msg)
 
 
 def check_lens_camera(ex: Extras, vp) -> None:
@@ -429,17 +429,17 @@ def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_lengt
     if not (ex.aperture is not None or ex.fstop is not None):
         if focus is not None or focal_length is not None:
             msg = "--focus and --focal-length have no effect without --aperture or --fstop"
-            click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+            warn_option(msg)
         return None
     if ex.aperture is not None and ex.fstop is not None:
         raise click.UsageError("give either --aperture or --fstop, not both")
     if focal_length is not None and fstop is None:
-        click.echo("xaml3d: warning OPT001 --focal-length has no effect without --fstop", err=True)
+        warn_option("--focal-length has no effect without --fstop")
     check_lens_camera(ex, vp)  # LNS001 at the camera element, exit 1
     if not isinstance(vp.camera, PerspectiveCamera):
         if focus is not None:
             msg = "--focus has no effect with --aperture 0 on a camera without a lens"
-            click.echo(f"xaml3d: warning OPT001 {msg}", err=True)
+            warn_option(msg)
         return None  # --aperture 0: the pinhole, the camera's own matrices above
     frame = lens_frame(vp.camera, width, height, focus, vp.bounds())
     focal = focal_length or focal_length_of_fov(float(vp.camera.field_of_view))
