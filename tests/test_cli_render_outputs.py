@@ -137,6 +137,11 @@ def test_viewport_files_that_coincide_are_refused_before_writing(tmp_path):
         "image v-1.png"
     ]
     assert _files(tmp_path) == ["v.xaml"]
+    # without -q the scene's findings come first, its error printed as a warning (--lenient)
+    p = xaml3d("render", "v.xaml", "-o", "v.png", "--viewport", "all", "--lenient", cwd=tmp_path)
+    lines = _lines(p)
+    assert any("warning XAML019" in line and "--lenient" in line for line in lines)
+    assert "error IO003" in lines[-1]
 
 
 # --------------------------------------------------------------------------- 3. all or nothing

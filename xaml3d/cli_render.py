@@ -190,15 +190,17 @@ def _note_inputs(scene) -> None:
     _note_kinds([(p, "an image (texture) the scene reads") for p in scene.images_used])
 
 
-def _check_distinct(outputs: list[tuple[str, Path]], name: str) -> None:
+def _check_distinct(outputs: list[tuple[str, Path]], name: str, opts, diags: list) -> None:
     """IO003 when two files one scene writes would be the same file (two viewports named so
-    that their files coincide...)."""
+    that their files coincide...); the scene's findings so far are printed first."""
     from xaml3d.cli_outputs import _resolved
 
     seen: dict[Path, str] = {}
     for what, path in outputs:
         key = _resolved(Path(path))
         if key in seen:
+            echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+            diags.clear()
             msg = f"{what} {path} would be the same file as {seen[key]}"
             click.echo(io_error(name, msg, "IO003"), err=True)
             raise _Failed
@@ -469,7 +471,7 @@ def _draw_scene(source: str, target, opts: RenderOptions, inputs: list[Path], na
         jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
         for _, t in jobs:
             _check_not_input(t, name, inputs)
-        _check_distinct([(f"viewport {vp.index}'s image", t) for vp, t in jobs], name)
+        _check_distinct([(f"viewport {vp.index}'s image", t) for vp, t in jobs], name, opts, diags)
     else:
         jobs = [(scene.viewport(opts.viewport), target)]
     for vp, _ in jobs:  # a lens or stereo pair on a camera without one: before any file
