@@ -425,3 +425,16 @@ def test_lenient_pair_of_a_camera_without_an_image_keeps_the_pair_shape(tmp_path
     assert p.returncode == 0, p.stderr
     img = Image.open(tmp_path / "x.png")
     assert img.size == size and img.getextrema()[3] == (0, 0)  # empty, as WPF draws nothing
+
+
+def test_a_huge_viewport_size_keeps_its_aspect_or_is_an_error_of_the_scene(tmp_path):
+    cam = '<Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>'
+    for name, size in (("square", 'Width="1e308" Height="1e308"'),
+                       ("thin", 'Width="1e308" Height="1e-300"')):  # fmt: skip
+        (tmp_path / f"{name}.xaml").write_text(f"<Viewport3D {NS} {size}>{cam}</Viewport3D>")
+    p = xaml3d("render", "square.xaml", "-o", "s.png", "-W", "40", cwd=tmp_path)
+    assert p.returncode == 0 and Image.open(tmp_path / "s.png").size == (40, 40)
+    p = xaml3d("render", "thin.xaml", "-o", "t.png", "-H", "40", cwd=tmp_path)
+    assert p.returncode == 1  # the scene's size, not the command line, is to blame
+    assert "error RND001 render size inf x 40 is not finite" in p.stderr.decode()
+    assert not (tmp_path / "t.png").exists()

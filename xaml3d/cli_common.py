@@ -145,16 +145,18 @@ def render_size(
         w, h = float(width), float(height)
     elif width is not None:
         w = float(width)
-        h = w if empty else w * h0 / w0
+        h = w if empty else w * (h0 / w0)  # the ratio first: huge sizes must not overflow
     elif height is not None:
         h = float(height)
-        w = h if empty else h * w0 / h0
+        w = h if empty else h * (w0 / h0)
     else:
         w, h = w0, h0
     if scale is not None:
         w, h = w * scale, h * scale
-    if not (math.isfinite(w) and math.isfinite(h)):
-        raise click.UsageError(f"render size {w} x {h} is not finite")
+    if not (math.isfinite(w) and math.isfinite(h)):  # the viewport's own size is to blame
+        raise RenderError(f"render size {w:g} x {h:g} is not finite (the viewport's aspect "
+                          "ratio cannot be followed): give both -W and -H", code="RND001",
+                          line=vp.line, column=vp.column)  # fmt: skip
     return max(1, round(w)), max(1, round(h))
 
 
