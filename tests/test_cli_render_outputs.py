@@ -438,3 +438,11 @@ def test_a_huge_viewport_size_keeps_its_aspect_or_is_an_error_of_the_scene(tmp_p
     assert p.returncode == 1  # the scene's size, not the command line, is to blame
     assert "error RND001 render size inf x 40 is not finite" in p.stderr.decode()
     assert not (tmp_path / "t.png").exists()
+
+
+def test_camera_command_locates_camera_errors_as_validate_does(tmp_path):
+    (tmp_path / "s.xaml").write_text(PARALLEL)
+    camera = xaml3d("camera", "s.xaml", cwd=tmp_path).stderr.decode()
+    validate = xaml3d("validate", "s.xaml", cwd=tmp_path).stdout.decode()
+    where = [line.split(" error ")[0] for line in validate.splitlines() if "CAM003" in line]
+    assert where and f"{where[0]} error CAM003" in camera

@@ -295,7 +295,11 @@ def camera_command(
     try:
         pipe = camera_pipeline(cam, w, h, vp.bounds())
     except XamlError as exc:
-        error = exc.with_location(file=sc.file or name)
+        error = exc.with_location(
+            file=sc.file or name,
+            line=cam.line if cam else None,
+            column=getattr(cam, "column", None) if cam else None,
+        )
         report["error"] = error.as_diagnostic().to_dict()
     if pipe is not None:
         report["pipeline"] = _jsonable(pipe.as_dict())
