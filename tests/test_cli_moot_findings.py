@@ -92,7 +92,7 @@ def test_fit_reports_the_camera_it_draws(tmp_path):
     p = xaml3d("render", "s.xaml", "-o", "o.png", "--fit", "-v", cwd=tmp_path)
     assert p.stderr.decode().splitlines() == [
         "s.xaml:1:1: info SCN003 Viewport3D #0 size 40 x 30 from its own Width/Height",
-        "s.xaml:3:1: info FIT004 --fit moved the camera to Position = 0, 0, 5.00524",
+        "s.xaml:3:5: info FIT004 --fit moved the camera to Position = 0, 0, 5.00524",
     ]
     # validate checks the markup's camera: the warning stands there
     p = xaml3d("validate", "s.xaml", cwd=tmp_path)

@@ -368,7 +368,7 @@ def _raise_first_error(camera, width, height) -> None:
         raise CameraError("no camera: Viewport3D.Camera is null, WPF draws nothing", code="CAM104")
     for d in check_camera(camera, width, height):
         if d.severity == "error":
-            raise CameraError(d.message, code=d.code, line=camera.line)
+            raise CameraError(d.message, code=d.code, line=d.line, column=d.column)
 
 
 def camera_pipeline(

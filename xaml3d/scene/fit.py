@@ -145,7 +145,7 @@ def fit_viewport(
     cam = viewport.camera
     line = getattr(cam, "line", None)
     loc = {"file": file, "line": line if line is not None else viewport.line}
-    loc["column"] = None if loc["line"] is None else 1
+    loc["column"] = getattr(cam if line is not None else viewport, "column", None)
     if cam is None:
         return viewport, [Diagnostic("FIT003", WARNING, "--fit: the viewport has no camera", **loc)]
     if isinstance(cam, MatrixCamera):
