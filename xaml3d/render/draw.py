@@ -90,13 +90,23 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
     except XamlError:
         ctx.diagnostics.append(
             Diagnostic(
-                "RND004", WARNING, "model skipped: its transform is singular", line=model.line
+                "RND004",
+                WARNING,
+                "model skipped: its transform is singular",
+                line=model.line,
+                column=model.column,
             )  # fmt: skip
         )
         return None
     if not (np.isfinite(clip).all() and np.isfinite(vpos).all()):
         ctx.diagnostics.append(
-            Diagnostic("RND004", WARNING, "model skipped: non-finite coordinates", line=model.line)
+            Diagnostic(
+                "RND004",
+                WARNING,
+                "model skipped: non-finite coordinates",
+                line=model.line,
+                column=model.column,
+            )  # fmt: skip
         )
         return None
     nrm = _unit_rows(mesh.normals @ nm.T)
