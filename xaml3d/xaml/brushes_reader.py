@@ -60,9 +60,11 @@ def brush_property(r, p, prop: str):
 def _common(r, p) -> dict:
     return {
         "opacity": p.value("Opacity", V.parse_double, 1.0),
-        "transform": p.obj("Transform", lambda el: transform2d(r, el), None, from_string=_tr2d),
+        "transform": p.obj(
+            "Transform", lambda el: transform2d(r, el), None, from_string=transform2d_text
+        ),
         "relative_transform": p.obj(
-            "RelativeTransform", lambda el: transform2d(r, el), None, from_string=_tr2d
+            "RelativeTransform", lambda el: transform2d(r, el), None, from_string=transform2d_text
         ),
         **r.ctx.position(p.el),
     }
@@ -308,7 +310,7 @@ def _matrix2d(s: str) -> np.ndarray:
     return np.array([[m11, m21, ox], [m12, m22, oy], [0.0, 0.0, 1.0]])
 
 
-def _tr2d(s: str) -> np.ndarray:
+def transform2d_text(s: str) -> np.ndarray:
     """A 2D Transform written as text (WPF's TransformConverter): "Identity" or the six numbers
     of a Matrix, as a MatrixTransform."""
     return frozen_array(_matrix2d(s))

@@ -19,12 +19,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from xaml3d.errors import Diagnostic, ValueSyntaxError
 from xaml3d.layout import tree as L
 from xaml3d.layout.gotchas import LAYOUT_CODES
 from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
-from xaml3d.xaml.brushes_reader import brush_property
+from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
 from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
 from xaml3d.xaml.resources import type_key
 
@@ -314,7 +316,7 @@ class PanelsReader:
         if kind == L.CONTROL:
             self._estimate(n, v, el, font)
             return n
-        if _layout_transform_set(el):
+        if _turns(_layout_transform(self.r, v)):
             where = "around a viewport" if id(el) in self.holds_viewport else "of a panel"
             self.note("LAY006", f"the LayoutTransform of this {local} ({where}) is not applied: "
                       "it is laid out and drawn untransformed", el)  # fmt: skip
@@ -510,8 +512,8 @@ class PanelsReader:
                 w = sum(_outer(k)[0] for k in items) + cw
                 h = max(LINE_HEIGHT * scale, max(_outer(k)[1] for k in items)) + ch
         n.estimate = (max(0.0, w), max(0.0, h))
-        turned = _layout_transform(el)
-        if turned is not None:
+        turned = _layout_transform(self.r, v)
+        if _turns(turned):
             # A LayoutTransform turns the element's box before its parent places it: the
             # parent sees the bounding box of the transformed size (margins stay outside).
             bw = (
@@ -522,8 +524,8 @@ class PanelsReader:
                 if n.height == n.height
                 else max(n.min_height, min(n.estimate[1], n.max_height))
             )
-            (a, b), (c, d) = turned
-            n.width, n.height = abs(a * bw) + abs(c * bh), abs(b * bw) + abs(d * bh)
+            (a, b), (c, d) = turned[:2, :2]  # x' = a x + b y, y' = c x + d y
+            n.width, n.height = abs(a * bw) + abs(b * bh), abs(c * bw) + abs(d * bh)
             n.min_width = n.min_height = 0.0
             n.max_width = n.max_height = math.inf
             w, h = n.width, n.height
@@ -555,80 +557,20 @@ def _content_text(el) -> str:
     return " ".join("".join(parts).split())
 
 
-def _layout_transform(el):
-    """The 2x2 linear part ((m11, m12), (m21, m22)) of an element's LayoutTransform (Rotate,
-    Scale, Skew, Matrix transforms and TransformGroups of them, as property elements or a
-    matrix string), or None when it has none or it cannot be read (then it is ignored)."""
-    local = qname(el.tag)[1]
-    raw = el.get("LayoutTransform")
-    try:
-        if raw is not None:
-            return None if split_markup(raw) is not None else _matrix_text(raw)
-        for child in el:
-            if isinstance(child.tag, str) and qname(child.tag)[1] == f"{local}.LayoutTransform":
-                kids = [k for k in child if isinstance(k.tag, str)]
-                return _transform_2d(kids[0]) if len(kids) == 1 else None
-    except (ValueError, ZeroDivisionError, OverflowError):
+def _layout_transform(r, v: ElementValues):
+    """An element's LayoutTransform as a 3x3 column-form matrix (the brushes' 2D Transform
+    reader: Rotate, Scale, Skew, Translate, Matrix transforms and groups, a matrix string or a
+    resource), or None when it has none (or it is unreadable: reported where it is read)."""
+    if v.p is None or not v.p.has("LayoutTransform"):
         return None
-    return None
-
-
-def _layout_transform_set(el) -> bool:
-    """Whether an element sets a LayoutTransform other than the identity."""
-    t = _layout_transform(el)
-    if t is not None:
-        return t != ((1.0, 0.0), (0.0, 1.0))
-    local = qname(el.tag)[1]
-    return el.get("LayoutTransform") is not None or any(
-        isinstance(k.tag, str) and qname(k.tag)[1] == f"{local}.LayoutTransform" for k in el
+    return v.p.obj(
+        "LayoutTransform", lambda e: transform2d(r, e), None, from_string=transform2d_text
     )
 
 
-def _matrix_text(s: str):
-    if s.strip() == "Identity":
-        return ((1.0, 0.0), (0.0, 1.0))
-    v = [float(x) for x in s.replace(",", " ").split()]
-    if len(v) != 6 or not all(math.isfinite(x) for x in v):
-        raise ValueError(s)
-    return ((v[0], v[1]), (v[2], v[3]))
-
-
-def _num(el, name: str, default: float) -> float:
-    raw = el.get(name)
-    x = default if raw is None else float(raw)
-    if not math.isfinite(x):
-        raise ValueError(raw)
-    return x
-
-
-def _transform_2d(t, depth: int = 0):
-    kind = qname(t.tag)[1]
-    if kind == "RotateTransform":
-        a = math.radians(_num(t, "Angle", 0.0))
-        return ((math.cos(a), math.sin(a)), (-math.sin(a), math.cos(a)))
-    if kind == "ScaleTransform":
-        return ((_num(t, "ScaleX", 1.0), 0.0), (0.0, _num(t, "ScaleY", 1.0)))
-    if kind == "SkewTransform":
-        ax, ay = math.radians(_num(t, "AngleX", 0.0)), math.radians(_num(t, "AngleY", 0.0))
-        return ((1.0, math.tan(ay)), (math.tan(ax), 1.0))
-    if kind == "MatrixTransform":
-        return _matrix_text(t.get("Matrix", "Identity"))
-    if kind == "TransformGroup" and depth < 8:
-        kids = []
-        for k in t:
-            if not isinstance(k.tag, str):
-                continue
-            if qname(k.tag)[1] == "TransformGroup.Children":
-                kids.extend(g for g in k if isinstance(g.tag, str))
-            elif "." not in qname(k.tag)[1]:
-                kids.append(k)
-        m = ((1.0, 0.0), (0.0, 1.0))
-        for k in kids:  # applied in order: p' = p M1 M2 ... (row vectors)
-            (a, b), (c, d) = m
-            (e, f), (g, h) = _transform_2d(k, depth + 1)
-            m = ((a * e + b * g, a * f + b * h), (c * e + d * g, c * f + d * h))
-        return m
-    raise ValueError(kind)
+def _turns(m) -> bool:
+    """Whether a LayoutTransform changes a box's size or shape (not the identity, not a move)."""
+    return m is not None and not np.allclose(m[:2, :2], np.eye(2))
 
 
 def _finite(x: float, default: float) -> float:
