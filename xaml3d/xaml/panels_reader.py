@@ -28,7 +28,7 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
 from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
-from xaml3d.xaml.resources import type_key
+from xaml3d.xaml.resources import type_key, type_name
 
 BLEND_NS = "http://schemas.microsoft.com/expression/blend/2008"
 
@@ -343,7 +343,7 @@ class PanelsReader:
                 return {}
             entry = res.find(markup_key(m[1]), el)
             if entry is not None and qname(entry.tag)[1] == "Style":
-                target = type_key(entry.get("TargetType") or "")[len("{x:Type ") : -1]
+                target = type_name(entry.get("TargetType") or "")
                 if is_presentation(qname(el.tag)[0]) and _mismatched(target, local):
                     self.r.ctx.diag("XAML022", f"the Style's TargetType {target} does not match "
                                     f"this {local}: WPF refuses to apply it", el,

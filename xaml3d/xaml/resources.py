@@ -167,7 +167,7 @@ class Resources:
             if "." in local:
                 continue  # other property elements of the dictionary
             key = x_attr(child, "Key")
-            if key is not None and key.replace(" ", "").startswith(("{x:Type", "{Type")):
+            if key is not None and is_type_key(key):
                 key = type_key(key)  # x:Key="{x:Type Border}": the implicit style's own key
             if key is None and local == "Style" and child.get("TargetType"):
                 key = type_key(child.get("TargetType"))  # an implicit style: keyed by its type
@@ -319,7 +319,7 @@ class Resources:
             seen = self._looked[id(from_el)] = (from_el, set())
         seen[1].add(attr)
         system = key.lstrip().startswith("{")  # {x:Static SystemColors...Key}, {x:Type T}...
-        if system and key.replace(" ", "").startswith(("{x:Type", "{Type")):
+        if system and is_type_key(key):
             key = type_key(key)  # an implicit Style's key, as the dictionaries store it
         here = doc_position(from_el)
         later = None
@@ -450,16 +450,27 @@ def static_resource_keys(value: str) -> list[str]:
     return [markup_key(m.group(1)) for m in _STATIC.finditer(value)]
 
 
-def type_key(target: str) -> str:
-    """The key of an implicit Style: ``TargetType="Border"``, ``"{x:Type Border}"`` and
-    ``x:Key="{x:Type Border}"`` all give ``{x:Type Border}`` (the namespace prefix dropped)."""
+def type_name(target: str) -> str:
+    """The type a TargetType or type key names: ``Border``, ``{x:Type Border}``,
+    ``{x:Type TypeName=local:Border}`` all give ``Border`` (the namespace prefix dropped)."""
     t = target.strip()
     if t.startswith("{") and t.endswith("}"):
         body = t[1:-1].split(None, 1)
         t = body[1] if len(body) == 2 else ""
         if t.startswith("TypeName="):
             t = t[len("TypeName=") :]
-    return "{x:Type " + t.strip().split(":")[-1] + "}"
+    return t.strip().split(":")[-1]
+
+
+def type_key(target: str) -> str:
+    """The key of an implicit Style: ``TargetType="Border"``, ``"{x:Type Border}"`` and
+    ``x:Key="{x:Type Border}"`` all give ``{x:Type Border}``."""
+    return "{x:Type " + type_name(target) + "}"
+
+
+def is_type_key(key: str) -> bool:
+    """Whether a resource key is written as a type (``{x:Type Border}``)."""
+    return key.replace(" ", "").startswith(("{x:Type", "{Type"))
 
 
 def _found_where(app: Path, scene: Path) -> str:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import ReadContext, is_presentation, markup_key, qname, split_markup
-from xaml3d.xaml.resources import Resources, type_key
+from xaml3d.xaml.resources import Resources, type_name
 
 _SETTER_HOLDERS = {"Style.Setters", "Style.Triggers", "Trigger", "MultiTrigger", "DataTrigger",
                    "MultiDataTrigger", "Trigger.Setters", "MultiTrigger.Setters",
@@ -26,7 +26,7 @@ def check_styles(ctx: ReadContext, resources: Resources, root) -> None:
             continue
         _based_on_itself(ctx, resources, style)
         target = style.get("TargetType")
-        etype = voc.lookup(type_key(target)[len("{x:Type ") : -1]) if target else None
+        etype = voc.lookup(type_name(target)) if target else None
         if etype is not None and not etype.open:
             for setter in _setters(style):
                 _check_setter(ctx, etype, setter)
