@@ -27,8 +27,7 @@ def format_of(path) -> str:
     fmt = FORMATS.get(suffix)
     if fmt is None:
         raise ExportError(
-            f"cannot tell the export format of {str(path)!r}: use .glb, .gltf, .obj, .stl or "
-            ".html",
+            f"cannot tell the export format of {str(path)!r}: use .glb, .gltf, .obj, .stl or .html",
             code="EXP001",
         )
     return fmt
@@ -55,7 +54,7 @@ def export_bytes(
     start = scene if clip is None else clip.at(0.0)
     vp = choose_viewport(start, viewport, diagnostics)
     if fmt in ("glb", "gltf", "html"):
-        doc, exporter = gltf_document(start, vp, clip, diagnostics)
+        doc, exporter = build_gltf(start, vp, clip, diagnostics)
         if fmt == "glb":
             return {"": doc.glb()}, diagnostics
         if fmt == "gltf":
@@ -74,15 +73,16 @@ def export_bytes(
     raise ExportError(f"unknown export format {fmt!r}", code="EXP001")
 
 
-def gltf_document(scene, vp, clip, diagnostics: list):
+def build_gltf(scene, vp, clip, diagnostics: list):
     """(Document, ViewportExport) of one viewport, with its animation when ``clip``."""
-    from xaml3d.export.gltf_animation import add_animation
+    from xaml3d.export.gltf_animation import add_animation, sample
     from xaml3d.export.gltf_scene import ViewportExport
 
-    exporter = ViewportExport(scene, vp, diagnostics)
+    sampled = None if clip is None else sample(clip, vp.index)
+    exporter = ViewportExport(scene, vp, diagnostics, None if sampled is None else sampled[1])
     doc = exporter.build()
-    if clip is not None:
-        add_animation(exporter, clip)
+    if sampled is not None:
+        add_animation(exporter, clip, *sampled)
     return doc, exporter
 
 

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from xaml3d.errors import CameraError
+from xaml3d.errors import CameraError, SceneError
 from xaml3d.export import trs
 from xaml3d.export.gltf_camera import gltf_camera
 from xaml3d.export.gltf_scene import light_node
@@ -35,20 +35,25 @@ def _differs(a, b) -> bool:
     return a != b
 
 
-def add_animation(export, clip: Clip) -> None:
-    """Sample ``clip`` and add its channels to ``export``'s document (a ViewportExport)."""
+def sample(clip: Clip, vp_index: int) -> tuple[np.ndarray, list] | None:
+    """(sample times, the viewport at each) of ``clip``, or None when it has no length."""
     times = _times(clip)
     if times.shape[0] < 2:
-        return
+        return None
     frames = []
     for t in times:
-        scene = clip.at(float(t))
         try:
-            frames.append(scene.viewport(export.vp.index))
-        except Exception:  # a viewport that vanishes: nothing to sample
-            return
+            frames.append(clip.at(float(t)).viewport(vp_index))
+        except SceneError:  # a viewport that vanishes: nothing to sample
+            return None
+    return times, frames
+
+
+def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
+    """Add the channels of the sampled ``frames`` to ``export``'s document (a ViewportExport
+    built with these frames)."""
     base = frames[0]
-    tracks: dict[int, list[np.ndarray]] = {}  # node -> world matrices per sample
+    tracks: dict = {}  # node or (outer, inner) nodes -> world matrices per sample
     lost: set[str] = set()
     if all(len(f.models) == len(base.models) for f in frames):
         for i, node in export.model_nodes.items():
@@ -63,10 +68,6 @@ def add_animation(export, clip: Clip) -> None:
                     lost.add("mesh positions")
                 if m.material != m0.material or m.back_material != m0.back_material:
                     lost.add("materials and brushes")
-            if i not in export.model_nodes and any(
-                _differs(f.models[i].world, m0.world) for f in frames
-            ):
-                lost.add("the transform of a model baked into its vertices")
     else:
         lost.add("models appearing or disappearing")
     if export.camera_node is not None:
@@ -87,11 +88,12 @@ def add_animation(export, clip: Clip) -> None:
     if not tracks:
         return
     _write(export, times, tracks)
-    note = f"storyboards exported as transforms sampled at {SAMPLE_RATE:g} per second (LINEAR)"
+    note = (f"storyboards exported as transforms sampled at {SAMPLE_RATE:g} per second "
+            f"(LINEAR), {clip.seconds:g} s")  # fmt: skip
     export.note("EXP010", note)
     if clip.endless:
-        export.note("EXP011", f"an animation runs for ever: its first {clip.seconds:g} s are "
-                    "exported")  # fmt: skip
+        export.note("EXP011", f"an animation has a Forever Duration: its first {clip.seconds:g}"
+                    " s are exported")  # fmt: skip
 
 
 def _camera_track(export, frames, tracks, lost) -> None:
@@ -112,29 +114,42 @@ def _camera_track(export, frames, tracks, lost) -> None:
         lost.add("the camera's FieldOfView, Width or planes")
 
 
+def _continuous(quats) -> np.ndarray:
+    """Quaternions with signs chosen so each sample is the shorter way from the one before."""
+    q = np.array(quats, dtype=np.float64)
+    for k in range(1, len(q)):
+        if float(q[k] @ q[k - 1]) < 0:
+            q[k] = -q[k]
+    return q
+
+
 def _write(export, times, tracks) -> None:
     doc = export.doc
     time_acc = doc.accessor(times.astype(np.float32), bounds=True)
     samplers, channels = [], []
     for node, worlds in tracks.items():
-        parts = [trs.decompose(w) for w in worlds]
+        nested = isinstance(node, tuple)
+        parts = [trs.split(w) if nested else trs.decompose(w) for w in worlds]
         if any(p is None for p in parts):
-            export.note("EXP009", "an animated transform shears or collapses at some moment: "
-                        "its animation is not exported")  # fmt: skip
+            export.note("EXP009", "an animated transform collapses (a zero scale) or becomes "
+                        "projective at some moment: its animation is not exported")  # fmt: skip
             continue
+        if nested:
+            inner = [p[1] for p in parts]
+            parts = [p[0] for p in parts]
         t = np.array([p[0] for p in parts])
-        q = np.array([p[1] for p in parts])
         s = np.array([p[2] for p in parts])
-        for k in range(1, len(q)):  # the shorter way between consecutive samples
-            if float(q[k] @ q[k - 1]) < 0:
-                q[k] = -q[k]
-        for path, values in (("translation", t), ("rotation", q), ("scale", s)):
+        paths = [(node[0] if nested else node, "translation", t),
+                 (node[0] if nested else node, "rotation", _continuous([p[1] for p in parts])),
+                 (node[0] if nested else node, "scale", s)]  # fmt: skip
+        if nested:
+            paths.append((node[1], "rotation", _continuous(inner)))
+        for target, path, values in paths:
             if np.allclose(values, values[0], rtol=0, atol=1e-12):
                 continue
             out = doc.accessor(values.astype(np.float32))
             samplers.append({"input": time_acc, "output": out, "interpolation": "LINEAR"})
             channels.append({"sampler": len(samplers) - 1,
-                             "target": {"node": node, "path": path}})  # fmt: skip
-        # the node's resting transform keeps only what its channels do not set
+                             "target": {"node": target, "path": path}})  # fmt: skip
     if channels:
         doc.add("animations", {"name": "Storyboards", "samplers": samplers, "channels": channels})

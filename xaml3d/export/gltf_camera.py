@@ -54,8 +54,15 @@ def gltf_camera(vp, file=None) -> tuple[dict, np.ndarray, list] | None:
         return {"type": "perspective", "perspective": persp, "name": name}, world, notes
     width = float(cam.width)
     if near < 0.0:
-        notes.append(diag("EXP003", f"OrthographicCamera NearPlaneDistance {near:g} is "
-                          "negative; glTF's znear cannot be: 0 is used", file, cam))
+        notes.append(
+            diag(
+                "EXP003",
+                f"OrthographicCamera NearPlaneDistance {near:g} is "
+                "negative; glTF's znear cannot be: 0 is used",
+                file,
+                cam,
+            )
+        )
         near = 0.0
     if not math.isfinite(far):
         far = float(pipe.far)  # the far plane enclosing the scene (glTF needs a finite one)
@@ -92,8 +99,14 @@ def _matrix_camera(cam, world, aspect, name, file):
         camera = {"type": "orthographic", "orthographic": ortho, "name": name}
         kind = "an OrthographicCamera"
     what = f" ({', '.join(lost)} is lost)" if lost else ""
-    notes = [diag("EXP003", f"MatrixCamera exported as {kind} with its view and projection "
-                  f"scales{what}", file, cam)]
+    notes = [
+        diag(
+            "EXP003",
+            f"MatrixCamera exported as {kind} with its view and projection scales{what}",
+            file,
+            cam,
+        )
+    ]
     return camera, world, notes
 
 

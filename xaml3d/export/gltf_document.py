@@ -79,7 +79,8 @@ class Document:
 
         out = io.BytesIO()
         Image.fromarray(np.ascontiguousarray(rgba), mode="RGBA").save(out, format="PNG")
-        return self.add("images", {"bufferView": self.view(out.getvalue()), "mimeType": "image/png"})
+        view = self.view(out.getvalue())
+        return self.add("images", {"bufferView": view, "mimeType": "image/png"})
 
     def finished(self, uri: bool) -> dict:
         """The JSON tree with the buffer declared (as a data: URI when ``uri``)."""

@@ -50,8 +50,10 @@ class Bake:
         h, w = self.shape
         size = self.hi - self.lo
         # a flat axis (every coordinate equal) is one texel sampled at that coordinate
-        xs = self.lo[0] + (np.arange(w) + 0.5) / w * size[0] if size[0] > 0 else np.full(1, self.lo[0])
-        ys = self.lo[1] + (np.arange(h) + 0.5) / h * size[1] if size[1] > 0 else np.full(1, self.lo[1])
+        xs, ys = (
+            self.lo[k] + (np.arange(n) + 0.5) / n * size[k] if size[k] > 0 else self.lo[k : k + 1]
+            for k, n in ((0, w), (1, h))
+        )
         gx, gy = np.meshgrid(xs, ys)
         return np.stack([gx.ravel(), gy.ravel()], axis=1)
 
@@ -157,8 +159,13 @@ class Materials:
         if not diffuse:
             base = np.array([[0.0, 0.0, 0.0, 1.0]])
             if emissive:
-                notes.append(("EXP004", "an EmissiveMaterial without a DiffuseMaterial is added "
-                              "to what lies behind it in WPF; glTF draws it opaque over black"))
+                notes.append(
+                    (
+                        "EXP004",
+                        "an EmissiveMaterial without a DiffuseMaterial is added "
+                        "to what lies behind it in WPF; glTF draws it opaque over black",
+                    )
+                )
         alpha_blend = bool(np.any(base[:, 3] < 1.0 - 1e-6))
         if uniform:
             c = base[0]
@@ -189,24 +196,41 @@ class Materials:
                 c = _layer(p, bake, bounds).mean(axis=0)
                 cols.append(c[:3])
                 if not brush_is_uniform(p.brush):
-                    notes.append(("EXP005", f"the {type(p.brush).__name__} of a "
-                                  "SpecularMaterial is exported as its average colour"))
+                    notes.append(
+                        (
+                            "EXP005",
+                            f"the {type(p.brush).__name__} of a "
+                            "SpecularMaterial is exported as its average colour",
+                        )
+                    )
             colour = np.clip(np.sum(cols, axis=0), 0.0, 1.0)
             power = max(float(specular[0].specular_power), 0.0)
-            pbr["roughnessFactor"] = float(min(1.0, (2.0 / (power + 2.0)) ** 0.25))
-            spec = {"specularFactor": 1.0,
-                    "specularColorFactor": [float(v) for v in srgb_to_linear(colour)]}
-            notes.append(("EXP005", f"SpecularMaterial (SpecularPower {power:g}) is exported as "
-                          "KHR_materials_specular with a roughness of "
-                          f"{pbr['roughnessFactor']:.3f}: the highlight's shape differs"))
+            pbr["roughnessFactor"] = roughness_of_power(power)
+            spec = {
+                "specularFactor": 1.0,
+                "specularColorFactor": [float(v) for v in srgb_to_linear(colour)],
+            }
+            notes.append(
+                (
+                    "EXP005",
+                    f"SpecularMaterial (SpecularPower {power:g}) is exported as "
+                    "KHR_materials_specular with a roughness of "
+                    f"{pbr['roughnessFactor']:.3f}: the highlight's shape differs",
+                )
+            )
         mat["extensions"] = {"KHR_materials_specular": spec}
         self.doc.use_extension("KHR_materials_specular")
         if alpha_blend:
             mat["alphaMode"] = "BLEND"
         ambient = [p for p in diffuse if tuple(p.ambient_color) != (1.0, 1.0, 1.0, 1.0)]
         if ambient:
-            notes.append(("EXP006", "DiffuseMaterial.AmbientColor has no glTF equivalent: "
-                          "ambient light is not scaled by it"))
+            notes.append(
+                (
+                    "EXP006",
+                    "DiffuseMaterial.AmbientColor has no glTF equivalent: "
+                    "ambient light is not scaled by it",
+                )
+            )
         index = self.doc.add("materials", mat)
         return MaterialResult(index, textured, notes)
 

@@ -55,13 +55,15 @@ def frame_looking(position, direction, up_hint=(0.0, 1.0, 0.0)) -> np.ndarray:
 class ViewportExport:
     """Builds the glTF of one viewport; ``node_of_model`` etc. let the animation find nodes."""
 
-    def __init__(self, scene, vp, diagnostics: list) -> None:
+    def __init__(self, scene, vp, diagnostics: list, frames=None) -> None:
         self.scene, self.vp, self.file = scene, vp, scene.file
+        self.frames = frames  # the viewport at each animation sample, or None
         self.diags = diagnostics
         self.doc = Document(GENERATOR)
         self.materials = Materials(self.doc)
         self.mesh_cache: dict = {}
-        self.model_nodes: dict[int, int] = {}  # model index -> node (TRS, animatable)
+        # model index -> its node, or (outer, inner) nodes for a shearing transform
+        self.model_nodes: dict[int, int | tuple[int, int]] = {}
         self.light_nodes: dict[int, int] = {}  # light index -> node
         self.camera_node: int | None = None
         self.camera_kind: str | None = None
@@ -94,17 +96,13 @@ class ViewportExport:
         return self.doc
 
     # ----------------------------------------------------------------- geometry
-    def _geometry(self, model, world_baked: np.ndarray | None):
+    def _geometry(self, model):
         """(positions, normals, texcoords, triangles) float/int arrays ready to store, with the
         triangles touching a non-finite vertex dropped, or None when none is left."""
         mesh = model.mesh
         pos = np.asarray(mesh.positions, dtype=np.float64)
         nrm = np.asarray(mesh.normals, dtype=np.float64)
         tri = np.asarray(mesh.indices, dtype=np.int64).reshape(-1, 3)
-        if world_baked is not None:
-            pos = pos @ world_baked[:3, :3].T + world_baked[:3, 3]
-            nmat = np.linalg.inv(world_baked[:3, :3]).T
-            nrm = nrm @ nmat.T
         finite = np.isfinite(pos).all(axis=1)
         if not finite.all():
             tri = tri[finite[tri].all(axis=1)]
@@ -122,25 +120,25 @@ class ViewportExport:
         dtype = np.uint16 if n < 65535 else np.uint32
         return self.doc.accessor(tri.astype(dtype).ravel(), target=ELEMENT_ARRAY_BUFFER)
 
+    def _worlds(self, i: int, model) -> list[np.ndarray]:
+        """The model's world matrix at every animation sample (just its own when static)."""
+        frames = self.frames
+        if frames and all(len(f.models) == len(self.vp.models) for f in frames):
+            return [np.asarray(f.models[i].world) for f in frames]
+        return [np.asarray(model.world)]
+
     def _model_node(self, i: int, model) -> int | None:
         where = f"GeometryModel3D {model.name!r}" if model.name else "a GeometryModel3D"
-        parts = trs.decompose(model.world)
-        baked = None
-        if parts is None:
-            try:
-                np.linalg.inv(model.world[:3, :3])
-                if not np.allclose(model.world[3], (0, 0, 0, 1)):
-                    raise np.linalg.LinAlgError
-                singular = not np.all(np.isfinite(model.world))
-            except np.linalg.LinAlgError:
-                singular = True
-            if singular:
-                self.note("EXP013", f"{where} has a singular or projective transform: WPF "
-                          "draws nothing of it", model)  # fmt: skip
-                return None
-            baked = np.asarray(model.world, dtype=np.float64)
-            self.note("EXP012", f"{where}'s transform shears: baked into its vertices", model)
-        geo = self._geometry(model, baked)
+        worlds = self._worlds(i, model)
+        nested = any(trs.decompose(w) is None for w in worlds)
+        if trs.split(model.world) is None:
+            self.note("EXP013", f"{where} has a singular or projective transform: WPF "
+                      "draws nothing of it", model)  # fmt: skip
+            return None
+        if nested and trs.decompose(model.world) is None:
+            self.note("EXP012", f"{where}'s transform shears: exported as two nested nodes "
+                      "(scale between two rotations)", model)  # fmt: skip
+        geo = self._geometry(model)
         if geo is None:
             return None
         pos, nrm, tc, tri = geo
@@ -150,8 +148,8 @@ class ViewportExport:
             self.note(code, message, model)
         if front.index is None and back.index is None:
             return None
-        key = (id(model.mesh), baked is None)
-        if baked is not None or key not in self.mesh_cache:
+        key = id(model.mesh)
+        if key not in self.mesh_cache:
             store = {
                 "POSITION": self.doc.accessor(pos.astype(np.float32), target=ARRAY_BUFFER,
                                               bounds=True),
@@ -166,8 +164,7 @@ class ViewportExport:
                 uv = self.doc.accessor(bake.texcoords(tc), target=ARRAY_BUFFER)
             cached = (store, flipped, uv, self._indices(tri, pos.shape[0]),
                       self._indices(tri[:, ::-1], pos.shape[0]))  # fmt: skip
-            if baked is None:
-                self.mesh_cache[key] = cached
+            self.mesh_cache[key] = cached
         else:
             cached = self.mesh_cache[key]
         store, flipped, uv, idx_front, idx_back = cached
@@ -183,10 +180,20 @@ class ViewportExport:
             prims.append({"attributes": attrs, "indices": indices, "material": result.index})
         mesh_index = self.doc.add("meshes", {"primitives": prims, **_named(model.name)})
         node = {"mesh": mesh_index, **_named(model.name)}
-        if baked is None:
+        if not nested:
             _node_transform(node, model.world)
-            self.model_nodes[i] = len(self.doc.gltf.get("nodes", ()))
-        return self.doc.add("nodes", node)
+            index = self.doc.add("nodes", node)
+            self.model_nodes[i] = index
+            return index
+        (t, q, s), q2 = trs.split(model.world)
+        node["rotation"] = [float(v) for v in q2]
+        inner = self.doc.add("nodes", node)
+        outer = {"children": [inner], "translation": [float(v) for v in t],
+                 "rotation": [float(v) for v in q], "scale": [float(v) for v in s],
+                 **_named(model.name)}  # fmt: skip
+        index = self.doc.add("nodes", outer)
+        self.model_nodes[i] = (index, inner)
+        return index
 
     # ----------------------------------------------------------------- camera
     def _camera_node(self) -> int | None:

@@ -36,18 +36,21 @@ def _mean_colour(passes, kind) -> np.ndarray | None:
     return np.array([*rgb, c[3]])
 
 
+def _triple(c) -> str:
+    return " ".join(f"{float(v):.6g}" for v in c[:3])
+
+
 def _mtl(name: str, passes) -> tuple[str, bool]:
     diffuse = _mean_colour(passes, DiffuseMaterial)
     emissive = _mean_colour(passes, EmissiveMaterial)
     specular = _mean_colour(passes, SpecularMaterial)
     kd = diffuse if diffuse is not None else np.array([0.0, 0.0, 0.0, 1.0])
-    lines = [f"newmtl {name}", "Ka 0 0 0", "Kd %.6g %.6g %.6g" % tuple(kd[:3]),
-             "d %.6g" % kd[3]]  # fmt: skip
+    lines = [f"newmtl {name}", "Ka 0 0 0", "Kd " + _triple(kd), f"d {kd[3]:.6g}"]
     if emissive is not None:
-        lines.append("Ke %.6g %.6g %.6g" % tuple(emissive[:3]))
+        lines.append("Ke " + _triple(emissive))
     if specular is not None:
         power = next(p.specular_power for p in passes if isinstance(p, SpecularMaterial))
-        lines += ["Ks %.6g %.6g %.6g" % tuple(specular[:3]), f"Ns {power:.6g}", "illum 2"]
+        lines += ["Ks " + _triple(specular), f"Ns {power:.6g}", "illum 2"]
     else:
         lines += ["Ks 0 0 0", "illum 1"]
     textured = any(p.brush is not None and not brush_is_uniform(p.brush) for p in passes)
@@ -57,8 +60,10 @@ def _mtl(name: str, passes) -> tuple[str, bool]:
 def obj_files(scene, vp, diagnostics: list, animated: bool = False, stem: str = "scene") -> dict:
     """{'': the .obj text, '.mtl': the material library (``stem``.mtl) as bytes."""
     parts = world_parts(vp)
-    out = ["# xaml3d export: world space, WPF's normals and texture coordinates\n",
-           f"mtllib {stem}.mtl\n"]
+    out = [
+        "# xaml3d export: world space, WPF's normals and texture coordinates\n",
+        f"mtllib {stem}.mtl\n",
+    ]
     mtl = ["# xaml3d export\n\n"]
     base = 1
     textured = False

@@ -75,3 +75,21 @@ def decompose(m: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None
     if not np.allclose(compose(t, q, scale), m, atol=1e-7 * max(size, 1.0), rtol=1e-7):
         return None
     return t, q, scale
+
+
+def split(m: np.ndarray) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], np.ndarray] | None:
+    """Any invertible affine ``m`` as two nested glTF nodes: ((t, q, s) of the outer node, q2 of
+    the inner one) with ``compose(t, q, s) @ compose(0, q2, 1) == m``. From the singular value
+    decomposition m = T U diag(s) V^T, U and V^T made rotations by moving signs into s.
+    None when ``m`` is projective, singular or not finite."""
+    m = np.asarray(m, dtype=np.float64)
+    if not np.all(np.isfinite(m)) or not np.allclose(m[3], (0, 0, 0, 1), atol=TOL, rtol=0):
+        return None
+    u, s, vt = np.linalg.svd(m[:3, :3])
+    if float(s.min()) <= TOL * float(s.max()):
+        return None
+    if np.linalg.det(u) < 0:
+        u[:, 2], s[2] = -u[:, 2], -s[2]
+    if np.linalg.det(vt) < 0:
+        vt[2], s[2] = -vt[2], -s[2]
+    return (m[:3, 3].copy(), quaternion(u), s), quaternion(vt)
