@@ -43,7 +43,7 @@ def choose_viewport(scene, viewport, diagnostics: list):
 
 
 def export_bytes(
-    scene, fmt: str, *, viewport=None, storyboard=None, stem: str = "scene"
+    scene, fmt: str, *, viewport=None, storyboard=None, stem: str = "scene", progress=None
 ) -> tuple[dict, list]:
     """{file suffix or '' -> bytes} of the export of ``scene`` as ``fmt`` and its diagnostics;
     the '' entry is the main file (OBJ adds '.mtl')."""
@@ -54,7 +54,7 @@ def export_bytes(
     start = scene if clip is None else clip.at(0.0)
     vp = choose_viewport(start, viewport, diagnostics)
     if fmt in ("glb", "gltf", "html"):
-        doc, exporter = build_gltf(start, vp, clip, diagnostics)
+        doc, exporter = build_gltf(start, vp, clip, diagnostics, progress)
         if fmt == "glb":
             return {"": doc.glb()}, diagnostics
         if fmt == "gltf":
@@ -73,12 +73,12 @@ def export_bytes(
     raise ExportError(f"unknown export format {fmt!r}", code="EXP001")
 
 
-def build_gltf(scene, vp, clip, diagnostics: list):
+def build_gltf(scene, vp, clip, diagnostics: list, progress=None):
     """(Document, ViewportExport) of one viewport, with its animation when ``clip``."""
     from xaml3d.export.gltf_animation import add_animation, sample
     from xaml3d.export.gltf_scene import ViewportExport
 
-    sampled = None if clip is None else sample(clip, vp.index)
+    sampled = None if clip is None else sample(clip, vp.index, progress)
     exporter = ViewportExport(scene, vp, diagnostics, None if sampled is None else sampled[1])
     doc = exporter.build()
     if sampled is not None:
@@ -90,17 +90,20 @@ def companion(path: Path, suffix: str) -> Path:
     return path.with_suffix(suffix)
 
 
-def export(scene, path, *, viewport=None, storyboard=None, fmt: str | None = None) -> list:
+def export(
+    scene, path, *, viewport=None, storyboard=None, fmt: str | None = None, progress=None
+) -> list:
     """Write ``scene`` to ``path`` in the format its suffix names (or ``fmt``: glb, gltf, obj,
     stl, html); the diagnostics of what the format could not carry. Atomic: every file of the
     export (an OBJ's .mtl too) is written, or none is. ExportError EXP001 for an unknown format,
-    EXP002 when a file cannot be written."""
+    EXP002 when a file cannot be written. ``progress(done, total)`` is called as the animation
+    is sampled."""
     from xaml3d.render.atomic import together, write_atomically
 
     path = Path(path)
     fmt = fmt or format_of(path)
     files, diagnostics = export_bytes(
-        scene, fmt, viewport=viewport, storyboard=storyboard, stem=path.stem
+        scene, fmt, viewport=viewport, storyboard=storyboard, stem=path.stem, progress=progress
     )
     try:
         with together():

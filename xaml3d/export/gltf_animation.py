@@ -35,17 +35,19 @@ def _differs(a, b) -> bool:
     return a != b
 
 
-def sample(clip: Clip, vp_index: int) -> tuple[np.ndarray, list] | None:
+def sample(clip: Clip, vp_index: int, progress=None) -> tuple[np.ndarray, list] | None:
     """(sample times, the viewport at each) of ``clip``, or None when it has no length."""
     times = _times(clip)
     if times.shape[0] < 2:
         return None
     frames = []
-    for t in times:
+    for k, t in enumerate(times):
         try:
             frames.append(clip.at(float(t)).viewport(vp_index))
         except SceneError:  # a viewport that vanishes: nothing to sample
             return None
+        if progress is not None:
+            progress(k + 1, len(times))
     return times, frames
 
 
