@@ -263,7 +263,9 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
     """(KHR_lights_punctual light, node world matrix) of a WPF light, None when degenerate."""
     world = np.asarray(light.world, dtype=np.float64)
     color = [float(c) for c in srgb_to_linear(light.color[:3])]
-    spec: dict = {"color": color, "intensity": 1.0}
+    # intensity pi: a WPF light of colour c lights a facing white diffuse surface to c; glTF
+    # intensities are physical (lux, candela), and a Lambertian surface returns 1/pi of it
+    spec: dict = {"color": color, "intensity": math.pi}
     if isinstance(light, DirectionalLight):
         d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
         if not (np.all(np.isfinite(d)) and np.linalg.norm(d) > 0):
