@@ -45,7 +45,7 @@ EXPORT_CODES: dict[str, tuple[str, str]] = {
         "a model's transform shears (no translation-rotation-scale form): "
         "exported as two nested nodes, a scale between two rotations",
     ),
-    "EXP013": (WARNING, "a model is left out: singular transform or no drawable triangles"),
+    "EXP013": (WARNING, "a model is left out: its transform is singular or projective"),
     "EXP014": (INFO, "the document has several viewports: one is exported (--viewport)"),
     "EXP015": (WARNING, "the camera cannot be exported (WPF draws nothing with it)"),
     "EXP016": (
