@@ -87,6 +87,7 @@ def obj_files(scene, vp, diagnostics: list, animated: bool = False, stem: str = 
     lost = ["lights", "the camera"] + (["the animation"] if animated else [])
     if textured:
         lost.append("gradient and image brushes (as their mean colour)")
-    lost.append("WPF's specular lighting (as Ks/Ns)")
+    if any(isinstance(q, SpecularMaterial) for p in parts for q in p.model.material):
+        lost.append("WPF's specular lighting (as Ks/Ns)")
     diagnostics.append(diag("EXP016", "OBJ cannot carry " + ", ".join(lost), scene.file))
     return {"": "".join(out).encode("utf-8"), ".mtl": "".join(mtl).encode("utf-8")}
