@@ -86,3 +86,12 @@ def test_the_validator_finds_errors_in_a_broken_file(tmp_path):
     bad.write_text('{"asset": {"version": "2.0"}, "nodes": [{"mesh": 5}]}')
     (report,) = validate([bad])
     assert report["errors"] >= 1
+
+
+@needs_validator
+def test_gltf_json_with_inlined_buffer_is_valid(tmp_path):
+    scene = xaml3d.load(str(ROOT / "samples" / "brushes.xaml"))  # textures in the buffer
+    target = tmp_path / "brushes.gltf"
+    xaml3d.export(scene, target)
+    (report,) = validate([target])
+    assert report["errors"] == 0, report["messages"]
