@@ -10,6 +10,7 @@ Public API::
     frame = xaml3d.scene_at(scene, 1.5)         # -> the Scene at that moment
     for t, r in xaml3d.render_frames(scene, xaml3d.frame_times(0, 2, 30)): ...
     xaml3d.save_animation(rgba_frames, "spin.gif", total_seconds)
+    notes = xaml3d.export(scene, "scene.glb")   # also .gltf .obj .stl .html -> [Diagnostic]
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ __version__ = "0.1.0"
 # rebind it.
 import xaml3d.render.api  # noqa: E402,F401
 from xaml3d.errors import Diagnostic, XamlError  # noqa: E402
+from xaml3d.export import export  # noqa: E402
 from xaml3d.render.api import (  # noqa: E402
     Rendering,
     render,
@@ -37,6 +39,7 @@ __all__ = [
     "Rendering",
     "XamlError",
     "__version__",
+    "export",
     "frame_times",
     "load",
     "render",

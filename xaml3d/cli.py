@@ -1,7 +1,8 @@
 """The ``xaml3d`` command line (click): a thin layer over the Python API.
 
 Commands live in their own modules: ``render`` (cli_render), ``validate`` (cli_validate),
-``camera`` (cli_camera), ``info`` (cli_info), ``animate`` (cli_animate); shared helpers in
+``camera`` (cli_camera), ``info`` (cli_info), ``animate`` (cli_animate), ``export``
+(cli_export); shared helpers in
 cli_common. Diagnostics go to stderr, data to stdout. Exit status: 0 success, 1 the input
 could not be handled, 2 usage error.
 """
@@ -13,6 +14,7 @@ import click
 from xaml3d import __version__
 from xaml3d.cli_animate import animate_command
 from xaml3d.cli_camera import camera_command
+from xaml3d.cli_export import export_command
 from xaml3d.cli_info import info_command
 from xaml3d.cli_render import render_command
 from xaml3d.cli_validate import validate_command
@@ -26,6 +28,7 @@ Examples:
   xaml3d camera scene.xaml --point 0,0,0
   xaml3d info scene.xaml --json
   xaml3d animate scene.xaml -o scene.gif
+  xaml3d export scene.xaml -o scene.glb
 
 Run xaml3d COMMAND --help for each command's options.
 """
@@ -47,3 +50,4 @@ main.add_command(validate_command)
 main.add_command(camera_command)
 main.add_command(info_command)
 main.add_command(animate_command)
+main.add_command(export_command)

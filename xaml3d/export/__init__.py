@@ -1,0 +1,118 @@
+"""Export a Scene to other formats: glTF 2.0 (.glb, .gltf), OBJ + MTL, binary STL, and a
+self-contained interactive HTML page (docs/export.md).
+
+Exporters take a Scene (never the reader or the layout) and return the diagnostics of what the
+format could not carry. Files are written atomically: a failure leaves any existing file as it
+was. The Scene's animation is read only through ``xaml3d.export.timeline``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from xaml3d.errors import Diagnostic, RenderError, XamlError
+from xaml3d.export.codes import EXPORT_CODES, diag
+
+FORMATS = {".glb": "glb", ".gltf": "gltf", ".obj": "obj", ".stl": "stl", ".html": "html",
+           ".htm": "html"}  # fmt: skip
+
+
+class ExportError(XamlError):
+    default_code = "EXP001"
+
+
+def format_of(path) -> str:
+    """The export format named by ``path``'s suffix; ExportError EXP001 for any other."""
+    suffix = Path(str(path)).suffix.lower()
+    fmt = FORMATS.get(suffix)
+    if fmt is None:
+        raise ExportError(
+            f"cannot tell the export format of {str(path)!r}: use .glb, .gltf, .obj, .stl or .html",
+            code="EXP001",
+        )
+    return fmt
+
+
+def choose_viewport(scene, viewport, diagnostics: list):
+    vp = scene.viewport(viewport)
+    if viewport is None and len(scene.viewports) > 1:
+        diagnostics.append(diag("EXP014", f"the document has {len(scene.viewports)} "
+                                "viewports: the first is exported (--viewport chooses)",
+                                scene.file, vp))  # fmt: skip
+    return vp
+
+
+def export_bytes(
+    scene, fmt: str, *, viewport=None, storyboard=None, stem: str = "scene", progress=None
+) -> tuple[dict, list]:
+    """{file suffix or '' -> bytes} of the export of ``scene`` as ``fmt`` and its diagnostics;
+    the '' entry is the main file (OBJ adds '.mtl')."""
+    from xaml3d.export.timeline import clip_of
+
+    diagnostics: list[Diagnostic] = []
+    clip = clip_of(scene, storyboard)
+    start = scene if clip is None else clip.at(0.0)
+    vp = choose_viewport(start, viewport, diagnostics)
+    if fmt in ("glb", "gltf", "html"):
+        doc, exporter = build_gltf(start, vp, clip, diagnostics, progress)
+        if fmt == "glb":
+            return {"": doc.glb()}, diagnostics
+        if fmt == "gltf":
+            return {"": doc.gltf_text()}, diagnostics
+        from xaml3d.export.html import page
+
+        return {"": page(start, vp, doc.glb(), exporter)}, diagnostics
+    if fmt == "obj":
+        from xaml3d.export.obj import obj_files
+
+        return obj_files(start, vp, diagnostics, animated=clip is not None, stem=stem), diagnostics
+    if fmt == "stl":
+        from xaml3d.export.stl import stl_bytes
+
+        return {"": stl_bytes(start, vp, diagnostics, animated=clip is not None)}, diagnostics
+    raise ExportError(f"unknown export format {fmt!r}", code="EXP001")
+
+
+def build_gltf(scene, vp, clip, diagnostics: list, progress=None):
+    """(Document, ViewportExport) of one viewport, with its animation when ``clip``."""
+    from xaml3d.export.gltf_animation import add_animation, sample
+    from xaml3d.export.gltf_scene import ViewportExport
+
+    sampled = None if clip is None else sample(clip, vp.index, progress)
+    exporter = ViewportExport(scene, vp, diagnostics, None if sampled is None else sampled[1])
+    doc = exporter.build()
+    if sampled is not None:
+        add_animation(exporter, clip, *sampled)
+    return doc, exporter
+
+
+def companion(path: Path, suffix: str) -> Path:
+    return path.with_suffix(suffix)
+
+
+def export(
+    scene, path, *, viewport=None, storyboard=None, fmt: str | None = None, progress=None
+) -> list:
+    """Write ``scene`` to ``path`` in the format its suffix names (or ``fmt``: glb, gltf, obj,
+    stl, html); the diagnostics of what the format could not carry. Atomic: every file of the
+    export (an OBJ's .mtl too) is written, or none is. ExportError EXP001 for an unknown format,
+    EXP002 when a file cannot be written. ``progress(done, total)`` is called as the animation
+    is sampled."""
+    from xaml3d.render.atomic import together, write_atomically
+
+    path = Path(path)
+    fmt = fmt or format_of(path)
+    files, diagnostics = export_bytes(
+        scene, fmt, viewport=viewport, storyboard=storyboard, stem=path.stem, progress=progress
+    )
+    try:
+        with together():
+            for suffix, data in files.items():
+                target = companion(path, suffix) if suffix else path
+                write_atomically(target, lambda fh, data=data: fh.write(data))
+    except RenderError as exc:
+        raise ExportError(exc.message, code="EXP002") from None
+    return diagnostics
+
+
+__all__ = ["EXPORT_CODES", "ExportError", "FORMATS", "export", "export_bytes", "format_of"]

@@ -1,0 +1,157 @@
+"""Storyboards as one glTF animation: translation / rotation / scale channels, sampled.
+
+The Scene's animation is read through ``xaml3d.export.timeline`` only. Every animated model,
+light and the camera is sampled at ``SAMPLE_RATE`` frames per second over one cycle (Forever
+repeats counted once) and written as LINEAR channels of its node, so easing, key splines, paths
+and every curve WPF has come out as WPF computes them, to within the sampling (EXP010). What
+glTF's channels cannot carry (a camera's FieldOfView or Width, colours, materials, meshes) is
+named in an EXP009 warning.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xaml3d.errors import CameraError, SceneError
+from xaml3d.export import trs
+from xaml3d.export.gltf_camera import gltf_camera
+from xaml3d.export.gltf_scene import light_node
+from xaml3d.export.timeline import Clip
+
+SAMPLE_RATE = 30.0  # frames per second of the exported channels
+MAX_SAMPLES = 3600
+
+
+def _times(clip: Clip) -> np.ndarray:
+    n = max(2, min(MAX_SAMPLES, int(math.ceil(clip.seconds * SAMPLE_RATE)) + 1))
+    return np.linspace(0.0, clip.seconds, n) if clip.seconds > 0 else np.zeros(1)
+
+
+def _differs(a, b) -> bool:
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return not np.array_equal(np.asarray(a), np.asarray(b))
+    return a != b
+
+
+def sample(clip: Clip, vp_index: int, progress=None) -> tuple[np.ndarray, list] | None:
+    """(sample times, the viewport at each) of ``clip``, or None when it has no length."""
+    times = _times(clip)
+    if times.shape[0] < 2:
+        return None
+    frames = []
+    for k, t in enumerate(times):
+        try:
+            frames.append(clip.at(float(t)).viewport(vp_index))
+        except SceneError:  # a viewport that vanishes: nothing to sample
+            return None
+        if progress is not None:
+            progress(k + 1, len(times))
+    return times, frames
+
+
+def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
+    """Add the channels of the sampled ``frames`` to ``export``'s document (a ViewportExport
+    built with these frames)."""
+    base = frames[0]
+    tracks: dict = {}  # node or (outer, inner) nodes -> world matrices per sample
+    lost: set[str] = set()
+    if all(len(f.models) == len(base.models) for f in frames):
+        for i, node in export.model_nodes.items():
+            worlds = [np.asarray(f.models[i].world) for f in frames]
+            if any(_differs(w, worlds[0]) for w in worlds):
+                tracks[node] = worlds
+        for i in range(len(base.models)):
+            m0 = base.models[i]
+            for f in frames[1:]:
+                m = f.models[i]
+                if m.mesh is not m0.mesh and _differs(m.mesh.positions, m0.mesh.positions):
+                    lost.add("mesh positions")
+                if m.material != m0.material or m.back_material != m0.back_material:
+                    lost.add("materials and brushes")
+    else:
+        lost.add("models appearing or disappearing")
+    if export.camera_node is not None:
+        _camera_track(export, frames, tracks, lost)
+    if all(len(f.lights) == len(base.lights) for f in frames):
+        for i, node in export.light_nodes.items():
+            got = [light_node(f.lights[i]) for f in frames]
+            if any(g is None for g in got):
+                continue
+            worlds = [g[1] for g in got]
+            if any(_differs(w, worlds[0]) for w in worlds):
+                tracks[node] = worlds
+            if any(g[0] != got[0][0] for g in got):
+                lost.add("light colours, ranges or cones")
+    for what in sorted(lost):
+        export.note("EXP009", f"the storyboards animate {what}, which glTF cannot animate: "
+                    "the exported animation leaves it at its first value")  # fmt: skip
+    if not tracks:
+        return
+    _write(export, times, tracks)
+    note = (f"storyboards exported as transforms sampled at {SAMPLE_RATE:g} per second "
+            f"(LINEAR), {clip.seconds:g} s")  # fmt: skip
+    export.note("EXP010", note)
+    if clip.endless:
+        export.note("EXP011", f"an animation has a Forever Duration: its first {clip.seconds:g}"
+                    " s are exported")  # fmt: skip
+
+
+def _camera_track(export, frames, tracks, lost) -> None:
+    worlds, cams = [], []
+    for f in frames:
+        try:
+            got = gltf_camera(f)
+        except CameraError:
+            lost.add("the camera into a state WPF cannot draw")
+            return
+        if got is None:
+            return
+        cams.append(got[0])
+        worlds.append(got[1])
+    if any(_differs(w, worlds[0]) for w in worlds):
+        tracks[export.camera_node] = worlds
+    if any(c != cams[0] for c in cams):
+        lost.add("the camera's FieldOfView, Width or planes")
+
+
+def _continuous(quats) -> np.ndarray:
+    """Quaternions with signs chosen so each sample is the shorter way from the one before."""
+    q = np.array(quats, dtype=np.float64)
+    for k in range(1, len(q)):
+        if float(q[k] @ q[k - 1]) < 0:
+            q[k] = -q[k]
+    return q
+
+
+def _write(export, times, tracks) -> None:
+    doc = export.doc
+    time_acc = doc.accessor(times.astype(np.float32), bounds=True)
+    samplers, channels = [], []
+    for node, worlds in tracks.items():
+        nested = isinstance(node, tuple)
+        parts = [trs.split(w) if nested else trs.decompose(w) for w in worlds]
+        if any(p is None for p in parts):
+            export.note("EXP009", "an animated transform collapses (a zero scale) or becomes "
+                        "projective at some moment: its animation is not exported")  # fmt: skip
+            continue
+        if nested:
+            inner = [p[1] for p in parts]
+            parts = [p[0] for p in parts]
+        t = np.array([p[0] for p in parts])
+        s = np.array([p[2] for p in parts])
+        paths = [(node[0] if nested else node, "translation", t),
+                 (node[0] if nested else node, "rotation", _continuous([p[1] for p in parts])),
+                 (node[0] if nested else node, "scale", s)]  # fmt: skip
+        if nested:
+            paths.append((node[1], "rotation", _continuous(inner)))
+        for target, path, values in paths:
+            if np.allclose(values, values[0], rtol=0, atol=1e-12):
+                continue
+            out = doc.accessor(values.astype(np.float32))
+            samplers.append({"input": time_acc, "output": out, "interpolation": "LINEAR"})
+            channels.append({"sampler": len(samplers) - 1,
+                             "target": {"node": target, "path": path}})  # fmt: skip
+    if channels:
+        doc.add("animations", {"name": "Storyboards", "samplers": samplers, "channels": channels})
