@@ -17,22 +17,13 @@ from pathlib import Path
 
 import click
 
-from xaml3d.errors import ERROR, INFO, WARNING, CameraError, Diagnostic, RenderError, XamlError
+from xaml3d.codes.cli import CLI_CODES  # noqa: F401 (the stage's table)
+from xaml3d.errors import ERROR, INFO, CameraError, Diagnostic, RenderError, XamlError
 from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
 from xaml3d.scene.types import Scene, Viewport
 
 STDIN_NAME = "<stdin>"
 TEXT_NAME = "<string>"  # the loader's label for markup given as text
-
-CLI_CODES: dict[str, tuple[str, str]] = {
-    "IO001": (ERROR, "a file could not be read or written (missing, unreadable, bad path)"),
-    "IO002": (ERROR, "the output would overwrite an input file: refused"),
-    "IO003": (
-        ERROR,
-        "two outputs would be the same file (two scenes of a batch, two viewports of a scene)",
-    ),
-    "OPT001": (WARNING, "a command-line option has no effect with the others given"),
-}
 
 
 class FiniteFloat(click.FloatRange):

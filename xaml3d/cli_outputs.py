@@ -23,20 +23,7 @@ from pathlib import Path
 import click
 
 from xaml3d.cli_common import same_file
-from xaml3d.errors import WARNING
-
-OUTPUT_CODES: dict[str, tuple[str, str]] = {
-    "IO004": (
-        WARNING,
-        "animate: the output directory holds frame files of an earlier run that this one does "
-        "not replace (--clean removes them)",
-    ),
-    "ANIM013": (
-        WARNING,
-        "animate: GIF keeps only 1-bit transparency: translucent frames flattened onto an "
-        "opaque colour",
-    ),
-}
+from xaml3d.codes.outputs import OUTPUT_CODES  # noqa: F401 (the stage's table)
 
 
 def animation_target(output: str) -> bool:

@@ -12,19 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from xaml3d.codes.layout import LAYOUT_CODES  # noqa: F401 (the stage's table)
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, STACK, VIEWBOX, Node
-
-LAYOUT_CODES: dict[str, tuple[str, str]] = {
-    "LAY001": ("warning", "a Viewport3D is laid out with zero width or height: WPF draws nothing"),
-    "LAY002": ("warning", "a Viewport3D is Collapsed or Hidden (itself or an ancestor)"),
-    "LAY003": ("info", "a control xaml3d does not lay out takes an estimated size"),
-    "LAY004": ("info", "an element xaml3d has no panel rule for is laid out as a plain container"),
-    "LAY005": (
-        "error",
-        "Grid.Row/Column below 0 or Grid.RowSpan/ColumnSpan below 1 (WPF refuses it)",
-    ),
-    "LAY006": ("info", "a LayoutTransform on a panel (around a viewport or not) is not applied"),
-}
 
 
 @dataclass(frozen=True)

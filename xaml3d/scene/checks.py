@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, GeometryError
+from xaml3d.codes.checks import CHECK_CODES  # noqa: F401 (the stage's table)
+from xaml3d.errors import CameraError, Diagnostic, GeometryError
 from xaml3d.scene.types import (
     AmbientLight,
     DiffuseMaterial,
@@ -28,21 +29,6 @@ from xaml3d.scene.types import (
     SpecularMaterial,
     Viewport,
 )
-
-CHECK_CODES: dict[str, tuple[str, str]] = {
-    "CHK001": (WARNING, "a model's mesh has no triangles: it draws nothing"),
-    "CHK002": (WARNING, "no lights and only diffuse materials: the models render black"),
-    "CHK003": (WARNING, "the camera sees none of the scene's geometry (try --fit)"),
-    "CHK004": (WARNING, "a material pass has no brush: it draws nothing"),
-    "CHK005": (WARNING, "a model has neither Material nor BackMaterial: it draws nothing"),
-    "CHK006": (WARNING, "a viewport holds no models: it draws nothing"),
-    "CHK007": (INFO, "only ambient light: every surface is lit flat, without shading"),
-    "CHK008": (
-        WARNING,
-        "a brush that varies over the surface on a mesh without TextureCoordinates: one colour",
-    ),
-}
-
 
 _MESH_VALUES = frozenset({"Positions", "TriangleIndices"})
 _MATERIALS = frozenset({"Material", "BackMaterial"})

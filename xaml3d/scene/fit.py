@@ -26,15 +26,9 @@ from dataclasses import replace
 
 import numpy as np
 
+from xaml3d.codes.fit import FIT_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, GeometryError
 from xaml3d.scene.types import Camera, MatrixCamera, OrthographicCamera, PerspectiveCamera, Viewport
-
-FIT_CODES: dict[str, tuple[str, str]] = {
-    "FIT001": (WARNING, "--fit cannot move a MatrixCamera: its matrices are used as given"),
-    "FIT002": (WARNING, "--fit: the viewport has no geometry to frame; camera unchanged"),
-    "FIT003": (WARNING, "--fit: the camera is degenerate or has no camera; nothing fitted"),
-    "FIT004": (INFO, "--fit moved the camera (new position / width reported)"),
-}
 
 # A box of zero size (one point) still needs a distance to stand back from.
 MIN_RADIUS = 1e-6

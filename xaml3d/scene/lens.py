@@ -34,23 +34,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xaml3d.errors import ERROR, INFO, WARNING, RenderError
+from xaml3d.codes.lens import LENS_CODES  # noqa: F401 (the stage's table)
+from xaml3d.errors import RenderError
 from xaml3d.scene.camera_math import camera_frame, camera_pipeline
 from xaml3d.scene.types import MatrixCamera, PerspectiveCamera, frozen_array
-
-LENS_CODES: dict[str, tuple[str, str]] = {
-    "LNS001": (
-        ERROR,
-        "a lens aperture or stereo pair needs a PerspectiveCamera (not orthographic or matrix)",
-    ),
-    "LNS002": (INFO, "range of the eye-space distances written to a depth image"),
-    "LNS003": (INFO, "the focal distance (and eye separation) a lens or stereo render uses"),
-    "LNS004": (
-        WARNING,
-        "the default focal distance falls back to 1: the scene's centre is not in front of the "
-        "camera",
-    ),
-}
 
 GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))  # radians, about 137.5 degrees
 FRAME_WIDTH_MM = 36.0  # the 35 mm film frame is 36 mm x 24 mm

@@ -21,21 +21,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from xaml3d.errors import INFO, WARNING, Diagnostic
+from xaml3d.codes.mesh import MESH_CODES  # noqa: F401 (the stage's table)
+from xaml3d.errors import Diagnostic
 from xaml3d.scene.types import Mesh
-
-MESH_CODES: dict[str, tuple[str, str]] = {
-    "MSH001": (
-        WARNING,
-        "a triangle index is out of range: it and every index after it are ignored",
-    ),
-    "MSH002": (WARNING, "index count (or implicit position count) is not a multiple of 3"),
-    "MSH003": (WARNING, "Normals count differs from Positions count"),
-    "MSH004": (WARNING, "TextureCoordinates count differs from Positions count"),
-    "MSH005": (INFO, "degenerate (zero-area) triangles: they draw nothing"),
-    "MSH006": (WARNING, "the mesh has no triangles to draw"),
-    "MSH007": (WARNING, "NaN or infinite positions: the triangles using them are not drawn"),
-}
 
 
 def _rows(values, width: int, dtype=np.float64) -> np.ndarray:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from xaml3d.errors import ERROR, INFO, WARNING
+from xaml3d.codes.animation import ANIM_CODES  # noqa: F401 (the stage's table)
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import (
     a_an,
@@ -30,40 +30,6 @@ from xaml3d.xaml.context import (
     qname,
     split_markup,
 )
-
-ANIM_CODES: dict[str, tuple[str, str]] = {
-    "ANIM001": (ERROR, "Storyboard.TargetName names no object of the document"),
-    "ANIM002": (
-        ERROR,
-        "Storyboard.TargetProperty does not resolve on the target (no such "
-        "property, no object at a step, index out of range)",
-    ),  # fmt: skip
-    "ANIM003": (
-        ERROR,
-        "animation type does not match the property's type (a DoubleAnimation "
-        "on a Point3D property)",
-    ),  # fmt: skip
-    "ANIM004": (
-        ERROR,
-        "the path goes through an object made from a string (frozen: WPF cannot animate it)",
-    ),  # fmt: skip
-    "ANIM005": (ERROR, "animation without Storyboard.TargetName or Storyboard.TargetProperty"),
-    "ANIM006": (WARNING, "a time without a colon is a number of DAYS ('5' = five days)"),
-    "ANIM007": (
-        WARNING,
-        "storyboard that can never start (no trigger begins it, or BeginTime is {x:Null})",
-    ),  # fmt: skip
-    "ANIM008": (
-        WARNING,
-        "animation that never has an effect (BeginTime {x:Null}, or a zero-length active period)",
-    ),  # fmt: skip
-    "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
-    "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
-    "ANIM012": (
-        WARNING,
-        "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",
-    ),  # fmt: skip
-}
 
 # the value kind (vocabulary) each animation value type may target
 _KINDS = {

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from lxml import etree
 
+from xaml3d.codes import severity
 from xaml3d.errors import ERROR, Diagnostic, XamlError
 from xaml3d.xaml.parser import MC_NS, PRESENTATION_NAMESPACES, XAML_NS, ParsedDocument
 
@@ -23,8 +24,6 @@ def severity_of(code: str) -> str:
     """The table severity of a code the reader reports (its own, the value converters', the
     animation and layout stages'): a severity is never chosen where a code is emitted. KeyError
     for an uncatalogued code."""
-    from xaml3d.codes import severity  # codes.py merges every stage's table, this one's too
-
     return severity(code)
 
 

@@ -25,17 +25,8 @@ import warnings
 
 import numpy as np
 
-from xaml3d.errors import ERROR, ValueSyntaxError
-
-VALUE_CODES: dict[str, tuple[str, str]] = {
-    "VAL001": (ERROR, "bad number (or an integer out of the Int32 range)"),
-    "VAL002": (ERROR, "empty token: doubled, leading or trailing comma"),
-    "VAL003": (ERROR, "wrong count of components"),
-    "VAL004": (ERROR, "bad colour"),
-    "VAL005": (ERROR, "bad enumeration value or boolean"),
-    "VAL006": (ERROR, "bad duration, time span, key time, key spline or repeat behaviour"),
-    "VAL007": (ERROR, "negative size (Size3D, Rect, Rect3D)"),
-}
+from xaml3d.codes.values import VALUE_CODES  # noqa: F401 (the stage's table)
+from xaml3d.errors import ValueSyntaxError
 
 INF = math.inf
 

@@ -1,9 +1,13 @@
 """The diagnostics catalogue: every stable code xaml3d can print, with its severity and meaning.
 
-Each stage owns its table (reader, value converters, meshes, cameras, scene checks, --fit, the
-command line); this module merges them into one mapping for ``docs/diagnostics.md`` and its test.
-A code listed by two tables keeps the first entry (the stage that emits it as a diagnostic); the
-exception classes' default codes (``xaml3d.errors``) only fill in codes no table lists.
+Each stage owns its table (reader, value converters, layout, meshes, cameras, scene checks, --fit,
+lens, animation, export, the command line), kept as plain data in a module of this package
+(``xaml3d.codes.<stage>``) at the ground of the import layers, so that anything may read a
+severity without importing the stage (or the command line) that emits it. The stages re-export
+their table under its old name (``xaml3d.scene.mesh.MESH_CODES``...). This module merges them
+into one mapping for ``docs/diagnostics.md`` and its test. A code listed by two tables keeps the
+first entry (the stage that emits it as a diagnostic); the exception classes' default codes
+(``xaml3d.errors``) only fill in codes no table lists.
 
 A code's severity is WPF's verdict (docs/diagnostics.md) and is defined once, in its table:
 emitters take it from there (``ReadContext.diag`` and ``ReadContext.error`` look it up, the
@@ -13,35 +17,50 @@ situation has two verdicts (an unknown name among 3D types or among framework el
 missing StaticResource or DynamicResource key), there are two codes.
 
 Codes emitted by modules that keep no table of their own (transforms: GEO; renderer: RND; scene
-selection: SCN002) are listed here in ``EXTRA_CODES``, until their modules export one.
+selection: SCN002) are listed here in ``EXTRA_CODES``.
 """
 
 from __future__ import annotations
 
 import functools
-import importlib
 
 from xaml3d import errors
+from xaml3d.codes import (
+    animation,
+    camera,
+    checks,
+    cli,
+    export,
+    fit,
+    layout,
+    lens,
+    mesh,
+    outputs,
+    reader,
+    values,
+)
 from xaml3d.errors import ERROR, INFO, WARNING
 
-# (module, table name, required): a missing required table is a bug; an optional one is merged
-# when its module exports it.
+# (module, table name, required), in merge order: the first table listing a code wins.
 TABLES: tuple[tuple[str, str, bool], ...] = (
-    ("xaml3d.xaml.vocabulary", "READER_CODES", True),
-    ("xaml3d.xaml.values", "VALUE_CODES", True),
-    ("xaml3d.layout.gotchas", "LAYOUT_CODES", True),
-    ("xaml3d.scene.mesh", "MESH_CODES", True),
-    ("xaml3d.scene.camera_check", "CAMERA_CODES", True),
-    ("xaml3d.scene.checks", "CHECK_CODES", True),
-    ("xaml3d.scene.fit", "FIT_CODES", True),
-    ("xaml3d.cli_common", "CLI_CODES", True),
-    ("xaml3d.cli_outputs", "OUTPUT_CODES", True),
-    ("xaml3d.render.api", "RENDER_CODES", False),
-    ("xaml3d.scene.lens", "LENS_CODES", True),
-    ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
-    ("xaml3d.xaml.animation_targets", "ANIM_CODES", True),
-    ("xaml3d.export.codes", "EXPORT_CODES", True),
+    ("xaml3d.codes.reader", "READER_CODES", True),
+    ("xaml3d.codes.values", "VALUE_CODES", True),
+    ("xaml3d.codes.layout", "LAYOUT_CODES", True),
+    ("xaml3d.codes.mesh", "MESH_CODES", True),
+    ("xaml3d.codes.camera", "CAMERA_CODES", True),
+    ("xaml3d.codes.checks", "CHECK_CODES", True),
+    ("xaml3d.codes.fit", "FIT_CODES", True),
+    ("xaml3d.codes.cli", "CLI_CODES", True),
+    ("xaml3d.codes.outputs", "OUTPUT_CODES", True),
+    ("xaml3d.codes.lens", "LENS_CODES", True),
+    ("xaml3d.codes.animation", "ANIM_CODES", True),
+    ("xaml3d.codes.export", "EXPORT_CODES", True),
 )
+_MODULES = {
+    m.__name__: m
+    for m in (reader, values, layout, mesh, camera, checks, fit, cli, outputs, lens, animation,
+              export)
+}  # fmt: skip
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {
     "SCN002": (
@@ -83,14 +102,8 @@ def _error_defaults() -> dict[str, tuple[str, str]]:
 def all_codes() -> dict[str, tuple[str, str]]:
     """Every code -> (severity, meaning), sorted by code."""
     merged: dict[str, tuple[str, str]] = {}
-    for module, table, required in TABLES:
-        try:
-            codes = getattr(importlib.import_module(module), table)
-        except (ImportError, AttributeError):
-            if required:
-                raise
-            continue
-        for code, entry in codes.items():
+    for module, table, _required in TABLES:
+        for code, entry in getattr(_MODULES[module], table).items():
             merged.setdefault(code, (entry[0], entry[1]))
     for code, entry in EXTRA_CODES.items():
         merged.setdefault(code, entry)

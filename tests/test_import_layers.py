@@ -1,0 +1,34 @@
+"""The import layers: the API does not drag the command line in, the code tables are plain data
+at the ground, and the layer contracts of pyproject.toml hold (``lint-imports``)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from xaml3d.render import accel
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _modules_after(code: str) -> set[str]:
+    env = {k: v for k, v in os.environ.items() if k != accel.ENV}
+    out = subprocess.run(
+        [sys.executable, "-c", code + "; import sys; print(' '.join(sorted(sys.modules)))"],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 0, out.stderr
+    return set(out.stdout.split())
+
+
+def test_load_imports_neither_click_nor_numba_nor_the_cli():
+    mods = _modules_after("import xaml3d; xaml3d.load('samples/cube.xaml')")
+    assert "xaml3d.xaml.loader" in mods  # the probe really loaded a scene
+    assert "click" not in mods
+    assert "numba" not in mods
+    assert sorted(m for m in mods if m.startswith("xaml3d.cli")) == []

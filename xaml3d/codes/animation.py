@@ -1,0 +1,43 @@
+"""The animation codes (ANIMxxx): storyboards, targets, clocks.
+
+Plain data at the ground of the package (``xaml3d.codes`` merges every table): any stage
+may read it, and it imports nothing but the severities.
+"""
+
+from __future__ import annotations
+
+from xaml3d.errors import ERROR, INFO, WARNING
+
+ANIM_CODES: dict[str, tuple[str, str]] = {
+    "ANIM001": (ERROR, "Storyboard.TargetName names no object of the document"),
+    "ANIM002": (
+        ERROR,
+        "Storyboard.TargetProperty does not resolve on the target (no such "
+        "property, no object at a step, index out of range)",
+    ),  # fmt: skip
+    "ANIM003": (
+        ERROR,
+        "animation type does not match the property's type (a DoubleAnimation "
+        "on a Point3D property)",
+    ),  # fmt: skip
+    "ANIM004": (
+        ERROR,
+        "the path goes through an object made from a string (frozen: WPF cannot animate it)",
+    ),  # fmt: skip
+    "ANIM005": (ERROR, "animation without Storyboard.TargetName or Storyboard.TargetProperty"),
+    "ANIM006": (WARNING, "a time without a colon is a number of DAYS ('5' = five days)"),
+    "ANIM007": (
+        WARNING,
+        "storyboard that can never start (no trigger begins it, or BeginTime is {x:Null})",
+    ),  # fmt: skip
+    "ANIM008": (
+        WARNING,
+        "animation that never has an effect (BeginTime {x:Null}, or a zero-length active period)",
+    ),  # fmt: skip
+    "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
+    "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
+    "ANIM012": (
+        WARNING,
+        "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",
+    ),  # fmt: skip
+}
