@@ -140,8 +140,7 @@ def run_file(
 
 def is_window_root(scene) -> bool:
     """Whether the scene's layout root is a Window, Page or UserControl."""
-    root = getattr(scene.layout, "root", None)
-    return root is not None and root.type in ("Window", "NavigationWindow", "Page", "UserControl")
+    return scene.layout is not None and scene.layout.is_window_root
 
 
 def window_check(scene, ssaa: int | None = None) -> str:

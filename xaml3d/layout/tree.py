@@ -14,19 +14,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from xaml3d.scene.boxes import BORDER, CONTROL, VIEWPORT, WINDOW
+
 NAN = math.nan
 INF = math.inf
 
-# Node.kind: which layout rule applies (the XAML type is kept apart in Node.type).
-WINDOW, PAGE, USER_CONTROL = "window", "page", "usercontrol"
-GRID, DOCK, STACK, BORDER, CANVAS = "grid", "dock", "stack", "border", "canvas"
-VIEWBOX, SCROLL, VIEWPORT, CONTROL, CONTAINER = (
-    "viewbox",
-    "scroll",
-    "viewport",
-    "control",
-    "container",
-)
+# Node.kind: which layout rule applies (the XAML type is kept apart in Node.type). The kinds
+# the window painter tells apart are defined with the Scene's boxes, which carry them.
+PAGE, USER_CONTROL = "page", "usercontrol"
+GRID, DOCK, STACK, CANVAS = "grid", "dock", "stack", "canvas"
+VIEWBOX, SCROLL, CONTAINER = "viewbox", "scroll", "container"
 UNIFORM = "uniform"
 KINDS = (WINDOW, PAGE, USER_CONTROL, GRID, DOCK, STACK, BORDER, CANVAS, VIEWBOX, SCROLL,
          VIEWPORT, CONTROL, CONTAINER, UNIFORM)  # fmt: skip

@@ -1,4 +1,5 @@
-"""``render --window``: the root's client area drawn as one picture (layout result + scene).
+"""``render --window``: the root's client area drawn as one picture, from the laid-out boxes the
+Scene holds (``xaml3d.scene.boxes``: the reader ran the layout).
 
 Paints, in WPF's order (parents before children, children in document order): the Window's
 background (WPF's default is the system window colour, white), every panel's and Border's
@@ -19,9 +20,9 @@ import math
 import numpy as np
 
 from xaml3d.errors import Diagnostic
-from xaml3d.layout.tree import BORDER, CONTROL, VIEWPORT, WINDOW, Node
 from xaml3d.render.brushes import sample_brush
 from xaml3d.render.frame import straight_uint8
+from xaml3d.scene.boxes import BORDER, CONTROL, VIEWPORT, WINDOW, Box
 from xaml3d.scene.types import Scene, SolidColorBrush
 
 WINDOW_BACKGROUND = SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0))
@@ -58,30 +59,16 @@ def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     _over(canvas, r0, c0, color)
 
 
-def _band(n: Node):
+def _band(b: Box):
     """The BorderThickness band of a Border, as a mask over element coordinates."""
-    left, top, right, bottom = n.border
-    w, h = n.rect[2], n.rect[3]
-    sx = w / n.ink[0] if n.ink[0] else 1.0  # a Viewbox scales the band too
-    sy = h / n.ink[1] if n.ink[1] else 1.0
+    left, top, right, bottom = b.border
+    w, h = b.rect[2], b.rect[3]
 
     def mask(px, py):
-        inner = (
-            (px >= left * sx) & (px < w - right * sx) & (py >= top * sy) & (py < h - bottom * sy)
-        )
+        inner = (px >= left) & (px < w - right) & (py >= top) & (py < h - bottom)
         return (~inner).astype(np.float32)
 
     return mask
-
-
-def _inner(n: Node):
-    """A Border's rectangle less its BorderThickness (scaled like the element)."""
-    left, top, right, bottom = n.border
-    x, y, w, h = n.rect
-    sx = w / n.ink[0] if n.ink[0] else 1.0
-    sy = h / n.ink[1] if n.ink[1] else 1.0
-    return (x + left * sx, y + top * sy, max(0.0, w - (left + right) * sx),
-            max(0.0, h - (top + bottom) * sy))  # fmt: skip
 
 
 def _outline(canvas: np.ndarray, rect) -> None:
@@ -125,36 +112,33 @@ def compose_window(
         bg[:3] *= bg[3]
         canvas[...] = bg
     diags: list[Diagnostic] = []
-    stack = [result.root]
-    while stack:
-        n = stack.pop()
-        if not n.arranged or n.visibility != "Visible":
+    for i, b in enumerate(result.boxes):  # paint order: parents before children
+        if not b.shown:
             continue
-        brush = n.background
-        if brush is None and n.kind == WINDOW and n is result.root:
+        brush = b.background
+        if brush is None and b.kind == WINDOW and i == 0:
             brush = WINDOW_BACKGROUND
-        if n.kind == BORDER and n.border_brush is not None and any(n.border):
-            _fill(canvas, n.rect, n.border_brush, _band(n))
+        if b.kind == BORDER and b.border_brush is not None and any(b.border):
+            _fill(canvas, b.rect, b.border_brush, _band(b))
         if brush is not None:
             # a Border paints its Background inside the border band (its brush maps there)
-            _fill(canvas, _inner(n) if n.kind == BORDER else n.rect, brush)
-        if n.kind == VIEWPORT:
-            w, h = round(n.rect[2]), round(n.rect[3])
+            _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush)
+        if b.kind == VIEWPORT:
+            w, h = round(b.rect[2]), round(b.rect[3])
             if w >= 1 and h >= 1:
                 r = render_arrays(
-                    scene, w, h, viewport=n.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None,
-                    aspect=n.rect[2] / n.rect[3],  # the exact laid-out aspect ratio
+                    scene, w, h, viewport=b.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None,
+                    aspect=b.rect[2] / b.rect[3],  # the exact laid-out aspect ratio
                 )  # fmt: skip
                 diags.extend(r.diagnostics)
                 premul = r.rgba.astype(np.float32) / 255.0
                 premul[..., :3] *= premul[..., 3:4]
-                x0, y0 = round(n.rect[0]), round(n.rect[1])
+                x0, y0 = round(b.rect[0]), round(b.rect[1])
                 # the part inside the client area (a viewport may overhang it)
                 ys, xs = max(0, -y0), max(0, -x0)
                 ye, xe = min(h, H - y0), min(w, W - x0)
                 if ye > ys and xe > xs:
                     _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
-        if n.kind == CONTROL and outline_controls:
-            _outline(canvas, n.rect)
-        stack.extend(reversed(n.children))
+        if b.kind == CONTROL and outline_controls:
+            _outline(canvas, b.rect)
     return straight_uint8(canvas), diags

@@ -517,7 +517,7 @@ class Scene:
     images_used: tuple[str, ...] = ()  # image files the ImageBrushes read
     layout: object = field(
         default=None, compare=False, repr=False
-    )  # xaml3d.layout.LayoutResult of the panels (None: no layout root)
+    )  # xaml3d.scene.boxes.WindowLayout of the panels (None: no layout root)
     # What evaluates the storyboards: an object with ``at(t, storyboard=None) -> Scene`` (the
     # scene at t seconds, Loaded storyboards begun at 0), ``running(storyboard=None)`` (the
     # animations that run) and ``cycle(storyboard=None)`` (seconds of one full cycle, or

@@ -1,5 +1,6 @@
 """The layout step of reading: the panel tree read (panels_reader.py), laid out
-(xaml3d.layout) and turned into each viewport's size, its derivation and the gotcha warnings.
+(xaml3d.layout) and turned into each viewport's size, its derivation, the gotcha warnings and
+the Scene's record of the laid-out boxes (``xaml3d.scene.boxes``).
 
 A viewport that the panel walk does not reach (inside a header, a tooltip...) keeps its own
 Width/Height, else the default 640 x 480, and says so.
@@ -12,9 +13,11 @@ from dataclasses import dataclass
 
 from xaml3d.errors import Diagnostic
 from xaml3d.layout import layout
+from xaml3d.layout.engine import LayoutResult
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
-from xaml3d.xaml.panels_reader import read_layout
+from xaml3d.scene.boxes import Box, WindowLayout
+from xaml3d.xaml.panels_reader import ElementValues, parse_length, read_layout
 
 DEFAULT_SIZE = (640.0, 480.0)
 _PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM)
@@ -55,8 +58,44 @@ def derivation(vp: Node) -> str:
     return "layout: " + " > ".join(parts)
 
 
+def window_layout(result: LayoutResult) -> WindowLayout:
+    """The layout engine's tree as the Scene keeps it: frozen boxes in paint order."""
+    boxes: list[Box] = []
+    index: dict[int, int] = {}
+    for n in result.root.walk():  # parents first, children in document order: paint order
+        parent = None if n.parent is None else index[id(n.parent)]
+        shown = n.arranged and n.visibility == "Visible"
+        if parent is not None:
+            shown = shown and boxes[parent].shown
+        # the band is drawn in the element's coordinates: a Viewbox scales it with the element
+        sx = n.rect[2] / n.ink[0] if n.ink[0] else 1.0
+        sy = n.rect[3] / n.ink[1] if n.ink[1] else 1.0
+        left, top, right, bottom = n.border
+        index[id(n)] = len(boxes)
+        boxes.append(
+            Box(
+                kind=n.kind,
+                type=n.type,
+                rect=tuple(float(v) for v in n.rect),
+                shown=shown,
+                name=n.name,
+                parent=parent,
+                background=n.background,
+                border_brush=n.border_brush,
+                border=(left * sx, top * sy, right * sx, bottom * sy),
+                viewport=n.viewport,
+                line=n.line,
+                column=n.column,
+            )  # fmt: skip
+        )
+    return WindowLayout(
+        client=(float(result.client[0]), float(result.client[1])), how=result.how,
+        boxes=tuple(boxes),
+    )  # fmt: skip
+
+
 def lay_out(r, root_el, viewport_elements: list, window_size=None):
-    """({viewport index: ViewportLayout}, LayoutResult or None)."""
+    """({viewport index: ViewportLayout}, WindowLayout or None)."""
     root, nodes = read_layout(r, root_el, viewport_elements) if viewport_elements else (None, {})
     result = layout(root, window_size) if root is not None else None
     out: dict[int, ViewportLayout] = {}
@@ -79,12 +118,10 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
         elif n.parent is None and n.width == n.width and n.height == n.height:
             source = "viewport"
         out[i] = ViewportLayout(w, h, n.rect, source, background)
-    return out, result
+    return out, None if result is None else window_layout(result)
 
 
 def unreached(r, el) -> ViewportLayout:
-    from xaml3d.xaml.panels_reader import ElementValues, parse_length
-
     v = ElementValues(r, el)
     w, h = v.get("Width", parse_length, math.nan), v.get("Height", parse_length, math.nan)
     if w == w and h == h and w >= 0 and h >= 0:
