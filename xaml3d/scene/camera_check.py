@@ -23,19 +23,19 @@ import math
 import numpy as np
 
 from xaml3d.codes.camera import CAMERA_CODES  # noqa: F401 (the stage's table)
-from xaml3d.errors import ERROR, Diagnostic, XamlError
-from xaml3d.scene.camera_math import PARALLEL_TOL, camera_pipeline
-from xaml3d.scene.transforms import is_singular, transform_homogeneous, transform_points
+from xaml3d.errors import Diagnostic, XamlError
+from xaml3d.scene.camera_math import camera_pipeline
+from xaml3d.scene.camera_values import (  # noqa: F401 (the thresholds are documented here)
+    DEPTH_RATIO_LIMIT,
+    FOV_LARGE_DEG,
+    FOV_SMALL_DEG,
+    NEARLY_PARALLEL_DEG,
+    Report,
+    check_values,
+    depth_ratio,
+)
+from xaml3d.scene.transforms import transform_homogeneous, transform_points
 from xaml3d.scene.types import MatrixCamera, OrthographicCamera, PerspectiveCamera
-
-NEARLY_PARALLEL_DEG = 1.0
-DEPTH_RATIO_LIMIT = 2.0**16
-FOV_SMALL_DEG = 1.0
-FOV_LARGE_DEG = 150.0
-
-
-def _finite(x) -> bool:
-    return bool(np.all(np.isfinite(np.asarray(x, dtype=np.float64))))
 
 
 def _box_corners(bounds) -> np.ndarray:
@@ -44,27 +44,10 @@ def _box_corners(bounds) -> np.ndarray:
     return np.column_stack([xs.ravel(), ys.ravel(), zs.ravel()])
 
 
-class _Report:
-    """Collects diagnostics with the camera's line."""
-
-    def __init__(self, line: int | None, column: int | None = None) -> None:
-        self.line = line
-        self.column = column
-        self.items: list[Diagnostic] = []
-
-    def __call__(self, code: str, message: str) -> None:
-        self.items.append(
-            Diagnostic(code, CAMERA_CODES[code][0], message, None, self.line, self.column)
-        )
-
-    def error_count(self) -> int:
-        return sum(1 for d in self.items if d.severity == ERROR)
-
-
 def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagnostic]:
     """Every problem of ``camera`` for a ``width`` x ``height`` viewport (and, when given, the
     scene's world AABB ``bounds`` = (min, max)). Never raises."""
-    report = _Report(getattr(camera, "line", None), getattr(camera, "column", None))
+    report = Report(getattr(camera, "line", None), getattr(camera, "column", None))
     with np.errstate(all="ignore"):
         try:
             _check(camera, width, height, bounds, report)
@@ -74,127 +57,17 @@ def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagn
     return report.items
 
 
-def _num(x) -> str:
-    """A size as the markup would write it (300, not 300.0), whatever it is."""
-    try:
-        return f"{float(x):g}"
-    except (TypeError, ValueError):
-        return repr(x)
-
-
-def _check(camera, width, height, bounds, report: _Report) -> None:
-    try:
-        size_ok = float(width) > 0 and float(height) > 0 and _finite([width, height])
-    except (TypeError, ValueError):
-        size_ok = False
-    if not size_ok:
-        report("CAM010", f"viewport size {_num(width)} x {_num(height)} is empty or invalid")
-    if camera is None:
-        report("CAM104", "Viewport3D.Camera is null: WPF draws nothing")
-        return
-    if not isinstance(camera, (PerspectiveCamera, OrthographicCamera, MatrixCamera)):
-        report("CAM015", f"unknown camera type {type(camera).__name__}")
-        return
-    if getattr(camera, "is_default", False):
-        report(
-            "CAM103",
-            "no camera given: WPF uses its default PerspectiveCamera "
-            "(at 0,0,0 looking down -z, FieldOfView 45)",
-        )
-    if not _finite(camera.transform):
-        report("CAM008", "Camera.Transform has a NaN or infinite component")
-    elif is_singular(camera.transform):
-        report("CAM011", "Camera.Transform is singular: WPF draws nothing")
-    if isinstance(camera, MatrixCamera):
-        for label in ("ViewMatrix", "ProjectionMatrix"):
-            m = camera.view_matrix if label == "ViewMatrix" else camera.projection_matrix
-            if not _finite(m):
-                report("CAM008", f"MatrixCamera.{label} has a NaN or infinite component")
-            elif is_singular(m):
-                report("CAM012", f"MatrixCamera.{label} is singular")
-    else:
-        _check_projection_camera(camera, report)
-    if report.error_count() > 0:
+def _check(camera, width, height, bounds, report: Report) -> None:
+    check_values(camera, width, height, report)
+    if report.error_count() > 0 or not isinstance(
+        camera, (PerspectiveCamera, OrthographicCamera, MatrixCamera)
+    ):
         return
     if bounds is not None:
         _check_bounds(camera, width, height, bounds, report)
     elif isinstance(camera, PerspectiveCamera) and math.isfinite(camera.far_plane_distance):
         # Without bounds the user's own near/far are the best guess at WPF's depth range.
-        _depth_ratio(float(camera.near_plane_distance), float(camera.far_plane_distance), report)
-
-
-def _check_projection_camera(camera, report: _Report) -> None:
-    perspective = isinstance(camera, PerspectiveCamera)
-    for label, value in (
-        ("Position", camera.position),
-        ("LookDirection", camera.look_direction),
-        ("UpDirection", camera.up_direction),
-    ):
-        if not _finite(value):
-            report("CAM008", f"{label} {tuple(value)} has a NaN or infinite component")
-    look = np.asarray(camera.look_direction, dtype=np.float64)
-    up = np.asarray(camera.up_direction, dtype=np.float64)
-    if _finite(look) and _finite(up):
-        look_len, up_len = float(np.linalg.norm(look)), float(np.linalg.norm(up))
-        if look_len == 0.0:
-            report("CAM001", "LookDirection is the zero vector: the camera looks nowhere")
-        if up_len == 0.0:
-            report("CAM002", "UpDirection is the zero vector: the camera has no up")
-        if look_len > 0.0 and up_len > 0.0:
-            # sine of the angle between up and look: the part of up left after removing look
-            w = look / look_len
-            sine = float(np.linalg.norm(up / up_len - float(up @ w) / up_len * w))
-            angle = math.degrees(math.asin(min(1.0, sine)))
-            if sine <= PARALLEL_TOL:
-                report("CAM003", "UpDirection is parallel to LookDirection: the roll is undefined")
-            elif angle < NEARLY_PARALLEL_DEG:
-                report(
-                    "CAM101",
-                    f"UpDirection is only {angle:.3g} degrees from LookDirection: the camera's "
-                    "roll is numerically unstable",
-                )
-
-    near, far = float(camera.near_plane_distance), float(camera.far_plane_distance)
-    near_ok = math.isfinite(near)
-    far_ok = not math.isnan(far) and far != -math.inf
-    if not near_ok:
-        report("CAM008", f"NearPlaneDistance {near} is NaN or infinite")
-    if not far_ok:
-        report("CAM008", f"FarPlaneDistance {far} is NaN or -Infinity (only +Infinity is allowed)")
-    if perspective:
-        fov = float(camera.field_of_view)
-        if not math.isfinite(fov):
-            report("CAM008", f"FieldOfView {fov} is NaN or infinite")
-        elif fov <= 0.0 or fov >= 180.0:
-            report("CAM004", f"FieldOfView {fov:g} is outside (0, 180) degrees")
-        elif fov < FOV_SMALL_DEG:
-            report("CAM105", f"FieldOfView {fov:g} degrees is very small: almost nothing is seen")
-        elif fov > FOV_LARGE_DEG:
-            report("CAM106", f"FieldOfView {fov:g} degrees is very large: extreme distortion")
-        if near_ok and near < 0.0:
-            report("CAM005", f"NearPlaneDistance {near:g} < 0: WPF draws nothing")
-        elif near_ok and near == 0.0:
-            report("CAM006", "NearPlaneDistance is 0: c = -near/far = 0, depth is degenerate")
-    else:
-        width = float(camera.width)
-        if not math.isfinite(width):
-            report("CAM008", f"Width {width} is NaN or infinite")
-        elif width <= 0.0:
-            report("CAM009", f"orthographic Width {width:g} <= 0")
-    if near_ok and far_ok and far <= near:
-        report("CAM007", f"FarPlaneDistance {far:g} <= NearPlaneDistance {near:g}")
-
-
-def _depth_ratio(near: float, far: float, report: _Report, narrowed: bool = False) -> None:
-    ratio = far / near
-    if ratio > DEPTH_RATIO_LIMIT:
-        where = " (narrowed to the scene's depth span, as WPF does)" if narrowed else ""
-        report(
-            "CAM102",
-            f"far/near ratio {ratio:.4g} (far {far:g} / near {near:g}){where} exceeds "
-            f"{DEPTH_RATIO_LIMIT:g}: a 24-bit depth buffer resolves only about "
-            f"{ratio / 2**24:.2g} of the distance near the far plane (z-fighting)",
-        )
+        depth_ratio(float(camera.near_plane_distance), float(camera.far_plane_distance), report)
 
 
 def _where_outside(planes: list[str], depth, pipe) -> str:
@@ -211,7 +84,7 @@ def _where_outside(planes: list[str], depth, pipe) -> str:
     return f"outside the view volume, past its {side} edge"
 
 
-def _check_bounds(camera, width, height, bounds, report: _Report) -> None:
+def _check_bounds(camera, width, height, bounds, report: Report) -> None:
     corners = _box_corners(bounds)
     pipe = camera_pipeline(camera, width, height, bounds)
     clip = transform_homogeneous(pipe.clip_matrix, corners)
@@ -245,4 +118,4 @@ def _check_bounds(camera, width, height, bounds, report: _Report) -> None:
         n = max(pipe.near, float(depth.min()))
         f = min(float(camera.far_plane_distance), float(depth.max()))
         if f > n > 0.0:
-            _depth_ratio(n, f, report, narrowed=True)
+            depth_ratio(n, f, report, narrowed=True)

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from xaml3d.errors import CameraError, GeometryError
+from xaml3d.scene.camera_values import PARALLEL_TOL, value_problems
 from xaml3d.scene.transforms import (
     invert,
     point_and_vectors_to_point_and_vectors,
@@ -36,7 +37,6 @@ from xaml3d.scene.types import MatrixCamera, OrthographicCamera, PerspectiveCame
 
 # UpDirection counts as parallel to LookDirection when the sine of the angle between them is
 # below this (the frame is then undefined, not merely unstable).
-PARALLEL_TOL = 1e-9
 FAR_FALLBACK_RATIO = 1e5  # perspective: far = near * 1e5 when infinite and no bounds
 FAR_FALLBACK_ORTHO = 1e5  # orthographic: far = near + 1e5 when infinite and no bounds
 FAR_MARGIN = 1e-3  # relative margin beyond the farthest bounding-box corner
@@ -362,11 +362,9 @@ def _view_from_frame(P, u, v, w) -> np.ndarray:
 
 
 def _raise_first_error(camera, width, height) -> None:
-    from xaml3d.scene.camera_check import check_camera  # camera_check imports this module
-
     if camera is None:
         raise CameraError("no camera: Viewport3D.Camera is null, WPF draws nothing", code="CAM104")
-    for d in check_camera(camera, width, height):
+    for d in value_problems(camera, width, height):
         if d.severity == "error":
             raise CameraError(d.message, code=d.code, line=d.line, column=d.column)
 

@@ -1,19 +1,15 @@
-"""The Color type converter (MEDIA/Parsers.cs), WPF's named colours and the scRGB -> sRGB curve.
+"""WPF's named colours and the scRGB -> sRGB curve, for the Color type converter.
 
-``xaml3d.xaml.values.parse_color`` is the entry point (wpf3d.md section 3). The table is WPF's
-141 known colours, written here as a literal because the package must not read the spec folder
-at run time; ``tests/test_colors.py`` checks it against ``wpf-named-colors.tsv``. Note that WPF's
-Gray (#808080) is darker than its DarkGray (#A9A9A9), and Transparent is white with alpha 0.
+``xaml3d.xaml.values.parse_color`` is the converter (MEDIA/Parsers.cs) and the entry point
+(wpf3d.md section 3); this module is plain data it reads. The table is WPF's 141 known colours,
+written here as a literal because the package must not read the spec folder at run time;
+``tests/test_colors.py`` checks it against ``wpf-named-colors.tsv``. Note that WPF's Gray
+(#808080) is darker than its DarkGray (#A9A9A9), and Transparent is white with alpha 0.
 """
 
 from __future__ import annotations
 
-import difflib
 import math
-import re
-
-from xaml3d.errors import ValueSyntaxError
-from xaml3d.xaml.values import number_array
 
 # WPF spelling -> 0xAARRGGBB, in the order of the spec table.
 _ARGB: dict[str, int] = {
@@ -188,56 +184,3 @@ def srgb_from_scrgb(value: float) -> float:
     if value < 1.0:
         return 1.055 * math.pow(value, 1.0 / 2.4) - 0.055
     return 1.0
-
-
-_HEX_RE = re.compile(r"#([0-9a-fA-F]+)")
-
-
-def _fail(s: str, why: str) -> ValueSyntaxError:
-    shown = repr(s) if len(s) <= 60 else repr(s[:57] + "...")
-    return ValueSyntaxError(f"Color: {shown} {why}", code="VAL004")
-
-
-def color_from_string(s: str) -> tuple[float, float, float, float]:
-    """A Color string -> (r, g, b, a) floats in 0..1, sRGB, straight alpha; VAL004 if bad.
-
-    Trimmed first. '#RGB', '#ARGB' (nibbles doubled), '#RRGGBB', '#AARRGGBB' (hex, any case):
-    each channel is byte / 255 exactly. 'sc#r,g,b' or 'sc#a,r,g,b' (alpha FIRST, numbers as in
-    any WPF list): linear scRGB, colour channels through ``srgb_from_scrgb``; alpha is not
-    curved, only clamped to 0..1 as WPF does. Otherwise one of the 141 names, any case.
-    """
-    t = s.strip()
-    m = _HEX_RE.fullmatch(t)
-    if m:
-        digits = m.group(1)
-        if len(digits) in (3, 4):
-            digits = "".join(c + c for c in digits)
-        if len(digits) == 6:
-            digits = "FF" + digits
-        if len(digits) != 8:
-            raise _fail(s, "needs 3, 4, 6 or 8 hex digits after '#'")
-        v = int(digits, 16)
-        return (
-            ((v >> 16) & 255) / 255.0,
-            ((v >> 8) & 255) / 255.0,
-            (v & 255) / 255.0,
-            (v >> 24) / 255.0,
-        )
-    if t.startswith("sc#"):
-        try:
-            nums = [float(x) for x in number_array(t[3:], "Color sc#")]
-        except ValueSyntaxError as e:
-            raise _fail(s, f"is not a scRGB colour: {e.message}") from None
-        if len(nums) not in (3, 4):
-            raise _fail(s, f"needs 3 or 4 numbers after 'sc#', got {len(nums)}")
-        a = nums[0] if len(nums) == 4 else 1.0
-        a = min(a, 1.0) if a > 0.0 else 0.0  # 'a > 0' is False for NaN too
-        r, g, b = (srgb_from_scrgb(x) for x in nums[-3:])
-        return (r, g, b, a)
-    argb = NAMED_COLORS.get(t.lower())
-    if argb is None:
-        near = difflib.get_close_matches(t.lower(), list(NAMED_COLORS), n=1, cutoff=0.75)
-        hint = f" (did you mean {CANONICAL_NAMES[near[0]]}?)" if near else ""
-        raise _fail(s, f"is not a colour ('#AARRGGBB', 'sc#a,r,g,b' or one of WPF's names){hint}")
-    a, r, g, b = argb
-    return (r / 255.0, g / 255.0, b / 255.0, a / 255.0)

@@ -19,6 +19,7 @@ path (short strings, and to word the error when the fast path refuses a string).
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 import warnings
@@ -27,6 +28,7 @@ import numpy as np
 
 from xaml3d.codes.values import VALUE_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import ValueSyntaxError
+from xaml3d.xaml.colors import CANONICAL_NAMES, NAMED_COLORS, srgb_from_scrgb
 
 INF = math.inf
 
@@ -365,16 +367,59 @@ def parse_double_collection(s: str) -> np.ndarray:
 # --------------------------------------------------------------------------- colours
 
 
+_HEX_RE = re.compile(r"#([0-9a-fA-F]+)")
+
+
+def _color_fail(s: str, why: str) -> ValueSyntaxError:
+    shown = repr(s) if len(s) <= 60 else repr(s[:57] + "...")
+    return ValueSyntaxError(f"Color: {shown} {why}", code="VAL004")
+
+
 def parse_color(s: str) -> tuple[float, float, float, float]:
-    """A Color -> (r, g, b, a) floats in 0..1, sRGB, straight alpha.
+    """A Color -> (r, g, b, a) floats in 0..1, sRGB, straight alpha; VAL004 if bad.
 
-    '#RGB', '#ARGB', '#RRGGBB', '#AARRGGBB' (byte / 255), 'sc#r,g,b' / 'sc#a,r,g,b' (linear,
-    alpha first) or one of WPF's 141 names: see ``xaml3d.xaml.colors.color_from_string``.
+    Trimmed first. '#RGB', '#ARGB' (nibbles doubled), '#RRGGBB', '#AARRGGBB' (hex, any case):
+    each channel is byte / 255 exactly. 'sc#r,g,b' or 'sc#a,r,g,b' (alpha FIRST, numbers as in
+    any WPF list): linear scRGB, colour channels through ``srgb_from_scrgb``; alpha is not
+    curved, only clamped to 0..1 as WPF does. Otherwise one of the 141 names, any case.
     """
-    # colors.py builds on this module's tokenizer, so it is imported when first needed.
-    from xaml3d.xaml.colors import color_from_string
-
-    return color_from_string(s)
+    t = s.strip()
+    m = _HEX_RE.fullmatch(t)
+    if m:
+        digits = m.group(1)
+        if len(digits) in (3, 4):
+            digits = "".join(c + c for c in digits)
+        if len(digits) == 6:
+            digits = "FF" + digits
+        if len(digits) != 8:
+            raise _color_fail(s, "needs 3, 4, 6 or 8 hex digits after '#'")
+        v = int(digits, 16)
+        return (
+            ((v >> 16) & 255) / 255.0,
+            ((v >> 8) & 255) / 255.0,
+            (v & 255) / 255.0,
+            (v >> 24) / 255.0,
+        )
+    if t.startswith("sc#"):
+        try:
+            nums = [float(x) for x in number_array(t[3:], "Color sc#")]
+        except ValueSyntaxError as e:
+            raise _color_fail(s, f"is not a scRGB colour: {e.message}") from None
+        if len(nums) not in (3, 4):
+            raise _color_fail(s, f"needs 3 or 4 numbers after 'sc#', got {len(nums)}")
+        a = nums[0] if len(nums) == 4 else 1.0
+        a = min(a, 1.0) if a > 0.0 else 0.0  # 'a > 0' is False for NaN too
+        r, g, b = (srgb_from_scrgb(x) for x in nums[-3:])
+        return (r, g, b, a)
+    argb = NAMED_COLORS.get(t.lower())
+    if argb is None:
+        near = difflib.get_close_matches(t.lower(), list(NAMED_COLORS), n=1, cutoff=0.75)
+        hint = f" (did you mean {CANONICAL_NAMES[near[0]]}?)" if near else ""
+        raise _color_fail(
+            s, f"is not a colour ('#AARRGGBB', 'sc#a,r,g,b' or one of WPF's names){hint}"
+        )
+    a, r, g, b = argb
+    return (r / 255.0, g / 255.0, b / 255.0, a / 255.0)
 
 
 # --------------------------------------------------------------------------- timing
