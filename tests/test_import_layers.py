@@ -32,3 +32,24 @@ def test_load_imports_neither_click_nor_numba_nor_the_cli():
     assert "click" not in mods
     assert "numba" not in mods
     assert sorted(m for m in mods if m.startswith("xaml3d.cli")) == []
+
+
+def test_import_contracts_hold():
+    """pyproject.toml's import-linter contracts (docs/architecture.md): one direction of
+    imports, the renderer and exporters free of the reader, nothing importing the CLI."""
+    lint = Path(sys.executable).with_name("lint-imports")
+    cmd = [str(lint)] if lint.exists() else [sys.executable, "-m", "importlinter.cli"]
+    out = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "0 broken" in out.stdout
+
+
+def test_every_command_line_module_is_in_the_contracts():
+    import tomllib
+
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["importlinter"]
+    layers = config["contracts"][0]["layers"]
+    cli_layer = {m.strip() for m in layers[0].split(":")}
+    forbidden = set(config["contracts"][-1]["forbidden_modules"])
+    modules = {f"xaml3d.{p.stem}" for p in (ROOT / "xaml3d").glob("cli*.py")}
+    assert modules <= cli_layer and modules <= forbidden, modules - (cli_layer & forbidden)

@@ -5,6 +5,8 @@ Public API::
     scene = xaml3d.load("scene.xaml")          # -> Scene (typed, resolved, immutable)
     image = xaml3d.render(scene, width=800)     # -> PIL.Image.Image (RGBA)
     result = xaml3d.render_arrays(scene)        # -> Rendering (RGBA array, depth buffer)
+    settings = xaml3d.RenderSettings(width=800, mode="flat")  # one frozen set of settings
+    image = xaml3d.render(scene, settings=settings)
     xaml3d.save_image(image, "out.png")         # atomic write (PNG, JPEG, WebP)
     image = xaml3d.render(scene, time=1.5)      # 1.5 s after load (default 0: WPF's first frame)
     frame = xaml3d.scene_at(scene, 1.5)         # -> the Scene at that moment
@@ -17,25 +19,27 @@ from __future__ import annotations
 
 __version__ = "0.1.0"
 
-# The subpackage xaml3d.render and the function xaml3d.render share a name. Importing the
-# subpackage first and binding the functions afterwards means the package attribute ends up
-# being the function, and later imports of xaml3d.render.* (already in sys.modules) do not
-# rebind it.
-import xaml3d.render.api  # noqa: E402,F401
-from xaml3d.errors import Diagnostic, XamlError  # noqa: E402
-from xaml3d.export import export  # noqa: E402
-from xaml3d.render.api import (  # noqa: E402
+# The subpackage xaml3d.render and the function xaml3d.render share a name. Importing xaml3d.api
+# imports the subpackage first; binding the functions afterwards means the package attribute
+# ends up being the function, and later imports of xaml3d.render.* (already in sys.modules) do
+# not rebind it.
+from xaml3d.api import (
     Rendering,
+    RenderSettings,
     render,
     render_arrays,
     save_image,
     scene_at,
 )
-from xaml3d.render.frames import frame_times, render_frames, save_animation  # noqa: E402
-from xaml3d.xaml.loader import load  # noqa: E402
+from xaml3d.errors import Diagnostic, XamlError
+from xaml3d.export import export
+from xaml3d.output.animation import save_animation
+from xaml3d.render.frames import frame_times, render_frames
+from xaml3d.xaml.loader import load
 
 __all__ = [
     "Diagnostic",
+    "RenderSettings",
     "Rendering",
     "XamlError",
     "__version__",

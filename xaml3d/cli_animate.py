@@ -1,9 +1,10 @@
 """``xaml3d animate``: a scene's storyboards -> GIF, APNG (.png), WebP, or numbered PNGs.
 
-Also holds the time options ``render`` shares (``--time``, ``--storyboard``). Thin layer over
-``xaml3d.render.frames``: picks the times (``--fps``, ``--start``, ``--end``/``--duration``,
-by default one full cycle of what runs at load), renders each frame as ``render`` would,
-shows a progress bar on a terminal, and writes the file atomically. Bad input is one
+Thin layer over ``xaml3d.render.frames`` and ``xaml3d.output.animation``: picks the times
+(``--fps``, ``--start``, ``--end``/``--duration``, by default one full cycle of what runs at
+load), renders each frame as ``render`` would (in worker processes, streamed to the encoder in
+order), reports progress (a bar on a terminal, a line every few seconds elsewhere), and writes
+the file atomically. Bad input is one
 ``file:line:col: error CODE message`` line and exit status 1.
 """
 
@@ -14,8 +15,10 @@ from pathlib import Path
 
 import click
 
+from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     FiniteFloat,
+    ProgressLines,
     describe_os_error,
     display_name,
     echo_diagnostics,
@@ -23,9 +26,16 @@ from xaml3d.cli_common import (
     io_error,
     load_scene,
     no_app_option,
+    output_path,
+    parse_background,
+    parse_time,  # noqa: F401 (the time option's parser, also this module's interface)
     render_size,
     resources_option,
+    scene_files_read,
+    sized,
     stderr_is_terminal,
+    storyboard_option,
+    time_callback,
     warn_option,
     with_file,
 )
@@ -38,51 +48,24 @@ from xaml3d.cli_outputs import (
     stale_frames,
     stale_message,
 )
-from xaml3d.cli_render_extras import animate_lens_options
-from xaml3d.errors import ERROR, CameraError, XamlError
-from xaml3d.findings import begun_by_name
+from xaml3d.cli_render_extras import (
+    animate_lens_options,
+    check_lens_camera,
+    check_request,
+    lens_arguments,
+)
+from xaml3d.codes.animation import ANIM_CODES
+from xaml3d.errors import ERROR, CameraError, Diagnostic, XamlError
+from xaml3d.findings import begun_by_name, has_errors, scene_findings
+from xaml3d.findings import lenient as lenient_findings
+from xaml3d.output.animation import frame_names, save_animation
+from xaml3d.render import frames as frames_module
+from xaml3d.render.gif_matte import frames_for_gif
+from xaml3d.render.settings import RenderSettings
+from xaml3d.render.workers import default_jobs
 
 DEFAULT_LENGTH = 1.0  # seconds drawn when nothing runs or a Duration is Forever
-
-
-def parse_time(value: str, what: str = "--time") -> float | None:
-    """A time option: seconds ('1.5', or '1.5s'), a TimeSpan with a colon ('0:0:1.5'), or
-    'none'."""
-    from xaml3d.errors import ValueSyntaxError
-    from xaml3d.xaml.values import parse_double, parse_timespan
-
-    v = value.strip()
-    if v.lower() == "none":
-        return None
-    try:
-        t = parse_timespan(v) if ":" in v else parse_double(v.removesuffix("s"))
-    except ValueSyntaxError:
-        raise click.BadParameter(
-            f"{value!r} is not a time (seconds like 1.5, or a TimeSpan like 0:0:1.5)",
-            param_hint=what,
-        ) from None
-    if not math.isfinite(t) or t < 0:
-        raise click.BadParameter(f"{value!r} must be a finite time >= 0", param_hint=what)
-    return t
-
-
-def _time_callback(ctx, param, value):
-    return value if value is None else parse_time(value, "--" + param.name)
-
-
-time_option = click.option(
-    "--time",
-    "at_time",
-    metavar="T",
-    default="0",
-    show_default=True,
-    help="Moment to draw, seconds after load (1.5 or 0:0:1.5); 'none': markup base values.",
-)
-storyboard_option = click.option(
-    "--storyboard",
-    metavar="NAME",
-    help="Also begin this storyboard (a click-started or keyed one) at t = 0.",
-)
+LONG_RUN = 90  # frames from which the run's plan is printed up front (3 s at 30 fps and more)
 
 
 HELP = """Render a scene's animations to an animated image or numbered frames.
@@ -106,14 +89,15 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 
 @click.command("animate", help=HELP)
 @click.argument("scene", metavar="SCENE")
-@click.option("-o", "--output", required=True, metavar="FILE|DIR/", help="Output file or DIR/.")
+@click.option("-o", "--output", required=True, metavar="FILE|DIR/", callback=output_path,
+              help="Output file or DIR/.")  # fmt: skip
 @click.option("--fps", type=FiniteFloat(0, 120, min_open=True), default=30.0,
               show_default=True, help="Frames per second.")  # fmt: skip
-@click.option("--start", callback=_time_callback, default="0", show_default=True,
+@click.option("--start", callback=time_callback, default="0", show_default=True,
               metavar="T", help="Time of the first frame.")  # fmt: skip
-@click.option("--end", callback=_time_callback, metavar="T",
+@click.option("--end", callback=time_callback, metavar="T",
               help="Time where the animation stops (default: --start + --duration).")  # fmt: skip
-@click.option("--duration", callback=_time_callback, metavar="T",
+@click.option("--duration", callback=time_callback, metavar="T",
               help="Length drawn (default: one full cycle of what runs).")  # fmt: skip
 @click.option("--loop", type=click.IntRange(min=0), default=0, show_default=True,
               help="Times the file plays (0: for ever).")  # fmt: skip
@@ -142,13 +126,10 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 def animate_command(scene, output, fps, start, end, duration, loop, clean, storyboard, width,
                     height, mode, background, ssaa, msaa, viewport, resources, no_app, jobs,
                     lenient, quiet, verbose, extras) -> None:  # fmt: skip
-    from xaml3d.cli_render import _parse_background
-    from xaml3d.cli_render_extras import check_request, lens_arguments
-
     check_request(extras, (scene,), output, mode)
     to_dir = animation_target(output)  # the format, before anything is read (exit 2)
 
-    bg = _parse_background(None, None, background)
+    bg = parse_background(None, None, background)
     if (ssaa or 1) > 1 and (msaa or 1) > 1:
         raise click.UsageError("choose one of --ssaa and --msaa")
     if clean and not to_dir:
@@ -164,8 +145,6 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if not to_dir and _refused(name, [Path(output)], inputs):  # before reading the scene
             ctx.exit(1)
         sc = load_scene(scene, resources, discover_app=not no_app)
-    from xaml3d.cli_render import scene_files_read
-
     inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images
     file = sc.file or name
     diags = [with_file(d, file) for d in begun_by_name(sc.diagnostics, sc, storyboard)]
@@ -180,8 +159,6 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             end = start + duration
         if end <= start:
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
-        from xaml3d.render.frames import frame_names, frame_times, render_frames, save_animation
-
         diags = _verdict(sc, (start, storyboard), (width, height), name, lenient, diags, quiet,
                          verbose)  # fmt: skip
 
@@ -189,10 +166,13 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
             diags.append(_note(file, slow + "viewers (use --fps 50 or less)", "ANIM012"))
         vp = sc.viewport(viewport)
-        w, h = render_size(vp, width, height)
-        opts = dict(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa, msaa=msaa)
-        opts.update(lens_arguments(extras, vp))  # --aperture, --stereo, --line-*: every frame
-        times = frame_times(start, end, fps)
+        check_lens_camera(extras, vp)
+        # --aperture, --stereo, --line-*: every frame; the size is computed once
+        settings = RenderSettings(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa,
+                                  msaa=msaa, time=None, **lens_arguments(extras))  # fmt: skip
+        size = sized(vp, settings.replace(width=width, height=height))
+        settings = settings.replace(width=size.width, height=size.height, aspect=size.aspect)
+        times = frames_module.frame_times(start, end, fps)
         # Every path this run writes, checked before the first frame is drawn.
         names = frame_names(len(times)) if to_dir else []
         if _refused(name, [Path(output) / n for n in names] if to_dir else [Path(output)], inputs):
@@ -200,10 +180,13 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         stale = stale_frames(Path(output), names) if to_dir else []
         sequence = FrameSequence(Path(output), names) if to_dir else None
         frames = []
-        from xaml3d.cli_jobs import default_jobs
-
         jobs = default_jobs() if jobs is None else jobs
-        it = render_frames(sc, times, storyboard, jobs=jobs, width=w, height=h, **opts)
+        folder = str(Path(output) if to_dir else Path(output).parent)
+        if not quiet and (verbose or len(times) >= LONG_RUN):
+            click.echo(_plan_line(name, sc, storyboard, len(times), fps, end - start), err=True)
+        it = frames_module.render_frames(  # looked up at call time: it may be wrapped
+            sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder]
+        )
         # A sequence goes to disk frame by frame; an animated file needs every frame at once.
         keep = frames.append if sequence is None else sequence.add
         if stderr_is_terminal() and not quiet:
@@ -212,8 +195,11 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
                 for _, r in bar:
                     keep(_keep(r, diags, file))
         else:
-            for _, r in it:
+            report = ProgressLines(f"{name}: animating", len(times)) if not quiet else None
+            for i, (_, r) in enumerate(it, 1):
                 keep(_keep(r, diags, file))
+                if report is not None:
+                    report(i)
         empty = [d for d in diags if d.code == "RND002"]
         if len(empty) < len(times):  # an empty frame is part of an animation: no warning
             diags = [d for d in diags if d.code != "RND002"]
@@ -244,14 +230,27 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         ctx.exit(1)
 
 
+def _plan_line(name: str, sc, storyboard, count: int, fps: float, length: float) -> str:
+    """What the run draws, said before the first frame: the frame count and the cycle."""
+    tl = sc.timeline
+    if tl is None or not tl.running(storyboard):
+        cycle = "nothing animates"
+    else:
+        whole, once = tl.cycle(storyboard), tl.one_cycle(storyboard)
+        if not math.isinf(whole):
+            cycle = f"one cycle: {whole:g} s"
+        elif math.isinf(once):
+            cycle = "a Duration is Forever"
+        else:
+            cycle = f"repeats for ever, one iteration: {once:g} s"
+    return f"{name}: animating {count} frames ({length:g} s at {fps:g} fps; {cycle})"
+
+
 def _verdict(sc, moment, size, name: str, lenient: bool, diags, quiet: bool, verbose: bool):
     """The findings ``render --time START`` reports (``xaml3d.findings``, the same as
     ``validate``) at ``moment`` (start, storyboard) and ``size`` (-W, -H): a scene with errors
     is not animated (exit 1) unless --lenient, which reports each error as a warning. Returns
     the diagnostics to print after the frames."""
-    from xaml3d.findings import has_errors, scene_findings
-    from xaml3d.findings import lenient as lenient_findings
-    from xaml3d.render.api import scene_at
 
     def size_of(vp):
         try:
@@ -283,8 +282,6 @@ def _refused(name: str, outputs: list[Path], inputs: list[Path]) -> bool:
 def _gif_frames(frames: list, bg, diags: list, file: str) -> list:
     """The frames as GIF holds them: flattened onto the --background colour made opaque (white
     without it) when GIF's 1-bit transparency would lose their translucency (ANIM013)."""
-    from xaml3d.render.gif_matte import frames_for_gif
-
     matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
     frames, flattened = frames_for_gif(frames, matte)
     if flattened:
@@ -320,7 +317,4 @@ def _default_length(sc, storyboard) -> tuple[float, str | None]:
 
 
 def _note(file: str, message: str, code: str = "ANIM011"):
-    from xaml3d.errors import Diagnostic
-    from xaml3d.xaml.animation_targets import ANIM_CODES
-
     return Diagnostic(code, {**ANIM_CODES, **OUTPUT_CODES}[code][0], message, file)

@@ -15,19 +15,23 @@ import math
 import click
 import numpy as np
 
-from xaml3d.cli_animate import parse_time, time_option
+from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     FiniteFloat,
     display_name,
     exit_on_input_error,
     load_scene,
     no_app_option,
+    parse_time,
     render_size,
     resources_option,
+    time_option,
     window_size_option,
 )
 from xaml3d.cli_render_extras import camera_lens_options, lens_report, lens_text
 from xaml3d.errors import XamlError
+from xaml3d.scene.camera_math import camera_pipeline
+from xaml3d.scene.fit import fit_viewport
 from xaml3d.scene.types import MatrixCamera
 
 # Scene field name -> WPF property name, in the order WPF's documentation lists them.
@@ -251,9 +255,6 @@ def camera_command(
     at_time,
     **lens,
 ) -> None:  # fmt: skip
-    from xaml3d.render.api import scene_at
-    from xaml3d.scene.camera_math import camera_pipeline
-
     name = display_name(scene)
     at_time = parse_time(at_time)
     with exit_on_input_error(name):
@@ -268,8 +269,6 @@ def camera_command(
         vp = sc.viewport(viewport)
         w, h = render_size(vp, width, height, scale)
     if fit:
-        from xaml3d.scene.fit import fit_viewport
-
         vp, notes = fit_viewport(vp, w, h, file=sc.file or name)
         for d in notes:
             click.echo(d.format(), err=True)

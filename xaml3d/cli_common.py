@@ -1,6 +1,7 @@
 """Shared pieces of the ``xaml3d`` command line: reading a scene from a path or stdin, the render
-size rule (wpf3d.md section 2, camera-pipeline.md section 8), printing diagnostics to stderr,
-and the codes the command line itself emits (IO0xx).
+size of -W/-H/--scale (the renderer's one size rule, ``xaml3d.render.settings.frame_size``),
+the options several commands share (--time, --storyboard, colours, -r, --window-size),
+printing diagnostics to stderr, and the codes the command line itself emits (IO0xx).
 
 Data goes to stdout, diagnostics to stderr, never mixed.
 """
@@ -9,7 +10,9 @@ from __future__ import annotations
 
 import gc
 import math
+import os
 import sys
+import time
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import replace
@@ -18,9 +21,12 @@ from pathlib import Path
 import click
 
 from xaml3d.codes.cli import CLI_CODES  # noqa: F401 (the stage's table)
-from xaml3d.errors import ERROR, INFO, CameraError, Diagnostic, RenderError, XamlError
+from xaml3d.errors import ERROR, INFO, Diagnostic, ValueSyntaxError, XamlError
 from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
+from xaml3d.render.settings import FrameSize, RenderSettings, frame_size
 from xaml3d.scene.types import Scene, Viewport
+from xaml3d.xaml.loader import load
+from xaml3d.xaml.values import parse_color, parse_double, parse_timespan
 
 STDIN_NAME = "<stdin>"
 TEXT_NAME = "<string>"  # the loader's label for markup given as text
@@ -71,8 +77,6 @@ def load_scene(
 
 
 def _load(source: str, resources: Iterable[str], window_size, discover_app: bool) -> Scene:
-    from xaml3d.xaml.loader import load
-
     if source != "-":
         return load(source, tuple(resources), window_size=window_size, discover_app=discover_app)
     data = sys.stdin.buffer.read()
@@ -108,47 +112,21 @@ def echo_diagnostics(
 def render_size(
     vp: Viewport, width: int | None, height: int | None, scale: float | None = None
 ) -> tuple[int, int]:
-    """The pixel size of a render: both given -> as given (the aspect changes like a resized
-    window); one given -> the other follows the viewport's aspect (an empty viewport has none:
-    a square); none -> the viewport's size. ``scale`` then multiplies both. Rounded to whole
-    pixels, at least 1. An empty viewport without -W/-H: RND008 when WPF's layout left it empty
-    (LAY001/LAY002 said why, as a warning), else the camera's CAM010."""
-    w0, h0 = float(vp.width), float(vp.height)
-    empty = not (w0 > 0 and h0 > 0)
-    if width is None and height is None and empty and vp.size_source.startswith("layout: "):
-        raise RenderError(
-            f"Viewport3D #{vp.index} is laid out {w0:g} x {h0:g} (see LAY001/LAY002): nothing to "
-            "draw; give -W/-H to render it at a size",
-            code="RND008",
-            line=vp.line,
-            column=vp.column,
-        )
-    if width is None and height is None and empty:
-        # WPF draws nothing in an empty viewport; rendering a 1-pixel sliver would hide that.
-        raise CameraError(
-            f"viewport size {w0:g} x {h0:g} is empty: WPF draws nothing "
-            "(give -W and -H to render at another size)",
-            code="CAM010",
-            line=vp.line,
-            column=vp.column,
-        )
-    if width is not None and height is not None:
-        w, h = float(width), float(height)
-    elif width is not None:
-        w = float(width)
-        h = w if empty else w * (h0 / w0)  # the ratio first: huge sizes must not overflow
-    elif height is not None:
-        h = float(height)
-        w = h if empty else h * (w0 / h0)
-    else:
-        w, h = w0, h0
-    if scale is not None:
-        w, h = w * scale, h * scale
-    if not (math.isfinite(w) and math.isfinite(h)):  # the viewport's own size is to blame
-        raise RenderError(f"render size {w:g} x {h:g} is not finite (the viewport's aspect "
-                          "ratio cannot be followed): give both -W and -H", code="RND001",
-                          line=vp.line, column=vp.column)  # fmt: skip
-    return max(1, round(w)), max(1, round(h))
+    """The pixel size of a render with -W/-H/--scale (``frame_size``, whose errors name the
+    options: RND008 for a viewport WPF's layout left empty, else CAM010 for an empty one)."""
+    size = sized(vp, RenderSettings(width=width, height=height, scale=scale))
+    return size.width, size.height
+
+
+def sized(vp: Viewport, settings: RenderSettings) -> FrameSize:
+    """``frame_size`` of viewport ``vp`` with the size settings named as the options."""
+    return frame_size(vp, settings, sizes="-W/-H")
+
+
+def scene_files_read(scene) -> list[str]:
+    """Every file a render of ``scene`` reads besides the scene itself: resource dictionaries,
+    App.xaml and the images its ImageBrushes load. None of them may be an output."""
+    return [*scene.resources_used, *scene.images_used]
 
 
 def same_file(a: Path, b: Path) -> bool:
@@ -224,3 +202,109 @@ def warn_option(message: str) -> None:
     if ctx is not None and ctx.params.get("quiet"):
         return
     click.echo(f"xaml3d: warning OPT001 {message}", err=True)
+
+
+def parse_background(ctx, param, value):
+    """A colour option (--background, --line-color): any WPF syntax -> straight RGBA floats."""
+    if value is None:
+        return None
+    try:
+        return tuple(float(c) for c in parse_color(value))
+    except (XamlError, ValueError) as exc:
+        raise click.BadParameter(
+            f"{value!r} is not a WPF colour ({getattr(exc, 'message', exc)})"
+        ) from None
+
+
+def parse_time(value: str, what: str = "--time") -> float | None:
+    """A time option: seconds ('1.5', or '1.5s'), a TimeSpan with a colon ('0:0:1.5'), or
+    'none'."""
+    v = value.strip()
+    if v.lower() == "none":
+        return None
+    try:
+        t = parse_timespan(v) if ":" in v else parse_double(v.removesuffix("s"))
+    except ValueSyntaxError:
+        raise click.BadParameter(
+            f"{value!r} is not a time (seconds like 1.5, or a TimeSpan like 0:0:1.5)",
+            param_hint=what,
+        ) from None
+    if not math.isfinite(t) or t < 0:
+        raise click.BadParameter(f"{value!r} must be a finite time >= 0", param_hint=what)
+    return t
+
+
+def time_callback(ctx, param, value):
+    return value if value is None else parse_time(value, "--" + param.name)
+
+
+time_option = click.option(
+    "--time",
+    "at_time",
+    metavar="T",
+    default="0",
+    show_default=True,
+    help="Moment to draw, seconds after load (1.5 or 0:0:1.5); 'none': markup base values.",
+)
+storyboard_option = click.option(
+    "--storyboard",
+    metavar="NAME",
+    help="Also begin this storyboard (a click-started or keyed one) at t = 0.",
+)
+
+
+class ProgressLines:
+    """Progress of long work where no progress bar can be drawn (stderr is not a terminal: a
+    log, CI): one line every ``every`` seconds, ``label: done/total unit, elapsed, estimate``.
+    Work that ends within ``every`` seconds prints nothing."""
+
+    def __init__(self, label: str, total: int, unit: str = "frames", every: float = 5.0,
+                 clock=time.monotonic) -> None:  # fmt: skip
+        self.label, self.total, self.unit, self.every, self.clock = label, total, unit, every, clock
+        self.start = self.last = clock()
+
+    def __call__(self, done: int) -> None:
+        now = self.clock()
+        if now - self.last < self.every or done >= self.total:
+            return
+        self.last = now
+        elapsed = now - self.start
+        left = elapsed / done * (self.total - done) if done else math.inf
+        estimate = f"about {_seconds(left)} left" if math.isfinite(left) else "estimating"
+        click.echo(f"{self.label}: {done}/{self.total} {self.unit}, {_seconds(elapsed)} elapsed, "
+                   f"{estimate}", err=True)  # fmt: skip
+
+
+def _seconds(t: float) -> str:
+    t = int(round(t))
+    return f"{t // 60} min {t % 60:02d} s" if t >= 60 else f"{t} s"
+
+
+def _name_max(path: Path) -> int:
+    """The file system's limit on one name, asked of the nearest existing folder of ``path``."""
+    folder = path.parent
+    for candidate in (folder, *folder.parents):
+        try:
+            if candidate.is_dir():
+                return int(os.pathconf(candidate, "PC_NAME_MAX"))
+        except (OSError, ValueError):
+            continue
+    return 255
+
+
+def output_path(ctx, param, value):
+    """Callback of the options that name a file or folder to write: a name longer than the file
+    system allows is a usage error here, before anything is read (never an OSError later)."""
+    if value is None or value == "-":
+        return value
+    path = Path(value)
+    limit = _name_max(path)
+    for part in path.parts:
+        size = len(os.fsencode(part))
+        if size > limit:
+            shown = part if len(part) <= 40 else f"{part[:20]}...{part[-12:]}"
+            raise click.BadParameter(
+                f"the name {shown!r} is {size} bytes long, over the file system's limit of "
+                f"{limit} bytes per name"
+            )
+    return value

@@ -22,6 +22,7 @@ from xaml3d.cli_common import (
     io_error,
     load_scene,
     no_app_option,
+    output_path,
     resources_option,
     same_file,
     stderr_is_terminal,
@@ -136,6 +137,7 @@ exported, 1 a scene could not be (a batch goes on with the others), 2 usage erro
     "--output",
     required=True,
     metavar="OUT",
+    callback=output_path,
     help="Output file (.glb .gltf .obj .stl .html), or a directory (batch).",
 )
 @click.option(

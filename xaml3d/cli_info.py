@@ -11,6 +11,8 @@ from collections import Counter
 
 import click
 
+from xaml3d.animation.clock import iteration_duration, natural_duration
+from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     display_name,
     exit_on_input_error,
@@ -20,14 +22,13 @@ from xaml3d.cli_common import (
     window_size_option,
 )
 from xaml3d.errors import SEVERITIES, Diagnostic
+from xaml3d.findings import scene_findings
 from xaml3d.scene.types import Scene
 
 
 def findings_of(scene: Scene, name: str | None = None) -> list[Diagnostic]:
     """The findings ``xaml3d validate`` lists for ``scene`` (at each viewport's own size):
     those of WPF's first frame, the storyboards a Loaded trigger begins applied at t = 0."""
-    from xaml3d.findings import scene_findings
-    from xaml3d.render.api import scene_at
 
     return scene_findings(scene_at(scene, 0.0), file=name)
 
@@ -86,8 +87,6 @@ def _seconds(v) -> float | str | None:
 
 def animation_info(scene: Scene) -> dict:
     """What runs at load, and every storyboard's animations: target, period, repeats."""
-    from xaml3d.animation.clock import iteration_duration, natural_duration
-
     tl = scene.timeline
     out = []
     for sb in scene.storyboards:

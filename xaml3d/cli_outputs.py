@@ -24,13 +24,14 @@ import click
 
 from xaml3d.cli_common import same_file
 from xaml3d.codes.outputs import OUTPUT_CODES  # noqa: F401 (the stage's table)
+from xaml3d.output.animation import ANIMATED_FORMATS, FRAME_FILE
+from xaml3d.output.images import save_image
+from xaml3d.render.atomic import Staged, together
 
 
 def animation_target(output: str) -> bool:
     """Check ``-o`` of ``animate`` before anything is read: True for a directory sequence,
     False for an animated file. Raises click.UsageError (exit 2) for what cannot be written."""
-    from xaml3d.render.frames import ANIMATED_FORMATS
-
     if output == "-":
         raise click.UsageError(
             "animate writes files, not stdout: use -o FILE.gif|.png|.webp or -o DIR/"
@@ -78,8 +79,6 @@ def overwritten_input(outputs: Iterable[Path], inputs: Iterable[Path]) -> tuple[
 def stale_frames(directory: Path, written: Iterable[str]) -> list[Path]:
     """Files of ``directory`` named like frames (``frame_0000.png``...) that a sequence of the
     ``written`` names leaves in place, in name order."""
-    from xaml3d.render.frames import FRAME_FILE
-
     keep = set(written)
     try:
         names = sorted(e.name for e in os.scandir(directory) if e.is_file())
@@ -128,22 +127,17 @@ class FrameSequence:
         directory.mkdir(parents=True, exist_ok=True)
 
     def add(self, rgba) -> None:
-        from xaml3d.render.api import save_image
-
         final = self.directory / self.names[len(self.written)]
-        tmp = self.directory / f".{final.name}.{os.getpid()}.partial.png"
-        self.written.append((tmp, final))
-        save_image(rgba, tmp, format="PNG")
+        with together(commit=False) as staged:  # a temporary name, renamed by ``commit``
+            save_image(rgba, final, format="PNG")
+        self.written.extend(staged.pending)
 
     def commit(self) -> None:
-        for tmp, final in self.written:
-            os.replace(tmp, final)
-        self.written = []
+        staged = Staged()
+        staged.pending, self.written = self.written, []
+        staged.commit()
 
     def discard(self) -> None:
-        for tmp, _ in self.written:
-            try:
-                tmp.unlink()
-            except OSError:
-                pass
-        self.written = []
+        staged = Staged()
+        staged.pending, self.written = self.written, []
+        staged.discard()

@@ -9,14 +9,28 @@ The work itself lives in ``xaml3d.render.lens``, ``xaml3d.render.buffers`` and
 from __future__ import annotations
 
 import functools
+import math
+import sys
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 import click
+import numpy as np
 
-from xaml3d.cli_common import FiniteFloat, warn_option
+from xaml3d.cli_common import FiniteFloat, output_path, parse_background, warn_option
+from xaml3d.cli_outputs import _resolved
 from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
-from xaml3d.scene.lens import MAX_LENS_SAMPLES, STEREO_MODES
+from xaml3d.render.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
+from xaml3d.render.svg import wireframe_svg
+from xaml3d.scene.lens import (
+    MAX_LENS_SAMPLES,
+    STEREO_FRACTION,
+    STEREO_MODES,
+    aperture_of_fstop,
+    camera_view,
+    focal_length_of_fov,
+    lens_frame,
+)
 from xaml3d.scene.types import PerspectiveCamera
 
 DEPTH_SUFFIXES = (".png", ".npy")
@@ -54,12 +68,6 @@ class Extras:
                  f"--fstop {self.fstop:g}" if self.fstop is not None else None,
                  f"--stereo {self.stereo}" if self.stereo is not None else None]  # fmt: skip
         return " and ".join(n for n in named if n)
-
-
-def _parse_color(ctx, param, value):
-    from xaml3d.cli_render import _parse_background
-
-    return _parse_background(ctx, param, value)
 
 
 _OPTIONS = (
@@ -103,18 +111,20 @@ _OPTIONS = (
     click.option(
         "--depth",
         metavar="FILE",
+        callback=output_path,
         help="Also write the eye-space depth: .png (16-bit, near black) or .npy (float32); "
         "not with an SVG output.",
     ),
     click.option(
         "--ids",
         metavar="FILE",
+        callback=output_path,
         help="Also write a PNG of model ids (one colour per model); not with an SVG output.",
     ),
     click.option(
         "--line-color",
         metavar="COLOR",
-        callback=_parse_color,
+        callback=parse_background,
         help="wireframe: line colour, any WPF syntax (default: the material's).",
     ),
     click.option(
@@ -191,8 +201,6 @@ def _given(param: str) -> bool:
 def check_output_names(ex: Extras, target) -> None:
     """--depth/--ids against the image file they go with (``target``: the resolved output, a
     file in the output directory included, or '-'): a usage error when two are one file."""
-    from xaml3d.cli_outputs import _resolved
-
     files = [("--depth", ex.depth), ("--ids", ex.ids)]
     if target not in (None, "-"):
         files.insert(0, ("the output image", str(target)))
@@ -245,14 +253,13 @@ def check_lens_camera(ex: Extras, vp) -> None:
     )
 
 
-def lens_arguments(ex: Extras, vp) -> dict:
-    """The ``render_arrays`` arguments of the options for viewport ``vp``; a lens or stereo
-    pair on another camera than a PerspectiveCamera raises RenderError LNS001
-    (``check_lens_camera``)."""
+def lens_arguments(ex: Extras) -> dict:
+    """The ``RenderSettings`` fields of the options: the wireframe's line style, and the lens
+    and stereo pair (those apply only when one is asked for: ``RenderSettings.lens``). Whether
+    the camera can have a lens is ``check_lens_camera``'s question, per viewport."""
     args: dict = {"line_color": ex.line_color, "line_width": ex.line_width or 1.0}
     if not ex.lens:
         return args
-    check_lens_camera(ex, vp)
     args.update(
         aperture=ex.aperture or 0.0,
         fstop=ex.fstop,
@@ -275,8 +282,6 @@ class Progress:
         if not self.enabled or total < SLOW_SAMPLES:
             return
         if self.bar is None:
-            import sys
-
             self.bar = click.progressbar(length=total, label=self.label, file=sys.stderr)
             self.bar.__enter__()
         self.bar.update(done - self.done)
@@ -293,12 +298,6 @@ def focus_notes(ex: Extras, vp, file: str) -> list[Diagnostic]:
     LNS003 (the focal distance, and the eyes' separation of a stereo pair), and warning LNS004
     when the default focal distance falls back to 1 because the centre of the scene's bounding
     box is not in front of the camera (``xaml3d.scene.lens.default_focus``)."""
-    import math
-
-    import numpy as np
-
-    from xaml3d.scene.lens import STEREO_FRACTION, camera_view
-
     if not ex.lens or not isinstance(vp.camera, PerspectiveCamera):
         return []
     at = (file, vp.camera.line, vp.camera.column)
@@ -344,10 +343,6 @@ def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diag
     (wireframe mode: its depth buffer holds no surfaces unless hidden lines are removed).
     A render whose camera could not produce an image (drawn anyway under --lenient) has no
     buffers: they are written as WPF's picture is, empty (no distance, no model anywhere)."""
-    import numpy as np
-
-    from xaml3d.render.buffers import depth_npy, depth_png, ids_png, write_atomic
-
     notes = []
     if result.distance is None:
         shape = result.depth.shape
@@ -358,8 +353,6 @@ def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diag
     if ex.depth:
         if Path(ex.depth).suffix.lower() == ".npy":
             write_atomic(ex.depth, depth_npy(result.distance))
-            from xaml3d.render.buffers import depth_range
-
             rng = depth_range(result.distance)
             legend = "nothing drawn" if rng is None else f"near={rng[0]!r} far={rng[1]!r}"
         else:
@@ -371,17 +364,10 @@ def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diag
     return notes
 
 
-def write_svg(ex: Extras, scene, vp, width, height, target, background, ssaa, aspect=None) -> list:
-    """Render the SVG wireframe; write it to ``target`` (a Path, or '-' for stdout)."""
-    import sys
-
-    from xaml3d.render.buffers import write_atomic
-    from xaml3d.render.svg import wireframe_svg
-
-    text, diags = wireframe_svg(
-        scene, width, height, viewport=vp.index, line_color=ex.line_color,
-        line_width=ex.line_width or 1.0, ssaa=ssaa or 2, background=background, aspect=aspect,
-    )  # fmt: skip
+def write_svg(scene, vp, size, settings, target) -> list:
+    """Render the SVG wireframe of viewport ``vp`` at ``size``; write it to ``target`` (a Path,
+    or '-' for stdout)."""
+    text, diags = wireframe_svg(scene, settings=settings.replace(viewport=vp.index), size=size)
     if not any(d.severity == "error" for d in diags):
         if target == "-":
             sys.stdout.write(text)
@@ -423,8 +409,6 @@ def camera_lens_options(func):
 def lens_report(vp, width: int, height: int, aperture, focus, fstop, focal_length) -> dict | None:
     """The pinhole and one lens sample's (the rim point +A u) WPF matrices, for
     ``xaml3d camera --aperture``; None when no lens option was given."""
-    from xaml3d.scene.lens import aperture_of_fstop, focal_length_of_fov, lens_frame
-
     ex = Extras(aperture=aperture, focus=focus, fstop=fstop, focal_length=focal_length)
     if not (ex.aperture is not None or ex.fstop is not None):
         if focus is not None or focal_length is not None:

@@ -13,6 +13,7 @@ import json
 
 import click
 
+from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     describe_os_error,
     display_name,
@@ -35,7 +36,6 @@ def collect_findings(
 ) -> list[Diagnostic]:
     """All findings for one scene (``xaml3d.findings.scene_findings``, as ``render`` reports
     them), or its one fatal reading error, located and sorted by (file, line, column)."""
-    from xaml3d.render.api import scene_at
 
     name = display_name(source)
     try:

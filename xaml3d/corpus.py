@@ -81,8 +81,8 @@ def run_file(
 ) -> FileResult:
     """Load and render one file in every mode (and, with ``window``, as ``render --window``
     when its root is a Window, Page or UserControl); never raises for a XamlError."""
+    from xaml3d.api import render_arrays, scene_at
     from xaml3d.findings import has_errors, scene_findings
-    from xaml3d.render.api import render_arrays, scene_at
     from xaml3d.xaml.loader import load
 
     result = FileResult(name=path.name, status="refused")

@@ -5,12 +5,18 @@ a reader never sees a partial file and a failure (or Ctrl-C) leaves an existing 
 Inside ``together()`` the renames wait: every file is written to its temporary first and all are
 renamed at the end, or, on any failure, every temporary is removed (all or nothing for the
 several files of one render: an image with its depth and id images, every viewport's image).
+
+A temporary is named ``.<name>.<pid>-<random>.tmp``, the target's name cut so that the whole
+fits in the file system's limit on a name (255 bytes on most): a temporary fits wherever its
+target does. The process id in the name and a registry of this process's temporaries let
+``remove_temporaries`` clean up after a run whose parent was killed (``xaml3d.render.workers``).
 """
 
 from __future__ import annotations
 
 import os
-import tempfile
+import re
+import secrets
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -30,6 +36,65 @@ def _cannot(path: Path, exc: OSError) -> RenderError:
     return RenderError(f"cannot write {path}: {exc.strerror or exc}", code="RND007")
 
 
+_CREATED: set[str] = set()  # this process's temporaries not yet renamed or removed
+
+
+def _name_max(directory: Path) -> int:
+    try:
+        return int(os.pathconf(directory, "PC_NAME_MAX"))
+    except (OSError, ValueError, AttributeError):
+        return 255
+
+
+def temporary_name(directory: Path, name: str) -> str:
+    """A fresh temporary name for the target ``name`` in ``directory`` (module docstring)."""
+    tail = f".{os.getpid()}-{secrets.token_hex(4)}.tmp"
+    room = _name_max(directory) - len(tail.encode()) - 1
+    head = name.encode()[: max(0, room)].decode(errors="ignore")  # whole characters only
+    return f".{head}{tail}"
+
+
+def _create(directory: Path, name: str) -> tuple[int, str]:
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    for _ in range(100):
+        tmp = str(directory / temporary_name(directory, name))
+        try:
+            fd = os.open(tmp, flags, 0o600)
+        except FileExistsError:
+            continue
+        _CREATED.add(tmp)
+        return fd, tmp
+    raise FileExistsError(f"no free temporary name beside {name}")
+
+
+def _gone(tmp) -> None:
+    _CREATED.discard(str(tmp))
+
+
+def remove_temporaries(pid: int, folders=()) -> None:
+    """Remove the temporaries of process ``pid``: this process's own from its registry, and
+    in ``folders`` every file named as a temporary of ``pid``. Never raises."""
+    if pid == os.getpid():
+        for tmp in list(_CREATED):
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+            _gone(tmp)
+    mark = re.compile(rf"\..*\.{pid}-[0-9a-f]{{8}}\.tmp")
+    for folder in folders:
+        try:
+            names = os.listdir(folder)
+        except OSError:
+            continue
+        for n in names:
+            if mark.fullmatch(n):
+                try:
+                    os.unlink(os.path.join(folder, n))
+                except OSError:
+                    pass
+
+
 class Staged:
     """The files written inside ``together()``: (temporary, target) pairs not yet renamed."""
 
@@ -42,6 +107,7 @@ class Staged:
         for i, (tmp, path) in enumerate(pending):
             try:
                 os.replace(tmp, path)
+                _gone(tmp)
             except OSError as exc:
                 self.pending = pending[i + 1 :]
                 self.discard()
@@ -54,6 +120,7 @@ class Staged:
                 os.unlink(tmp)
             except OSError:
                 pass
+            _gone(tmp)
         self.pending = []
 
 
@@ -85,8 +152,14 @@ def write_atomically(path, write: Callable[[BinaryIO], object]) -> None:
     removed. RenderError RND007 when it cannot be written."""
     path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
+    if len(path.name.encode()) > _name_max(directory):
+        raise RenderError(
+            f"cannot write {path}: the name is {len(path.name.encode())} bytes long, over the "
+            f"file system's limit of {_name_max(directory)}",
+            code="RND007",
+        )
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+        fd, tmp = _create(directory, path.name)
     except OSError as exc:
         raise _cannot(path, exc) from exc
     try:
@@ -94,18 +167,20 @@ def write_atomically(path, write: Callable[[BinaryIO], object]) -> None:
             write(fh)
             fh.flush()
             os.fsync(fh.fileno())
-        # mkstemp creates the file 0600; give it the mode a plain open() would have.
+        # created 0600 (no one reads it half-written); give it the mode a plain open() would have
         os.chmod(tmp, 0o666 & ~_current_umask())
         staged = _STAGED.get()
         if staged is not None:
             staged.pending.append((Path(tmp), path))
             return
         os.replace(tmp, path)
+        _gone(tmp)
     except BaseException as exc:
         try:
             os.unlink(tmp)
         except OSError:
             pass
+        _gone(tmp)
         if isinstance(exc, OSError):
             raise _cannot(path, exc) from exc
         raise

@@ -1,13 +1,7 @@
-"""Buffers beside the picture: linear eye-space depth and model ids, as arrays and image files.
+"""Buffers beside the picture as image files: linear eye-space depth and model ids.
 
-Pipeline step: after rendering. ``eye_depth`` turns the renderer's depth buffer (WPF's
-normalized device depth z_ndc, ``Rendering.depth``) into the distance from the eye plane along
-the look direction, exactly (``xaml3d.scene.lens.eye_distance``). ``model_ids`` renders a derived
-scene in which every GeometryModel3D (``Model``) with a drawable material draws one flat, unlit,
-opaque colour encoding its index (lights replaced by one white AmbientLight, every pass by one
-DiffuseMaterial whose AmbientColor is the code) on the picture's sample grid, keeps each
-pixel's nearest sample (so no colour is ever mixed, and ids match the depth's sample), and
-decodes the colours back to indices.
+The arrays come from the render (``xaml3d.render.distance.eye_depth``, ``xaml3d.render.ids``,
+re-exported here); this module encodes them.
 
 Files: ``depth_png`` (16-bit greyscale, near = black, the range in a tEXt chunk),
 ``depth_npy`` (float32, NaN where nothing was drawn), ``ids_png`` (palette PNG whose pixel
@@ -18,77 +12,17 @@ are written atomically through ``write_atomic``.
 from __future__ import annotations
 
 import io
-from dataclasses import replace
 
 import numpy as np
 
 from xaml3d.render.atomic import write_atomically
-from xaml3d.scene.lens import eye_distance, eye_distance_matrix
-from xaml3d.scene.types import AmbientLight, DiffuseMaterial, SolidColorBrush
+from xaml3d.render.distance import eye_depth  # noqa: F401 (this module's interface)
+from xaml3d.render.ids import id_viewport, model_ids, surface_buffers  # noqa: F401 (the same)
 
 DEPTH_EMPTY = 65535  # 16-bit value of pixels where nothing was drawn
 DEPTH_MAX = 65534  # the farthest drawn distance
 DEPTH_KEY = "xaml3d:depth"
 IDS_KEY = "xaml3d:ids"
-
-
-def eye_depth(depth: np.ndarray, pipeline) -> np.ndarray:
-    """float32 eye-space distances of a ``Rendering.depth`` (z_ndc) for the camera ``pipeline``
-    that rendered it; NaN where nothing was drawn."""
-    if pipeline.kind == "matrix":
-        d = eye_distance_matrix(depth, pipeline.wpf_projection)
-    else:
-        d = eye_distance(depth, pipeline.near, pipeline.far, pipeline.kind)
-    return d.astype(np.float32)
-
-
-def _code_color(k: int) -> tuple[float, float, float, float]:
-    return ((k >> 16) / 255.0, ((k >> 8) & 255) / 255.0, (k & 255) / 255.0, 1.0)
-
-
-def id_viewport(vp):
-    """The derived viewport of ``model_ids``: model i (0-based) draws the code i + 1."""
-    models = []
-    for i, m in enumerate(vp.models):
-        mat = DiffuseMaterial(
-            brush=SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0)),
-            color=(0.0, 0.0, 0.0, 1.0),
-            ambient_color=_code_color(i + 1),
-        )
-        front = (mat,) if any(p.brush is not None for p in m.material) else ()
-        back = (mat,) if any(p.brush is not None for p in m.back_material) else ()
-        models.append(replace(m, material=front, back_material=back))
-    light = AmbientLight(color=(1.0, 1.0, 1.0, 1.0))
-    return replace(vp, models=tuple(models), lights=(light,))
-
-
-def surface_buffers(scene, vp, width: int, height: int, aspect: float | None = None, *,
-                    grid: int = 1, msaa: int = 1):  # fmt: skip
-    """(ids, distance) of the drawn surfaces, whatever the drawing mode: ids (H, W) int32 as
-    ``model_ids``, distance (H, W) float32 eye-space depth of the same render; NaN where empty.
-    ``grid``/``msaa``: the sample grid of the picture's render. Each pixel takes its nearest
-    sample, id and depth alike, so the two always agree, and the depth is the picture's own (a
-    render's ``distance`` is its nearest sample too). The wireframe mode's own depth buffer
-    holds surfaces only when hidden lines are removed: this is the surfaces' depth for it."""
-    from xaml3d.render.api import _background, _draw_viewport
-
-    r = _draw_viewport(
-        scene, id_viewport(vp), width, height, mode="shaded", bg=_background(None), grid=grid,
-        msaa=msaa, line_rgba=None, hidden_lines=True, antialias_lines=False, line_width=1.0,
-        aspect=aspect, ids=False, nearest=True,
-    )  # fmt: skip
-    rgb = r.rgba[..., :3].astype(np.int64)
-    code = (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
-    ids = np.where(r.rgba[..., 3] > 0, code - 1, -1).astype(np.int32)
-    distance = r.distance if r.distance is not None else np.full(ids.shape, np.nan, np.float32)
-    return ids, distance
-
-
-def model_ids(scene, vp, width: int, height: int, aspect: float | None = None, *,
-              grid: int = 1, msaa: int = 1) -> np.ndarray:  # fmt: skip
-    """(H, W) int32: the index in ``vp.models`` of the model drawn at each pixel (its nearest
-    sample's, on the picture's sample ``grid``), -1 where none."""
-    return surface_buffers(scene, vp, width, height, aspect, grid=grid, msaa=msaa)[0]
 
 
 def write_atomic(path, data: bytes) -> None:

@@ -1,36 +1,20 @@
-"""Whole animations: frame times, rendered frames, and animated image files.
+"""Whole animations: frame times and rendered frames.
 
 ``frame_times`` samples [start, end) at ``fps``; ``frame_durations`` gives each frame's display
 time in whole units (milliseconds, or GIF's 10 ms) whose total is exactly the animation's
 length (rounding distributed: frame i lasts round((i+1)T/n) - round(iT/n)). ``render_frames``
-yields one ordinary render per time of ``scene.timeline`` (the renderer knows nothing of
-animation). ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels become GIF
-transparency, any other pixel is opaque; frames with translucent surfaces are flattened first,
-``xaml3d.render.gif_matte``), APNG (.png), WebP, or numbered PNGs in a directory
-(``frame_names``), atomically: a temporary file in the target's folder is written, fsynced and
-renamed, so a failure leaves no partial file and an existing one untouched.
+yields one ordinary render of ``scene_at(scene, t)`` per time, in time order (the renderer
+knows nothing of animation). The files are written by ``xaml3d.output.animation``.
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
-from pathlib import Path
 
-import numpy as np
-
-from xaml3d.errors import RenderError
-from xaml3d.render.atomic import write_atomically
-
-ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
-# The files of a numbered sequence: frame_0000.png ... (4 digits at least, more when needed).
-FRAME_FILE = re.compile(r"frame_[0-9]{4,}\.png")
-
-
-def frame_names(count: int) -> list[str]:
-    """The file names of a sequence of ``count`` frames, in order."""
-    digits = max(4, len(str(count - 1)))
-    return [f"frame_{i:0{digits}d}.png" for i in range(count)]
+from xaml3d.animation.moment import scene_at
+from xaml3d.render.pipeline import render_scene
+from xaml3d.render.settings import settings_of
+from xaml3d.render.workers import ordered, worker_pool
 
 
 def frame_times(start: float, end: float, fps: float) -> list[float]:
@@ -47,142 +31,53 @@ def frame_durations(count: int, total: float, unit: float) -> list[int]:
 
 
 def render_frames(
-    scene, times, storyboard: str | None = None, *, jobs: int = 1, **options
-) -> Iterator:
-    """(time, Rendering) for each time: ``xaml3d.render.api.render_arrays`` options apply.
-
-    ``jobs`` > 1 renders the frames in that many worker processes (each frame is an independent
-    render, so the results are the same); they are still yielded in time order."""
-    if jobs > 1 and len(times) > 1:
-        yield from _parallel_frames(scene, times, storyboard, jobs, options)
-        return
-    from xaml3d.render.api import render_arrays, scene_at
-
-    for t in times:
-        yield t, render_arrays(scene_at(scene, t, storyboard), time=None, **options)
-
-
-_WORKER: dict = {}  # a worker process's scene, storyboard and options (see _parallel_frames)
-
-
-def _start_worker(scene, storyboard, options) -> None:
-    import signal
-
-    # Ctrl-C reaches the whole process group: the parent stops the run (see _parallel_frames),
-    # a worker just finishes its frame instead of printing a traceback of its own.
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _WORKER.update(scene=scene, storyboard=storyboard, options=options)
-
-
-def _worker_frame(t: float):
-    from xaml3d.render.api import render_arrays, scene_at
-
-    w = _WORKER
-    return t, render_arrays(scene_at(w["scene"], t, w["storyboard"]), time=None, **w["options"])
-
-
-def _parallel_frames(scene, times, storyboard, jobs: int, options) -> Iterator:
-    # Forked workers inherit the loaded scene (nothing to pickle but the times and results);
-    # where fork does not exist the scene is pickled once per worker.
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    methods = multiprocessing.get_all_start_methods()
-    ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    workers = min(int(jobs), len(times))
-    with ProcessPoolExecutor(
-        workers, mp_context=ctx, initializer=_start_worker, initargs=(scene, storyboard, options)
-    ) as pool:
-        futures = [pool.submit(_worker_frame, t) for t in times]
-        try:
-            for future in futures:
-                yield future.result()
-        finally:
-            # Interrupted (Ctrl-C) or abandoned: drop the frames not started, so leaving the
-            # pool waits for the running ones only, not for the whole animation.
-            for future in futures:
-                future.cancel()
-
-
-def _gif_frame(rgba: np.ndarray):
-    """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
-    has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
-    so translucent surfaces stay visible; only empty pixels become transparent."""
-    from PIL import Image
-
-    alpha = rgba[..., 3]
-    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
-    clear = alpha == 0
-    if not clear.any():
-        return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
-    # the colours of visible pixels only choose the palette
-    q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
-    idx = np.array(q, dtype=np.uint8)
-    idx[clear] = 255
-    out = Image.fromarray(idx, mode="P")
-    pal = q.getpalette()[: 255 * 3]
-    out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
-    return out, 255
-
-
-def save_animation(
-    frames: list[np.ndarray],
-    path,
-    total: float,
+    scene,
+    times,
+    storyboard: str | None = None,
     *,
-    loop: int = 0,
-    directory: bool = False,
-    matte: tuple[int, int, int] = (255, 255, 255),
-) -> list[Path]:
-    """Write (H, W, 4) uint8 RGBA frames lasting ``total`` seconds in all. ``loop``: 0 for
-    ever, else the number of plays. ``directory``: numbered PNGs ``frame_0000.png``... in the
-    folder ``path``. ``matte``: the opaque RGB (0..255) a GIF's frames are flattened onto when
-    they show translucent surfaces (``gif_matte.frames_for_gif``). Returns the files written.
-    Raises RenderError (RND006 format, RND007)."""
-    from PIL import Image
+    jobs: int = 1,
+    executor=None,
+    settings=None,
+    folders=(),
+    **options,
+) -> Iterator:
+    """(time, Rendering) for each time, in time order: the render of ``scene_at(scene, t)``
+    with ``settings`` (a ``RenderSettings``, or its fields as keyword arguments; its own time
+    is ignored).
 
-    from xaml3d.render.api import save_image
+    ``executor``: any ``concurrent.futures.Executor`` to render the frames in (a process pool,
+    a cluster's executor...); the scene and settings are sent with each frame. Else ``jobs`` > 1
+    renders them in that many worker processes of ``xaml3d.render.workers`` (each frame is an
+    independent render, so the results are the same). Frames are yielded as they come, in
+    order, with a bounded number in flight: an animation is never all held in memory here.
+    ``folders``: where the caller writes files meanwhile (should it be killed, the workers
+    remove its temporaries there)."""
+    chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
+    if executor is not None:
+        items = [(scene, t, storyboard, chosen) for t in times]
+        yield from ordered(executor, render_frame, items)
+        return
+    if jobs > 1 and len(times) > 1:
+        workers = min(int(jobs), len(times))
+        kept = (scene, storyboard, chosen)  # sent once per worker, not with every frame
+        with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
+            yield from ordered(pool, _kept_frame, [(t,) for t in times])
+        return
+    for t in times:
+        yield render_frame(scene, t, storyboard, chosen)
 
-    path = Path(path)
-    if directory:
-        path.mkdir(parents=True, exist_ok=True)
-        out = []
-        for name, f in zip(frame_names(len(frames)), frames, strict=True):
-            target = path / name
-            save_image(f, target, format="PNG")
-            out.append(target)
-        return out
-    fmt = ANIMATED_FORMATS.get(path.suffix.lower())
-    if fmt is None:
-        raise RenderError(
-            f"cannot write {path.name!r}: unknown animation format "
-            "(use .gif, .png (APNG), .webp, or a directory ending in /)",
-            code="RND006",
-        )
-    if fmt == "GIF":
-        from xaml3d.render.gif_matte import frames_for_gif
 
-        frames, _ = frames_for_gif(frames, matte)
-        pairs = [_gif_frame(f) for f in frames]
-        images = [p[0] for p in pairs]
-        durations = [10 * d for d in frame_durations(len(frames), total, 0.01)]
-        transparent = any(p[1] is not None for p in pairs)
-        extra = {"transparency": 255, "disposal": 2} if transparent else {}
-        # GIF's loop count is the number of REPEATS (0: for ever); no count plays once
-        if loop != 1:
-            extra["loop"] = 0 if loop == 0 else loop - 1
+def render_frame(scene, t: float, storyboard, settings) -> tuple:
+    """(t, the Rendering of ``scene_at(scene, t, storyboard)`` with ``settings``)."""
+    return t, render_scene(scene_at(scene, t, storyboard), settings)
 
-        def write(fh):
-            images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
-                           duration=durations, optimize=False, **extra)  # fmt: skip
-    else:
-        images = [Image.fromarray(f, mode="RGBA") for f in frames]
-        durations = frame_durations(len(frames), total, 0.001)
-        opts = {"lossless": False, "quality": 90} if fmt == "WEBP" else {"default_image": False}
 
-        def write(fh):
-            images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
-                           duration=durations, loop=loop, **opts)  # fmt: skip
+_KEPT: dict = {}  # a pool worker's scene, storyboard and settings (sent once, not per frame)
 
-    write_atomically(path, write)
-    return [path]
+
+def _keep_scene(scene, storyboard, settings) -> None:
+    _KEPT.update(scene=scene, storyboard=storyboard, settings=settings)
+
+
+def _kept_frame(t: float) -> tuple:
+    return render_frame(_KEPT["scene"], t, _KEPT["storyboard"], _KEPT["settings"])

@@ -1,9 +1,10 @@
 """Depth of field and stereo pairs: many ordinary renders through sheared cameras, combined.
 
-Pipeline step: around ``render_arrays``. The pinhole camera of the viewport becomes one
-``MatrixCamera`` per eye point (``xaml3d.scene.lens``); each is rendered as an ordinary scene
-(``dataclasses.replace`` of the viewport's camera: the loaded Scene is reused, never re-read),
-and the images are combined in LINEAR light with premultiplied alpha:
+Pipeline step: around one render (``xaml3d.render.rendering.draw_viewport``). The pinhole
+camera of the viewport becomes one ``MatrixCamera`` per eye point (``xaml3d.scene.lens``);
+each is rendered as an ordinary scene (``dataclasses.replace`` of the viewport's camera: the
+loaded Scene is reused, never re-read), and the images are combined in LINEAR light with
+premultiplied alpha:
 
 - depth of field: the mean of the lens samples (a box filter over the lens disk);
 - stereo: a left and a right eye (each itself a lens average when there is an aperture),
@@ -23,9 +24,10 @@ from dataclasses import replace
 import numpy as np
 
 from xaml3d.errors import ERROR, WARNING, Diagnostic, RenderError
+from xaml3d.render.draw import Shading
+from xaml3d.render.settings import FrameSize, RenderSettings
 from xaml3d.scene.lens import (
     STEREO_FRACTION,
-    STEREO_MODES,
     aperture_of_fstop,
     focal_length_of_fov,
     lens_frame,
@@ -88,28 +90,13 @@ def eye_offsets(aperture: float, samples: int, stereo: str | None, separation: f
     return [("left", disk - half), ("right", disk + half)]
 
 
-def render_through_lens(
-    vp,
-    width: int,
-    height: int,
-    draw,
-    *,
-    ids: bool = False,
-    aperture: float = 0.0,
-    focus: float | None = None,
-    fstop: float | None = None,
-    focal_length: float | None = None,
-    lens_samples: int = 24,
-    stereo: str | None = None,
-    eye_separation: float | None = None,
-    progress=None,
-    aspect: float | None = None,
-):
-    """Depth of field and/or a stereo pair of the viewport ``vp`` (module docstring).
+def render_through_lens(vp, size: FrameSize, settings: RenderSettings, draw, *, progress=None):
+    """Depth of field and/or a stereo pair of the viewport ``vp`` (module docstring), with the
+    lens of ``settings`` (``aperture`` or ``fstop`` with ``focal_length``, ``focus``,
+    ``lens_samples``, ``stereo``, ``eye_separation``, ``ids``).
 
     ``draw(viewport, shading, ids)`` renders one viewport (the pinhole's, or a copy whose camera
-    is a lens sample's) at ``width`` x ``height``, the size of ONE eye's image, and returns a
-    ``Rendering`` (``render_arrays`` gives it, with every other argument already checked).
+    is a lens sample's) at ``size``, the size of ONE eye's image, and returns a ``Rendering``.
     The scene is lit ONCE: the pinhole render fills a ``draw.Shading`` cache of lit colours
     that every sample reuses, so the lighting is the lens centre's (specular highlights are
     evaluated from the centre of the lens, as diffuse light is the same from every eye point).
@@ -118,19 +105,16 @@ def render_through_lens(
     ``Rendering`` whose rgba is the combined picture (side-by-side: 2W x H; over-under: W x 2H)
     and whose depth, distance and ids are the pinhole camera's. Raises RenderError (LNS001: not
     a PerspectiveCamera; RND005: bad argument)."""
-    from xaml3d.render.draw import Shading
-
-    if stereo is not None and stereo not in STEREO_MODES:
-        raise RenderError(
-            f"unknown stereo mode {stereo!r} (one of {', '.join(STEREO_MODES)})", code="RND005"
-        )
+    width, height, aspect = size.width, size.height, size.aspect
+    aperture, focus, fstop = settings.aperture, settings.focus, settings.fstop
+    stereo, eye_separation = settings.stereo, settings.eye_separation
     aperture = 0.0 if aperture is None else aperture
     if not (aperture >= 0 and np.isfinite(aperture)):
         raise RenderError(f"aperture must be finite and >= 0, got {aperture!r}", code="RND005")
     if not isinstance(vp.camera, PerspectiveCamera):
         lens_frame(vp.camera, width, height, focus)  # raises LNS001
     shading = Shading()
-    pinhole = draw(vp, shading, ids)
+    pinhole = draw(vp, shading, settings.ids)
     if any(d.severity == ERROR for d in pinhole.diagnostics):
         # a camera that cannot produce an image: WPF draws nothing; a pair keeps its shape
         if stereo in ("side-by-side", "over-under"):
@@ -141,7 +125,7 @@ def render_through_lens(
     if fstop is not None:
         if aperture:
             raise RenderError("give either aperture or fstop, not both", code="RND005")
-        focal = focal_length or focal_length_of_fov(float(vp.camera.field_of_view))
+        focal = settings.focal_length or focal_length_of_fov(float(vp.camera.field_of_view))
         aperture = aperture_of_fstop(fstop, focal)
     if eye_separation is None:
         eye_separation = frame.focus * STEREO_FRACTION
@@ -149,7 +133,7 @@ def render_through_lens(
         raise RenderError(
             f"eye separation must be finite and >= 0, got {eye_separation!r}", code="RND005"
         )
-    plan = eye_offsets(float(aperture), lens_samples, stereo, float(eye_separation))
+    plan = eye_offsets(float(aperture), settings.lens_samples, stereo, float(eye_separation))
     total = sum(len(offsets) for _, offsets in plan)
     done = blank = 0
     images = []

@@ -22,10 +22,18 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from xaml3d.animation.moment import scene_at
 from xaml3d.errors import CameraError, Diagnostic
 from xaml3d.render.clip import clip_segments
 from xaml3d.render.draw import make_context, prepare_model, side_fragments
 from xaml3d.render.frame import Framebuffer
+from xaml3d.render.settings import (
+    FrameSize,
+    RenderSettings,
+    check_limits,
+    frame_size,
+    settings_of,
+)
 from xaml3d.render.wireframe import (
     EDGE_CHUNK,
     _dilate_max,
@@ -33,6 +41,7 @@ from xaml3d.render.wireframe import (
     _model_color,
     unique_edges,
 )
+from xaml3d.scene.camera_math import camera_pipeline
 
 
 def _num(x: float) -> str:
@@ -89,24 +98,27 @@ def wireframe_svg(
     width: int | None = None,
     height: int | None = None,
     *,
-    viewport=None,
-    line_color=None,
-    line_width: float = 1.0,
-    ssaa: int = 2,
-    background=None,
-    max_size: int = 16384,
-    aspect: float | None = None,
+    settings: RenderSettings | None = None,
+    size: FrameSize | None = None,
+    **options,
 ) -> tuple[str, list[Diagnostic]]:
-    """The SVG document (text) of ``viewport``'s visible edges, and the diagnostics.
-    ``line_color``/``background`` straight RGBA (floats 0..1 or 0..255 ints); size and
-    ``aspect`` as ``render_arrays`` takes them."""
-    from xaml3d.render.api import _background, _resolve_size, _rgba
-    from xaml3d.scene.camera_math import camera_pipeline
-
-    vp = scene.viewport(viewport)
-    w, h = _resolve_size(vp, width, height, max_size)
-    if aspect is None and (width is None or height is None) and vp.width > 0 and vp.height > 0:
-        aspect = float(vp.width) / float(vp.height)  # as render_arrays: the size is rounded
+    """The SVG document (text) of the visible edges of ``settings.viewport``, and the
+    diagnostics. ``settings`` (or its fields as keyword arguments): ``line_color``,
+    ``line_width``, ``background``, ``ssaa`` (samples per pixel and side of the hidden-line
+    test, default 2), the size and ``time`` as for a raster render; ``size``: the picture's
+    size when the caller already has it (``frame_size``)."""
+    settings = settings_of(settings, width=width, height=height, **options)
+    scene = scene_at(scene, settings.time, settings.storyboard)
+    vp = scene.viewport(settings.viewport)
+    size = frame_size(vp, settings) if size is None else size
+    check_limits(size, settings)
+    w, h, aspect = size.width, size.height, size.aspect
+    ssaa = settings.ssaa or 2
+    background, line_color, line_width = (
+        settings.background,
+        settings.line_color,
+        settings.line_width,
+    )
     sw, sh = w * ssaa, h * ssaa
     diags: list[Diagnostic] = []
     head = (
@@ -114,7 +126,7 @@ def wireframe_svg(
     )
     lines = ['<?xml version="1.0" encoding="UTF-8"?>', head]
     if background is not None:
-        fill, alpha = _hex(_background(background))
+        fill, alpha = _hex(background)
         lines.append(f'<rect width="{w}" height="{h}" fill="{fill}" fill-opacity="{_num(alpha)}"/>')
     try:
         pipeline = camera_pipeline(vp.camera, sw, sh, bounds=vp.bounds(), aspect=aspect)
@@ -131,7 +143,7 @@ def wireframe_svg(
         for frag in side_fragments(pm, _drawn_triangles(pm), ctx, weights=False):
             fb.depth_only(frag.pixel, frag.depth)
     limit = _dilate_max(fb.depth, sw, sh, ssaa) + 1e-9
-    fixed = None if line_color is None else _rgba(line_color, "line_color")
+    fixed = line_color
     scale = np.array([sw / 2.0, -sh / 2.0])
     shift = np.array([sw / 2.0, sh / 2.0])
     for index, pm in prepared:

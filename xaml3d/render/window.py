@@ -7,7 +7,7 @@ Background (solid, gradient and image brushes, in the element's own coordinates:
 relative units refer to the element's box; a Border's Background fills, and maps to, the box
 inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
 and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
-ratio (``render_arrays``), composited over what lies beneath. 2D controls are not drawn;
+ratio (``render_scene``), composited over what lies beneath. 2D controls are not drawn;
 ``outline_controls`` draws a one-pixel outline of each control's layout box. Hidden and
 Collapsed elements and their content are left out. A pixel belongs to a box when its centre
 lies inside it.
@@ -19,9 +19,12 @@ import math
 
 import numpy as np
 
+from xaml3d.animation.moment import scene_at
 from xaml3d.errors import Diagnostic
 from xaml3d.render.brushes import sample_brush
 from xaml3d.render.frame import straight_uint8
+from xaml3d.render.pipeline import render_scene
+from xaml3d.render.settings import FrameSize, RenderSettings, settings_of
 from xaml3d.scene.boxes import BORDER, CONTROL, VIEWPORT, WINDOW, Box
 from xaml3d.scene.types import Scene, SolidColorBrush
 
@@ -87,21 +90,21 @@ def _outline(canvas: np.ndarray, rect) -> None:
 
 def compose_window(
     scene: Scene,
+    settings: RenderSettings | None = None,
     *,
-    mode: str = "shaded",
-    ssaa: int | None = None,
-    msaa: int | None = None,
-    background=None,
     outline_controls: bool = False,
-    time: float | None = 0.0,
-    storyboard: str | None = None,
+    **options,
 ) -> tuple[np.ndarray, list[Diagnostic]]:
     """(straight-alpha rgba uint8 (H, W, 4), diagnostics) of the scene's whole client area.
-    ``background`` (straight RGBA floats) fills the picture first (default transparent);
-    ``time``/``storyboard``: the moment drawn, as for ``render_arrays``."""
-    from xaml3d.render.api import render_arrays, scene_at
-
-    scene = scene_at(scene, time, storyboard)
+    ``settings`` (or its fields as keyword arguments): ``mode``, ``ssaa``/``msaa``, ``time``/
+    ``storyboard`` (the moment drawn) and ``background`` (fills the picture first; default
+    transparent), the same for every viewport; each viewport is drawn at its laid-out
+    rectangle (its size and exact aspect ratio replace the settings' own)."""
+    settings = settings_of(settings, **options)
+    scene = scene_at(scene, settings.time, settings.storyboard)
+    background = settings.background
+    each = settings.replace(background=None, time=None, storyboard=None, width=None, height=None,
+                            scale=None)  # fmt: skip
 
     result = scene.layout
     W = max(1, round(result.client[0]))
@@ -126,10 +129,11 @@ def compose_window(
         if b.kind == VIEWPORT:
             w, h = round(b.rect[2]), round(b.rect[3])
             if w >= 1 and h >= 1:
-                r = render_arrays(
-                    scene, w, h, viewport=b.viewport, mode=mode, ssaa=ssaa, msaa=msaa, time=None,
-                    aspect=b.rect[2] / b.rect[3],  # the exact laid-out aspect ratio
-                )  # fmt: skip
+                r = render_scene(
+                    scene,
+                    each.replace(viewport=b.viewport),
+                    size=FrameSize(w, h, b.rect[2] / b.rect[3]),  # the exact laid-out aspect
+                )
                 diags.extend(r.diagnostics)
                 premul = r.rgba.astype(np.float32) / 255.0
                 premul[..., :3] *= premul[..., 3:4]

@@ -1,0 +1,72 @@
+"""Progress of long work where no bar can be drawn (stderr not a terminal), and what
+``animate`` says up front."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner
+from test_cli_subprocess import xaml3d
+
+import xaml3d as api
+from xaml3d import cli_animate
+from xaml3d.cli_common import ProgressLines
+
+ROOT = Path(__file__).resolve().parent.parent
+SPIN = ROOT / "samples" / "spinning-cube.xaml"
+
+
+def test_progress_lines_every_few_seconds_with_an_estimate(capsys):
+    now = [100.0]
+    report = ProgressLines("s.xaml: animating", 10, clock=lambda: now[0])
+    for done, t in ((1, 101.0), (2, 104.0), (3, 106.0), (4, 111.0), (10, 200.0)):
+        now[0] = t
+        report(done)
+    assert capsys.readouterr().err.splitlines() == [
+        "s.xaml: animating: 3/10 frames, 6 s elapsed, about 14 s left",  # 5 s after the start
+        "s.xaml: animating: 4/10 frames, 11 s elapsed, about 16 s left",
+    ]  # the last frame says nothing: the run is over
+    long = ProgressLines("rendering", 400, "scenes", clock=lambda: now[0])
+    now[0] = 290.0
+    long(1)
+    assert capsys.readouterr().err == "rendering: 1/400 scenes, 1 min 30 s elapsed, about 598 " \
+        "min 30 s left\n"  # fmt: skip
+
+
+def test_animate_reports_progress_in_a_log(tmp_path, monkeypatch):
+    class Often(ProgressLines):  # a line after every frame instead of every 5 s
+        def __init__(self, *args, **kwargs):
+            super().__init__(*args, every=0.0, **kwargs)
+
+    monkeypatch.setattr(cli_animate, "ProgressLines", Often)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "spin.xaml").write_bytes(SPIN.read_bytes())
+    args = ["animate", "spin.xaml", "-o", "a.gif", "--fps", "10", "--duration", "0.4", "-W", "24",
+            "-j", "1"]  # fmt: skip
+    r = CliRunner().invoke(cli_animate.animate_command, args[1:])
+    assert r.exit_code == 0, r.output
+    lines = [s for s in r.stderr.splitlines() if "animating:" in s]
+    assert [s.split(",")[0] for s in lines] == [
+        "spin.xaml: animating: 1/4 frames",
+        "spin.xaml: animating: 2/4 frames",
+        "spin.xaml: animating: 3/4 frames",
+    ]
+    r = CliRunner().invoke(cli_animate.animate_command, [*args[1:], "-q"])
+    assert r.exit_code == 0 and r.stderr == ""  # -q: errors only
+
+
+def test_animate_says_the_frame_count_and_cycle_up_front(tmp_path):
+    once = api.load(SPIN).timeline.one_cycle()  # the cube turns for ever
+    cycle = f"repeats for ever, one iteration: {once:g} s"
+    head = f"animating 90 frames (3 s at 30 fps; {cycle})"
+    p = xaml3d("animate", SPIN, "-o", "a.gif", "--fps", "30", "--duration", "3", "-W", "8",
+               cwd=tmp_path)  # fmt: skip
+    assert p.returncode == 0, p.stderr
+    assert p.stderr.decode().splitlines()[0] == f"{SPIN}: {head}"
+    short = xaml3d("animate", SPIN, "-o", "b.gif", "--duration", "0.2", "-W", "8", cwd=tmp_path)
+    assert short.stderr == b""  # a short run says nothing ...
+    short = xaml3d("animate", SPIN, "-o", "b.gif", "--duration", "0.2", "-W", "8", "-v",
+                   cwd=tmp_path)  # fmt: skip
+    assert f"{SPIN}: animating 6 frames (0.2 s at 30 fps; {cycle})" in (
+        short.stderr.decode().splitlines()
+    )  # ... unless asked with -v

@@ -1,0 +1,90 @@
+"""The public API's functions (re-exported by ``xaml3d``): load, then render, then write.
+
+``render_arrays`` and ``render`` accept a Scene or the path of a XAML file (loaded here: the
+renderer itself takes a Scene only) and either a ``RenderSettings`` or its fields as keyword
+arguments; ``save_image`` writes a picture atomically (``xaml3d.output``).
+
+Size: the viewport's own size unless given. One of width/height given: the other follows the
+viewport's aspect ratio (rounded, at least 1). Both given: used as is, and the camera takes
+aspect = width / height, exactly as a resized WPF window does (``xaml3d.render.settings``).
+
+Time: the scene as it is ``time`` seconds after load (default 0: WPF's first frame, with the
+storyboards begun by Loaded triggers applied; ``storyboard`` names one more to begin at 0);
+``time=None`` draws the base values written in markup. ``scene_at`` gives that Scene itself.
+
+Background: the ``background`` argument (straight RGBA floats 0..1, or 0..255 ints) when given,
+else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, is not drawn).
+"""
+
+from __future__ import annotations
+
+from xaml3d.animation.moment import scene_at
+from xaml3d.errors import XamlError
+from xaml3d.output.images import flatten, save_image
+from xaml3d.render.pipeline import render_scene
+from xaml3d.render.rendering import Rendering
+from xaml3d.render.settings import MODES, RenderSettings, settings_of
+from xaml3d.scene.types import Scene
+from xaml3d.xaml import loader
+
+__all__ = [
+    "MODES",
+    "RenderSettings",
+    "Rendering",
+    "flatten",
+    "render",
+    "render_arrays",
+    "save_image",
+    "scene_at",
+    "settings_of",
+]
+
+
+def render_arrays(
+    scene_or_path,
+    width: int | None = None,
+    height: int | None = None,
+    *,
+    settings: RenderSettings | None = None,
+    resources=(),
+    progress=None,
+    **options,
+) -> Rendering:
+    """Render one viewport of a Scene (or of the XAML file at a path) to arrays.
+
+    ``settings``: a ``RenderSettings``; any of its fields may also be given as keyword
+    arguments (they override it): ``viewport``, ``mode`` ("shaded" (WPF), "flat" (per-face
+    lighting) or "wireframe"), ``background``, anti-aliasing ``msaa`` 1..4 samples per side
+    with coverage and depth per sample but shading once per pixel per triangle (multisampling,
+    WPF's hardware way; the default is msaa 2 for shaded and flat) or ``ssaa`` 1..4 samples per
+    side each shaded (supersampling; wireframe's default is ssaa 1; giving ``ssaa`` alone
+    turns multisampling off; both above 1 is an error), ``hidden_lines`` (False hides occluded
+    wireframe edges), ``line_color``, ``line_width`` (output pixels), ``antialias_lines``,
+    ``scale``, ``aspect`` (the projection's aspect ratio; default: the viewport's exact,
+    possibly fractional, laid-out size when width or height is left to it, else the image's
+    width / height), ``max_size``, ``time``/``storyboard`` (see ``scene_at``), the lens and
+    stereo (docs/lens.md): ``aperture`` (lens radius, scene units; 0 = pinhole, the ordinary
+    image bit for bit), ``focus``, or ``fstop`` with ``focal_length`` instead of ``aperture``,
+    ``lens_samples`` (1..4096), ``stereo`` ("anaglyph", "side-by-side", "over-under"),
+    ``eye_separation``, and ``ids=True`` to fill ``Rendering.ids``. Colours are 3 (RGB, alpha
+    1) or 4 (straight RGBA) numbers in 0..1, or in 0..255 when any is above 1.
+    ``resources``: dictionaries read with a path; ``progress(done, total)`` is called after
+    each lens sample render.
+    Raises RenderError (RND001 size limits, RND005 bad arguments, LNS001 lens or stereo
+    without a PerspectiveCamera), CameraError CAM010 (an empty viewport without a size) and
+    SceneError."""
+    if isinstance(scene_or_path, Scene):
+        scene = scene_or_path
+    else:  # looked up at call time: the loader may be wrapped (a cache, a test's counter)
+        scene = loader.load(scene_or_path, resources=resources)
+    try:
+        chosen = settings_of(settings, width=width, height=height, **options)
+    except XamlError as exc:  # an argument refused for this scene: name its file
+        exc.with_location(file=scene.file)
+        raise
+    return render_scene(scene, chosen, progress=progress)
+
+
+def render(scene_or_path, width: int | None = None, height: int | None = None, **options):
+    """Same arguments as ``render_arrays``; returns a Pillow RGBA image."""
+    return render_arrays(scene_or_path, width, height, **options).image()

@@ -1,0 +1,103 @@
+"""One pass of the pipeline (camera-pipeline.md section 6) over one viewport, and its result.
+
+``draw_viewport`` draws the viewport's models (shaded, flat or wireframe) through its camera
+on the sample grid of the settings, resolves the samples and returns a ``Rendering``: straight
+RGBA, the depth buffer, the eye-space distances and the render's diagnostics. It is the step
+every picture is made of: the ordinary render, each lens sample, the model-id render.
+
+Depth in ``Rendering.depth`` is WPF's normalized device depth z_ndc = -z' (0 on the near plane,
+1 on the (effective) far plane; non-linear in distance for perspective cameras), the nearest
+sample of each supersampling block, +inf where nothing was drawn.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic
+from xaml3d.render import accel
+from xaml3d.render.distance import eye_depth
+from xaml3d.render.draw import draw_viewport_models, make_context
+from xaml3d.render.frame import Framebuffer
+from xaml3d.render.settings import FrameSize, RenderSettings
+from xaml3d.render.wireframe import draw_wireframe
+from xaml3d.scene.camera_math import camera_pipeline
+from xaml3d.scene.types import Scene
+
+
+@dataclass
+class Rendering:
+    """The result of a render: straight-alpha rgba (H, W, 4) uint8, depth (H, W)
+    float64 (z_ndc, +inf where empty), the size, and the diagnostics of the render.
+    ``distance``: (H, W) float32 linear eye-space depth (distance from the eye plane along the
+    look direction, NaN where empty; ``xaml3d.render.distance``); ``ids``: (H, W) int32 index
+    of the model drawn at each pixel, -1 where none (only when asked for with ``ids=True``).
+    With a stereo pair, depth, distance and ids are the pinhole (centre) camera's."""
+
+    rgba: np.ndarray
+    depth: np.ndarray
+    width: int
+    height: int
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    distance: np.ndarray | None = None
+    ids: np.ndarray | None = None
+
+    def image(self):
+        # Pillow only when a picture is asked for: the arrays need none of it
+        from PIL import Image
+
+        return Image.fromarray(self.rgba, mode="RGBA")
+
+
+def draw_viewport(
+    scene: Scene,
+    vp,
+    size: FrameSize,
+    settings: RenderSettings,
+    *,
+    shading=None,
+    bounds=False,
+    nearest: bool = False,
+) -> Rendering:
+    """One render of the viewport ``vp`` (its camera may be a lens sample's) at ``size``.
+    ``shading``: a ``draw.Shading`` cache of lit colours to fill or reuse (the lens lights once
+    for all its samples); ``bounds``: ``vp.bounds()`` when the caller already has it;
+    ``nearest``: each pixel takes its nearest sample's colour instead of the average (the
+    model-id render)."""
+    w, h, grid = size.width, size.height, settings.grid
+    diags: list[Diagnostic] = []
+    sw, sh = w * grid, h * grid
+    accel.begin_frame()
+    fb = Framebuffer(sw, sh, settings.fill)
+    ctx = make_context(sw, sh, settings.effective_msaa)
+    try:
+        if bounds is False:
+            bounds = vp.bounds()
+        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=bounds, aspect=size.aspect)
+    except CameraError as exc:
+        exc.with_location(file=scene.file)
+        diags.append(exc.as_diagnostic())
+        pipeline = None
+    if pipeline is not None:
+        if settings.mode == "wireframe":
+            draw_wireframe(fb, vp, pipeline, ctx, settings.line_color, grid, settings.hidden_lines,
+                           settings.antialias_lines, settings.line_width)  # fmt: skip
+        else:
+            draw_viewport_models(fb, vp, pipeline, ctx, settings.mode, shading)
+    for d in ctx.diagnostics:
+        diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
+                                                 d.line, d.column))  # fmt: skip
+    if fb.fragments_drawn == 0 and pipeline is not None:  # a camera error says why already
+        if vp.models:
+            msg = "nothing was drawn in the image"
+            diags.append(Diagnostic("RND002", WARNING, msg, scene.file))
+        else:
+            msg = "the viewport holds no models: nothing to draw"
+            diags.append(Diagnostic("RND003", INFO, msg, scene.file))
+    rgba, depth = fb.resolve(grid, nearest=nearest)
+    result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
+    if pipeline is not None:
+        result.distance = eye_depth(depth, pipeline)
+    return result
