@@ -150,3 +150,17 @@ def test_a_killed_render_batch_leaves_no_worker_and_no_temporary(tmp_path):
     assert _gone(kids), "workers outlived their killed parent"
     left = [n for n in os.listdir(out) if n.startswith(".")]
     assert left == []  # finished images may be there, whole; no temporary
+
+
+def test_render_batch_in_order_on_an_executor_and_in_workers():
+    cube = ROOT / "samples" / "cube.xaml"
+    items = [str(cube), xaml3d.load(SPIN), str(cube)]
+    serial = list(xaml3d.render_batch(items, width=40, ssaa=1))
+    assert [r.width for r in serial] == [40, 40, 40]
+    with ThreadPoolExecutor(2) as pool:
+        pooled = list(xaml3d.render_batch(items, width=40, ssaa=1, executor=pool))
+    workers = list(xaml3d.render_batch(items, xaml3d.RenderSettings(width=40, ssaa=1), jobs=2))
+    for a, b, c in zip(serial, pooled, workers, strict=True):
+        assert np.array_equal(a.rgba, b.rgba) and np.array_equal(a.rgba, c.rgba)
+    assert np.array_equal(serial[0].rgba, serial[2].rgba)
+    assert not np.array_equal(serial[0].rgba, serial[1].rgba)

@@ -11,6 +11,7 @@ Public API::
     image = xaml3d.render(scene, time=1.5)      # 1.5 s after load (default 0: WPF's first frame)
     frame = xaml3d.scene_at(scene, 1.5)         # -> the Scene at that moment
     for t, r in xaml3d.render_frames(scene, xaml3d.frame_times(0, 2, 30)): ...
+    for r in xaml3d.render_batch(["a.xaml", "b.xaml"], width=320, executor=pool): ...
     xaml3d.save_animation(rgba_frames, "spin.gif", total_seconds)
     notes = xaml3d.export(scene, "scene.glb")   # also .gltf .obj .stl .html -> [Diagnostic]
 """
@@ -28,6 +29,7 @@ from xaml3d.api import (
     RenderSettings,
     render,
     render_arrays,
+    render_batch,
     save_image,
     scene_at,
 )
@@ -48,6 +50,7 @@ __all__ = [
     "load",
     "render",
     "render_arrays",
+    "render_batch",
     "render_frames",
     "save_animation",
     "save_image",

@@ -18,12 +18,15 @@ else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, 
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from xaml3d.animation.moment import scene_at
 from xaml3d.errors import XamlError
 from xaml3d.output.images import flatten, save_image
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.rendering import Rendering
 from xaml3d.render.settings import MODES, RenderSettings, settings_of
+from xaml3d.render.workers import ordered, worker_pool
 from xaml3d.scene.types import Scene
 from xaml3d.xaml import loader
 
@@ -34,6 +37,7 @@ __all__ = [
     "flatten",
     "render",
     "render_arrays",
+    "render_batch",
     "save_image",
     "scene_at",
     "settings_of",
@@ -83,6 +87,51 @@ def render_arrays(
         exc.with_location(file=scene.file)
         raise
     return render_scene(scene, chosen, progress=progress)
+
+
+def render_batch(
+    items,
+    settings: RenderSettings | None = None,
+    *,
+    executor=None,
+    jobs: int = 1,
+    resources=(),
+    **options,
+) -> Iterator[Rendering]:
+    """The ``Rendering`` of each Scene or XAML path of ``items``, in order, with the same
+    settings (``settings`` and/or its fields as keyword arguments). ``executor``: any
+    ``concurrent.futures.Executor`` (a path is read where it is rendered, a Scene is sent
+    as it is); else ``jobs`` > 1 uses the package's worker processes
+    (``xaml3d.render.workers``), as ``render_frames`` does. Results come as they are done, in
+    order, a few in flight at most. Raises the first item's error (XamlError) when it is
+    reached."""
+    chosen = settings_of(settings, **options)
+    todo = [(item, chosen, tuple(resources)) for item in items]
+    if executor is not None:
+        yield from ordered(executor, _render_item, todo)
+    elif jobs > 1 and len(todo) > 1:
+        # the items go to each worker once, at its start (forked workers inherit them: a
+        # Scene whose storyboards keep the reader's state need not be picklable)
+        with worker_pool(min(int(jobs), len(todo)), _keep_items, (todo,)) as pool:
+            yield from ordered(pool, _render_kept, [(i,) for i in range(len(todo))])
+    else:
+        for args in todo:
+            yield _render_item(*args)
+
+
+def _render_item(item, settings: RenderSettings, resources) -> Rendering:
+    return render_arrays(item, settings=settings, resources=resources)
+
+
+_KEPT: list = []  # a pool worker's batch (see render_batch)
+
+
+def _keep_items(todo) -> None:
+    _KEPT[:] = todo
+
+
+def _render_kept(i: int) -> Rendering:
+    return _render_item(*_KEPT[i])
 
 
 def render(scene_or_path, width: int | None = None, height: int | None = None, **options):

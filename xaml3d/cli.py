@@ -10,6 +10,7 @@ could not be handled, 2 usage error.
 from __future__ import annotations
 
 import click
+import numpy as np
 
 from xaml3d import __version__
 from xaml3d.cli_animate import animate_command
@@ -38,8 +39,6 @@ Run xaml3d COMMAND --help for each command's options.
 @click.version_option(__version__, prog_name="xaml3d")
 @click.pass_context
 def main(ctx: click.Context) -> None:
-    import numpy as np
-
     # Numerical trouble in a scene is reported as diagnostics (CAM, MSH, RND codes); numpy's own
     # RuntimeWarnings would only add source lines to stderr, which holds diagnostics alone.
     ctx.with_resource(np.errstate(all="ignore"))

@@ -29,7 +29,8 @@ from xaml3d.cli_common import (
     window_size_option,
 )
 from xaml3d.errors import XamlError
-from xaml3d.findings import has_errors, scene_findings
+from xaml3d.export import FORMATS, export
+from xaml3d.findings import has_errors, scene_findings, with_file
 from xaml3d.findings import lenient as lenient_findings
 
 SUFFIXES = {"glb": ".glb", "gltf": ".gltf", "obj": ".obj", "stl": ".stl", "html": ".html"}
@@ -40,7 +41,6 @@ def _is_dir_target(output: str) -> bool:
 
 
 def _plan(scenes, output: str, fmt: str | None) -> list[tuple[str, Path]]:
-    from xaml3d.export import FORMATS
 
     if "-" in scenes and scenes.count("-") > 1:
         raise click.UsageError("stdin ('-') can be read only once")
@@ -78,7 +78,6 @@ class _Progress:
 
 
 def _export_one(source: str, target: Path, opts: dict) -> bool:
-    from xaml3d.export import export
 
     name = "<stdin>" if source == "-" else source
     if source != "-" and same_file(Path(source), target):
@@ -110,7 +109,6 @@ def _export_one(source: str, target: Path, opts: dict) -> bool:
         finally:
             progress.close()
         file = scene.file or name
-        from xaml3d.findings import with_file
 
         echo_diagnostics([*findings, *(with_file(d, file) for d in notes)],
                          quiet=opts["quiet"], verbose=opts["verbose"])  # fmt: skip

@@ -18,7 +18,11 @@ from pathlib import Path
 
 import numpy as np
 
+from xaml3d.api import render_arrays, scene_at
 from xaml3d.errors import ERROR, WARNING, Diagnostic, XamlError
+from xaml3d.findings import has_errors, scene_findings
+from xaml3d.render.window import compose_window
+from xaml3d.xaml.loader import load
 
 MODES = ("shaded", "flat", "wireframe")
 
@@ -81,9 +85,6 @@ def run_file(
 ) -> FileResult:
     """Load and render one file in every mode (and, with ``window``, as ``render --window``
     when its root is a Window, Page or UserControl); never raises for a XamlError."""
-    from xaml3d.api import render_arrays, scene_at
-    from xaml3d.findings import has_errors, scene_findings
-    from xaml3d.xaml.loader import load
 
     result = FileResult(name=path.name, status="refused")
     t0 = time.perf_counter()
@@ -145,7 +146,6 @@ def is_window_root(scene) -> bool:
 
 def window_check(scene, ssaa: int | None = None) -> str:
     """``render --window`` of the scene: "ok" or the error it stops with."""
-    from xaml3d.render.window import compose_window
 
     try:
         compose_window(scene, ssaa=ssaa)

@@ -13,6 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 
 from xaml3d.errors import ERROR, SEVERITIES, WARNING, Diagnostic
+from xaml3d.scene.camera_check import check_camera
+from xaml3d.scene.checks import check_scene
 from xaml3d.scene.types import Scene, Viewport
 
 SizeOf = Callable[[Viewport], tuple[float, float]]
@@ -39,8 +41,6 @@ def scene_findings(
     did not say, sorted by position; ``size_of(viewport)`` gives the size a camera is checked
     at (default: the viewport's own); ``storyboard``: the one ``--storyboard`` begins (see
     ``begun_by_name``)."""
-    from xaml3d.scene.camera_check import check_camera
-    from xaml3d.scene.checks import check_scene
 
     found: list[Diagnostic] = begun_by_name(scene.diagnostics, scene, storyboard)
     for vp in scene.viewports:

@@ -13,8 +13,9 @@ natural duration is the latest end of its children (Forever when one of them nev
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
+from xaml3d.animation.keyframes import natural_key_frame_duration
 from xaml3d.scene.types import Animation, TimelineGroup, Timing
 
 FROM_TO_NATURAL = 1.0  # WPF: a From/To/By animation with Duration Automatic lasts one second
@@ -122,8 +123,6 @@ def natural_duration(node: TimelineGroup | Animation) -> float:
         ends = [e for e in ends if e is not None]
         return max(ends, default=0.0)
     if node.key_frames:
-        from xaml3d.animation.keyframes import natural_key_frame_duration
-
         return natural_key_frame_duration(node.key_frames)
     return FROM_TO_NATURAL
 
@@ -154,8 +153,6 @@ def _walk(node, parent_time: float | None, out: list) -> None:
 
 def _once(node):
     """The tree with every RepeatBehavior Forever counted as one iteration."""
-    from dataclasses import replace
-
     if isinstance(node, TimelineGroup):
         timing = node.timing
         if timing.repeat_behavior == "Forever":

@@ -17,6 +17,7 @@ from xaml3d.animation import interpolate as I
 from xaml3d.animation.clock import ClockState, iteration_duration, natural_duration
 from xaml3d.animation.easing import ease
 from xaml3d.animation.keyframes import key_frame_value
+from xaml3d.animation.path import point_at_fraction
 from xaml3d.scene.types import Animation
 
 
@@ -67,7 +68,6 @@ def animation_value(anim: Animation, state: ClockState | None, base):
 def _path_value(anim: Animation, state: ClockState, base):
     """*AnimationUsingPath: the point (or its X, Y, tangent Angle) at the clock's progress of
     the path's length; IsCumulative adds (end - start) per finished iteration."""
-    from xaml3d.animation.path import point_at_fraction
 
     def at(f: float):
         x, y, angle = point_at_fraction(anim.path, f)

@@ -12,6 +12,13 @@ from pathlib import Path
 
 from xaml3d.errors import Diagnostic, RenderError, XamlError
 from xaml3d.export.codes import EXPORT_CODES, diag
+from xaml3d.export.gltf_animation import add_animation, sample
+from xaml3d.export.gltf_scene import ViewportExport
+from xaml3d.export.html import page
+from xaml3d.export.obj import obj_files
+from xaml3d.export.stl import stl_bytes
+from xaml3d.export.timeline import clip_of
+from xaml3d.render.atomic import together, write_atomically
 
 FORMATS = {".glb": "glb", ".gltf": "gltf", ".obj": "obj", ".stl": "stl", ".html": "html",
            ".htm": "html"}  # fmt: skip
@@ -47,7 +54,6 @@ def export_bytes(
 ) -> tuple[dict, list]:
     """{file suffix or '' -> bytes} of the export of ``scene`` as ``fmt`` and its diagnostics;
     the '' entry is the main file (OBJ adds '.mtl')."""
-    from xaml3d.export.timeline import clip_of
 
     diagnostics: list[Diagnostic] = []
     clip = clip_of(scene, storyboard)
@@ -59,24 +65,17 @@ def export_bytes(
             return {"": doc.glb()}, diagnostics
         if fmt == "gltf":
             return {"": doc.gltf_text()}, diagnostics
-        from xaml3d.export.html import page
 
         return {"": page(start, vp, doc.glb(), exporter)}, diagnostics
     if fmt == "obj":
-        from xaml3d.export.obj import obj_files
-
         return obj_files(start, vp, diagnostics, animated=clip is not None, stem=stem), diagnostics
     if fmt == "stl":
-        from xaml3d.export.stl import stl_bytes
-
         return {"": stl_bytes(start, vp, diagnostics, animated=clip is not None)}, diagnostics
     raise ExportError(f"unknown export format {fmt!r}", code="EXP001")
 
 
 def build_gltf(scene, vp, clip, diagnostics: list, progress=None):
     """(Document, ViewportExport) of one viewport, with its animation when ``clip``."""
-    from xaml3d.export.gltf_animation import add_animation, sample
-    from xaml3d.export.gltf_scene import ViewportExport
 
     sampled = None if clip is None else sample(clip, vp.index, progress)
     exporter = ViewportExport(scene, vp, diagnostics, None if sampled is None else sampled[1])
@@ -98,7 +97,6 @@ def export(
     export (an OBJ's .mtl too) is written, or none is. ExportError EXP001 for an unknown format,
     EXP002 when a file cannot be written. ``progress(done, total)`` is called as the animation
     is sampled."""
-    from xaml3d.render.atomic import together, write_atomically
 
     path = Path(path)
     fmt = fmt or format_of(path)

@@ -15,6 +15,7 @@ import json
 import struct
 
 import numpy as np
+from PIL import Image
 
 FLOAT, UINT32, UINT16 = 5126, 5125, 5123
 ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
@@ -75,7 +76,6 @@ class Document:
 
     def image_png(self, rgba: np.ndarray) -> int:
         """A PNG image (from an (H, W, 4) uint8 array) stored in the buffer; its image index."""
-        from PIL import Image
 
         out = io.BytesIO()
         Image.fromarray(np.ascontiguousarray(rgba), mode="RGBA").save(out, format="PNG")

@@ -20,7 +20,7 @@ from xaml3d.export import trs
 from xaml3d.export.codes import diag
 from xaml3d.export.gltf_camera import gltf_camera
 from xaml3d.export.gltf_document import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, Document
-from xaml3d.export.gltf_materials import Materials, srgb_to_linear
+from xaml3d.export.gltf_materials import Materials, bake_for, srgb_to_linear
 from xaml3d.scene.types import AmbientLight, DirectionalLight, PointLight, SpotLight
 
 GENERATOR = "xaml3d"
@@ -158,8 +158,6 @@ class ViewportExport:
             flipped = self.doc.accessor((-nrm).astype(np.float32), target=ARRAY_BUFFER)
             uv = None
             if front.textured or back.textured:
-                from xaml3d.export.gltf_materials import bake_for
-
                 bake = bake_for(tc, [])
                 uv = self.doc.accessor(bake.texcoords(tc), target=ARRAY_BUFFER)
             cached = (store, flipped, uv, self._indices(tri, pos.shape[0]),

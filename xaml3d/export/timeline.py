@@ -12,6 +12,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from xaml3d.errors import SceneError
 from xaml3d.scene.types import Scene
 
 ENDLESS_SECONDS = 10.0  # how much of an animation that never ends is exported
@@ -34,8 +35,6 @@ def clip_of(scene: Scene, storyboard: str | None = None) -> Clip | None:
     timeline = scene.timeline
     if timeline is None:
         if storyboard is not None:
-            from xaml3d.errors import SceneError
-
             raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
                              code="ANIM010", file=scene.file)  # fmt: skip
         return None

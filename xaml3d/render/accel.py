@@ -79,6 +79,7 @@ def _load(required: bool) -> None:
         return
     set_cache_dir()
     try:
+        # numba is imported here, only for a frame big enough to pay for its start-up
         from xaml3d.render import kernels
     except ImportError:
         _failed = True

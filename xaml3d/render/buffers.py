@@ -14,6 +14,8 @@ from __future__ import annotations
 import io
 
 import numpy as np
+from PIL import Image
+from PIL.PngImagePlugin import PngInfo
 
 from xaml3d.render.atomic import write_atomically
 from xaml3d.render.distance import eye_depth  # noqa: F401 (this module's interface)
@@ -43,8 +45,6 @@ def depth_png(distance: np.ndarray) -> tuple[bytes, str]:
     """16-bit greyscale PNG of eye distances: value = round((d - near) / (far - near) * 65534)
     over the drawn range [near, far] (all 0 when near == far), 65535 where nothing was drawn.
     Returns the PNG bytes and the legend written in its tEXt chunk ``xaml3d:depth``."""
-    from PIL import Image
-    from PIL.PngImagePlugin import PngInfo
 
     d = np.asarray(distance, dtype=np.float64)
     rng = depth_range(d)
@@ -94,8 +94,6 @@ def _palette(n: int) -> np.ndarray:
 def ids_png(ids: np.ndarray, names) -> bytes:
     """PNG of model ids (module docstring); the tEXt chunk ``xaml3d:ids`` lists
     ``value=model index:name`` for every model."""
-    from PIL import Image
-    from PIL.PngImagePlugin import PngInfo
 
     n = len(names)
     legend = "; ".join(f"{i + 1}={i}:{name or ''}" for i, name in enumerate(names))

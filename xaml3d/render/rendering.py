@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from PIL import Image
 
 from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic
 from xaml3d.render import accel
@@ -45,8 +46,6 @@ class Rendering:
     ids: np.ndarray | None = None
 
     def image(self):
-        # Pillow only when a picture is asked for: the arrays need none of it
-        from PIL import Image
 
         return Image.fromarray(self.rgba, mode="RGBA")
 

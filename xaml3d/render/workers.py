@@ -21,8 +21,6 @@ is called for every result that was computed but never yielded.
 
 from __future__ import annotations
 
-import ctypes
-import multiprocessing
 import os
 import signal
 import sys
@@ -30,9 +28,12 @@ import threading
 import time
 from collections import deque
 from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import Executor, ProcessPoolExecutor
+from typing import TYPE_CHECKING
 
 from xaml3d.render import atomic
+
+if TYPE_CHECKING:
+    from concurrent.futures import Executor, ProcessPoolExecutor
 
 PR_SET_PDEATHSIG = 1  # linux/prctl.h
 IN_FLIGHT_PER_WORKER = 2  # tasks queued per worker: it never waits, the parent holds little
@@ -46,11 +47,17 @@ def default_jobs() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+def _clean_if_orphaned() -> None:
+    """The parent is gone (not a pool's own shutdown): remove the temporaries of the run."""
+    if _PARENT is not None and os.getppid() != _PARENT[0]:
+        atomic.remove_temporaries(os.getpid())
+        atomic.remove_temporaries(_PARENT[0], _PARENT[1])
+
+
 def _leave(*_args) -> None:
     """The parent is gone: remove the temporaries of this run, then exit at once."""
     atomic.remove_temporaries(os.getpid())
-    if _PARENT is not None and os.getppid() != _PARENT[0]:  # not a pool's own shutdown
-        atomic.remove_temporaries(_PARENT[0], _PARENT[1])
+    _clean_if_orphaned()
     os._exit(1)
 
 
@@ -66,10 +73,17 @@ def _watch(parent: int) -> None:
 def _start_worker(parent: int, folders, initializer, initargs) -> None:
     global _PARENT
     _PARENT = (parent, tuple(folders))
+    # The parent's death also closes the pipe the worker reads its tasks from: a worker that
+    # sees that first ends with an error before the signal arrives, and cleans up on its way out
+    from multiprocessing import util
+
+    util.Finalize(None, _clean_if_orphaned, exitpriority=100)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, _leave)
     watched = False
     if sys.platform.startswith("linux"):
+        import ctypes  # in a worker only, and only where prctl exists
+
         try:
             libc = ctypes.CDLL(None, use_errno=True)
             watched = libc.prctl(PR_SET_PDEATHSIG, signal.SIGTERM, 0, 0, 0) == 0
@@ -93,6 +107,10 @@ def worker_pool(
     """A pool of ``workers`` processes (module docstring); ``initializer(*initargs)`` runs in
     each. ``folders``: where the parent writes temporaries during the run (they are removed
     by the workers should the parent be killed)."""
+    # Imported here: a single render (the common, small case) never pays for them.
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
     methods = multiprocessing.get_all_start_methods()
     ctx = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
     return ProcessPoolExecutor(

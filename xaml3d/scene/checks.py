@@ -16,6 +16,7 @@ import numpy as np
 
 from xaml3d.codes.checks import CHECK_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import CameraError, Diagnostic, GeometryError
+from xaml3d.scene.camera_math import camera_pipeline
 from xaml3d.scene.types import (
     AmbientLight,
     DiffuseMaterial,
@@ -204,7 +205,6 @@ def _check_visibility(vp: Viewport, file: str | None) -> list[Diagnostic]:
     points = world_vertices(vp)
     if vp.camera is None or points.shape[0] == 0:
         return []
-    from xaml3d.scene.camera_math import camera_pipeline
 
     bounds = vp.bounds()
     if bounds is None:  # every vertex is non-finite in world space: nothing can be seen

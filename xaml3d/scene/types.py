@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from xaml3d.errors import Diagnostic
+from xaml3d.errors import Diagnostic, SceneError
 
 RGBA = tuple[float, float, float, float]
 Vec3 = tuple[float, float, float]
@@ -526,7 +526,6 @@ class Scene:
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""
-        from xaml3d.errors import SceneError
 
         if not self.viewports:
             raise SceneError("the document holds no Viewport3D", code="SCN001", file=self.file)

@@ -25,6 +25,7 @@ from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, Timeline
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import a_an, element_name, qname, x_attr
 from xaml3d.xaml.models_reader import rotation, rotation_as_quaternion
+from xaml3d.xaml.path_data import parse_path_figures
 
 _CONVERTERS = {
     "Double": V.parse_double,
@@ -205,7 +206,6 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
 
 def _path(r, p) -> tuple[tuple | None, str]:
     """PathGeometry (its Figures string) and Source of an *AnimationUsingPath."""
-    from xaml3d.xaml.path_data import parse_path_figures
 
     def build(el):
         gp = r.props(el)

@@ -25,6 +25,7 @@ from xaml3d.animation.evaluate import animation_value
 from xaml3d.errors import Diagnostic, SceneError
 from xaml3d.scene.types import Animation, Scene, Storyboard
 from xaml3d.xaml.animation_targets import ANIM_CODES, Target, TargetError, name_map, resolve
+from xaml3d.xaml.builder import Reader
 from xaml3d.xaml.models_reader import rotation_as_quaternion
 
 
@@ -82,8 +83,6 @@ class SceneTimeline:
         self.targets: dict[int, Target | None] = {}
         self.diagnostics: list[Diagnostic] = []
         self._cache: dict = {}
-        from xaml3d.xaml.builder import Reader
-
         r = Reader(ctx, resources)
         names = name_map(doc.root)
         mark = len(ctx.diagnostics)

@@ -15,6 +15,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+from PIL import Image
 
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import (
@@ -215,8 +216,6 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
         path = alt
     r.ctx.images_used.append(str(path))
     try:
-        from PIL import Image
-
         with Image.open(path) as im:
             arr = np.asarray(im.convert("RGBA"), dtype=np.uint8)
     except Exception as exc:  # Pillow raises many kinds for a corrupt or unknown file

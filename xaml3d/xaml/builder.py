@@ -45,6 +45,7 @@ from xaml3d.xaml.parser import PRESENTATION_NS, XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resources import Resources
 from xaml3d.xaml.styles_check import check_styles
+from xaml3d.xaml.values import parse_bool
 
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
@@ -232,8 +233,6 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
         r.ctx.diag("SCN004", "no Camera: WPF's default PerspectiveCamera is used", el)
 
     background = lay.background
-
-    from xaml3d.xaml.values import parse_bool
 
     acc = _Acc()
     for k in p.items("Children"):

@@ -11,9 +11,12 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable
+from dataclasses import replace
+from functools import partial
 from pathlib import Path
 
 from xaml3d.scene.types import Scene
+from xaml3d.xaml.animation_scene import SceneTimeline
 from xaml3d.xaml.builder import build_scene
 from xaml3d.xaml.context import ReadContext
 from xaml3d.xaml.parser import Limits, parse_document
@@ -56,11 +59,6 @@ def load(
     scene = build_scene(ctx, res, doc, window_size)
     if not scene.storyboards:
         return scene
-    from dataclasses import replace
-    from functools import partial
-
-    from xaml3d.xaml.animation_scene import SceneTimeline
-
     timeline = SceneTimeline(ctx, res, doc, scene, partial(build_scene, window_size=window_size))
     diags = sorted(
         (*scene.diagnostics, *timeline.diagnostics),

@@ -18,6 +18,7 @@ import numpy as np
 
 from xaml3d.errors import GeometryError
 from xaml3d.scene import transforms as T
+from xaml3d.scene.mesh import build_mesh
 from xaml3d.scene.types import (
     AmbientLight,
     DirectionalLight,
@@ -172,7 +173,6 @@ def _mesh_locator(r, el, p):
 
 def mesh(r, el):
     """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types)."""
-    from xaml3d.scene.mesh import build_mesh
 
     hit = r.cache.get(("mesh", id(el))) if r.cache is not None else None
     if hit is not None and hit[0] is el:

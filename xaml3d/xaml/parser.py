@@ -25,7 +25,7 @@ from pathlib import Path
 from lxml import etree
 
 from xaml3d.errors import XamlSyntaxError
-from xaml3d.xaml.source_map import SourceMap
+from xaml3d.xaml.source_map import SourceMap, decode_source
 
 PRESENTATION_NS = "http://schemas.microsoft.com/winfx/2006/xaml/presentation"
 PRESENTATION_NS_2007 = "http://schemas.microsoft.com/netfx/2007/xaml/presentation"
@@ -198,7 +198,6 @@ def _error_column(data: bytes, line: int, col: int, msg: str) -> int:
     stopped reading: after the ``>`` of a mismatched end tag (one past the end of its line when
     the tag ends the line), so such an error is put at that end tag's ``<``; any column is kept
     within the line (its length + 1 at most, the place of a missing character at its end)."""
-    from xaml3d.xaml.source_map import decode_source
 
     lines = decode_source(data).split("\n")
     if not 1 <= line <= len(lines):
