@@ -59,8 +59,8 @@ from xaml3d.errors import ERROR, CameraError, Diagnostic, XamlError
 from xaml3d.findings import begun_by_name, has_errors, scene_findings
 from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.animation import frame_names, save_animation
+from xaml3d.output.gif_matte import frames_for_gif
 from xaml3d.render import frames as frames_module
-from xaml3d.render.gif_matte import frames_for_gif
 from xaml3d.render.settings import RenderSettings
 from xaml3d.render.workers import default_jobs
 

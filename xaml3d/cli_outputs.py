@@ -25,8 +25,8 @@ import click
 from xaml3d.cli_common import same_file
 from xaml3d.codes.outputs import OUTPUT_CODES  # noqa: F401 (the stage's table)
 from xaml3d.output.animation import ANIMATED_FORMATS, FRAME_FILE
+from xaml3d.output.atomic import Staged, together
 from xaml3d.output.images import save_image
-from xaml3d.render.atomic import Staged, together
 
 
 def animation_target(output: str) -> bool:

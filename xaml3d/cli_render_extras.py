@@ -20,7 +20,7 @@ import numpy as np
 from xaml3d.cli_common import FiniteFloat, output_path, parse_background, warn_option
 from xaml3d.cli_outputs import _resolved
 from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
-from xaml3d.render.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
+from xaml3d.output.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
 from xaml3d.render.svg import wireframe_svg
 from xaml3d.scene.lens import (
     MAX_LENS_SAMPLES,

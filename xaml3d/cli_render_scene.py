@@ -2,7 +2,7 @@
 window), and write its files, all or nothing.
 
 Every failure on bad input becomes one ``file:line:col: error CODE message`` line (the scene
-then counts as failed); outputs are staged (``xaml3d.render.atomic.together``) and renamed
+then counts as failed); outputs are staged (``xaml3d.output.atomic.together``) and renamed
 into place only when every file of the scene was written, never over a file the scene reads.
 Each viewport's size is computed once (``frame_size``) and shared by the camera checks,
 ``--fit`` and the render.
@@ -42,8 +42,8 @@ from xaml3d.cli_render_extras import (
 from xaml3d.errors import ERROR, CameraError, RenderError, XamlError
 from xaml3d.findings import has_errors, scene_findings, with_file
 from xaml3d.findings import lenient as lenient_findings
+from xaml3d.output.atomic import together
 from xaml3d.output.images import encode, save_image
-from xaml3d.render.atomic import together
 from xaml3d.render.ids import surfaces
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.settings import FrameSize, RenderSettings

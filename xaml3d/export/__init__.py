@@ -18,7 +18,7 @@ from xaml3d.export.html import page
 from xaml3d.export.obj import obj_files
 from xaml3d.export.stl import stl_bytes
 from xaml3d.export.timeline import clip_of
-from xaml3d.render.atomic import together, write_atomically
+from xaml3d.output.atomic import together, write_atomically
 
 FORMATS = {".glb": "glb", ".gltf": "gltf", ".obj": "obj", ".stl": "stl", ".html": "html",
            ".htm": "html"}  # fmt: skip

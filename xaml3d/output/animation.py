@@ -2,7 +2,7 @@
 
 ``save_animation`` writes GIF (one adaptive palette per frame; empty pixels become GIF
 transparency, any other pixel is opaque; frames with translucent surfaces are flattened first,
-``xaml3d.render.gif_matte``), APNG (.png), WebP, or numbered PNGs in a directory
+``xaml3d.output.gif_matte``), APNG (.png), WebP, or numbered PNGs in a directory
 (``frame_names``), atomically: a temporary file in the target's folder is written, fsynced and
 renamed, so a failure leaves no partial file and an existing one untouched.
 """
@@ -16,14 +16,20 @@ import numpy as np
 from PIL import Image
 
 from xaml3d.errors import RenderError
+from xaml3d.output.atomic import write_atomically
+from xaml3d.output.gif_matte import frames_for_gif
 from xaml3d.output.images import save_image
-from xaml3d.render.atomic import write_atomically
-from xaml3d.render.frames import frame_durations
-from xaml3d.render.gif_matte import frames_for_gif
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
 # The files of a numbered sequence: frame_0000.png ... (4 digits at least, more when needed).
 FRAME_FILE = re.compile(r"frame_[0-9]{4,}\.png")
+
+
+def frame_durations(count: int, total: float, unit: float) -> list[int]:
+    """Display time of each of ``count`` frames in whole ``unit``s (seconds per unit), summing
+    to ``total`` seconds rounded to the unit."""
+    units = total / unit
+    return [round((i + 1) * units / count) - round(i * units / count) for i in range(count)]
 
 
 def frame_names(count: int) -> list[str]:

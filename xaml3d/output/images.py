@@ -1,6 +1,6 @@
 """Still images: a Pillow image or RGBA array -> PNG / JPEG / WebP, as a file or as bytes.
 
-``save_image`` writes atomically (``xaml3d.render.atomic``: a temporary in the same folder,
+``save_image`` writes atomically (``xaml3d.output.atomic``: a temporary in the same folder,
 fsynced and renamed: never a partial file, an existing one untouched on failure); ``encode``
 gives the bytes (stdout); ``flatten`` composites onto an opaque colour for the formats without
 alpha (JPEG; WebP here, as its lossy mode drops alpha in many viewers).
@@ -15,7 +15,7 @@ import numpy as np
 from PIL import Image
 
 from xaml3d.errors import RenderError
-from xaml3d.render.atomic import write_atomically
+from xaml3d.output.atomic import write_atomically
 
 FORMATS = {".png": "PNG", ".jpg": "JPEG", ".jpeg": "JPEG", ".webp": "WEBP"}
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from xaml3d.animation.moment import scene_at
+from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.settings import settings_of
 from xaml3d.render.workers import ordered, worker_pool
@@ -21,13 +22,6 @@ def frame_times(start: float, end: float, fps: float) -> list[float]:
     """Times of the frames from ``start`` (included) to ``end`` (excluded): at least one."""
     n = max(1, round((end - start) * fps))
     return [start + i / fps for i in range(n)]
-
-
-def frame_durations(count: int, total: float, unit: float) -> list[int]:
-    """Display time of each of ``count`` frames in whole ``unit``s (seconds per unit), summing
-    to ``total`` seconds rounded to the unit."""
-    units = total / unit
-    return [round((i + 1) * units / count) - round(i * units / count) for i in range(count)]
 
 
 def render_frames(

@@ -8,7 +8,7 @@ finishes its task instead of printing a traceback of its own); and die with thei
 when it is killed outright (SIGKILL runs no handler): on Linux the kernel sends each worker
 SIGTERM when the parent dies (``prctl(PR_SET_PDEATHSIG)``), elsewhere a thread of each worker
 notices that its parent process changed (``os.getppid``, checked every half second). A worker
-leaving so first removes the temporary files its own writes left (``xaml3d.render.atomic``)
+leaving so first removes the temporary files its own writes left (``xaml3d.output.atomic``)
 and those its parent was writing (named with the parent's process id), so a killed run leaves
 neither workers nor temporaries.
 
@@ -30,7 +30,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, Sequence
 from typing import TYPE_CHECKING
 
-from xaml3d.render import atomic
+from xaml3d.output import atomic
 
 if TYPE_CHECKING:
     from concurrent.futures import Executor, ProcessPoolExecutor
@@ -47,9 +47,28 @@ def default_jobs() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+PF_EXITING = 0x4  # linux/sched.h: the task has begun to exit
+
+
+def _orphaned() -> bool:
+    """Whether the parent is dead or dying. ``os.getppid`` changes only once the worker has
+    been handed to a new parent, a little after the parent's files (the task pipe) close and
+    its death signal is sent; on Linux the parent's own flags say at once that it is exiting."""
+    if _PARENT is None:
+        return False
+    if os.getppid() != _PARENT[0]:
+        return True
+    try:
+        with open(f"/proc/{_PARENT[0]}/stat", "rb") as fh:
+            fields = fh.read().rsplit(b")", 1)[1].split()
+    except OSError:
+        return os.path.isdir("/proc/self")  # gone; without /proc only getppid can tell
+    return fields[0] in (b"Z", b"X") or bool(int(fields[6]) & PF_EXITING)
+
+
 def _clean_if_orphaned() -> None:
     """The parent is gone (not a pool's own shutdown): remove the temporaries of the run."""
-    if _PARENT is not None and os.getppid() != _PARENT[0]:
+    if _orphaned():
         atomic.remove_temporaries(os.getpid())
         atomic.remove_temporaries(_PARENT[0], _PARENT[1])
 

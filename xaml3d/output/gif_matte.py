@@ -1,0 +1,89 @@
+"""GIF's 1-bit transparency and translucent frames: when an animation must be flattened.
+
+A GIF pixel is either fully transparent or opaque. ``animation.save_animation`` keeps an empty
+background transparent and draws every covered pixel opaque in its straight colour, which suits
+opaque models (only their antialiased edges have partial alpha). A translucent surface (a brush
+or material Opacity below 1, a colour with alpha) would be drawn opaque, and an Opacity
+animation would vanish: its frames differ only in alpha, so they become identical GIF frames
+(which Pillow then merges into one). ``frames_for_gif`` detects such frames and flattens the
+whole animation onto an opaque matte colour (alpha composited, as a viewer would show it over
+that colour), so the translucency and its animation stay visible.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+# Share of a frame's covered pixels that must be translucent inside a surface before the frame
+# counts as translucent: seams between faces can leave a few interior pixels slightly short of
+# full coverage, which GIF's opaque drawing shows correctly anyway.
+TRANSLUCENT_SHARE = 0.01
+
+
+def _interior(covered: np.ndarray) -> np.ndarray:
+    """Pixels whose 3x3 neighbourhood is all covered (outside the image counts as empty)."""
+    h, w = covered.shape
+    padded = np.pad(covered, 1)
+    out = covered.copy()
+    for dy in range(3):
+        for dx in range(3):
+            out &= padded[dy : dy + h, dx : dx + w]
+    return out
+
+
+def _translucent(alpha: np.ndarray) -> bool:
+    """A frame shows a translucent surface: partial alpha inside covered areas (not only along
+    the edges of opaque models, where partial alpha is antialiasing) on at least
+    TRANSLUCENT_SHARE of its covered pixels."""
+    partial = (alpha > 0) & (alpha < 255)
+    if not partial.any():
+        return False
+    covered = alpha > 0
+    inside = np.count_nonzero(partial & _interior(covered))
+    return inside > 0 and inside >= TRANSLUCENT_SHARE * np.count_nonzero(covered)
+
+
+def _same_as_gif(a: np.ndarray, b: np.ndarray) -> bool:
+    """Two frames that GIF's 1-bit transparency draws alike: the same covered pixels with the
+    same straight colours (only alpha may differ)."""
+    covered = a[..., 3] > 0
+    if not np.array_equal(covered, b[..., 3] > 0):
+        return False
+    return np.array_equal(a[..., :3][covered], b[..., :3][covered])
+
+
+def needs_matte(frames: Sequence[np.ndarray]) -> bool:
+    """True when GIF's 1-bit transparency would lose what the frames show: a frame has a
+    translucent surface, or two successive frames differ only in alpha (an Opacity animation
+    of a small object)."""
+    if all(not ((f[..., 3] > 0) & (f[..., 3] < 255)).any() for f in frames):
+        return False  # every pixel empty or opaque: GIF keeps it exactly
+    if any(_translucent(f[..., 3]) for f in frames):
+        return True
+    return any(
+        not np.array_equal(a, b) and _same_as_gif(a, b)
+        for a, b in zip(frames[:-1], frames[1:], strict=True)
+    )
+
+
+def flatten(frames: Sequence[np.ndarray], matte: tuple[int, int, int]) -> list[np.ndarray]:
+    """Each straight-alpha RGBA frame composited over the opaque RGB ``matte`` (0..255)."""
+    back = np.asarray(matte, dtype=np.uint32)[:3]
+    out = []
+    for f in frames:
+        a = f[..., 3:4].astype(np.uint32)
+        rgb = (f[..., :3].astype(np.uint32) * a + back * (255 - a) + 127) // 255
+        opaque = np.full(f.shape[:2] + (1,), 255, dtype=np.uint8)
+        out.append(np.concatenate([rgb.astype(np.uint8), opaque], axis=2))
+    return out
+
+
+def frames_for_gif(
+    frames: Sequence[np.ndarray], matte: tuple[int, int, int] = (255, 255, 255)
+) -> tuple[list[np.ndarray], bool]:
+    """(the frames a GIF should hold, whether they were flattened onto ``matte``)."""
+    if needs_matte(frames):
+        return flatten(frames, matte), True
+    return list(frames), False
