@@ -120,18 +120,24 @@ def test_the_api_keywords_build_the_same_settings():
 
 
 def test_the_command_line_sizes_each_viewport_once(monkeypatch, tmp_path):
-    from xaml3d import cli_render_scene
+    from xaml3d import cli_common
     from xaml3d.cli import main
 
     calls = []
-    real = cli_render_scene.sized
+    real = cli_common.sized
 
     def counting(vp, settings):
         calls.append(vp.index)
         return real(vp, settings)
 
-    monkeypatch.setattr(cli_render_scene, "sized", counting)
+    monkeypatch.setattr(cli_common, "sized", counting)
     out = tmp_path / "o.png"
     run = CliRunner().invoke(main, ["render", "samples/cube.xaml", "-o", str(out), "--fit"])
     assert run.exit_code == 0, run.output
     assert calls == [0]  # the camera checks, --fit and the render share one size
+    calls.clear()
+    gif = tmp_path / "a.gif"
+    spin = "samples/spinning-cube.xaml"
+    run = CliRunner().invoke(main, ["animate", spin, "-o", str(gif), "--duration", "0.1"])
+    assert run.exit_code == 0, run.output
+    assert calls == [0]  # animate too: the checks and every frame share it

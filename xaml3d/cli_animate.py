@@ -19,6 +19,7 @@ from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     FiniteFloat,
     ProgressLines,
+    Sizes,
     describe_os_error,
     display_name,
     echo_diagnostics,
@@ -29,10 +30,8 @@ from xaml3d.cli_common import (
     output_path,
     parse_background,
     parse_time,  # noqa: F401 (the time option's parser, also this module's interface)
-    render_size,
     resources_option,
     scene_files_read,
-    sized,
     stderr_is_terminal,
     storyboard_option,
     time_callback,
@@ -159,8 +158,8 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             end = start + duration
         if end <= start:
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
-        diags = _verdict(sc, (start, storyboard), (width, height), name, lenient, diags, quiet,
-                         verbose)  # fmt: skip
+        sizes = Sizes(RenderSettings(width=width, height=height))  # once per viewport
+        diags = _verdict(sc, (start, storyboard), sizes, name, lenient, diags, quiet, verbose)
 
         if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
             slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
@@ -170,7 +169,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         # --aperture, --stereo, --line-*: every frame; the size is computed once
         settings = RenderSettings(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa,
                                   msaa=msaa, time=None, **lens_arguments(extras))  # fmt: skip
-        size = sized(vp, settings.replace(width=width, height=height))
+        size = sizes(vp)
         settings = settings.replace(width=size.width, height=size.height, aspect=size.aspect)
         times = frames_module.frame_times(start, end, fps)
         # Every path this run writes, checked before the first frame is drawn.
@@ -246,17 +245,18 @@ def _plan_line(name: str, sc, storyboard, count: int, fps: float, length: float)
     return f"{name}: animating {count} frames ({length:g} s at {fps:g} fps; {cycle})"
 
 
-def _verdict(sc, moment, size, name: str, lenient: bool, diags, quiet: bool, verbose: bool):
+def _verdict(sc, moment, sizes, name: str, lenient: bool, diags, quiet: bool, verbose: bool):
     """The findings ``render --time START`` reports (``xaml3d.findings``, the same as
-    ``validate``) at ``moment`` (start, storyboard) and ``size`` (-W, -H): a scene with errors
-    is not animated (exit 1) unless --lenient, which reports each error as a warning. Returns
-    the diagnostics to print after the frames."""
+    ``validate``) at ``moment`` (start, storyboard) and the render ``sizes`` (-W, -H): a scene
+    with errors is not animated (exit 1) unless --lenient, which reports each error as a
+    warning. Returns the diagnostics to print after the frames."""
 
     def size_of(vp):
         try:
-            return render_size(vp, *size)
+            size = sizes(vp)
         except CameraError:  # an empty viewport: the camera check reports it (CAM010)
             return (vp.width, vp.height)
+        return (size.width, size.height)
 
     findings = scene_findings(scene_at(sc, *moment), size_of, name, moment[1])
     if not has_errors(findings):

@@ -21,7 +21,15 @@ from pathlib import Path
 import click
 
 from xaml3d.codes.cli import CLI_CODES  # noqa: F401 (the stage's table)
-from xaml3d.errors import ERROR, INFO, Diagnostic, ValueSyntaxError, XamlError
+from xaml3d.errors import (
+    ERROR,
+    INFO,
+    CameraError,
+    Diagnostic,
+    RenderError,
+    ValueSyntaxError,
+    XamlError,
+)
 from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
 from xaml3d.render.settings import FrameSize, RenderSettings, frame_size
 from xaml3d.scene.types import Scene, Viewport
@@ -121,6 +129,26 @@ def render_size(
 def sized(vp: Viewport, settings: RenderSettings) -> FrameSize:
     """``frame_size`` of viewport ``vp`` with the size settings named as the options."""
     return frame_size(vp, settings, sizes="-W/-H")
+
+
+class Sizes:
+    """Each viewport's render size (``frame_size``), computed once per viewport of a scene and
+    shared by the camera checks, --fit and the render; the error of a size that cannot be."""
+
+    def __init__(self, settings: RenderSettings) -> None:
+        self.settings = settings
+        self.known: dict[int, FrameSize | XamlError] = {}
+
+    def __call__(self, vp) -> FrameSize:
+        if vp.index not in self.known:
+            try:
+                self.known[vp.index] = sized(vp, self.settings)
+            except (CameraError, RenderError) as exc:
+                self.known[vp.index] = exc
+        found = self.known[vp.index]
+        if isinstance(found, XamlError):
+            raise found
+        return found
 
 
 def scene_files_read(scene) -> list[str]:

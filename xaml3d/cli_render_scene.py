@@ -20,6 +20,7 @@ from PIL import Image
 
 from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
+    Sizes,
     describe_os_error,
     display_name,
     echo_diagnostics,
@@ -27,7 +28,6 @@ from xaml3d.cli_common import (
     load_scene,
     same_file,
     scene_files_read,
-    sized,
     stderr_is_terminal,
 )
 from xaml3d.cli_outputs import _resolved
@@ -46,7 +46,7 @@ from xaml3d.output.atomic import together
 from xaml3d.output.images import encode, save_image
 from xaml3d.render.ids import surfaces
 from xaml3d.render.pipeline import render_scene
-from xaml3d.render.settings import FrameSize, RenderSettings
+from xaml3d.render.settings import RenderSettings
 from xaml3d.render.window import compose_window
 from xaml3d.scene.fit import fit_viewport
 
@@ -73,26 +73,6 @@ class RenderOptions:
     lenient: bool = False
     extras: Extras = Extras()  # lens, stereo, depth/id images, line style (cli_render_extras)
     discover_app: bool = True  # read an App.xaml found beside or above the scene (not --no-app)
-
-
-class _Sizes:
-    """Each viewport's render size (``frame_size``), computed once per viewport of a scene and
-    shared by the camera checks, --fit and the render; the error of a size that cannot be."""
-
-    def __init__(self, settings: RenderSettings) -> None:
-        self.settings = settings
-        self.known: dict[int, FrameSize | XamlError] = {}
-
-    def __call__(self, vp) -> FrameSize:
-        if vp.index not in self.known:
-            try:
-                self.known[vp.index] = sized(vp, self.settings)
-            except (CameraError, RenderError) as exc:
-                self.known[vp.index] = exc
-        found = self.known[vp.index]
-        if isinstance(found, XamlError):
-            raise found
-        return found
 
 
 class _Failed(Exception):
@@ -145,7 +125,7 @@ def _check_distinct(outputs: list[tuple[str, Path]], name: str, opts, diags: lis
         seen[key] = f"{what} {path}"
 
 
-def _size_for_checks(sizes: _Sizes):
+def _size_for_checks(sizes: Sizes):
     """The size each viewport's camera is checked at: its render size (an empty viewport keeps
     its own size: the camera check reports CAM010, or for one laid out empty nothing, as
     LAY001/LAY002 say why and rendering it is refused with RND008)."""
@@ -160,7 +140,7 @@ def _size_for_checks(sizes: _Sizes):
     return size_of
 
 
-def _fitted(scene, file: str, opts: RenderOptions, sizes: _Sizes):
+def _fitted(scene, file: str, opts: RenderOptions, sizes: Sizes):
     """``--fit``: the scene with the camera of each viewport to be rendered moved to frame it,
     and each fit's notes (FIT0xx) by viewport index. The findings are then those of the cameras
     drawn, so what --fit makes moot for the markup camera it replaced (CAM107 the scene out of
@@ -185,7 +165,7 @@ def _fitted(scene, file: str, opts: RenderOptions, sizes: _Sizes):
 
 
 def _render_viewport(
-    scene, vp, file: str, opts: RenderOptions, sizes: _Sizes, diags: list, svg_target=None,
+    scene, vp, file: str, opts: RenderOptions, sizes: Sizes, diags: list, svg_target=None,
     notes=(),
 ):  # fmt: skip
     """One viewport as an image at its (laid-out or -W/-H) size, with its --depth/--ids files
@@ -349,7 +329,7 @@ def _draw_scene(source: str, target, opts: RenderOptions, inputs: list[Path], na
     for extra, what in ((ex.depth, "the depth image"), (ex.ids, "the id image")):
         if extra:
             _check_not_input(Path(extra), name, inputs, what)
-    sizes = _Sizes(opts.settings)  # each viewport's size, once
+    sizes = Sizes(opts.settings)  # each viewport's size, once
     scene, fit_notes = _fitted(scene, file, opts, sizes)
     # The same findings, in the same order, as `xaml3d validate` (xaml3d.findings), for the
     # cameras drawn (those --fit moved).
