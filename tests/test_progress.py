@@ -70,3 +70,23 @@ def test_animate_says_the_frame_count_and_cycle_up_front(tmp_path):
     assert f"{SPIN}: animating 6 frames (0.2 s at 30 fps; {cycle})" in (
         short.stderr.decode().splitlines()
     )  # ... unless asked with -v
+
+
+def test_lens_samples_report_progress_in_a_log(monkeypatch, capsys):
+    from xaml3d import cli_render_extras
+    from xaml3d.cli_render_extras import Progress
+
+    now = [0.0]
+
+    def lines_on_a_fake_clock(*args, **kwargs):
+        return ProgressLines(*args, clock=lambda: now[0], **kwargs)
+
+    monkeypatch.setattr(cli_render_extras, "ProgressLines", lines_on_a_fake_clock)
+    progress = Progress("s.xaml: lens samples", enabled=False, log=True)
+    for done in range(1, 49):
+        now[0] = done * 0.5  # half a second a sample render
+        progress(done, 48)
+    progress.close()
+    lines = capsys.readouterr().err.splitlines()
+    assert lines[0] == "s.xaml: lens samples: 11/48 renders, 5 s elapsed, about 17 s left"
+    assert len(lines) == 4  # 11, 21, 31, 41 done; the last render says nothing

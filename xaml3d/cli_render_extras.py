@@ -17,7 +17,13 @@ from pathlib import Path
 import click
 import numpy as np
 
-from xaml3d.cli_common import FiniteFloat, output_path, parse_background, warn_option
+from xaml3d.cli_common import (
+    FiniteFloat,
+    ProgressLines,
+    output_path,
+    parse_background,
+    warn_option,
+)
 from xaml3d.cli_outputs import _resolved
 from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
 from xaml3d.output.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
@@ -273,12 +279,20 @@ def lens_arguments(ex: Extras) -> dict:
 
 
 class Progress:
-    """A click progress bar on stderr, opened at the first report (only on a terminal)."""
+    """A click progress bar on stderr, opened at the first report (``enabled``: on a terminal);
+    with ``log`` instead, where no bar can be drawn, a line every few seconds
+    (``cli_common.ProgressLines``)."""
 
-    def __init__(self, label: str, enabled: bool) -> None:
+    def __init__(self, label: str, enabled: bool, log: bool = False) -> None:
         self.label, self.enabled, self.bar, self.done = label, enabled, None, 0
+        self.log, self.lines = log, None
 
     def __call__(self, done: int, total: int) -> None:
+        if not self.enabled and self.log:
+            if self.lines is None:
+                self.lines = ProgressLines(self.label, total, "renders")
+            self.lines(done)
+            return
         if not self.enabled or total < SLOW_SAMPLES:
             return
         if self.bar is None:

@@ -184,7 +184,9 @@ def _render_viewport(
         return _checked(fresh, lambda: None, file, opts, diags)
     check_lens_camera(ex, vp)
     diags.extend(focus_notes(ex, vp, file))
-    progress = Progress(f"{file}: lens samples", ex.progress and stderr_is_terminal())
+    terminal = stderr_is_terminal()
+    progress = Progress(f"{file}: lens samples", ex.progress and terminal,
+                        log=ex.progress and not terminal and not opts.quiet)  # fmt: skip
     try:
         result = render_scene(scene, settings, size=size, progress=progress)
     finally:
