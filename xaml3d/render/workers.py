@@ -36,6 +36,7 @@ if TYPE_CHECKING:
     from concurrent.futures import Executor, ProcessPoolExecutor
 
 PR_SET_PDEATHSIG = 1  # linux/prctl.h
+PF_EXITING = 0x4  # linux/sched.h: the task has begun to exit
 IN_FLIGHT_PER_WORKER = 2  # tasks queued per worker: it never waits, the parent holds little
 
 
@@ -47,7 +48,7 @@ def default_jobs() -> int:
         return max(1, os.cpu_count() or 1)
 
 
-PF_EXITING = 0x4  # linux/sched.h: the task has begun to exit
+_PARENT: tuple[int, tuple[str, ...]] | None = None  # a worker's (parent pid, its folders)
 
 
 def _orphaned() -> bool:
@@ -74,13 +75,11 @@ def _clean_if_orphaned() -> None:
 
 
 def _leave(*_args) -> None:
-    """The parent is gone: remove the temporaries of this run, then exit at once."""
+    """SIGTERM (the parent's death signal, or a broken pool torn down): remove this worker's
+    temporaries, and the parent's when it is gone, then exit at once."""
     atomic.remove_temporaries(os.getpid())
     _clean_if_orphaned()
     os._exit(1)
-
-
-_PARENT: tuple[int, tuple[str, ...]] | None = None  # (parent pid, folders it writes into)
 
 
 def _watch(parent: int) -> None:
