@@ -22,7 +22,7 @@ else transparent (the 2D content beneath a Viewport3D, ``Viewport.background``, 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -118,28 +118,20 @@ def _background(bg) -> tuple[float, float, float, float]:
 
 def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = None) -> Scene:
     """The scene ``time`` seconds after load (None: the base values). Raises SceneError when
-    ``storyboard`` names no storyboard, ValueError for a time that is not finite."""
+    ``storyboard`` names no storyboard, ValueError for a time that is not finite. The frame is
+    computed from the scene's animation tracks (``xaml3d.animation.timeline``)."""
     if time is None:
         return scene
-    if scene.timeline is None:
+    if scene.tracks is None:
         if storyboard is not None:
             from xaml3d.errors import SceneError
 
             raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
                              code="ANIM010", file=scene.file)  # fmt: skip
         return scene
-    from xaml3d.errors import SceneError
+    from xaml3d.animation.timeline import scene_at as frame_at
 
-    try:
-        frame = scene.timeline.at(float(time), storyboard)
-    except SceneError as exc:
-        exc.file = scene.file  # the name the caller knows the scene by (stdin...)
-        raise
-    if frame is scene.timeline.base:
-        return scene  # nothing animates at that time
-    # the caller's scene keeps its own file name and diagnostics (stdin renames them); the
-    # frame is a finished moment: rendering it again must not evaluate the storyboards again
-    return replace(scene, viewports=frame.viewports, timeline=None)
+    return frame_at(scene, float(time), storyboard)
 
 
 def render_arrays(

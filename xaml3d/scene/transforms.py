@@ -270,3 +270,55 @@ def is_mirroring(m) -> bool:
     """True when the linear part has a negative determinant (the transform flips handedness,
     so a locally counter-clockwise triangle is seen clockwise)."""
     return bool(np.linalg.det(np.asarray(m, dtype=np.float64)[:3, :3]) < 0.0)
+
+
+# --------------------------------------------------------------------------- animated transforms
+
+
+def axis_angle_quaternion(axis, angle_deg: float) -> tuple[float, float, float, float]:
+    """An AxisAngleRotation3D as the unit quaternion (x, y, z, w) animations interpolate; a
+    zero (or non-finite) axis is no rotation, as in WPF."""
+    a = np.asarray(axis, dtype=np.float64)
+    n = float(np.linalg.norm(a))
+    if n == 0.0 or not math.isfinite(n):
+        return (0.0, 0.0, 0.0, 1.0)
+    half = math.radians(angle_deg) / 2.0
+    x, y, z = a / n * math.sin(half)
+    return (float(x), float(y), float(z), math.cos(half))
+
+
+def node_matrix(node) -> np.ndarray:
+    """The 4x4 matrix of a typed transform node (``xaml3d.scene.tracks``), or of a constant
+    matrix: the very computation the reader made at load, so equal values give equal bits. A
+    transform that cannot be built is the identity (SCN010 said so at load)."""
+    from xaml3d.scene import tracks as K
+
+    if isinstance(node, np.ndarray):
+        return node
+    try:
+        if isinstance(node, K.Translate):
+            return translation(node.offset_x, node.offset_y, node.offset_z)
+        if isinstance(node, K.TransformGroup):
+            return compose(*[node_matrix(c) for c in node.children])
+        center = (node.center_x, node.center_y, node.center_z)
+        if isinstance(node, K.Scale):
+            return scaling(node.scale_x, node.scale_y, node.scale_z, center)
+        rot = node.rotation
+        if rot is None:
+            return identity()
+        if isinstance(rot, K.AxisAngle):
+            return rotation_axis_angle(rot.axis, rot.angle, center)
+        return rotation_quaternion(*rot.quaternion, center=center)
+    except GeometryError:
+        return identity()
+
+
+def chain_matrix(prefix: np.ndarray | None, factors) -> np.ndarray:
+    """A world matrix from its chain (``tracks.WorldChain``): ``prefix``, then each factor
+    applied after it, one ``compose`` at a time as the reader composed them; no prefix: the
+    single factor's own matrix (a camera's Transform)."""
+    m = prefix
+    for f in factors:
+        fm = node_matrix(f)
+        m = fm if m is None else compose(fm, m)
+    return identity() if m is None else m

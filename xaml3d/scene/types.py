@@ -16,10 +16,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xaml3d.errors import Diagnostic
+
+if TYPE_CHECKING:
+    from xaml3d.scene.tracks import Tracks
 
 RGBA = tuple[float, float, float, float]
 Vec3 = tuple[float, float, float]
@@ -518,11 +522,20 @@ class Scene:
     layout: object = field(
         default=None, compare=False, repr=False
     )  # xaml3d.layout.LayoutResult of the panels (None: no layout root)
-    # What evaluates the storyboards: an object with ``at(t, storyboard=None) -> Scene`` (the
-    # scene at t seconds, Loaded storyboards begun at 0), ``running(storyboard=None)`` (the
-    # animations that run) and ``cycle(storyboard=None)`` (seconds of one full cycle, or
-    # math.inf). None: nothing animates. Made by the reader (it keeps the parsed markup).
-    timeline: object = field(default=None, compare=False, repr=False)
+    # What the storyboards animate, as places in this Scene (xaml3d.scene.tracks): present
+    # whenever the document has storyboards; None when it has none, and in a frame
+    # (xaml3d.animation.scene_at: a finished moment is not evaluated again).
+    tracks: Tracks | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def timeline(self):
+        """The storyboards of this scene as ``xaml3d.animation.Timeline`` (``at(t)``,
+        ``cycle()``, ``running_animations()``...), or None when ``tracks`` is None."""
+        if self.tracks is None:
+            return None
+        from xaml3d.animation.timeline import Timeline  # evaluation is not the scene's
+
+        return Timeline(self)
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""

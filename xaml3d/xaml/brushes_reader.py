@@ -89,14 +89,28 @@ def _stop(r, el) -> GradientStop | None:
     if p.type != "GradientStop":
         r.ctx.diag("XAML013", f"{p.type} is not a GradientStop: ignored", el)
         return None
-    return GradientStop(
+    stop = GradientStop(
         color=p.value("Color", V.parse_color, (1.0, 1.0, 1.0, 0.0)),
         offset=p.value("Offset", V.parse_double, 0.0),
     )
+    return r.tag(stop, el, _STOP_FIELDS)
+
+
+# XAML property -> scene field, of the objects animations reach (wpf3d.md section 8)
+_BRUSH_FIELDS = {"Color": "color", "Opacity": "opacity", "StartPoint": "start_point",
+                 "EndPoint": "end_point", "Center": "center", "GradientOrigin": "gradient_origin",
+                 "RadiusX": "radius_x", "RadiusY": "radius_y"}  # fmt: skip
+_STOP_FIELDS = {"Color": "color", "Offset": "offset"}
+_PASS_FIELDS = {"Color": "color", "AmbientColor": "ambient_color",
+                "SpecularPower": "specular_power"}  # fmt: skip
 
 
 def brush(r, el):
     """Any Brush element -> a scene brush (None when it cannot be read)."""
+    return r.tag(_brush(r, el), el, _BRUSH_FIELDS)
+
+
+def _brush(r, el):
     p = r.props(el)
     t = p.type
     if t == "SolidColorBrush":
@@ -170,16 +184,8 @@ def _image_brush(r, p) -> ImageBrush:
 
 def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None, np.ndarray | None]:
     """Resolve and decode an ImageSource; diagnostics (located at ``el``'s attribute ``attr``
-    when the source is an attribute) say why when there is no image. Animation frames reuse
-    the first frame's decoded image."""
-    key = ("image", id(el), source)
-    hit = r.cache.get(key) if r.cache is not None else None
-    if hit is not None and hit[0] is el:
-        return hit[1]
-    found = _load_image(r, source, el, attr)
-    if r.cache is not None:
-        r.cache[key] = (el, found)  # the element kept: its id stays its own
-    return found
+    when the source is an attribute) say why when there is no image."""
+    return _load_image(r, source, el, attr)
 
 
 def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.ndarray | None]:
@@ -251,6 +257,14 @@ def _located(r, p) -> dict:
 
 def material(r, el) -> tuple:
     """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order)."""
+    passes = _material(r, el)
+    if r.props(el).type != "MaterialGroup":
+        for ps in passes:
+            r.tag(ps, el, _PASS_FIELDS)
+    return passes
+
+
+def _material(r, el) -> tuple:
     p = r.props(el)
     t = p.type
     if t == "MaterialGroup":

@@ -53,19 +53,4 @@ def load(
         found = res.discover_app(doc.path)
         if found is not None:
             res.add_app_file(found, discovered=doc.path)
-    scene = build_scene(ctx, res, doc, window_size)
-    if not scene.storyboards:
-        return scene
-    from dataclasses import replace
-    from functools import partial
-
-    from xaml3d.xaml.animation_scene import SceneTimeline
-
-    timeline = SceneTimeline(ctx, res, doc, scene, partial(build_scene, window_size=window_size))
-    diags = sorted(
-        (*scene.diagnostics, *timeline.diagnostics),
-        key=lambda g: (g.file or "", g.line or 0, g.column or 0),
-    )
-    scene = replace(scene, diagnostics=tuple(diags), timeline=timeline)
-    timeline.base = scene
-    return scene
+    return build_scene(ctx, res, doc, window_size)
