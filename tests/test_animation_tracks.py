@@ -288,3 +288,19 @@ def test_corpus_spinning_cube_pickles_small():
         assert a[:, :, 3].any()
     f = xaml3d.scene_at(copy, 2.0)
     assert f.tracks is None and math.isfinite(f.viewports[0].models[0].world.sum())
+
+
+def test_panel_background_colour_animates():
+    text = f"""<Grid {NS} Width="64" Height="48"><Grid.Background>
+        <SolidColorBrush x:Name="paper" Color="White"/></Grid.Background>
+      <Viewport3D><Viewport3D.Camera><OrthographicCamera Position="0,0,10"
+          LookDirection="0,0,-1" Width="64"/></Viewport3D.Camera>
+        <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+          <Storyboard>{hold("paper", "Color", "#000000", "Color")}</Storyboard>
+        </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+      </Viewport3D></Grid>"""
+    s = xaml3d.load(text, text=True)
+    (track,) = s.tracks.tracks
+    assert track.paths == (ScenePath(0, (("background", None),), "color"),)
+    assert xaml3d.scene_at(s, 0.0).viewports[0].background.color == (0.0, 0.0, 0.0, 1.0)
+    assert s.viewports[0].background.color == (1.0, 1.0, 1.0, 1.0)

@@ -26,7 +26,7 @@ from xaml3d.animation.clock import one_cycle as _one_cycle
 from xaml3d.animation.evaluate import animation_value
 from xaml3d.errors import SceneError
 from xaml3d.scene import transforms as T
-from xaml3d.scene.tracks import AxisAngle, QuaternionRotation, ScenePath, Track
+from xaml3d.scene.tracks import AxisAngle, QuaternionRotation, Track
 from xaml3d.scene.types import Animation, Scene, Storyboard
 
 # ----------------------------------------------------------------------------- what runs
@@ -90,17 +90,33 @@ def _as_quaternion(rot) -> tuple[float, float, float, float]:
 
 def _value(chain: list, value_type: str, base):
     """A track's value from its base value and its running animations' clock states."""
-    if all(s is None for _, s in chain):
-        return base
     v = _as_quaternion(base) if value_type == "Rotation3D" else base
     for anim, state in chain:
         v = animation_value(anim, state, v)
     return QuaternionRotation(v) if value_type == "Rotation3D" else v
 
 
+class _Track:
+    """A track's value function for one frame, remembering its result per base value (the
+    places of a shared markup object all have the same base)."""
+
+    def __init__(self, chain: list, value_type: str) -> None:
+        self.chain, self.value_type = chain, value_type
+        self.seen: dict = {}
+
+    def __call__(self, base):
+        try:
+            return self.seen[base]
+        except KeyError:
+            v = self.seen[base] = _value(self.chain, self.value_type, base)
+            return v
+        except TypeError:  # not hashable (an array)
+            return _value(self.chain, self.value_type, base)
+
+
 def values_at(scene: Scene, t: float, storyboard: str | None = None) -> dict:
-    """track index -> the function of its base value at ``t``, for every track a running
-    animation drives (empty: nothing that runs resolves)."""
+    """track index -> the function of its base value at ``t`` (None: no clock has an effect at
+    ``t``), for every track a running animation drives (empty: nothing that runs resolves)."""
     tracks = scene.tracks
     if tracks is None:
         running(scene, storyboard)  # ANIM010 for a name that is not there
@@ -122,7 +138,8 @@ def values_at(scene: Scene, t: float, storyboard: str | None = None) -> dict:
     out = {}
     for k, (_, chain) in per_track.items():
         track: Track = tracks.tracks[k]
-        out[k] = partial(_value, chain, track.value_type)
+        # None: no clock has an effect at t, the base value stands
+        out[k] = None if all(s is None for _, s in chain) else _Track(chain, track.value_type)
     return out
 
 
@@ -144,21 +161,34 @@ def _node(node, values: dict):
     return replace(node, **changes) if changes else node
 
 
-def _set(obj, steps: tuple, field: str, fn):
-    """``obj`` with the field at the end of ``steps`` replaced by ``fn(its value)``."""
-    if not steps:
-        return replace(obj, **{field: fn(getattr(obj, field))})
-    (name, i), rest = steps[0], steps[1:]
-    child = getattr(obj, name)
-    if i is None:
-        return replace(obj, **{name: _set(child, rest, field, fn)})
-    items = list(child)
-    items[i] = _set(items[i], rest, field, fn)
-    return replace(obj, **{name: tuple(items)})
-
-
-def _apply(viewports: list, path: ScenePath, fn) -> None:
-    viewports[path.viewport] = _set(viewports[path.viewport], path.steps, path.field, fn)
+def _set(obj, changes: list):
+    """``obj`` with fields replaced: ``changes`` are (steps, field, fn), each replacing the
+    field at the end of ``steps`` (from ``obj``) by ``fn(its value)``, in order. One new object
+    per object on the way, however many changes go through it."""
+    direct: dict[str, list] = {}
+    nested: dict[str, dict] = {}
+    for steps, field, fn in changes:
+        if not steps:
+            direct.setdefault(field, []).append(fn)
+        else:
+            (name, i), rest = steps[0], steps[1:]
+            nested.setdefault(name, {}).setdefault(i, []).append((rest, field, fn))
+    out = {}
+    for name, by_index in nested.items():
+        child = getattr(obj, name)
+        if None in by_index:
+            out[name] = _set(child, by_index[None])
+        else:
+            items = list(child)
+            for i, sub in by_index.items():
+                items[i] = _set(items[i], sub)
+            out[name] = tuple(items)
+    for field, fns in direct.items():
+        v = getattr(obj, field)
+        for fn in fns:
+            v = fn(v)
+        out[field] = v
+    return replace(obj, **out)
 
 
 def scene_at(scene: Scene, t: float, storyboard: str | None = None) -> Scene:
@@ -170,17 +200,36 @@ def scene_at(scene: Scene, t: float, storyboard: str | None = None) -> Scene:
     values = values_at(scene, t, storyboard)
     if not values:
         return scene
+    values = {k: f for k, f in values.items() if f is not None}
     tracks = scene.tracks
-    viewports = list(scene.viewports)
+    changes: dict[int, list] = {}
     for k, fn in values.items():
-        for path in tracks.tracks[k].paths:
-            _apply(viewports, path, fn)
+        for p in tracks.tracks[k].paths:
+            changes.setdefault(p.viewport, []).append((p.steps, p.field, fn))
+    matrices: dict[int, np.ndarray] = {}  # id(node) -> its matrix (shared nodes: once)
+
+    def matrix(f):
+        if isinstance(f, np.ndarray):
+            return f
+        m = matrices.get(id(f))
+        if m is None:
+            m = matrices[id(f)] = T.node_matrix(_node(f, values))
+        return m
+
     for chain in tracks.worlds:
         if chain.slots.isdisjoint(values):
             continue
-        m = T.chain_matrix(chain.prefix, tuple(_node(f, values) for f in chain.factors))
-        _apply(viewports, chain.path, lambda _, m=m: m)
+        m = T.chain_matrix(chain.prefix, [matrix(f) for f in chain.factors])
+        p = chain.path
+        changes.setdefault(p.viewport, []).append((p.steps, p.field, partial(_const, m)))
+    viewports = list(scene.viewports)
+    for vi, todo in changes.items():
+        viewports[vi] = _set(viewports[vi], todo)
     return replace(scene, viewports=tuple(viewports), tracks=None)
+
+
+def _const(value, _base):
+    return value
 
 
 class Timeline:

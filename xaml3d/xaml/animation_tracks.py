@@ -39,6 +39,7 @@ class Slots:
     def __init__(self) -> None:
         self.by_key: dict[tuple[int, str], list[tuple[str | None, int]]] = {}
         self.targets: list[Target] = []
+        self._index: dict[tuple, int] = {}  # Target.key -> its slot
         self.animations: list[list[Animation]] = []
         self.read: set[int] = set()
         self.placed: set[int] = set()
@@ -47,11 +48,11 @@ class Slots:
         self.worlds: dict[int, tuple[object, str, WorldChain]] = {}
 
     def add(self, target: Target, anim: Animation) -> None:
-        for k, t in enumerate(self.targets):
-            if t.key == target.key:
-                self.animations[k].append(anim)
-                return
-        k = len(self.targets)
+        k = self._index.get(target.key)
+        if k is not None:
+            self.animations[k].append(anim)
+            return
+        k = self._index[target.key] = len(self.targets)
         self.targets.append(target)
         self.animations.append([anim])
         self.by_key.setdefault((id(target.element), target.prop), []).append((target.field, k))
