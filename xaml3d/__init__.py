@@ -21,6 +21,7 @@ __version__ = "0.1.0"
 # subpackage first and binding the functions afterwards means the package attribute ends up
 # being the function, and later imports of xaml3d.render.* (already in sys.modules) do not
 # rebind it.
+import xaml3d.animation.timeline  # noqa: E402,F401  (Scene.timeline evaluates through it)
 import xaml3d.render.api  # noqa: E402,F401
 from xaml3d.errors import Diagnostic, XamlError  # noqa: E402
 from xaml3d.export import export  # noqa: E402

@@ -26,6 +26,7 @@ from xaml3d.animation.clock import one_cycle as _one_cycle
 from xaml3d.animation.evaluate import animation_value
 from xaml3d.errors import SceneError
 from xaml3d.scene import transforms as T
+from xaml3d.scene import types
 from xaml3d.scene.tracks import AxisAngle, QuaternionRotation, Track
 from xaml3d.scene.types import Animation, Scene, Storyboard
 
@@ -262,3 +263,6 @@ class Timeline:
     def at(self, t: float, storyboard: str | None = None) -> Scene:
         """The scene at ``t`` seconds after load (math.isfinite(t) required)."""
         return scene_at(self.base, t, storyboard)
+
+
+types.TIMELINE_VIEW[0] = Timeline  # Scene.timeline (the scene does not import this stage)

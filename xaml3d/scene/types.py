@@ -511,6 +511,12 @@ class Viewport:
         return None if lo is None else (lo, hi)
 
 
+# What ``Scene.timeline`` returns: the evaluation of the tracks is the animation stage's, above
+# the scene, which does not import it; ``xaml3d.animation.timeline`` puts its class here when
+# it is imported (``import xaml3d`` imports it).
+TIMELINE_VIEW: list = [None]
+
+
 @dataclass(frozen=True)
 class Scene:
     file: str | None
@@ -529,13 +535,11 @@ class Scene:
 
     @property
     def timeline(self):
-        """The storyboards of this scene as ``xaml3d.animation.Timeline`` (``at(t)``,
+        """The storyboards of this scene as ``xaml3d.animation.timeline.Timeline`` (``at(t)``,
         ``cycle()``, ``running_animations()``...), or None when ``tracks`` is None."""
         if self.tracks is None:
             return None
-        from xaml3d.animation.timeline import Timeline  # evaluation is not the scene's
-
-        return Timeline(self)
+        return TIMELINE_VIEW[0](self)
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""
