@@ -304,3 +304,38 @@ def test_panel_background_colour_animates():
     assert track.paths == (ScenePath(0, (("background", None),), "color"),)
     assert xaml3d.scene_at(s, 0.0).viewports[0].background.color == (0.0, 0.0, 0.0, 1.0)
     assert s.viewports[0].background.color == (1.0, 1.0, 1.0, 1.0)
+
+
+@pytest.mark.parametrize(
+    ("transform", "name", "prop", "value"),
+    [
+        ('<RotateTransform x:Name="turn" Angle="{v}" CenterX="0.5" CenterY="0.25"/>', "turn",
+         "Angle", "33"),
+        ('<TransformGroup><ScaleTransform ScaleX="2"/><SkewTransform x:Name="turn" AngleX="{v}"/>'
+         '<TranslateTransform X="0.1"/></TransformGroup>', "turn", "AngleX", "12.5"),
+    ],
+)  # fmt: skip
+def test_brush_2d_transform_animates_bit_for_bit(transform, name, prop, value):
+    def body(v: str) -> str:
+        brush = f"""<LinearGradientBrush><LinearGradientBrush.RelativeTransform>
+            {transform.format(v=v)}</LinearGradientBrush.RelativeTransform>
+            <GradientStop Color="Red"/><GradientStop Color="Blue" Offset="1"/>
+            </LinearGradientBrush>"""
+        return nested().replace(
+            '<DiffuseMaterial Brush="Lime"/>',
+            f"<DiffuseMaterial><DiffuseMaterial.Brush>{brush}</DiffuseMaterial.Brush>"
+            "</DiffuseMaterial>",
+        )
+
+    s = xaml3d.load(scene(body("0"), hold(name, prop, value)), text=True)
+    assert not [d for d in s.diagnostics if d.code.startswith("ANIM")]
+    (track,) = s.tracks.tracks
+    assert [str(p) for p in track.moves] == [
+        "viewport 0 / models[0] / material[0] / brush . relative_transform"
+    ]
+    want = xaml3d.load(scene(body(value), ""), text=True).viewports[0].models[0]
+    got = xaml3d.scene_at(s, 0.5).viewports[0].models[0]
+    m = got.material[0].brush.relative_transform
+    assert m.shape == (3, 3)
+    assert m.tobytes() == want.material[0].brush.relative_transform.tobytes()
+    assert not np.array_equal(m, s.viewports[0].models[0].material[0].brush.relative_transform)

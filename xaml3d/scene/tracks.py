@@ -16,7 +16,8 @@ Model3DGroups', then its ModelVisual3Ds'), so an animated transform component mo
 matrix below it. For each such matrix the Scene keeps a ``WorldChain``: the constant product of
 everything above the first animated transform (``prefix``), then the factors from there down,
 each a constant matrix or a typed transform node (``Translate``, ``Scale``, ``Rotate`` with an
-``AxisAngle`` or ``QuaternionRotation``, ``TransformGroup``) whose ``slots`` say which of its
+``AxisAngle`` or ``QuaternionRotation``, ``TransformGroup``; a brush's 2D ``Translate2D``,
+``Scale2D``, ``Rotate2D``, ``Skew2D``, ``TransformGroup2D``) whose ``slots`` say which of its
 fields a track drives. ``xaml3d.scene.transforms.chain_matrix`` multiplies them in the reader's
 order, so an unanimated frame gives the loaded matrices bit for bit.
 
@@ -103,7 +104,57 @@ class TransformGroup:
     slots: Slots = ()
 
 
-TransformNode = Translate | Scale | Rotate | TransformGroup
+@dataclass(frozen=True)
+class Translate2D:
+    """TranslateTransform (a brush's 2D Transform or RelativeTransform)."""
+
+    x: float = 0.0
+    y: float = 0.0
+    slots: Slots = ()
+
+
+@dataclass(frozen=True)
+class Scale2D:
+    """ScaleTransform about (center_x, center_y)."""
+
+    scale_x: float = 1.0
+    scale_y: float = 1.0
+    center_x: float = 0.0
+    center_y: float = 0.0
+    slots: Slots = ()
+
+
+@dataclass(frozen=True)
+class Rotate2D:
+    """RotateTransform (degrees, clockwise on screen) about (center_x, center_y)."""
+
+    angle: float = 0.0
+    center_x: float = 0.0
+    center_y: float = 0.0
+    slots: Slots = ()
+
+
+@dataclass(frozen=True)
+class Skew2D:
+    """SkewTransform (degrees) about (center_x, center_y)."""
+
+    angle_x: float = 0.0
+    angle_y: float = 0.0
+    center_x: float = 0.0
+    center_y: float = 0.0
+    slots: Slots = ()
+
+
+@dataclass(frozen=True)
+class TransformGroup2D:
+    """TransformGroup: children applied first to last; constant ones as their 3x3 matrices."""
+
+    children: tuple = ()
+    slots: Slots = ()
+
+
+TransformNode = (Translate | Scale | Rotate | TransformGroup | Translate2D | Scale2D | Rotate2D
+                 | Skew2D | TransformGroup2D)  # fmt: skip
 
 
 def slots_in(node) -> frozenset[int]:
@@ -138,7 +189,8 @@ class ScenePath:
 @dataclass(frozen=True)
 class WorldChain:
     """A matrix of the Scene that animated transforms move: the model's or light's ``world``,
-    or the camera's ``transform`` (then ``prefix`` is None: it is its Transform alone).
+    or the camera's or a brush's ``transform`` (then ``prefix`` is None: it is its Transform
+    alone; a brush's ``relative_transform`` too).
     The matrix is ``prefix``, then each factor applied after it (``transforms.compose``)."""
 
     path: ScenePath

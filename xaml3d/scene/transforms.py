@@ -272,6 +272,49 @@ def is_mirroring(m) -> bool:
     return bool(np.linalg.det(np.asarray(m, dtype=np.float64)[:3, :3]) < 0.0)
 
 
+# --------------------------------------------------------------------------- 2D (brush) transforms
+# 3x3 column-form matrices, p' = M @ (x, y, 1), brush space y down: TranslateTransform,
+# ScaleTransform, RotateTransform, SkewTransform, TransformGroup (wpf3d.md section 7).
+
+
+def _about_2d(linear: np.ndarray, cx: float, cy: float) -> np.ndarray:
+    m = np.eye(3)
+    m[:2, :2] = linear
+    m[:2, 2] = np.array([cx, cy]) - linear @ np.array([cx, cy])
+    return m
+
+
+def translation_2d(x: float, y: float) -> np.ndarray:
+    m = np.eye(3)
+    m[:2, 2] = (x, y)
+    return frozen_array(m)
+
+
+def scaling_2d(sx: float, sy: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
+    return frozen_array(_about_2d(np.diag([sx, sy]), cx, cy))
+
+
+def rotation_2d(angle_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
+    """Positive angles turn clockwise on screen (y down): x' = x cos - y sin."""
+    a = math.radians(angle_deg)
+    return frozen_array(
+        _about_2d(np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]), cx, cy)
+    )
+
+
+def skew_2d(ax_deg: float, ay_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
+    ax, ay = math.radians(ax_deg), math.radians(ay_deg)
+    return frozen_array(_about_2d(np.array([[1.0, math.tan(ax)], [math.tan(ay), 1.0]]), cx, cy))
+
+
+def compose_2d(*matrices: np.ndarray) -> np.ndarray:
+    """TransformGroup: ``matrices`` applied first to last."""
+    m = np.eye(3)
+    for a in matrices:
+        m = a @ m
+    return frozen_array(m)
+
+
 # --------------------------------------------------------------------------- animated transforms
 
 
@@ -295,6 +338,16 @@ def node_matrix(node) -> np.ndarray:
 
     if isinstance(node, np.ndarray):
         return node
+    if isinstance(node, K.Translate2D):
+        return translation_2d(node.x, node.y)
+    if isinstance(node, K.Scale2D):
+        return scaling_2d(node.scale_x, node.scale_y, node.center_x, node.center_y)
+    if isinstance(node, K.Rotate2D):
+        return rotation_2d(node.angle, node.center_x, node.center_y)
+    if isinstance(node, K.Skew2D):
+        return skew_2d(node.angle_x, node.angle_y, node.center_x, node.center_y)
+    if isinstance(node, K.TransformGroup2D):
+        return compose_2d(*[node_matrix(c) for c in node.children])
     try:
         if isinstance(node, K.Translate):
             return translation(node.offset_x, node.offset_y, node.offset_z)

@@ -9,8 +9,8 @@ matrix made from an animated transform, with its chain). ``tracks`` then walks t
 viewports once and turns each tagged object into the paths where it lands.
 
 A slot read while building but held by no scene object is a property xaml3d evaluates only at
-load: a panel's or Viewport3D's size (the layout is done once), a brush's 2D Transform. WPF
-would show it change; ANIM014 says that xaml3d draws its value at load instead.
+load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once). WPF would
+show it change; ANIM014 says that xaml3d draws its value at load instead.
 
 What runs (storyboard checks): ANIM007 for a storyboard no trigger begins or whose BeginTime
 is {x:Null}, ANIM008 for an animation whose BeginTime is {x:Null}.
@@ -45,7 +45,7 @@ class Slots:
         self.placed: set[int] = set()
         # id(scene object) -> (object, [(field, slot)]): the object kept, so its id stays its own
         self.tags: dict[int, tuple[object, list[tuple[str, int]]]] = {}
-        self.worlds: dict[int, tuple[object, str, WorldChain]] = {}
+        self.worlds: dict[int, tuple[object, list[tuple[str, WorldChain]]]] = {}
 
     def add(self, target: Target, anim: Animation) -> None:
         k = self._index.get(target.key)
@@ -67,7 +67,27 @@ class Slots:
         self.tags.setdefault(id(obj), (obj, []))[1].extend(pairs)
 
     def world(self, obj, field: str, chain: WorldChain) -> None:
-        self.worlds[id(obj)] = (obj, field, chain)
+        self.placed.update(chain.slots)
+        self.worlds.setdefault(id(obj), (obj, []))[1].append((field, chain))
+
+
+def node_of(r, el, cls, values: dict, *, place: bool = True, **parts):
+    """The typed node (scene.tracks) of a transform built from ``el`` when one of its own
+    properties (``values``: field -> (XAML property, value)) or one of its ``parts`` (inner
+    nodes) animates, else None. ``place``: its slots count as drawn (a 3D transform lands in
+    the Scene through the models under it, or moves nothing drawn; a 2D one counts where a
+    brush holds it)."""
+    s = r.slots
+    if s is None:
+        return None
+    slots = tuple(
+        (field, k) for field, (prop, _) in values.items() for f, k in s.of(el, prop) if f is None
+    )
+    if not slots and all(v is None for v in parts.values()):
+        return None
+    if place:
+        s.placed.update(k for _, k in slots)
+    return cls(**{**{f: v for f, (_, v) in values.items()}, **parts}, slots=slots)
 
 
 # --------------------------------------------------------------------------- resolution
@@ -143,9 +163,9 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...]) -> Tracks:
                 paths[slot].append(ScenePath(vi, steps, field))
         w = slots.worlds.get(id(obj))
         if w is not None and w[0] is obj:
-            chain = w[2]
-            worlds.append(WorldChain(ScenePath(vi, steps, w[1]), chain.prefix, chain.factors,
-                                     chain.slots))  # fmt: skip
+            for field, chain in w[1]:
+                worlds.append(WorldChain(ScenePath(vi, steps, field), chain.prefix,
+                                         chain.factors, chain.slots))  # fmt: skip
 
     def visit_brush(brush, vi: int, steps: tuple) -> None:
         visit(brush, vi, steps)

@@ -30,6 +30,7 @@ from xaml3d.scene.types import (
     frozen_array,
 )
 from xaml3d.xaml import values as V
+from xaml3d.xaml.animation_tracks import node_of
 from xaml3d.xaml.context import element_name
 
 WHITE = (1.0, 1.0, 1.0, 1.0)
@@ -38,21 +39,6 @@ WHITE = (1.0, 1.0, 1.0, 1.0)
 def transform3d(r, el) -> np.ndarray | None:
     """A Transform3D element -> 4x4 column-form matrix (None: not a transform)."""
     return transform_parts(r, el)[0]
-
-
-def _node(r, el, cls, values: dict, **parts):
-    """The typed node (scene.tracks) of a transform built from ``el`` when one of its own
-    properties (``values``: field -> (XAML property, value)) or of its ``parts`` animates."""
-    s = r.slots
-    if s is None:
-        return None
-    slots = tuple(
-        (field, k) for field, (prop, _) in values.items() for f, k in s.of(el, prop) if f is None
-    )
-    if not slots and all(v is None for v in parts.values()):
-        return None
-    s.placed.update(k for _, k in slots)
-    return cls(**{**{f: v for f, (_, v) in values.items()}, **parts}, slots=slots)
 
 
 def transform_parts(r, el) -> tuple[np.ndarray | None, object]:
@@ -64,7 +50,7 @@ def transform_parts(r, el) -> tuple[np.ndarray | None, object]:
     try:
         if t == "TranslateTransform3D":
             x, y, z = (p.value(k, d, 0.0) for k in ("OffsetX", "OffsetY", "OffsetZ"))
-            node = _node(r, el, K.Translate, {"offset_x": ("OffsetX", x),
+            node = node_of(r, el, K.Translate, {"offset_x": ("OffsetX", x),
                          "offset_y": ("OffsetY", y), "offset_z": ("OffsetZ", z)})  # fmt: skip
             return T.translation(x, y, z), node
         center = (
@@ -76,12 +62,12 @@ def transform_parts(r, el) -> tuple[np.ndarray | None, object]:
                    "center_z": ("CenterZ", center[2])}  # fmt: skip
         if t == "ScaleTransform3D":
             sx, sy, sz = (p.value(k, d, 1.0) for k in ("ScaleX", "ScaleY", "ScaleZ"))
-            node = _node(r, el, K.Scale, {"scale_x": ("ScaleX", sx), "scale_y": ("ScaleY", sy),
+            node = node_of(r, el, K.Scale, {"scale_x": ("ScaleX", sx), "scale_y": ("ScaleY", sy),
                          "scale_z": ("ScaleZ", sz), **centers})  # fmt: skip
             return T.scaling(sx, sy, sz, center), node
         if t == "RotateTransform3D":
             rot, rot_node = p.obj("Rotation", lambda e: rotation_parts(r, e), None) or (None, None)
-            node = _node(r, el, K.Rotate, {"rotation": ("Rotation", None), **centers},
+            node = node_of(r, el, K.Rotate, {"rotation": ("Rotation", None), **centers},
                          rotation=rot_node)  # fmt: skip
             if node is not None and node.rotation is None and rot is not None:
                 node = replace(node, rotation=_rotation_data(rot))
@@ -142,11 +128,11 @@ def rotation_parts(r, el):
     if p.type == "AxisAngleRotation3D":
         axis = p.value("Axis", V.parse_vector3d, (0.0, 1.0, 0.0))
         angle = p.value("Angle", V.parse_double, 0.0)
-        node = _node(r, el, K.AxisAngle, {"axis": ("Axis", axis), "angle": ("Angle", angle)})
+        node = node_of(r, el, K.AxisAngle, {"axis": ("Axis", axis), "angle": ("Angle", angle)})
         return ("axis", axis, angle), node
     if p.type == "QuaternionRotation3D":
         q = p.value("Quaternion", V.parse_quaternion, (0.0, 0.0, 0.0, 1.0))
-        return ("quat", q), _node(r, el, K.QuaternionRotation, {"quaternion": ("Quaternion", q)})
+        return ("quat", q), node_of(r, el, K.QuaternionRotation, {"quaternion": ("Quaternion", q)})
     r.ctx.diag("XAML013", f"{p.type} is not a Rotation3D: ignored", el)
     return None, None
 
