@@ -13,6 +13,8 @@ main | tar -x -C /tmp/before``, run by run interleaved with this one):
 - ``animate``: ``python -m xaml3d animate FILE -o x.gif``, wall seconds (median, min..max) and
   the largest peak RSS (``os.wait4``).
 
+``--tree TREE`` measures that source tree as "now" instead of the installed xaml3d.
+
 The machine is a 2-core VM shared with other jobs: compare only pairs measured in one run.
 """
 
@@ -81,12 +83,14 @@ def main(argv=None) -> int:
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--frames", type=int, default=90)
     ap.add_argument("--base", help="another source tree to measure alongside")
+    ap.add_argument("--tree", help="measure this source tree as 'now' (default: the installed)")
     ap.add_argument("--skip-animate", action="store_true")
     args = ap.parse_args(argv)
     if not args.file.is_file():
         print(f"{args.file}: not found (the shared corpus is absent)")
         return 1
-    trees = {"now": None} | ({"base": str(Path(args.base).resolve())} if args.base else {})
+    now = str(Path(args.tree).resolve()) if args.tree else None
+    trees = {"now": now} | ({"base": str(Path(args.base).resolve())} if args.base else {})
     frames = {k: [] for k in trees}
     walls = {k: [] for k in trees}
     rss = {k: 0.0 for k in trees}
