@@ -71,6 +71,12 @@ class Slots:
         self.worlds.setdefault(id(obj), (obj, []))[1].append((field, chain))
 
 
+def built(pair):
+    """A (value, typed node) pair as a property's built object: None when there is no value,
+    as the plain value would be (so Props sees an unreadable object as before)."""
+    return None if pair is None or pair[0] is None else pair
+
+
 def node_of(r, el, cls, values: dict, *, place: bool = True, **parts):
     """The typed node (scene.tracks) of a transform built from ``el`` when one of its own
     properties (``values``: field -> (XAML property, value)) or one of its ``parts`` (inner

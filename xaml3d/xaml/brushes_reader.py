@@ -32,7 +32,7 @@ from xaml3d.scene.types import (
     placeholder_image,
 )
 from xaml3d.xaml import values as V
-from xaml3d.xaml.animation_tracks import node_of
+from xaml3d.xaml.animation_tracks import built, node_of
 from xaml3d.xaml.context import as_written
 from xaml3d.xaml.resources import reduce_uri
 
@@ -73,7 +73,9 @@ def _common(r, p, nodes: list) -> dict:
 
 
 def _transform_property(r, p, prop: str, field: str, nodes: list):
-    got = p.obj(prop, lambda el: transform2d_parts(r, el), None, from_string=transform2d_text)
+    got = p.obj(
+        prop, lambda el: built(transform2d_parts(r, el)), None, from_string=transform2d_text
+    )
     if isinstance(got, tuple):  # built from an element: (matrix, node)
         m, node = got
         if node is not None:

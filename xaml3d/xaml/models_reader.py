@@ -30,7 +30,7 @@ from xaml3d.scene.types import (
     frozen_array,
 )
 from xaml3d.xaml import values as V
-from xaml3d.xaml.animation_tracks import node_of
+from xaml3d.xaml.animation_tracks import built, node_of
 from xaml3d.xaml.context import element_name
 
 WHITE = (1.0, 1.0, 1.0, 1.0)
@@ -66,7 +66,8 @@ def transform_parts(r, el) -> tuple[np.ndarray | None, object]:
                          "scale_z": ("ScaleZ", sz), **centers})  # fmt: skip
             return T.scaling(sx, sy, sz, center), node
         if t == "RotateTransform3D":
-            rot, rot_node = p.obj("Rotation", lambda e: rotation_parts(r, e), None) or (None, None)
+            got = p.obj("Rotation", lambda e: built(rotation_parts(r, e)), None)
+            rot, rot_node = got or (None, None)
             node = node_of(r, el, K.Rotate, {"rotation": ("Rotation", None), **centers},
                          rotation=rot_node)  # fmt: skip
             if node is not None and node.rotation is None and rot is not None:
@@ -105,7 +106,7 @@ def transform_property(r, p) -> np.ndarray:
 def transform_property_parts(r, p) -> tuple[np.ndarray, object]:
     """The element's own Transform property (identity when absent) and its typed node when
     an animation drives part of it (else None)."""
-    m, node = p.obj("Transform", lambda e: transform_parts(r, e), None) or (None, None)
+    m, node = p.obj("Transform", lambda e: built(transform_parts(r, e)), None) or (None, None)
     return (T.identity() if m is None else m), node
 
 
