@@ -36,6 +36,7 @@ DEFAULT = ROOT.parent / "shared" / "corpus" / "005_wpfsamples-spinningcube.xaml"
 PER_FRAME = """
 import json, sys, time
 import xaml3d
+sys.stderr.write(xaml3d.__file__)
 scene = xaml3d.load(sys.argv[1])
 out = []
 for i in range(int(sys.argv[2])):
@@ -53,15 +54,17 @@ def _env(tree: str | None) -> dict:
     return env
 
 
-def per_frame(file: Path, frames: int, tree: str | None) -> list[float]:
-    p = subprocess.run([sys.executable, "-c", PER_FRAME, str(file), str(frames)],
-                       capture_output=True, env=_env(tree), check=True)  # fmt: skip
-    return json.loads(p.stdout)
+def per_frame(file: Path, frames: int, tree: str | None) -> tuple[list[float], str]:
+    """Seconds of each ``scene_at`` frame, and the xaml3d module that ran."""
+    # cwd: ``python -c`` puts the current folder first on sys.path, before PYTHONPATH
+    p = subprocess.run([sys.executable, "-c", PER_FRAME, str(file.resolve()), str(frames)],
+                       capture_output=True, env=_env(tree), cwd=tree, check=True)  # fmt: skip
+    return json.loads(p.stdout), p.stderr.decode().strip()
 
 
 def animate(file: Path, out: Path, tree: str | None) -> tuple[float, float]:
     """Wall seconds and peak RSS (MiB) of one ``xaml3d animate`` process."""
-    cmd = [sys.executable, "-m", "xaml3d", "animate", str(file), "-o", str(out)]
+    cmd = [sys.executable, "-m", "xaml3d", "animate", str(file.resolve()), "-o", str(out)]
     t0 = time.perf_counter()
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                             env=_env(tree), cwd=tree)  # fmt: skip
@@ -94,16 +97,19 @@ def main(argv=None) -> int:
     frames = {k: [] for k in trees}
     walls = {k: [] for k in trees}
     rss = {k: 0.0 for k in trees}
+    used = {}
     with tempfile.TemporaryDirectory() as tmp:
         for _ in range(args.runs):
             for name, tree in trees.items():  # interleaved: the same minutes for both
-                frames[name] += per_frame(args.file, args.frames, tree)
+                seconds, used[name] = per_frame(args.file, args.frames, tree)
+                frames[name] += seconds
                 if not args.skip_animate:
                     w, m = animate(args.file, Path(tmp) / f"{name}.gif", tree)
                     walls[name].append(w)
                     rss[name] = max(rss[name], m)
     print(f"{args.file.name}: {args.runs} runs")
     for name in trees:
+        print(f"  {name}: {used[name]}")
         print(f"  {name}: scene_at per frame {_span(frames[name], 'ms', 1e3)} "
               f"over {len(frames[name])} frames")  # fmt: skip
         if walls[name]:
