@@ -2,7 +2,7 @@
 
     python benchmarks/bench_scene_at.py [--runs 3] [--frames 90] [--base TREE] [FILE]
 
-FILE defaults to the shared corpus's 005_wpfsamples-spinningcube.xaml (a 12-triangle cube
+FILE defaults to the shared corpus's 005_wpfsamples-spinningcube.xaml (two 12-triangle cubes
 turned by six Forever DoubleAnimations; ``animate`` draws 543 frames of it). Two measures, each
 in whole processes (``--base TREE``: also the xaml3d of another source tree, e.g. ``git archive
 main | tar -x -C /tmp/before``, run by run interleaved with this one):
