@@ -7,7 +7,9 @@ docs/layout.md), camera (WPF's default PerspectiveCamera when none is given), ba
 nearest laid-out ancestor's Background brush) and ClipToBounds; the model tree flattened in
 draw order (ModelVisual3D: Content before Children) with each model's and light's world matrix
 (p_world = p_local * M_model * M_group... * M_visual... in WPF row terms); ModelUIElement3D,
-ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards.
+ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards, read
+before the viewports so that the build notes where what they animate lands (the Scene's
+animation tracks, animation_tracks.py).
 """
 
 from __future__ import annotations
