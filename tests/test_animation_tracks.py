@@ -339,3 +339,42 @@ def test_brush_2d_transform_animates_bit_for_bit(transform, name, prop, value):
     assert m.shape == (3, 3)
     assert m.tobytes() == want.material[0].brush.relative_transform.tobytes()
     assert not np.array_equal(m, s.viewports[0].models[0].material[0].brush.relative_transform)
+
+
+@pytest.mark.skipif(not CORPUS.is_dir(), reason="shared corpus absent")
+def test_every_corpus_scene_pickles_and_its_frames_survive():
+    from xaml3d.errors import XamlError
+
+    animated = 0
+    for path in sorted(CORPUS.glob("*.xaml")):
+        try:
+            s = xaml3d.load(path)
+        except XamlError:
+            continue
+        data = pickle.dumps(s)
+        assert b"lxml" not in data, path.name
+        copy = pickle.loads(data)
+        animated += s.tracks is not None and xaml3d.scene_at(s, 1.3) is not s
+        for t in (0.0, 1.3):
+            a, b = xaml3d.scene_at(s, t), xaml3d.scene_at(copy, t)
+            for va, vb in zip(a.viewports, b.viewports, strict=True):
+                assert _same(va.camera, vb.camera), path.name
+                assert _same(va.lights, vb.lights), path.name
+                for ma, mb in zip(va.models, vb.models, strict=True):
+                    assert _same((ma.world, ma.material), (mb.world, mb.material)), path.name
+    assert animated >= 10  # the corpus's animated scenes were among them (14 today)
+
+
+def _same(a, b) -> bool:
+    """Equal values, arrays bit for bit, through dataclasses and tuples."""
+    import dataclasses
+
+    if isinstance(a, np.ndarray):
+        return isinstance(b, np.ndarray) and a.tobytes() == b.tobytes() and a.shape == b.shape
+    if dataclasses.is_dataclass(a):
+        return type(a) is type(b) and all(
+            _same(getattr(a, f.name), getattr(b, f.name)) for f in dataclasses.fields(a)
+        )
+    if isinstance(a, tuple):
+        return isinstance(b, tuple) and len(a) == len(b) and all(map(_same, a, b))
+    return a == b
