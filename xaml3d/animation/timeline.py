@@ -106,13 +106,13 @@ class _Track:
         self.seen: dict = {}
 
     def __call__(self, base):
-        try:
-            return self.seen[base]
-        except KeyError:
-            v = self.seen[base] = _value(self.chain, self.value_type, base)
-            return v
-        except TypeError:  # not hashable (an array)
+        if isinstance(base, np.ndarray):
             return _value(self.chain, self.value_type, base)
+        key = repr(base)  # not ==: 0.0 and -0.0, 1 and 1.0 stay apart (bit for bit)
+        v = self.seen.get(key, self)
+        if v is self:
+            v = self.seen[key] = _value(self.chain, self.value_type, base)
+        return v
 
 
 def values_at(scene: Scene, t: float, storyboard: str | None = None) -> dict:

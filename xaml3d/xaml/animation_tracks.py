@@ -27,7 +27,7 @@ from xaml3d.xaml.animation_targets import ANIM_CODES, Target, TargetError, name_
 
 
 class _At(NamedTuple):
-    """A place in the file (what ``_diag`` needs of a scene object)."""
+    """A place in the file (what ``Resolution.diag`` needs of a scene object)."""
 
     line: int | None
     column: int | None
