@@ -378,3 +378,23 @@ def _same(a, b) -> bool:
     if isinstance(a, tuple):
         return isinstance(b, tuple) and len(a) == len(b) and all(map(_same, a, b))
     return a == b
+
+
+def test_decoded_images_are_reused_by_frames(tmp_path):
+    from PIL import Image
+
+    Image.new("RGBA", (4, 4), (255, 0, 0, 255)).save(tmp_path / "red.png")
+    body = nested().replace(
+        '<DiffuseMaterial Brush="Lime"/>',
+        '<DiffuseMaterial><DiffuseMaterial.Brush><ImageBrush x:Name="photo" ImageSource="red.png"'
+        "/></DiffuseMaterial.Brush></DiffuseMaterial>",
+    )
+    anim = ('<DoubleAnimation Storyboard.TargetName="photo" Storyboard.TargetProperty="Opacity" '
+            'To="0" Duration="0:0:1"/>')  # fmt: skip
+    (tmp_path / "s.xaml").write_text(scene(body, anim))
+    s = xaml3d.load(tmp_path / "s.xaml")
+    loaded = s.viewports[0].models[0].material[0].brush
+    assert loaded.image is not None and not loaded.is_placeholder
+    for t in (0.25, 0.5):
+        brush = xaml3d.scene_at(s, t).viewports[0].models[0].material[0].brush
+        assert brush.opacity == 1.0 - t and brush.image is loaded.image
