@@ -35,6 +35,11 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         "animation that never has an effect (BeginTime {x:Null}, or a zero-length active period)",
     ),  # fmt: skip
     "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
+    "ANIM014": (
+        WARNING,
+        "animation of a property xaml3d evaluates once, at load (a panel's or viewport's size, "
+        "a LayoutTransform): its value at load is drawn in every frame",
+    ),  # fmt: skip
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
     "ANIM012": (
         WARNING,

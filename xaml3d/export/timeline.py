@@ -1,9 +1,8 @@
 """The one place the exporters read animation state from a Scene.
 
 Everything the exporters know about storyboards comes through ``clip_of``: how long the
-animation runs and the Scene at a moment of it. Today that is the Scene's ``timeline`` (the same
-object ``xaml3d.render(scene, time=...)`` evaluates); when the Scene carries typed animation
-tracks this module is the only one to change.
+animation runs and the Scene at a moment of it, from the Scene's animation tracks evaluated by
+``xaml3d.animation.timeline`` (as ``xaml3d.render(scene, time=...)`` evaluates them).
 """
 
 from __future__ import annotations
@@ -11,7 +10,9 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 
+from xaml3d.animation import timeline as A
 from xaml3d.errors import SceneError
 from xaml3d.scene.types import Scene
 
@@ -32,25 +33,22 @@ class Clip:
 def clip_of(scene: Scene, storyboard: str | None = None) -> Clip | None:
     """The running animation of ``scene`` (Loaded storyboards, plus ``storyboard``), or None
     when nothing animates. SceneError ANIM010 when ``storyboard`` names none."""
-    timeline = scene.timeline
-    if timeline is None:
+    if scene.tracks is None:
         if storyboard is not None:
             raise SceneError(f"no storyboard named {storyboard!r} (the document has none)",
                              code="ANIM010", file=scene.file)  # fmt: skip
         return None
-    if not timeline.running_animations(storyboard):
+    if not A.running_animations(scene, storyboard):
         return None
-    seconds = float(timeline.one_cycle(storyboard))
+    seconds = float(A.one_cycle(scene, storyboard))
     endless = not math.isfinite(seconds)
     if not math.isfinite(seconds):
         seconds = ENDLESS_SECONDS
-    base = timeline.base
+    return Clip(seconds, endless, partial(_at, scene, storyboard))
 
-    def at(t: float) -> Scene:
-        frame = timeline.at(float(t), storyboard)
-        return scene if frame is base else frame
 
-    return Clip(seconds, endless, at)
+def _at(scene: Scene, storyboard: str | None, t: float) -> Scene:
+    return A.scene_at(scene, float(t), storyboard)
 
 
 def scene_at_start(scene: Scene, storyboard: str | None = None) -> Scene:

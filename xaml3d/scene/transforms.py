@@ -270,3 +270,108 @@ def is_mirroring(m) -> bool:
     """True when the linear part has a negative determinant (the transform flips handedness,
     so a locally counter-clockwise triangle is seen clockwise)."""
     return bool(np.linalg.det(np.asarray(m, dtype=np.float64)[:3, :3]) < 0.0)
+
+
+# --------------------------------------------------------------------------- 2D (brush) transforms
+# 3x3 column-form matrices, p' = M @ (x, y, 1), brush space y down: TranslateTransform,
+# ScaleTransform, RotateTransform, SkewTransform, TransformGroup (wpf3d.md section 7).
+
+
+def _about_2d(linear: np.ndarray, cx: float, cy: float) -> np.ndarray:
+    m = np.eye(3)
+    m[:2, :2] = linear
+    m[:2, 2] = np.array([cx, cy]) - linear @ np.array([cx, cy])
+    return m
+
+
+def translation_2d(x: float, y: float) -> np.ndarray:
+    m = np.eye(3)
+    m[:2, 2] = (x, y)
+    return frozen_array(m)
+
+
+def scaling_2d(sx: float, sy: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
+    return frozen_array(_about_2d(np.diag([sx, sy]), cx, cy))
+
+
+def rotation_2d(angle_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
+    """Positive angles turn clockwise on screen (y down): x' = x cos - y sin."""
+    a = math.radians(angle_deg)
+    return frozen_array(
+        _about_2d(np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]), cx, cy)
+    )
+
+
+def skew_2d(ax_deg: float, ay_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
+    ax, ay = math.radians(ax_deg), math.radians(ay_deg)
+    return frozen_array(_about_2d(np.array([[1.0, math.tan(ax)], [math.tan(ay), 1.0]]), cx, cy))
+
+
+def compose_2d(*matrices: np.ndarray) -> np.ndarray:
+    """TransformGroup: ``matrices`` applied first to last."""
+    m = np.eye(3)
+    for a in matrices:
+        m = a @ m
+    return frozen_array(m)
+
+
+# --------------------------------------------------------------------------- animated transforms
+
+
+def axis_angle_quaternion(axis, angle_deg: float) -> tuple[float, float, float, float]:
+    """An AxisAngleRotation3D as the unit quaternion (x, y, z, w) animations interpolate; a
+    zero (or non-finite) axis is no rotation, as in WPF."""
+    a = np.asarray(axis, dtype=np.float64)
+    n = float(np.linalg.norm(a))
+    if n == 0.0 or not math.isfinite(n):
+        return (0.0, 0.0, 0.0, 1.0)
+    half = math.radians(angle_deg) / 2.0
+    x, y, z = a / n * math.sin(half)
+    return (float(x), float(y), float(z), math.cos(half))
+
+
+def node_matrix(node) -> np.ndarray:
+    """The 4x4 matrix of a typed transform node (``xaml3d.scene.tracks``), or of a constant
+    matrix: the very computation the reader made at load, so equal values give equal bits. A
+    transform that cannot be built is the identity (SCN010 said so at load)."""
+    from xaml3d.scene import tracks as K
+
+    if isinstance(node, np.ndarray):
+        return node
+    if isinstance(node, K.Translate2D):
+        return translation_2d(node.x, node.y)
+    if isinstance(node, K.Scale2D):
+        return scaling_2d(node.scale_x, node.scale_y, node.center_x, node.center_y)
+    if isinstance(node, K.Rotate2D):
+        return rotation_2d(node.angle, node.center_x, node.center_y)
+    if isinstance(node, K.Skew2D):
+        return skew_2d(node.angle_x, node.angle_y, node.center_x, node.center_y)
+    if isinstance(node, K.TransformGroup2D):
+        return compose_2d(*[node_matrix(c) for c in node.children])
+    try:
+        if isinstance(node, K.Translate):
+            return translation(node.offset_x, node.offset_y, node.offset_z)
+        if isinstance(node, K.TransformGroup):
+            return compose(*[node_matrix(c) for c in node.children])
+        center = (node.center_x, node.center_y, node.center_z)
+        if isinstance(node, K.Scale):
+            return scaling(node.scale_x, node.scale_y, node.scale_z, center)
+        rot = node.rotation
+        if rot is None:
+            return identity()
+        if isinstance(rot, K.AxisAngle):
+            return rotation_axis_angle(rot.axis, rot.angle, center)
+        return rotation_quaternion(*rot.quaternion, center=center)
+    except GeometryError:
+        return identity()
+
+
+def chain_matrix(prefix: np.ndarray | None, factors) -> np.ndarray:
+    """A world matrix from its chain (``tracks.WorldChain``): ``prefix``, then each factor
+    applied after it, one ``compose`` at a time as the reader composed them; no prefix: the
+    single factor's own matrix (a camera's Transform)."""
+    m = prefix
+    for f in factors:
+        fm = node_matrix(f)
+        m = fm if m is None else compose(fm, m)
+    return identity() if m is None else m

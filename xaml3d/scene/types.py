@@ -16,10 +16,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xaml3d.errors import Diagnostic, SceneError
+
+if TYPE_CHECKING:
+    from xaml3d.scene.tracks import Tracks
 
 RGBA = tuple[float, float, float, float]
 Vec3 = tuple[float, float, float]
@@ -507,6 +511,12 @@ class Viewport:
         return None if lo is None else (lo, hi)
 
 
+# What ``Scene.timeline`` returns: the evaluation of the tracks is the animation stage's, above
+# the scene, which does not import it; ``xaml3d.animation.timeline`` puts its class here when
+# it is imported (``import xaml3d`` imports it).
+TIMELINE_VIEW: list = [None]
+
+
 @dataclass(frozen=True)
 class Scene:
     file: str | None
@@ -518,11 +528,18 @@ class Scene:
     layout: object = field(
         default=None, compare=False, repr=False
     )  # xaml3d.scene.boxes.WindowLayout of the panels (None: no layout root)
-    # What evaluates the storyboards: an object with ``at(t, storyboard=None) -> Scene`` (the
-    # scene at t seconds, Loaded storyboards begun at 0), ``running(storyboard=None)`` (the
-    # animations that run) and ``cycle(storyboard=None)`` (seconds of one full cycle, or
-    # math.inf). None: nothing animates. Made by the reader (it keeps the parsed markup).
-    timeline: object = field(default=None, compare=False, repr=False)
+    # What the storyboards animate, as places in this Scene (xaml3d.scene.tracks): present
+    # whenever the document has storyboards; None when it has none, and in a frame
+    # (xaml3d.animation.scene_at: a finished moment is not evaluated again).
+    tracks: Tracks | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def timeline(self):
+        """The storyboards of this scene as ``xaml3d.animation.timeline.Timeline`` (``at(t)``,
+        ``cycle()``, ``running_animations()``...), or None when ``tracks`` is None."""
+        if self.tracks is None:
+            return None
+        return TIMELINE_VIEW[0](self)
 
     def viewport(self, which: int | str | None = None) -> Viewport:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""

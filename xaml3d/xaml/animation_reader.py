@@ -13,7 +13,8 @@ DoubleAnimationUsingPath and PointAnimationUsingPath (their PathGeometry's Figur
 path_data.py). Rotation3D values are read as quaternions (x, y, z, w). Storyboards kept in
 resources that no trigger begins are listed with ``trigger=None`` (code behind starts them,
 if anything). The static scene keeps the base values: nothing here changes the models
-(``animation_scene.py`` evaluates the storyboards).
+(``animation_tracks.py`` turns what they target into the Scene's tracks, which
+``xaml3d.animation`` evaluates).
 """
 
 from __future__ import annotations

@@ -11,13 +11,14 @@ TransformGroup as 3x3 column-form matrices (p' = M @ (x, y, 1)).
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
 from PIL import Image
 
 from xaml3d.errors import ValueSyntaxError
+from xaml3d.scene import tracks as K
+from xaml3d.scene import transforms as T
 from xaml3d.scene.types import (
     DiffuseMaterial,
     EmissiveMaterial,
@@ -32,6 +33,7 @@ from xaml3d.scene.types import (
     placeholder_image,
 )
 from xaml3d.xaml import values as V
+from xaml3d.xaml.animation_tracks import built, node_of
 from xaml3d.xaml.context import as_written
 from xaml3d.xaml.resources import reduce_uri
 
@@ -58,17 +60,29 @@ def brush_property(r, p, prop: str):
     return p.obj(prop, lambda el: brush(r, el), None, from_string=brush_from_string)
 
 
-def _common(r, p) -> dict:
+def _common(r, p, nodes: list) -> dict:
+    """What every brush has; ``nodes`` receives (field, typed node) of an animated Transform
+    or RelativeTransform."""
     return {
         "opacity": p.value("Opacity", V.parse_double, 1.0),
-        "transform": p.obj(
-            "Transform", lambda el: transform2d(r, el), None, from_string=transform2d_text
-        ),
-        "relative_transform": p.obj(
-            "RelativeTransform", lambda el: transform2d(r, el), None, from_string=transform2d_text
+        "transform": _transform_property(r, p, "Transform", "transform", nodes),
+        "relative_transform": _transform_property(
+            r, p, "RelativeTransform", "relative_transform", nodes
         ),
         **r.ctx.position(p.el),
     }
+
+
+def _transform_property(r, p, prop: str, field: str, nodes: list):
+    got = p.obj(
+        prop, lambda el: built(transform2d_parts(r, el)), None, from_string=transform2d_text
+    )
+    if isinstance(got, tuple):  # built from an element: (matrix, node)
+        m, node = got
+        if node is not None:
+            nodes.append((field, node))
+        return m
+    return got  # a matrix string, {x:Null} or nothing
 
 
 def _stops(r, p) -> tuple[GradientStop, ...]:
@@ -90,18 +104,37 @@ def _stop(r, el) -> GradientStop | None:
     if p.type != "GradientStop":
         r.ctx.diag("XAML013", f"{p.type} is not a GradientStop: ignored", el)
         return None
-    return GradientStop(
+    stop = GradientStop(
         color=p.value("Color", V.parse_color, (1.0, 1.0, 1.0, 0.0)),
         offset=p.value("Offset", V.parse_double, 0.0),
     )
+    return r.tag(stop, el, _STOP_FIELDS)
+
+
+# XAML property -> scene field, of the objects animations reach (wpf3d.md section 8)
+_BRUSH_FIELDS = {"Color": "color", "Opacity": "opacity", "StartPoint": "start_point",
+                 "EndPoint": "end_point", "Center": "center", "GradientOrigin": "gradient_origin",
+                 "RadiusX": "radius_x", "RadiusY": "radius_y"}  # fmt: skip
+_STOP_FIELDS = {"Color": "color", "Offset": "offset"}
+_PASS_FIELDS = {"Color": "color", "AmbientColor": "ambient_color",
+                "SpecularPower": "specular_power"}  # fmt: skip
 
 
 def brush(r, el):
     """Any Brush element -> a scene brush (None when it cannot be read)."""
+    nodes: list = []
+    obj = r.tag(_brush(r, el, nodes), el, _BRUSH_FIELDS)
+    for field, node in nodes:
+        if obj is not None and hasattr(obj, field):  # a 2D transform an animation drives
+            r.world(obj, field, None, (node,))
+    return obj
+
+
+def _brush(r, el, nodes: list):
     p = r.props(el)
     t = p.type
     if t == "SolidColorBrush":
-        c = _common(r, p)
+        c = _common(r, p, nodes)
         return SolidColorBrush(
             color=p.value("Color", V.parse_color, (1.0, 1.0, 1.0, 0.0)),
             opacity=c["opacity"],
@@ -116,7 +149,7 @@ def brush(r, el):
             color_interpolation_mode=p.value(
                 "ColorInterpolationMode", _enum(_INTERP), "SRgbLinearInterpolation"
             ),
-            **_common(r, p),
+            **_common(r, p, nodes),
         )
         if t == "LinearGradientBrush":
             return LinearGradientBrush(
@@ -132,7 +165,7 @@ def brush(r, el):
             **common,
         )
     if t == "ImageBrush":
-        return _image_brush(r, p)
+        return _image_brush(r, p, nodes)
     if t in ("VisualBrush", "DrawingBrush", "BitmapCacheBrush"):
         r.ctx.diag("BRU001", f"{t} content cannot be drawn: a neutral placeholder is used", el)
         return PlaceholderBrush(
@@ -142,7 +175,7 @@ def brush(r, el):
     return None
 
 
-def _image_brush(r, p) -> ImageBrush:
+def _image_brush(r, p, nodes: list) -> ImageBrush:
     el = p.el
     source = p.string("ImageSource")
     path = image = None
@@ -165,22 +198,14 @@ def _image_brush(r, p) -> ImageBrush:
         tile_mode=p.value("TileMode", _enum(_TILE), "None"),
         alignment_x=p.value("AlignmentX", _enum(_ALIGN_X), "Center"),
         alignment_y=p.value("AlignmentY", _enum(_ALIGN_Y), "Center"),
-        **_common(r, p),
+        **_common(r, p, nodes),
     )
 
 
 def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None, np.ndarray | None]:
     """Resolve and decode an ImageSource; diagnostics (located at ``el``'s attribute ``attr``
-    when the source is an attribute) say why when there is no image. Animation frames reuse
-    the first frame's decoded image."""
-    key = ("image", id(el), source)
-    hit = r.cache.get(key) if r.cache is not None else None
-    if hit is not None and hit[0] is el:
-        return hit[1]
-    found = _load_image(r, source, el, attr)
-    if r.cache is not None:
-        r.cache[key] = (el, found)  # the element kept: its id stays its own
-    return found
+    when the source is an attribute) say why when there is no image."""
+    return _load_image(r, source, el, attr)
 
 
 def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.ndarray | None]:
@@ -250,6 +275,14 @@ def _located(r, p) -> dict:
 
 def material(r, el) -> tuple:
     """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order)."""
+    passes = _material(r, el)
+    if r.props(el).type != "MaterialGroup":
+        for ps in passes:
+            r.tag(ps, el, _PASS_FIELDS)
+    return passes
+
+
+def _material(r, el) -> tuple:
     p = r.props(el)
     t = p.type
     if t == "MaterialGroup":
@@ -291,13 +324,6 @@ def material(r, el) -> tuple:
 # --------------------------------------------------------------------------- 2D transforms
 
 
-def _about(linear: np.ndarray, cx: float, cy: float) -> np.ndarray:
-    m = np.eye(3)
-    m[:2, :2] = linear
-    m[:2, 2] = np.array([cx, cy]) - linear @ np.array([cx, cy])
-    return m
-
-
 def _matrix2d(s: str) -> np.ndarray:
     if s.strip() == "Identity":
         return np.eye(3)
@@ -317,31 +343,46 @@ def transform2d_text(s: str) -> np.ndarray:
 
 def transform2d(r, el) -> np.ndarray | None:
     """A 2D Transform element -> read-only 3x3 column-form matrix (None when unreadable)."""
+    return transform2d_parts(r, el)[0]
+
+
+def transform2d_parts(r, el) -> tuple[np.ndarray | None, object]:
+    """A 2D Transform element -> (its matrix or None, its typed node when an animation drives
+    part of it; its slots count as drawn only where a brush holds it, ``Reader.world``)."""
     p = r.props(el)
     t = p.type
     d = V.parse_double
     cx, cy = p.value("CenterX", d, 0.0), p.value("CenterY", d, 0.0)
+    centers = {"center_x": ("CenterX", cx), "center_y": ("CenterY", cy)}
+
+    def node(cls, values: dict, **parts):
+        return node_of(r, el, cls, values, place=False, **parts)
+
     if t == "TranslateTransform":
-        m = np.eye(3)
-        m[:2, 2] = (p.value("X", d, 0.0), p.value("Y", d, 0.0))
-    elif t == "ScaleTransform":
-        m = _about(np.diag([p.value("ScaleX", d, 1.0), p.value("ScaleY", d, 1.0)]), cx, cy)
-    elif t == "RotateTransform":
-        a = math.radians(p.value("Angle", d, 0.0))
-        # positive angles turn clockwise on screen (y down): x' = x cos - y sin
-        m = _about(np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]), cx, cy)
-    elif t == "SkewTransform":
-        ax, ay = math.radians(p.value("AngleX", d, 0.0)), math.radians(p.value("AngleY", d, 0.0))
-        m = _about(np.array([[1.0, math.tan(ax)], [math.tan(ay), 1.0]]), cx, cy)
-    elif t == "MatrixTransform":
-        m = p.value("Matrix", _matrix2d, np.eye(3))
-    elif t == "TransformGroup":
-        m = np.eye(3)
-        for k in p.items("Children"):
-            child = r.build_node(k, lambda e: transform2d(r, e), None)
-            if child is not None:
-                m = child @ m  # children apply first to last
-    else:
-        r.ctx.diag("BRU006", f"{t} is not a 2D Transform: ignored", el)
-        return None
-    return frozen_array(m)
+        x, y = p.value("X", d, 0.0), p.value("Y", d, 0.0)
+        return T.translation_2d(x, y), node(K.Translate2D, {"x": ("X", x), "y": ("Y", y)})
+    if t == "ScaleTransform":
+        sx, sy = p.value("ScaleX", d, 1.0), p.value("ScaleY", d, 1.0)
+        n = node(K.Scale2D, {"scale_x": ("ScaleX", sx), "scale_y": ("ScaleY", sy), **centers})
+        return T.scaling_2d(sx, sy, cx, cy), n
+    if t == "RotateTransform":
+        a = p.value("Angle", d, 0.0)
+        return T.rotation_2d(a, cx, cy), node(K.Rotate2D, {"angle": ("Angle", a), **centers})
+    if t == "SkewTransform":
+        ax, ay = p.value("AngleX", d, 0.0), p.value("AngleY", d, 0.0)
+        n = node(K.Skew2D, {"angle_x": ("AngleX", ax), "angle_y": ("AngleY", ay), **centers})
+        return T.skew_2d(ax, ay, cx, cy), n
+    if t == "MatrixTransform":
+        return frozen_array(p.value("Matrix", _matrix2d, np.eye(3))), None
+    if t == "TransformGroup":
+        parts = [
+            r.build_node(k, lambda e: transform2d_parts(r, e), None) or (None, None)
+            for k in p.items("Children")
+        ]
+        kept = [(m, n) for m, n in parts if m is not None]
+        group = None
+        if any(n is not None for _, n in kept):
+            group = K.TransformGroup2D(tuple(m if n is None else n for m, n in kept))
+        return T.compose_2d(*[m for m, _ in kept]), group
+    r.ctx.diag("BRU006", f"{t} is not a 2D Transform: ignored", el)
+    return None, None

@@ -7,7 +7,9 @@ docs/layout.md), camera (WPF's default PerspectiveCamera when none is given), ba
 nearest laid-out ancestor's Background brush) and ClipToBounds; the model tree flattened in
 draw order (ModelVisual3D: Content before Children) with each model's and light's world matrix
 (p_world = p_local * M_model * M_group... * M_visual... in WPF row terms); ModelUIElement3D,
-ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards.
+ContainerUIElement3D and Viewport2DVisual3D (a placeholder brush); and the storyboards, read
+before the viewports so that the build notes where what they animate lands (the Scene's
+animation tracks, animation_tracks.py).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from dataclasses import replace
 import numpy as np
 
 from xaml3d.scene import transforms as T
+from xaml3d.scene.tracks import WorldChain, slots_in
 from xaml3d.scene.types import (
     DiffuseMaterial,
     Model,
@@ -27,6 +30,7 @@ from xaml3d.scene.types import (
 )
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
+from xaml3d.xaml.animation_tracks import Slots, resolve_targets, tracks
 from xaml3d.xaml.brushes_reader import material
 from xaml3d.xaml.context import (
     ReadContext,
@@ -39,7 +43,7 @@ from xaml3d.xaml.context import (
     x_attr,
 )
 from xaml3d.xaml.layout_step import lay_out, unreached
-from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, transform_property
+from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
 from xaml3d.xaml.parser import PRESENTATION_NS, XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
@@ -61,19 +65,37 @@ def no_namespace(local: str) -> str:
 class Reader:
     """Builds scene objects from elements: property access, references, dispatch."""
 
-    def __init__(self, ctx: ReadContext, resources: Resources, frame=None) -> None:
+    def __init__(self, ctx: ReadContext, resources: Resources) -> None:
         self.ctx = ctx
         self.resources = resources
         self._props: dict[int, Props] = {}
-        # an animation frame being built (xaml3d.xaml.animation_scene.Frame): animated values
-        # by (element id, property), and what earlier frames built that animation cannot change
-        self.overrides: dict = frame.overrides if frame is not None else {}
-        self.cache: dict | None = frame.cache if frame is not None else None
+        # the properties the storyboards animate (animation_tracks.Slots), None when none:
+        # the build notes where their values land in the Scene
+        self.slots: Slots | None = None
 
-    def animated(self, el, prop: str, value):
-        """The value of ``el``'s property ``prop`` in the frame being built."""
-        f = self.overrides.get((id(el), prop))
-        return value if f is None else f(value)
+    def read(self, el, prop: str) -> None:
+        """``el``'s property ``prop`` has been read (an animated one must land in the Scene)."""
+        s = self.slots
+        if s is not None:
+            for _, k in s.of(el, prop):
+                s.read.add(k)
+
+    def tag(self, obj, el, fields: dict[str, str]):
+        """``obj``, a scene object built from ``el``, holds ``el``'s properties ``fields``
+        (XAML property -> field of ``obj``): note those that animate. Returns ``obj``."""
+        s = self.slots
+        if s is not None and obj is not None:
+            s.tag(obj, [(field, k) for prop, field in fields.items() if hasattr(obj, field)
+                        for f, k in s.of(el, prop) if f is None])  # fmt: skip
+        return obj
+
+    def world(self, obj, field: str, prefix, factors: tuple):
+        """``obj``'s matrix ``field`` is the product of a chain an animation moves: noted.
+        Returns ``obj``."""
+        if self.slots is not None:
+            slots = frozenset().union(*(slots_in(f) for f in factors))
+            self.slots.world(obj, field, WorldChain(None, prefix, factors, slots))
+        return obj
 
     def props(self, el) -> Props:
         """The element's properties (read once: diagnostics are not repeated on reuse)."""
@@ -134,22 +156,24 @@ class _Acc:
 # --------------------------------------------------------------------------- 3D tree
 
 
-def walk_model3d(r: Reader, el, parent: np.ndarray, acc: _Acc) -> None:
+def walk_model3d(r: Reader, el, parent: np.ndarray, acc: _Acc, chain=None) -> None:
+    """A Model3D under ``parent`` (its world matrix; ``chain``: that matrix's chain when an
+    animated transform is above, else None)."""
     p = r.props(el)
     t = p.type
     if t == "Model3DGroup":
-        world = T.compose(transform_property(r, p), parent)
+        world, chain = world_of(r, p, parent, chain)
         for k in p.items("Children"):
-            r.build_node(k, lambda e: walk_model3d(r, e, world, acc))
+            r.build_node(k, lambda e: walk_model3d(r, e, world, acc, chain))
     elif t == "GeometryModel3D":
-        _geometry_model(r, p, parent, acc)
+        _geometry_model(r, p, parent, acc, chain)
     elif t in LIGHT_TYPES:
-        acc.lights.append(light(r, el, parent))
+        acc.lights.append(light(r, el, parent, chain))
     else:
         r.ctx.diag("SCN008", f"{t} is not a Model3D: skipped", el)
 
 
-def _geometry_model(r: Reader, p: Props, parent: np.ndarray, acc: _Acc) -> None:
+def _geometry_model(r: Reader, p: Props, parent: np.ndarray, acc: _Acc, chain) -> None:
     el = p.el
     if not p.has("Geometry"):
         r.ctx.diag("SCN005", "GeometryModel3D without Geometry: skipped", el)
@@ -160,22 +184,21 @@ def _geometry_model(r: Reader, p: Props, parent: np.ndarray, acc: _Acc) -> None:
     mat = p.obj("Material", lambda e: material(r, e), ())
     back = p.obj("BackMaterial", lambda e: material(r, e), ())
     # no Material and no BackMaterial: the scene checks' CHK005 says it (one finding per fact)
-    world = T.compose(transform_property(r, p), parent)
+    world, chain = world_of(r, p, parent, chain)
     name, rejected = element_name(el), frozenset(p.rejected)
-    acc.models.append(
-        Model(
-            m,
-            tuple(mat or ()),
-            tuple(back or ()),
-            world,
-            name,
-            **r.ctx.position(el),
-            rejected=rejected,
-        )  # fmt: skip
-    )
+    model = Model(
+        m,
+        tuple(mat or ()),
+        tuple(back or ()),
+        world,
+        name,
+        **r.ctx.position(el),
+        rejected=rejected,
+    )  # fmt: skip
+    acc.models.append(model if chain is None else r.world(model, "world", *chain))
 
 
-def walk_visual3d(r: Reader, el, parent: np.ndarray, acc: _Acc) -> None:
+def walk_visual3d(r: Reader, el, parent: np.ndarray, acc: _Acc, chain=None) -> None:
     p = r.props(el)
     t = p.type
     if p.etype is None or p.etype.kind != "visual3d":
@@ -184,19 +207,19 @@ def walk_visual3d(r: Reader, el, parent: np.ndarray, acc: _Acc) -> None:
         ) else "not a Visual3D"  # fmt: skip
         r.ctx.diag("SCN008", f"{t} is {kind}: skipped", el)
         return
-    world = T.compose(transform_property(r, p), parent)
+    world, chain = world_of(r, p, parent, chain)
     if t == "ModelVisual3D":
-        p.obj("Content", lambda e: walk_model3d(r, e, world, acc))
+        p.obj("Content", lambda e: walk_model3d(r, e, world, acc, chain))
     elif t == "ModelUIElement3D":
-        p.obj("Model", lambda e: walk_model3d(r, e, world, acc))
+        p.obj("Model", lambda e: walk_model3d(r, e, world, acc, chain))
     elif t == "Viewport2DVisual3D":
-        _viewport2d(r, p, world, acc)
+        _viewport2d(r, p, world, acc, chain)
         return
     for k in p.items("Children"):
-        r.build_node(k, lambda e: walk_visual3d(r, e, world, acc))
+        r.build_node(k, lambda e: walk_visual3d(r, e, world, acc, chain))
 
 
-def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
+def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc, chain) -> None:
     el = p.el
     r.ctx.diag("SCN007", "Viewport2DVisual3D: its 2D content is drawn as a placeholder", el)
     m = p.obj("Geometry", lambda e: mesh(r, e), None)
@@ -207,7 +230,8 @@ def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
     mat = tuple(replace(x, brush=placeholder) for x in mat) or (
         DiffuseMaterial(brush=placeholder, **r.ctx.position(el)),
     )
-    acc.models.append(Model(m, mat, (), world, element_name(el), **r.ctx.position(el)))
+    model = Model(m, mat, (), world, element_name(el), **r.ctx.position(el))
+    acc.models.append(model if chain is None else r.world(model, "world", *chain))
 
 
 # --------------------------------------------------------------------------- viewports
@@ -332,17 +356,29 @@ class _Walk:
 
 
 def build_scene(
-    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None, frame=None
+    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
 ) -> Scene:
-    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size;
-    with ``frame`` (animation_scene.Frame) its viewports at one moment of the storyboards,
-    which are not read again."""
-    r = Reader(ctx, resources, frame)
-    if frame is None:
-        check_names(ctx, doc.root)
-        check_styles(ctx, resources, doc.root)
+    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size,
+    with its storyboards and their tracks (animation_tracks.py)."""
+    r = Reader(ctx, resources)
+    check_names(ctx, doc.root)
+    check_styles(ctx, resources, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
+    # the storyboards first: the viewports' build notes where what they animate lands
+    storyboards: list = []
+    begun: set[int] = set()
+    for t in walk.triggers:
+        read_trigger(r, t, storyboards, begun)
+    d = resources.dictionary_of(doc.root)
+    for key, entry in d.entries.items() if d else ():
+        if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
+            storyboards.append(read_storyboard(r, entry, None, key))
+    resolution = None
+    if storyboards:
+        resolution = resolve_targets(Reader(ctx, resources), doc.root, storyboards, doc.file)
+        r.slots = resolution.slots
+
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
     viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
@@ -353,18 +389,11 @@ def build_scene(
         elif ns is not None:  # else XAML021 says why nothing could be read
             ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
 
-    storyboards: list = []
-    begun: set[int] = set()
-    for t in walk.triggers if frame is None else ():
-        read_trigger(r, t, storyboards, begun)
-    d = resources.dictionary_of(doc.root)
-    for key, entry in d.entries.items() if d and frame is None else ():
-        if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
-            storyboards.append(read_storyboard(r, entry, None, key))
-
-    if frame is None:
-        resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
-    diags = sorted(ctx.diagnostics, key=lambda g: (g.file or "", g.line or 0, g.column or 0))
+    resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
+    found = None if resolution is None else tracks(resolution, viewports)
+    extra = () if resolution is None else resolution.diagnostics
+    diags = sorted((*ctx.diagnostics, *extra),
+                   key=lambda g: (g.file or "", g.line or 0, g.column or 0))  # fmt: skip
     return Scene(
         file=doc.file,
         viewports=viewports,
@@ -373,4 +402,5 @@ def build_scene(
         resources_used=tuple(dict.fromkeys(ctx.files_used)),
         images_used=tuple(dict.fromkeys(ctx.images_used)),
         layout=laid_out,
+        tracks=found,
     )

@@ -82,8 +82,7 @@ class ReadContext:
     def __init__(self, *, allow_outside: bool = False, limits=None) -> None:
         self.diagnostics: list[Diagnostic] = []
         # errors reported so far, repeats suppressed by ``once`` too: a property whose reading
-        # raised it saw an error (Props.rejected), even while an animation frame's build drops
-        # the repeated diagnostics
+        # raised it saw an error (Props.rejected)
         self.errors = 0
         self.allow_outside = allow_outside
         self.limits = limits
@@ -122,6 +121,17 @@ class ReadContext:
             except ValueError:
                 continue
         return False
+
+    @contextmanager
+    def muted(self):
+        """Read without reporting: what is reported inside is forgotten (so that the build,
+        which reads the same markup, reports it in its place, once)."""
+        mark, once, errors = len(self.diagnostics), set(self._once), self.errors
+        try:
+            yield
+        finally:
+            del self.diagnostics[mark:]
+            self._once, self.errors = once, errors
 
     def keep(self, el: etree._Element) -> etree._Element:
         self._keep.append(el)

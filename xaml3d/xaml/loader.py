@@ -11,12 +11,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable
-from dataclasses import replace
-from functools import partial
 from pathlib import Path
 
 from xaml3d.scene.types import Scene
-from xaml3d.xaml.animation_scene import SceneTimeline
 from xaml3d.xaml.builder import build_scene
 from xaml3d.xaml.context import ReadContext
 from xaml3d.xaml.parser import Limits, parse_document
@@ -56,14 +53,4 @@ def load(
         found = res.discover_app(doc.path)
         if found is not None:
             res.add_app_file(found, discovered=doc.path)
-    scene = build_scene(ctx, res, doc, window_size)
-    if not scene.storyboards:
-        return scene
-    timeline = SceneTimeline(ctx, res, doc, scene, partial(build_scene, window_size=window_size))
-    diags = sorted(
-        (*scene.diagnostics, *timeline.diagnostics),
-        key=lambda g: (g.file or "", g.line or 0, g.column or 0),
-    )
-    scene = replace(scene, diagnostics=tuple(diags), timeline=timeline)
-    timeline.base = scene
-    return scene
+    return build_scene(ctx, res, doc, window_size)

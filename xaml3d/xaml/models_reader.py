@@ -17,6 +17,7 @@ from dataclasses import replace
 import numpy as np
 
 from xaml3d.errors import GeometryError
+from xaml3d.scene import tracks as K
 from xaml3d.scene import transforms as T
 from xaml3d.scene.mesh import build_mesh
 from xaml3d.scene.types import (
@@ -30,6 +31,7 @@ from xaml3d.scene.types import (
     frozen_array,
 )
 from xaml3d.xaml import values as V
+from xaml3d.xaml.animation_tracks import built, node_of
 from xaml3d.xaml.context import element_name
 
 WHITE = (1.0, 1.0, 1.0, 1.0)
@@ -37,66 +39,104 @@ WHITE = (1.0, 1.0, 1.0, 1.0)
 
 def transform3d(r, el) -> np.ndarray | None:
     """A Transform3D element -> 4x4 column-form matrix (None: not a transform)."""
+    return transform_parts(r, el)[0]
+
+
+def transform_parts(r, el) -> tuple[np.ndarray | None, object]:
+    """A Transform3D element -> (4x4 column-form matrix or None, its typed node when an
+    animation drives part of it, else None)."""
     p = r.props(el)
     t = p.type
     d = V.parse_double
     try:
         if t == "TranslateTransform3D":
-            return T.translation(
-                p.value("OffsetX", d, 0.0), p.value("OffsetY", d, 0.0), p.value("OffsetZ", d, 0.0)
-            )
+            x, y, z = (p.value(k, d, 0.0) for k in ("OffsetX", "OffsetY", "OffsetZ"))
+            node = node_of(r, el, K.Translate, {"offset_x": ("OffsetX", x),
+                         "offset_y": ("OffsetY", y), "offset_z": ("OffsetZ", z)})  # fmt: skip
+            return T.translation(x, y, z), node
         center = (
             p.value("CenterX", d, 0.0),
             p.value("CenterY", d, 0.0),
             p.value("CenterZ", d, 0.0),
         )
+        centers = {"center_x": ("CenterX", center[0]), "center_y": ("CenterY", center[1]),
+                   "center_z": ("CenterZ", center[2])}  # fmt: skip
         if t == "ScaleTransform3D":
-            return T.scaling(
-                p.value("ScaleX", d, 1.0), p.value("ScaleY", d, 1.0), p.value("ScaleZ", d, 1.0),
-                center,
-            )  # fmt: skip
+            sx, sy, sz = (p.value(k, d, 1.0) for k in ("ScaleX", "ScaleY", "ScaleZ"))
+            node = node_of(r, el, K.Scale, {"scale_x": ("ScaleX", sx), "scale_y": ("ScaleY", sy),
+                         "scale_z": ("ScaleZ", sz), **centers})  # fmt: skip
+            return T.scaling(sx, sy, sz, center), node
         if t == "RotateTransform3D":
-            rot = p.obj("Rotation", lambda e: rotation(r, e), None)
+            got = p.obj("Rotation", lambda e: built(rotation_parts(r, e)), None)
+            rot, rot_node = got or (None, None)
+            node = node_of(r, el, K.Rotate, {"rotation": ("Rotation", None), **centers},
+                         rotation=rot_node)  # fmt: skip
+            if node is not None and node.rotation is None and rot is not None:
+                node = replace(node, rotation=_rotation_data(rot))
             if rot is None:
-                return T.identity()
+                return T.identity(), node
             if rot[0] == "axis":
-                return T.rotation_axis_angle(rot[1], rot[2], center)
-            return T.rotation_quaternion(*rot[1], center=center)
+                return T.rotation_axis_angle(rot[1], rot[2], center), node
+            return T.rotation_quaternion(*rot[1], center=center), node
         if t == "MatrixTransform3D":
-            return T.from_wpf(p.value("Matrix", V.parse_matrix3d, np.eye(4)))
+            return T.from_wpf(p.value("Matrix", V.parse_matrix3d, np.eye(4))), None
         if t == "Transform3DGroup":
             parts = [
-                r.build_node(k, lambda e: transform3d(r, e), None) for k in p.items("Children")
+                r.build_node(k, lambda e: transform_parts(r, e), None) or (None, None)
+                for k in p.items("Children")
             ]
-            return T.compose(*[m for m in parts if m is not None])
+            kept = [(m, n) for m, n in parts if m is not None]
+            node = None
+            if any(n is not None for _, n in kept):
+                node = K.TransformGroup(tuple(m if n is None else n for m, n in kept))
+            return T.compose(*[m for m, _ in kept]), node
     except GeometryError as exc:
         # WPF loads a degenerate transform (it draws nothing or garbage): a warning, not the
         # GEO error the same problem is when a user asks for the transformation directly.
         r.ctx.diag("SCN010", f"{t} cannot be built ({exc.message}): identity used", el)
-        return T.identity()
+        return T.identity(), None
     r.ctx.diag("XAML013", f"{t} is not a Transform3D: ignored", el)
-    return None
+    return None, None
 
 
 def transform_property(r, p) -> np.ndarray:
     """The element's own Transform property (identity when absent)."""
-    m = p.obj("Transform", lambda e: transform3d(r, e), None)
-    return T.identity() if m is None else m
+    return transform_property_parts(r, p)[0]
+
+
+def transform_property_parts(r, p) -> tuple[np.ndarray, object]:
+    """The element's own Transform property (identity when absent) and its typed node when
+    an animation drives part of it (else None)."""
+    m, node = p.obj("Transform", lambda e: built(transform_parts(r, e)), None) or (None, None)
+    return (T.identity() if m is None else m), node
 
 
 def rotation(r, el):
     """A Rotation3D element -> ("axis", axis, angle_deg) or ("quat", (x, y, z, w))."""
+    return rotation_parts(r, el)[0]
+
+
+def _rotation_data(rot):
+    """A rotation tuple as typed data (scene.tracks)."""
+    if rot[0] == "axis":
+        return K.AxisAngle(rot[1], rot[2])
+    return K.QuaternionRotation(rot[1])
+
+
+def rotation_parts(r, el):
+    """A Rotation3D element -> (the rotation tuple of ``rotation`` or None, its typed node
+    when an animation drives part of it)."""
     p = r.props(el)
     if p.type == "AxisAngleRotation3D":
-        return (
-            "axis",
-            p.value("Axis", V.parse_vector3d, (0.0, 1.0, 0.0)),
-            p.value("Angle", V.parse_double, 0.0),
-        )
+        axis = p.value("Axis", V.parse_vector3d, (0.0, 1.0, 0.0))
+        angle = p.value("Angle", V.parse_double, 0.0)
+        node = node_of(r, el, K.AxisAngle, {"axis": ("Axis", axis), "angle": ("Angle", angle)})
+        return ("axis", axis, angle), node
     if p.type == "QuaternionRotation3D":
-        return ("quat", p.value("Quaternion", V.parse_quaternion, (0.0, 0.0, 0.0, 1.0)))
+        q = p.value("Quaternion", V.parse_quaternion, (0.0, 0.0, 0.0, 1.0))
+        return ("quat", q), node_of(r, el, K.QuaternionRotation, {"quaternion": ("Quaternion", q)})
     r.ctx.diag("XAML013", f"{p.type} is not a Rotation3D: ignored", el)
-    return None
+    return None, None
 
 
 def rotation_as_quaternion(rot) -> tuple[float, float, float, float] | None:
@@ -105,20 +145,34 @@ def rotation_as_quaternion(rot) -> tuple[float, float, float, float] | None:
         return None
     if rot[0] == "quat":
         return tuple(float(c) for c in rot[1])  # type: ignore[return-value]
-    axis = np.asarray(rot[1], dtype=np.float64)
-    n = float(np.linalg.norm(axis))
-    if n == 0.0 or not math.isfinite(n):
-        return (0.0, 0.0, 0.0, 1.0)  # WPF: a zero axis is no rotation
-    half = math.radians(rot[2]) / 2.0
-    x, y, z = axis / n * math.sin(half)
-    return (float(x), float(y), float(z), math.cos(half))
+    return T.axis_angle_quaternion(rot[1], rot[2])
 
 
 def camera(r, el):
     p = r.props(el)
-    t = p.type
-    d = V.parse_double
-    common = dict(transform=transform_property(r, p), name=element_name(el), **r.ctx.position(el))
+    transform, node = transform_property_parts(r, p)
+    cam = _camera(r, p, transform)
+    r.tag(cam, el, _CAMERA_FIELDS)
+    if node is not None and cam is not None:  # a camera's Transform is its own: no chain above
+        r.world(cam, "transform", None, (node,))
+    return cam
+
+
+_CAMERA_FIELDS = {"Position": "position", "LookDirection": "look_direction",
+                  "UpDirection": "up_direction", "NearPlaneDistance": "near_plane_distance",
+                  "FarPlaneDistance": "far_plane_distance", "FieldOfView": "field_of_view",
+                  "Width": "width"}  # fmt: skip
+_LIGHT_FIELDS = {"Color": "color", "Direction": "direction", "Position": "position",
+                 "Range": "range", "ConstantAttenuation": "constant_attenuation",
+                 "LinearAttenuation": "linear_attenuation",
+                 "QuadraticAttenuation": "quadratic_attenuation",
+                 "OuterConeAngle": "outer_cone_angle",
+                 "InnerConeAngle": "inner_cone_angle"}  # fmt: skip
+
+
+def _camera(r, p, transform):
+    el, t, d = p.el, p.type, V.parse_double
+    common = dict(transform=transform, name=element_name(el), **r.ctx.position(el))
     if t in ("PerspectiveCamera", "OrthographicCamera"):
         frame = dict(
             position=p.value("Position", V.parse_point3d, (0.0, 0.0, 0.0)),
@@ -174,9 +228,6 @@ def _mesh_locator(r, el, p):
 def mesh(r, el):
     """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types)."""
 
-    hit = r.cache.get(("mesh", id(el))) if r.cache is not None else None
-    if hit is not None and hit[0] is el:
-        return hit[1]  # an animation frame: the mesh is not animated
     p = r.props(el)
     if p.type != "MeshGeometry3D":
         r.ctx.diag("SCN006", f"{p.type} is not a MeshGeometry3D: the model is skipped", el)
@@ -197,25 +248,41 @@ def mesh(r, el):
     result = replace(result, rejected=frozenset(p.rejected))
     for dg in diags:
         r.ctx.add(dg, el)
-    if r.cache is not None:
-        r.cache["mesh", id(el)] = (el, result)  # the element kept: its id stays its own
     return result
 
 
 LIGHT_TYPES = ("AmbientLight", "DirectionalLight", "PointLight", "SpotLight")
 
 
-def light(r, el, parent_world: np.ndarray):
-    """A light element -> scene light whose ``world`` includes its own Transform."""
-    p = r.props(el)
-    t = p.type
-    d = V.parse_double
-    common = dict(
-        color=p.value("Color", V.parse_color, WHITE),
-        world=T.compose(transform_property(r, p), parent_world),
-        name=element_name(el),
-        **r.ctx.position(el),
-    )
+def world_of(r, p, parent: np.ndarray, chain):
+    """The element's world matrix (its own Transform, then ``parent``) and, when an animated
+    transform is at or above it, its chain (prefix, factors): ``chain`` is its parent's."""
+    m, node = transform_property_parts(r, p)
+    world = T.compose(m, parent)
+    if node is None and chain is None:
+        return world, None
+    prefix, factors = chain if chain is not None else (parent, ())
+    return world, (prefix, (*factors, m if node is None else node))
+
+
+def light(r, el, parent_world: np.ndarray, chain=None):
+    """A light element -> scene light whose ``world`` includes its own Transform (``chain``:
+    its parent's world chain, when an animated transform is above it)."""
+    obj = _light(r, r.props(el), parent_world, chain)
+    return r.tag(obj, el, _LIGHT_FIELDS)
+
+
+def _light(r, p, parent_world: np.ndarray, chain):
+    el, t, d = p.el, p.type, V.parse_double
+    color = p.value("Color", V.parse_color, WHITE)
+    world, chain = world_of(r, p, parent_world, chain)
+    common = dict(color=color, world=world, name=element_name(el), **r.ctx.position(el))
+    if chain is not None:
+        return r.world(_light_kind(p, t, d, common), "world", *chain)
+    return _light_kind(p, t, d, common)
+
+
+def _light_kind(p, t, d, common):
     if t == "AmbientLight":
         return AmbientLight(**common)
     if t == "DirectionalLight":

@@ -149,7 +149,8 @@ class ElementValues:
                     default = conv(raw)
                 except ValueSyntaxError:
                     pass
-            return self.r.animated(self.el, prop, default)
+            self.r.read(self.el, prop)
+            return default
         raw = self.el.get(prop)
         if raw is None or split_markup(raw) is not None:
             return default

@@ -215,12 +215,13 @@ class Props:
         return ("default", None)
 
     def value(self, prop: str, conv: Callable[[str], object], default=None):
-        """A value-type property (numbers, vectors, colours, collections...); while a frame of
-        an animation is built, its animated value."""
+        """A value-type property (numbers, vectors, colours, collections...), as written (its
+        animations are the Scene's tracks)."""
         errors = self.r.ctx.errors
         value = self._value(prop, conv, default)
         self._rejected(prop, value, default, errors)
-        return self.r.animated(self.el, prop, value)
+        self.r.read(self.el, prop)
+        return value
 
     def _rejected(self, prop: str, value, default, errors: int) -> None:
         if value is default and self.r.ctx.errors > errors:
@@ -270,12 +271,17 @@ class Props:
 
     def obj(self, prop: str, build: Callable, default=None, *, from_string=None):
         """An object property built from an element (or resource); ``from_string`` converts a
-        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None.
-        While a frame of an animation is built, its animated value (a Rotation)."""
+        plain attribute string (e.g. a colour where a Brush is expected). {x:Null} -> None."""
         errors = self.r.ctx.errors
         built = self._obj(prop, build, default, from_string=from_string)
         self._rejected(prop, built, default, errors)
-        return self.r.animated(self.el, prop, built)
+        s = self.r.slots
+        if s is not None:
+            self.r.read(self.el, prop)
+            # a brush made from a colour string: its Color / Opacity animate (the target is
+            # that field of the object built here)
+            s.tag(built, [(f, k) for f, k in s.of(self.el, prop) if f is not None])
+        return built
 
     def _obj(self, prop: str, build: Callable, default=None, *, from_string=None):
         if prop in self.attrs:

@@ -1,0 +1,212 @@
+"""From storyboards to the Scene's animation tracks, once per load (``xaml3d.scene.tracks``).
+
+Before the viewports are built, every animation's target is resolved to a (markup element,
+property) pair (animation_targets.py, with its ANIM diagnostics) and each distinct pair becomes
+a track index ("slot"). While the viewports are built, the reader notes which slots it reads
+(``Slots.read``) and which scene objects hold their values (``Slots.tag``: a camera, light,
+material pass, brush or gradient stop built from the animated element; ``Slots.world``: a
+matrix made from an animated transform, with its chain). ``tracks`` then walks the built
+viewports once and turns each tagged object into the paths where it lands.
+
+A slot read while building but held by no scene object is a property xaml3d evaluates only at
+load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once). WPF would
+show it change; ANIM014 says that xaml3d draws its value at load instead.
+
+What runs (storyboard checks): ANIM007 for a storyboard no trigger begins or whose BeginTime
+is {x:Null}, ANIM008 for an animation whose BeginTime is {x:Null}.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from xaml3d.errors import Diagnostic
+from xaml3d.scene.tracks import ScenePath, Track, Tracks, WorldChain
+from xaml3d.scene.types import Animation, Storyboard, Viewport
+from xaml3d.xaml.animation_targets import ANIM_CODES, Target, TargetError, name_map, resolve
+
+
+class _At(NamedTuple):
+    """A place in the file (what ``Resolution.diag`` needs of a scene object)."""
+
+    line: int | None
+    column: int | None
+
+
+class Slots:
+    """The animated (element, property) pairs of a load and what the build did with them."""
+
+    def __init__(self) -> None:
+        self.by_key: dict[tuple[int, str], list[tuple[str | None, int]]] = {}
+        self.targets: list[Target] = []
+        self._index: dict[tuple, int] = {}  # Target.key -> its slot
+        self.animations: list[list[Animation]] = []
+        self.read: set[int] = set()
+        self.placed: set[int] = set()
+        # id(scene object) -> (object, [(field, slot)]): the object kept, so its id stays its own
+        self.tags: dict[int, tuple[object, list[tuple[str, int]]]] = {}
+        self.worlds: dict[int, tuple[object, list[tuple[str, WorldChain]]]] = {}
+
+    def add(self, target: Target, anim: Animation) -> None:
+        k = self._index.get(target.key)
+        if k is not None:
+            self.animations[k].append(anim)
+            return
+        k = self._index[target.key] = len(self.targets)
+        self.targets.append(target)
+        self.animations.append([anim])
+        self.by_key.setdefault((id(target.element), target.prop), []).append((target.field, k))
+
+    def of(self, el, prop: str) -> list[tuple[str | None, int]]:
+        return self.by_key.get((id(el), prop), [])
+
+    def tag(self, obj, pairs: list[tuple[str, int]]) -> None:
+        if not pairs or obj is None:
+            return
+        self.placed.update(s for _, s in pairs)
+        self.tags.setdefault(id(obj), (obj, []))[1].extend(pairs)
+
+    def world(self, obj, field: str, chain: WorldChain) -> None:
+        self.placed.update(chain.slots)
+        self.worlds.setdefault(id(obj), (obj, []))[1].append((field, chain))
+
+
+def built(pair):
+    """A (value, typed node) pair as a property's built object: None when there is no value,
+    as the plain value would be (so Props sees an unreadable object as before)."""
+    return None if pair is None or pair[0] is None else pair
+
+
+def node_of(r, el, cls, values: dict, *, place: bool = True, **parts):
+    """The typed node (scene.tracks) of a transform built from ``el`` when one of its own
+    properties (``values``: field -> (XAML property, value)) or one of its ``parts`` (inner
+    nodes) animates, else None. ``place``: its slots count as drawn (a 3D transform lands in
+    the Scene through the models under it, or moves nothing drawn; a 2D one counts where a
+    brush holds it)."""
+    s = r.slots
+    if s is None:
+        return None
+    slots = tuple(
+        (field, k) for field, (prop, _) in values.items() for f, k in s.of(el, prop) if f is None
+    )
+    if not slots and all(v is None for v in parts.values()):
+        return None
+    if place:
+        s.placed.update(k for _, k in slots)
+    return cls(**{**{f: v for f, (_, v) in values.items()}, **parts}, slots=slots)
+
+
+# --------------------------------------------------------------------------- resolution
+
+
+class Resolution:
+    """Targets of a document's storyboards and the diagnostics about them."""
+
+    def __init__(self, file) -> None:
+        self.file = file
+        self.diagnostics: list[Diagnostic] = []
+        self.slots = Slots()
+
+    def diag(self, code: str, message: str, where) -> None:
+        sev = ANIM_CODES[code][0]
+        self.diagnostics.append(Diagnostic(code, sev, message, self.file, where.line, where.column))
+
+
+def resolve_targets(r, root, storyboards: list[Storyboard], file) -> Resolution:
+    """Resolve every animation's target with the reader ``r`` (a reader of its own: what its
+    lookups report is reported again, or was already, by the build)."""
+    res = Resolution(file)
+    names = name_map(root)
+    ctx = r.ctx
+    with ctx.muted():  # lookups repeat what the build reports
+        for sb in storyboards:
+            _check_start(res, sb)
+            for a in sb.animations:
+                target = _resolve(res, r, names, a)
+                if target is not None:
+                    res.slots.add(target, a)
+                if a.begin_time is None:
+                    res.diag("ANIM008", f"{a.type} has BeginTime {{x:Null}}: it never begins", a)
+    return res
+
+
+def _check_start(res: Resolution, sb: Storyboard) -> None:
+    label = f"storyboard {sb.name!r}" if sb.name else "a storyboard"
+    if sb.trigger is None:
+        msg = f"{label} is in resources but no trigger begins it (--storyboard starts it)"
+        res.diag("ANIM007", msg, sb)
+    elif sb.root is not None and sb.root.timing.begin_time is None:
+        res.diag("ANIM007", f"{label} has BeginTime {{x:Null}}: it never starts", sb)
+
+
+def _resolve(res: Resolution, r, names, a: Animation) -> Target | None:
+    if not a.evaluated:
+        return None
+    try:
+        return resolve(r, names, a.target_name, a.target_property, a.value_type)
+    except TargetError as exc:
+        what = f"{a.type} -> {a.target_name}.{a.target_property}"
+        where = a
+        if exc.code == "ANIM001" and a.target_name_at is not None:
+            where = _At(*a.target_name_at)  # the Storyboard.TargetName attribute
+        res.diag(exc.code, f"{what}: {exc.message}", where)
+        return None
+
+
+# --------------------------------------------------------------------------- the tracks
+
+
+def tracks(res: Resolution, viewports: tuple[Viewport, ...]) -> Tracks:
+    """The tracks of the built viewports; ANIM014 for slots read but held by no scene object."""
+    slots = res.slots
+    paths: list[list[ScenePath]] = [[] for _ in slots.targets]
+    worlds: list[WorldChain] = []
+
+    def visit(obj, vi: int, steps: tuple) -> None:
+        hit = slots.tags.get(id(obj))
+        if hit is not None and hit[0] is obj:
+            for field, slot in hit[1]:
+                paths[slot].append(ScenePath(vi, steps, field))
+        w = slots.worlds.get(id(obj))
+        if w is not None and w[0] is obj:
+            for field, chain in w[1]:
+                worlds.append(WorldChain(ScenePath(vi, steps, field), chain.prefix,
+                                         chain.factors, chain.slots))  # fmt: skip
+
+    def visit_brush(brush, vi: int, steps: tuple) -> None:
+        visit(brush, vi, steps)
+        for si, stop in enumerate(getattr(brush, "stops", ())):
+            visit(stop, vi, (*steps, ("stops", si)))
+
+    for vi, vp in enumerate(viewports):
+        if vp.camera is not None:
+            visit(vp.camera, vi, (("camera", None),))
+        for li, light in enumerate(vp.lights):
+            visit(light, vi, (("lights", li),))
+        for mi, model in enumerate(vp.models):
+            visit(model, vi, (("models", mi),))
+            for side in ("material", "back_material"):
+                for pi, ps in enumerate(getattr(model, side)):
+                    steps = (("models", mi), (side, pi))
+                    visit(ps, vi, steps)
+                    if ps.brush is not None:
+                        visit_brush(ps.brush, vi, (*steps, ("brush", None)))
+        if vp.background is not None:
+            visit_brush(vp.background, vi, (("background", None),))
+
+    moves: list[list[ScenePath]] = [[] for _ in slots.targets]
+    for chain in worlds:
+        for k in sorted(chain.slots):
+            moves[k].append(chain.path)
+    out = []
+    for k, (target, anims) in enumerate(zip(slots.targets, slots.animations, strict=True)):
+        first = anims[0]
+        label = f"{first.target_name}.{first.target_property}"
+        if k in slots.read and k not in slots.placed:
+            for a in anims:
+                res.diag("ANIM014", f"{a.type} -> {label}: {target.prop} is laid out (or "
+                         "converted) once, at load: xaml3d draws its value at load, not its "
+                         "animation", a)  # fmt: skip
+        out.append(Track(label, first.value_type, tuple(anims), tuple(paths[k]),
+                         tuple(moves[k]), first.line, first.column))  # fmt: skip
+    return Tracks(tuple(out), tuple(worlds))
