@@ -41,6 +41,7 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.scene.transforms", "GEOMETRY_CODES", False),
     ("xaml3d.xaml.animation_targets", "ANIM_CODES", True),
     ("xaml3d.export.codes", "EXPORT_CODES", True),
+    ("xaml3d.xaml.drawings_reader", "DRAWING_CODES", True),
 )
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from xaml3d.errors import Diagnostic
+from xaml3d.scene.drawing import DrawingBrush, Viewport2D
 
 RGBA = tuple[float, float, float, float]
 Vec3 = tuple[float, float, float]
@@ -142,7 +143,10 @@ class PlaceholderBrush:
     column: int | None = None
 
 
-Brush = SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush | PlaceholderBrush
+Brush = (
+    SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush | DrawingBrush
+    | PlaceholderBrush
+)  # fmt: skip
 
 
 # --------------------------------------------------------------------------- materials
@@ -472,6 +476,7 @@ class Viewport:
     line: int | None = None
     column: int | None = None
     layout_rect: tuple[float, float, float, float] | None = None  # x, y, w, h in the root
+    picture: Viewport2D | None = None  # its Opacity, Clip, Effect... (None: none is set)
 
     @property
     def triangle_count(self) -> int:

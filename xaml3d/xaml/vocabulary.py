@@ -264,7 +264,9 @@ DataGrid TreeView TreeViewItem PathGeometry PathFigure PathFigureCollection Path
 BezierSegment LineSegment ArcSegment PolyLineSegment PolyBezierSegment QuadraticBezierSegment
 PolyQuadraticBezierSegment EllipseGeometry RectangleGeometry LineGeometry GeometryGroup
 CombinedGeometry StreamGeometry DrawingGroup GeometryDrawing ImageDrawing GlyphRunDrawing
-VideoDrawing DrawingImage BitmapImage Pen DropShadowEffect BlurEffect VisualTarget
+VideoDrawing DrawingImage BitmapImage Pen DashStyle DropShadowEffect BlurEffect VisualTarget
+BlurBitmapEffect DropShadowBitmapEffect OuterGlowBitmapEffect BevelBitmapEffect EmbossBitmapEffect
+BitmapEffectGroup ShaderEffect DrawingCollection GeometryCollection
 ObjectDataProvider XmlDataProvider Binding MultiBinding RelativeSource ImageSource BitmapCache
 Color Double Int32 String Boolean Point Point3D Vector3D Thickness CornerRadius FontFamily
 FontWeight Array Null Static Type Key Code XData
@@ -393,7 +395,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "GeometryModel3D without Material or BackMaterial: no longer reported (CHK005 says it)",
     ),
     "SCN012": (ERROR, "negative or infinite Width or Height (invalid in WPF): taken as 0"),
-    "BRU001": (WARNING, "VisualBrush/DrawingBrush content drawn as a placeholder"),
+    "BRU001": (WARNING, "BitmapCacheBrush content drawn as a placeholder"),
     "BRU002": (WARNING, "image file not found: a grey checker stands in"),
     "BRU003": (WARNING, "image file cannot be decoded: a grey checker stands in"),
     "BRU004": (WARNING, "network image URI refused: a grey checker stands in"),
