@@ -125,3 +125,56 @@ def test_corpus_014_shows_its_drawing_pattern():
     opaque = px[px[:, 3] == 255, :3].astype(int)
     assert (opaque[:, 0] > 2 * opaque[:, 2] + 60).any()  # red / yellow
     assert (opaque[:, 2] > opaque[:, 0] + 60).any()  # blue
+
+
+def test_text_is_measured_with_the_package_font_and_segoe_line_metrics():
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    assert text_width("Hello World", 12.0) == pytest.approx(65.666, abs=0.01)  # Segoe UI: 63.8
+    assert line_height(12.0) == pytest.approx(12 * 2724 / 2048)  # WPF: 15.96 px per line
+    assert baseline(12.0) == pytest.approx(12 * 2210 / 2048)
+
+
+def _visual_scene(visual: str, extra: str = "") -> str:
+    return f"""<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">{extra}
+  <Viewport3D Width="64" Height="48">
+    <Viewport3D.Camera><OrthographicCamera Position="0,0,10" Width="64"/></Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-16,-16,0 16,-16,0 16,16,0 -16,16,0"
+            TriangleIndices="0 1 2 0 2 3" TextureCoordinates="0,1 1,1 1,0 0,0"/>
+      </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial>
+        <DiffuseMaterial.Brush>{visual}</DiffuseMaterial.Brush>
+      </DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D></Grid>"""
+
+
+def test_visual_brush_bound_by_element_name_draws_that_element(tmp_path):
+    panel = '<Border x:Name="panel" Width="20" Height="10" Background="Lime"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene('<VisualBrush Visual="{Binding ElementName=panel}"/>', panel))
+    scene = xaml3d.load(path)
+    brush = scene.viewports[0].models[0].material[0].brush
+    assert isinstance(brush, DrawingBrush) and brush.kind == "VisualBrush"
+    rgba = xaml3d.render_arrays(scene).rgba
+    # the lime 20x10 border fills the whole square (Viewbox relative to its bounds, Fill)
+    assert (rgba[8:40, 16:48] == (0, 255, 0, 255)).all()
+    assert not {d.code for d in scene.diagnostics if d.code.startswith(("BRU", "DRW"))}
+
+
+def test_textblock_in_a_visual_brush_sits_where_wpf_lays_it_out(tmp_path):
+    path = tmp_path / "s.xaml"
+    tb = '<TextBlock Text="x" FontSize="24" Padding="4,2,0,0" Background="Blue"/>'
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{tb}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    scene = xaml3d.load(path)
+    group = scene.viewports[0].models[0].material[0].brush.drawing.children[0]
+    background, text = group.children
+    from xaml3d.layout.text import text_width
+
+    w = text_width("x", 24.0) + 4
+    assert background.geometry.rect == pytest.approx((0.0, 0.0, w, 2 + 24 * 2724 / 2048))
+    assert text.origin == pytest.approx((4.0, 2 + 24 * 2210 / 2048))
+    assert text.font_size == 24.0 and text.brush.color == (0.0, 0.0, 0.0, 1.0)

@@ -2,7 +2,7 @@
 
 WPF's default font is Segoe UI (12 px), which is not free to ship. xaml3d draws every FontFamily
 with Open Sans (Apache 2.0, the ``ttf-opensans`` package): a humanist sans serif whose advance
-widths are within a few percent of Segoe UI's ("Hello World" at 12 px: 65.0 px against Segoe
+widths are within a few percent of Segoe UI's ("Hello World" at 12 px: 65.7 px against Segoe
 UI's 63.8). Lines are laid out with Segoe UI's own line metrics (below), so a TextBlock's box
 and its baseline sit where WPF puts them whatever the glyph shapes. docs/layer2d.md says more.
 

@@ -133,11 +133,11 @@ def brush(r, el):
         )
     if t == "ImageBrush":
         return _image_brush(r, p)
-    if t == "DrawingBrush":
+    if t in ("DrawingBrush", "VisualBrush"):
         from xaml3d.xaml.drawings_reader import drawing_brush
 
         return drawing_brush(r, p, _common(r, p))
-    if t in ("VisualBrush", "BitmapCacheBrush"):
+    if t == "BitmapCacheBrush":
         r.ctx.diag("BRU001", f"{t} content cannot be drawn: a neutral placeholder is used", el)
         return PlaceholderBrush(
             kind=t, opacity=p.value("Opacity", V.parse_double, 1.0), **r.ctx.position(el)

@@ -25,6 +25,11 @@ DRAWING_CODES: dict[str, tuple[str, str]] = {
     ),  # fmt: skip
     "DRW003": (INFO, "a 2D effect, mask or property of the viewport's picture not applied"),
     "DRW004": (WARNING, "VisualBrush without a Visual: it draws nothing"),
+    "DRW005": (
+        WARNING,
+        "a Viewport2DVisual3D with no material marked IsVisualHostMaterial: "
+        "its Visual is not shown (as in WPF)",
+    ),  # fmt: skip
 }
 
 _CAPS = ("Flat", "Square", "Round", "Triangle")
@@ -148,13 +153,50 @@ def drawing_brush(r, p, common: dict) -> DrawingBrush:
     else:
         from xaml3d.xaml.visuals_reader import visual_drawing
 
-        if not p.has("Visual"):
+        target = _bound_element(p)
+        if target is not None:  # Visual="{Binding ElementName=panel}": that element, laid out
+            found = visual_drawing(r, target)
+            content = found[0] if found is not None else None
+        elif not p.has("Visual"):
             r.ctx.diag("DRW004", "VisualBrush without a Visual draws nothing", p.el)
             content, bounds = None, None
         else:
             found = p.obj("Visual", lambda e: visual_drawing(r, e), None)
             content, bounds = found if found is not None else (None, None)
-            bounds = None  # a VisualBrush's relative Viewbox refers to the visual's ink
+        bounds = None  # a VisualBrush's relative Viewbox refers to the visual's ink
     return DrawingBrush(
         drawing=content, kind=p.type, content_bounds=bounds, **tile_properties(r, p), **common
     )
+
+
+def _bound_element(p):
+    """The element a ``Visual="{Binding ElementName=name}"`` names in the document, or None."""
+    from xaml3d.xaml.context import split_markup, x_attr
+
+    raw = p.attrs.get("Visual")
+    m = split_markup(raw) if raw is not None else None
+    if m is None or m[0] != "Binding":
+        return None
+    args = dict(part.strip().partition("=")[::2] for part in m[1].split(",") if "=" in part)
+    name = args.get("ElementName", "").strip()
+    if not name:
+        return None
+    for el in p.el.getroottree().iter():
+        if isinstance(el.tag, str) and name in (el.get("Name"), x_attr(el, "Name")):
+            return el
+    return None
+
+
+def visual_host_brush(r, p) -> DrawingBrush | None:
+    """The brush WPF puts on a Viewport2DVisual3D's host material: its Visual laid out at its
+    desired size, texture coordinates (0,0)-(1,1) spanning that box (None: no Visual)."""
+    from xaml3d.xaml.visuals_reader import visual_drawing
+
+    found = p.obj("Visual", lambda e: visual_drawing(r, e), None)
+    if found is None:
+        return None
+    content, bounds = found
+    return DrawingBrush(
+        drawing=content, kind="Viewport2DVisual3D", content_bounds=bounds,
+        viewport=(0.0, 0.0, 1.0, 1.0), viewport_units="Absolute", **r.ctx.position(p.el),
+    )  # fmt: skip

@@ -108,7 +108,7 @@ _t("ModelUIElement3D", "visual3d", {"Model": "model3d"}, "Model", base=(_UI3D,))
 _t("ContainerUIElement3D", "visual3d", {"Children": "visual3d[]"}, "Children", base=(_UI3D,))
 _t("Viewport2DVisual3D", "visual3d",
    {"Geometry": "geometry", "Material": "material", "Visual": "object", "CacheMode": "object"},
-   "Visual", base=(_UI3D,), note="2D content is drawn as a placeholder")  # fmt: skip
+   "Visual", base=(_UI3D,), note="its Visual is drawn by the 2D layer")  # fmt: skip
 _t("Model3DGroup", "model3d", {"Children": "model3d[]"}, "Children", base=(_TRANSFORMABLE,))
 _t("GeometryModel3D", "model3d",
    {"Geometry": "geometry", "Material": "material", "BackMaterial": "material"},
@@ -164,12 +164,11 @@ _t(
     "brush",
     {"Visual": "object", "AutoLayoutContent": _B},
     "Visual",
-    supported=False,
     base=(_BRUSH, _TILE),
-    note="2D content: drawn as a placeholder",
+    note="its Visual is drawn by the 2D layer (docs/layer2d.md)",
 )
-_t("DrawingBrush", "brush", {"Drawing": "object"}, "Drawing", supported=False,
-   base=(_BRUSH, _TILE), note="2D drawing: drawn as a placeholder")  # fmt: skip
+_t("DrawingBrush", "brush", {"Drawing": "object"}, "Drawing",
+   base=(_BRUSH, _TILE), note="drawn by the 2D layer (docs/layer2d.md)")  # fmt: skip
 _t(
     "BitmapCacheBrush",
     "brush",
@@ -386,7 +385,6 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "SCN004": (INFO, "no camera given: WPF's default PerspectiveCamera is used"),
     "SCN005": (WARNING, "GeometryModel3D without a Geometry skipped"),
     "SCN006": (WARNING, "geometry that is not a MeshGeometry3D skipped"),
-    "SCN007": (WARNING, "Viewport2DVisual3D 2D content drawn as a placeholder"),
     "SCN008": (ERROR, "element of the wrong kind in a 3D tree (a bare Model3D among Visual3Ds)"),
     "SCN009": (INFO, "Camera is {x:Null}: the viewport draws nothing"),
     "SCN010": (WARNING, "transform cannot be built: identity used"),

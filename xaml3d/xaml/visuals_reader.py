@@ -1,0 +1,404 @@
+"""A VisualBrush's Visual (and a Viewport2DVisual3D's) laid out and turned into a Drawing.
+
+WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
+xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
+measured with the package's font, shapes by their geometry), laid out by ``xaml3d.layout`` as
+WPF lays out a brush's visual (measured with infinite room, arranged at its desired size), and
+each element becomes the drawing WPF's would: panel and Border backgrounds and borders
+(BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
+Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
+and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
+Background; one line, no wrapping), Label, Image, and Button, TextBox, CheckBox and RadioButton
+in WPF's default Windows 10/11 look (Aero2 theme values). Opacity applies to an element and its
+children. Anything else is skipped with DRW002: the rest is drawn.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xaml3d.fonts import WEIGHTS
+from xaml3d.layout import layout
+from xaml3d.layout import tree as L
+from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.scene.drawing import (
+    DrawingGroup,
+    EllipseGeometry,
+    GeometryDrawing,
+    ImageDrawing,
+    PathGeometry,
+    Pen,
+    RectangleGeometry,
+    TextDrawing,
+)
+from xaml3d.scene.types import SolidColorBrush
+from xaml3d.xaml import values as V
+from xaml3d.xaml.brushes_reader import brush_property, load_image
+from xaml3d.xaml.context import qname, split_markup
+from xaml3d.xaml.geometry_reader import geometry_property
+from xaml3d.xaml.panels_reader import (
+    FONT_SIZE,
+    ElementValues,
+    PanelsReader,
+    _content_text,
+    parse_length,
+    parse_thickness,
+)
+
+
+def _rgb(hex6: str, a: float = 1.0) -> SolidColorBrush:
+    return SolidColorBrush(color=(*(int(hex6[i : i + 2], 16) / 255 for i in (0, 2, 4)), a))
+
+
+BLACK = _rgb("000000")
+# Aero2 (PresentationFramework.Aero2, themes/Aero2.NormalColor.xaml): the resting state.
+AERO2 = {
+    "Button": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
+    "ToggleButton": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
+    "RepeatButton": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
+    "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),
+    "Label": dict(background=None, border=None, padding=(5, 5, 5, 5)),
+    "CheckBox": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
+    "RadioButton": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
+}
+_TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
+                  "CheckBox", "RadioButton"}  # fmt: skip
+_SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
+_OPTION_MARK = 13.0  # the Aero2 check box / radio button mark's size (px)
+_TEXT_BOX_INSET = 2.0  # TextBox text sits 2 px inside its padding (the text view's margin)
+
+
+class _VisualPanels(PanelsReader):
+    """The panel reader, recording each node's element and measuring text and shapes."""
+
+    def __init__(self, r) -> None:
+        super().__init__(r, [])
+        self.elements: dict[int, tuple] = {}
+
+    def build(self, el, font: float = FONT_SIZE):
+        n = super().build(el, font)
+        if n is not None:
+            own = ElementValues(self.r, el).get("FontSize", parse_length, None)
+            if own is not None and math.isfinite(own) and own > 0:
+                font = own  # the element's own FontSize, as the panel reader takes it
+            self.elements[id(n)] = (el, font)
+        return n
+
+    def _estimate(self, n, v, el, font: float = FONT_SIZE) -> None:
+        local = n.type
+        if local in _SHAPES:
+            n.estimate = _shape_extent(self.r, v)
+        elif local in _TEXT_CONTROLS:
+            text = _text_of(el)
+            weight, italic = _font_style(el)
+            w = text_width(text, font, weight, italic)
+            h = line_height(font)
+            pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
+            border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
+            if local in ("CheckBox", "RadioButton"):
+                # the mark, then the content with Aero2's Padding 4,-1,0,0
+                w, h = _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
+            else:
+                w += pad[0] + pad[2] + 2 * border
+                h += pad[1] + pad[3] + 2 * border
+                if local == "TextBox":
+                    w += 2 * _TEXT_BOX_INSET
+            n.estimate = (w, h)
+        else:
+            super()._estimate(n, v, el, font)
+
+
+def _text_of(el) -> str:
+    for prop in ("Text", "Content"):
+        s = el.get(prop)
+        if s is not None and split_markup(s) is None:
+            return " ".join(s.split())
+        if s is not None:
+            return ""
+    return _content_text(el)
+
+
+def _inherited(el, names: tuple[str, ...]) -> str | None:
+    """An inherited text property as written on ``el`` or its nearest ancestor."""
+    node = el
+    while node is not None:
+        for name in names:
+            raw = node.get(name)
+            if raw is not None and split_markup(raw) is None:
+                return raw
+        node = node.getparent()
+    return None
+
+
+def _font_style(el) -> tuple[int, bool]:
+    w = _inherited(el, ("FontWeight", "TextElement.FontWeight")) or "Normal"
+    s = _inherited(el, ("FontStyle", "TextElement.FontStyle")) or "Normal"
+    weight = WEIGHTS.get(w.strip(), int(w) if w.strip().isdigit() else 400)
+    return weight, s.strip() in ("Italic", "Oblique")
+
+
+def _shape_extent(r, v) -> tuple[float, float]:
+    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
+    p = v.p
+    if p is None:
+        return (0.0, 0.0)
+    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
+    pts = _shape_points(r, p)
+    if pts is None or pts.size == 0:
+        return (0.0, 0.0)
+    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
+
+
+def _shape_points(r, p) -> np.ndarray | None:
+    d = V.parse_double
+    if p.type == "Line":
+        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
+        return np.array([[x1, y1], [x2, y2]])
+    if p.type in ("Polyline", "Polygon"):
+        text = p.string("Points")
+        return V.parse_point_collection(text).reshape(-1, 2) if text else None
+    if p.type == "Path":
+        g = geometry_property(r, p, "Data")
+        if isinstance(g, PathGeometry):
+            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
+            return np.array(xy, dtype=float).reshape(-1, 2)
+        if isinstance(g, RectangleGeometry):
+            x, y, w, h = g.rect
+            return np.array([[x + w, y + h]])
+        if isinstance(g, EllipseGeometry):
+            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
+            return np.array([[cx + rx, cy + ry]])
+    return None
+
+
+def visual_drawing(r, el):
+    """(Drawing, (0, 0, width, height)) of the visual ``el`` laid out at its desired size."""
+    reader = _VisualPanels(r)
+    root = reader.build(el)
+    if root is None:
+        r.ctx.diag("DRW002", f"{qname(el.tag)[1]} is not a visual xaml3d draws: skipped", el)
+        return None
+    layout(root, (math.inf, math.inf))
+    out = []
+    _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
+    w, h = root.rect[2], root.rect[3]
+    return DrawingGroup(children=tuple(out)), (0.0, 0.0, float(w), float(h))
+
+
+def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
+    """``parent``: the parent's absolute origin and scale (x, y, sx, sy); the layout's
+    rectangles are absolute, the drawing groups nest."""
+    if not n.arranged or n.visibility != "Visible":
+        return
+    el, font = reader.elements.get(id(n), (None, FONT_SIZE))
+    if el is None:
+        return
+    x, y, w, h = n.rect
+    ink_w, ink_h = n.ink
+    sx = w / ink_w if ink_w > 0 else 1.0
+    sy = h / ink_h if ink_h > 0 else 1.0
+    own: list = []
+    v = ElementValues(r, el)
+    _element(r, v, n, el, font, ink_w, ink_h, own)
+    for k in n.children:
+        _compile(r, reader, k, own, (x, y, sx, sy))
+    if not own:
+        return
+    opacity = v.get("Opacity", V.parse_double, 1.0)
+    px, py, psx, psy = parent
+    m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
+    out.append(DrawingGroup(children=tuple(own), opacity=opacity, transform=m))
+
+
+def _brush(r, v, prop: str, default=None):
+    if v.p is not None and v.p.has(prop):
+        return brush_property(r, v.p, prop)
+    return default
+
+
+def _box_drawing(background, border, thickness, radius, w: float, h: float) -> list:
+    """A Border's background and border: the border is a band inside the box."""
+    out = []
+    left, top, right, bottom = thickness
+    inner = (left, top, max(0.0, w - left - right), max(0.0, h - top - bottom))
+    if background is not None:
+        rect = inner if border is not None else (0.0, 0.0, w, h)
+        out.append(GeometryDrawing(RectangleGeometry(rect, radius, radius), brush=background))
+    if border is not None and any(t > 0 for t in thickness):
+        from xaml3d.scene.drawing import CombinedGeometry
+
+        band = CombinedGeometry(
+            "Exclude",
+            RectangleGeometry((0.0, 0.0, w, h), radius, radius),
+            RectangleGeometry(inner, max(0.0, radius - left), max(0.0, radius - top)),
+        )
+        out.append(GeometryDrawing(band, brush=border))
+    return out
+
+
+def _foreground(r, el):
+    node = el
+    while node is not None:
+        if isinstance(node.tag, str):
+            p = r.props(node)
+            for prop in ("Foreground", "TextElement.Foreground"):
+                if prop in p.attrs or prop in p.elems:
+                    return brush_property(r, p, prop)
+                if prop in p.attached:
+                    raw = p.attached[prop]
+                    if split_markup(raw) is None:
+                        return SolidColorBrush(color=V.parse_color(raw))
+        node = node.getparent()
+    return BLACK
+
+
+def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
+    text = _text_of(el)
+    if not text:
+        return None
+    weight, italic = _font_style(el)
+    tw = text_width(text, font, weight, italic)
+    alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
+                                                                 "Justify")), "Left")  # fmt: skip
+    if align_center or alignment == "Center":
+        x += (w - tw) / 2
+    elif alignment == "Right":
+        x += w - tw
+    family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+    return TextDrawing(
+        text=text, origin=(x, y + baseline(font)), font_size=font, weight=weight, italic=italic,
+        family=family, brush=_foreground(r, el), **r.ctx.position(el),
+    )  # fmt: skip
+
+
+def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
+    local = n.type
+    if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
+                  L.UNIFORM, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
+        out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        return
+    if n.kind == L.BORDER:
+        radius = v.get("CornerRadius", V.parse_double, 0.0) if v.p is not None else 0.0
+        out.extend(_box_drawing(_brush(r, v, "Background"), _brush(r, v, "BorderBrush"),
+                                n.border, radius, w, h))  # fmt: skip
+        return
+    if local in _SHAPES:
+        _shape(r, v, local, w, h, out)
+        return
+    if local == "TextBlock":
+        out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        pad = v.get("Padding", parse_thickness, (0.0,) * 4)
+        t = _text(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
+        if t is not None:
+            out.append(t)
+        return
+    if local in AERO2:
+        _control(r, v, el, local, font, w, h, out)
+        return
+    if local == "Image" and v.p is not None:
+        source = v.p.string("Source")
+        if source:
+            image = load_image(r, source, el, v.p.attr_keys.get("Source"))[1]
+            if image is not None:
+                out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h)))
+        return
+    r.ctx.diag("DRW002", f"{local} is not drawn by xaml3d in a visual: skipped", el)
+
+
+def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -> None:
+    look = AERO2[local]
+    background = _brush(r, v, "Background", look["background"])
+    border = _brush(r, v, "BorderBrush", look["border"])
+    thick = v.get(
+        "BorderThickness", parse_thickness, (1.0,) * 4 if border is not None else (0,) * 4
+    )
+    pad = v.get("Padding", parse_thickness, look["padding"])
+    if local in ("CheckBox", "RadioButton"):
+        top = (h - _OPTION_MARK) / 2
+        if local == "CheckBox":
+            box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
+            shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
+            out.append(DrawingGroup(children=tuple(box), transform=shift))
+        else:
+            out.append(GeometryDrawing(
+                EllipseGeometry((6.5, top + 6.5), 6.0, 6.0), brush=background,
+                pen=Pen(brush=border, thickness=1.0),
+            ))  # fmt: skip
+        t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - line_height(font)) / 2 - 0.5, w)
+        if t is not None:
+            out.append(t)
+        return
+    out.extend(_box_drawing(background, border, thick, 0.0, w, h))
+    inset_x = thick[0] + pad[0] + (_TEXT_BOX_INSET if local == "TextBox" else 0.0)
+    inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
+    centred = local in ("Button", "ToggleButton", "RepeatButton")
+    if centred:  # Aero2: HorizontalContentAlignment and VerticalContentAlignment Center
+        ty = thick[1] + pad[1] + (h - thick[1] - thick[3] - pad[1] - pad[3] - line_height(font)) / 2
+    else:
+        ty = thick[1] + pad[1]
+    t = _text(r, el, v, font, inset_x, ty, inner_w, align_center=centred)
+    if t is not None:
+        out.append(t)
+
+
+_CAPS = ("Flat", "Square", "Round", "Triangle")
+_JOINS = ("Miter", "Bevel", "Round")
+
+
+def _doubles(s: str) -> tuple[float, ...]:
+    return tuple(float(x) for x in V.parse_double_collection(s))
+
+
+def _pen(r, v):
+    stroke = _brush(r, v, "Stroke")
+    if stroke is None:
+        return None, 0.0
+    t = v.get("StrokeThickness", V.parse_double, 1.0)
+    dashes = v.get("StrokeDashArray", _doubles, ())
+    pen = Pen(
+        brush=stroke, thickness=t,
+        start_cap=v.get("StrokeStartLineCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
+        end_cap=v.get("StrokeEndLineCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
+        dash_cap=v.get("StrokeDashCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
+        line_join=v.get("StrokeLineJoin", lambda s: V.parse_enum(s, _JOINS), "Miter"),
+        miter_limit=v.get("StrokeMiterLimit", V.parse_double, 10.0),
+        dashes=dashes, dash_offset=v.get("StrokeDashOffset", V.parse_double, 0.0),
+    )  # fmt: skip
+    return pen, t
+
+
+def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
+    if v.p is None:
+        return
+    fill = _brush(r, v, "Fill")
+    pen, t = _pen(r, v)
+    if local in ("Rectangle", "Ellipse"):
+        # WPF's Rectangle and Ellipse keep their stroke inside the element's box
+        x0, y0 = t / 2, t / 2
+        rw, rh = max(0.0, w - t), max(0.0, h - t)
+        if local == "Rectangle":
+            rx = v.get("RadiusX", V.parse_double, 0.0)
+            ry = v.get("RadiusY", V.parse_double, 0.0)
+            g = RectangleGeometry((x0, y0, rw, rh), rx, ry)
+        else:
+            g = EllipseGeometry((x0 + rw / 2, y0 + rh / 2), rw / 2, rh / 2)
+        out.append(GeometryDrawing(g, brush=fill, pen=pen))
+        return
+    if local == "Path":
+        g = geometry_property(r, v.p, "Data")
+    else:
+        pts = _shape_points(r, v.p)
+        if pts is None or pts.shape[0] < 2:
+            return
+        cmds = [("M", *pts[0])] + [("L", *q) for q in pts[1:]]
+        if local == "Polygon":
+            cmds.append(("Z",))
+        rule = v.get("FillRule", lambda s: V.parse_enum(s, ("EvenOdd", "Nonzero")), "EvenOdd")
+        g = PathGeometry(tuple(tuple(float(c) if not isinstance(c, str) else c for c in cmd)
+                               for cmd in cmds), rule)  # fmt: skip
+        if local == "Line":
+            fill = None  # a Line is never filled
+    if g is not None:
+        out.append(GeometryDrawing(g, brush=fill, pen=pen))
