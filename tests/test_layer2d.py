@@ -178,3 +178,66 @@ def test_textblock_in_a_visual_brush_sits_where_wpf_lays_it_out(tmp_path):
     assert background.geometry.rect == pytest.approx((0.0, 0.0, w, 2 + 24 * 2724 / 2048))
     assert text.origin == pytest.approx((4.0, 2 + 24 * 2210 / 2048))
     assert text.font_size == 24.0 and text.brush.color == (0.0, 0.0, 0.0, 1.0)
+
+
+PICTURE = ROOT / "tests" / "reference" / "picture"
+
+
+def test_render_transform_origin_is_folded_into_the_matrix():
+    vp = xaml3d.load(PICTURE / "render-transform-flip.xaml").viewports[0]
+    # ScaleY=-1 about (0.5, 0.5) of 64 x 48: y' = 48 - y
+    assert np.array_equal(vp.picture.render_transform, [[1, 0, 0], [0, -1, 48], [0, 0, 1]])
+    assert vp.picture.changes_picture and vp.picture.edge_mode == "Unspecified"
+
+
+def test_effect_defaults_and_edge_mode_alone():
+    shadow = xaml3d.load(PICTURE / "drop-shadow.xaml").viewports[0].picture.effect
+    assert (shadow.kind, shadow.direction, shadow.shadow_depth, shadow.radius) == (
+        "DropShadow", 270.0, 4.0, 0.0,
+    )  # fmt: skip
+    assert shadow.color == (0.0, 0.0, 0.0, 1.0) and shadow.opacity == 1.0
+    aliased = xaml3d.load(PICTURE / "aliased-edges.xaml").viewports[0].picture
+    assert aliased.edge_mode == "Aliased" and not aliased.changes_picture
+
+
+def test_an_effect_from_another_assembly_is_an_info_and_is_not_applied(tmp_path):
+    text = (PICTURE / "opacity.xaml").read_text().replace(' Opacity="0.5"', "")
+    text = text.replace(
+        "</Viewport3D.Camera>",
+        '</Viewport3D.Camera><Viewport3D.Effect><fx:Glow xmlns:fx="clr-namespace:Fx"/>'
+        "</Viewport3D.Effect>",
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(text)
+    scene = xaml3d.load(path)
+    assert scene.viewports[0].picture is None  # drawn without it
+    found = [d for d in scene.diagnostics if d.code in ("DRW003", "XAML001")]
+    assert found and all(d.severity in ("info", "warning") for d in found)
+
+
+def test_viewport_opacity_fades_the_picture_not_the_background():
+    scene = xaml3d.load(PICTURE / "opacity.xaml")
+    rgba = xaml3d.render_arrays(scene, background=(1.0, 1.0, 1.0, 1.0)).rgba
+    # lime at 50% over white (the picture's alpha is 8-bit: 128/255)
+    assert np.abs(rgba[12, 20].astype(int) - (128, 255, 128, 255)).max() <= 1
+    assert tuple(rgba[0, 0]) == (255, 255, 255, 255)  # the background itself is not faded
+
+
+def test_aliased_edges_unless_anti_aliasing_is_asked_for():
+    scene = xaml3d.load(PICTURE / "aliased-edges.xaml")
+    plain = xaml3d.render_arrays(scene).rgba.reshape(-1, 4)
+    assert len(np.unique(plain, axis=0)) == 3  # lime, blue, transparent: no edge blends
+    smooth = xaml3d.render_arrays(scene, msaa=2).rgba.reshape(-1, 4)
+    assert len(np.unique(smooth, axis=0)) > 3  # an explicit --msaa still anti-aliases
+
+
+def test_cli_renders_a_blurred_viewport(tmp_path):
+    out = tmp_path / "b.png"
+    p = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "render", str(PICTURE / "blur.xaml"), "-o", str(out)],
+        capture_output=True,
+        timeout=120,
+    )
+    assert p.returncode == 0 and b"Traceback" not in p.stderr
+    expected = Image.open(PICTURE / "blur.png")
+    assert compare_images(expected, Image.open(out)).ok

@@ -213,6 +213,8 @@ def render_arrays(
         scene = scene_at(scene, time, storyboard)
         if mode not in MODES:
             raise RenderError(f"unknown mode {mode!r} (one of {', '.join(MODES)})", code="RND005")
+        if ssaa is None and msaa is None and _edge_aliased(scene, viewport):
+            msaa = 1  # RenderOptions.EdgeMode="Aliased": WPF draws 3D edges without anti-aliasing
         if ssaa is None and msaa is None:
             msaa = 1 if mode == "wireframe" else DEFAULT_MSAA
         ssaa = 1 if ssaa is None else ssaa
@@ -306,7 +308,9 @@ def _draw_viewport(
     diags: list[Diagnostic] = []
     sw, sh = w * grid, h * grid
     accel.begin_frame()
-    fb = Framebuffer(sw, sh, bg)
+    picture = vp.picture if vp.picture is not None and vp.picture.changes_picture else None
+    # the viewport's own Opacity, Clip, Effect... act on its picture alone, not the background
+    fb = Framebuffer(sw, sh, bg if picture is None or nearest else (0.0, 0.0, 0.0, 0.0))
     ctx = make_context(sw, sh, msaa)
     try:
         from xaml3d.scene.camera_math import camera_pipeline
@@ -335,6 +339,11 @@ def _draw_viewport(
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
     rgba, depth = fb.resolve(grid, nearest=nearest)
+    if picture is not None and not nearest:
+        from xaml3d.render.layer2d.picture import apply_picture  # imports skia
+
+        scale = (w / vp.width if vp.width > 0 else 1.0, h / vp.height if vp.height > 0 else 1.0)
+        rgba = _over(apply_picture(rgba, picture, scale), bg)
     result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
     if pipeline is not None:
         from xaml3d.render.buffers import eye_depth, model_ids
@@ -343,6 +352,29 @@ def _draw_viewport(
         if ids:
             result.ids = model_ids(scene, vp, w, h, aspect, grid=grid, msaa=msaa)
     return result
+
+
+def _edge_aliased(scene: Scene, viewport) -> bool:
+    try:
+        vp = scene.viewport(viewport)
+    except XamlError:
+        return False  # reported where the viewport is chosen
+    return vp.picture is not None and vp.picture.edge_mode == "Aliased"
+
+
+def _over(rgba: np.ndarray, bg) -> np.ndarray:
+    """Straight-alpha uint8 ``rgba`` composed over the straight RGBA float background."""
+    if bg[3] == 0.0:
+        return rgba
+    src = rgba.astype(np.float64) / 255.0
+    a = src[..., 3:4]
+    back = np.array(bg, dtype=np.float64)
+    out_a = a + back[3] * (1.0 - a)
+    premul = src[..., :3] * a + back[:3] * back[3] * (1.0 - a)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rgb = np.where(out_a > 0, premul / np.where(out_a > 0, out_a, 1.0), 0.0)
+    out = np.concatenate([rgb, out_a], axis=-1)
+    return np.clip(np.rint(out * 255.0), 0, 255).astype(np.uint8)
 
 
 def render(scene_or_path, width: int | None = None, height: int | None = None, **options):

@@ -210,3 +210,12 @@ class Viewport2D:
     render_transform: np.ndarray | None = None  # RenderTransformOrigin already folded in
     effect: Effect | None = None
     edge_mode: str = "Unspecified"  # RenderOptions.EdgeMode: "Aliased" turns anti-aliasing off
+
+    @property
+    def changes_picture(self) -> bool:
+        """Whether the 2D layer has anything to do to the picture (EdgeMode alone changes
+        only how the 3D is drawn)."""
+        return self.opacity != 1.0 or any(
+            x is not None
+            for x in (self.opacity_mask, self.clip, self.effect, self.render_transform)
+        )

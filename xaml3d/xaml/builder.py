@@ -272,9 +272,13 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     acc = _Acc()
     for k in p.items("Children"):
         r.build_node(k, lambda e: walk_visual3d(r, e, T.identity(), acc))
+    from xaml3d.xaml.picture_reader import viewport_picture
+
+    picture = viewport_picture(r, p, w, h)
     return Viewport(
         index=index,
         name=element_name(el),
+        picture=picture,
         width=w,
         height=h,
         size_source=source,
