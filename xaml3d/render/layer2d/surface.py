@@ -22,7 +22,7 @@ from xaml3d.render.layer2d.paint import content_bounds, draw_content, matrix, ti
 from xaml3d.scene.drawing import DrawingBrush
 
 MAX_TILE = 4096  # texels per side of a rasterized tile
-_CACHE: list[tuple[object, tuple, np.ndarray]] = []  # (brush, key, tile), newest last
+_CACHE: list[tuple[object, tuple, object]] = []  # (brush, key, (viewport, tile)), newest last
 
 
 def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[int, int]):
@@ -47,6 +47,19 @@ def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[in
 
 
 def _tile(brush: DrawingBrush, bounds, density: float | None):
+    """(viewport, tile) for the brush over ``bounds`` at ``density``, or None. A pass samples
+    its brush once per fragment chunk: the last few tiles are kept, keyed by what makes them."""
+    key = (tuple(float(v) for v in np.ravel(bounds)), density)
+    for b, k, found in _CACHE:
+        if b is brush and k == key:
+            return found
+    found = _make_tile(brush, bounds, density)
+    _CACHE.append((brush, key, found))
+    del _CACHE[:-4]
+    return found
+
+
+def _make_tile(brush: DrawingBrush, bounds, density: float | None):
     content = content_bounds(brush)
     if content is None:
         return None
@@ -60,14 +73,8 @@ def _tile(brush: DrawingBrush, bounds, density: float | None):
     d = (density if density is not None and math.isfinite(density) else 512.0) * scale
     w = int(min(MAX_TILE, max(1, math.ceil(viewport[2] * d))))
     h = int(min(MAX_TILE, max(1, math.ceil(viewport[3] * d))))
-    key = (tuple(float(v) for v in np.ravel(bounds)), w, h)
-    for b, k, tile in _CACHE:
-        if b is brush and k == key:
-            return viewport, tile
     tile = rasterize_tile(brush, viewport, m, (w, h))
     tile.setflags(write=False)
-    _CACHE.append((brush, key, tile))
-    del _CACHE[:-4]
     return viewport, tile
 
 
