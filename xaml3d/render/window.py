@@ -6,8 +6,10 @@ Background (solid, gradient and image brushes, in the element's own coordinates:
 relative units refer to the element's box; a Border's Background fills, and maps to, the box
 inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
 and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
-ratio (``render_arrays``), composited over what lies beneath. 2D controls are not drawn;
-``outline_controls`` draws a one-pixel outline of each control's layout box. Hidden and
+ratio (``render_arrays``), composited over what lies beneath. The 2D controls the 2D layer
+draws (TextBlock, Label, Button, TextBox, CheckBox, RadioButton, shapes, Image: ``Node.drawing``,
+docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
+outline of each control's layout box. Hidden and
 Collapsed elements and their content are left out. A pixel belongs to a box when its centre
 lies inside it.
 """
@@ -98,6 +100,23 @@ def _outline(canvas: np.ndarray, rect) -> None:
     canvas[r0:r1, c1 - 1] = color
 
 
+def _draw_control(canvas: np.ndarray, n: Node) -> None:
+    """A control's drawing (the 2D layer, skia: imported only when a control is drawn) over
+    the canvas at its laid-out box."""
+    from xaml3d.render.layer2d.paint import rasterize
+
+    x, y, w, h = n.rect
+    H, W = canvas.shape[:2]
+    x0, y0 = max(0, math.floor(x)), max(0, math.floor(y))
+    x1, y1 = min(W, math.ceil(x + w)), min(H, math.ceil(y + h))
+    if x1 <= x0 or y1 <= y0:
+        return
+    sx = w / n.ink[0] if n.ink[0] > 0 else 1.0
+    sy = h / n.ink[1] if n.ink[1] > 0 else 1.0
+    m = np.array([[sx, 0.0, x - x0], [0.0, sy, y - y0], [0.0, 0.0, 1.0]])
+    _over(canvas, y0, x0, rasterize(n.drawing, x1 - x0, y1 - y0, m))
+
+
 def compose_window(
     scene: Scene,
     *,
@@ -154,6 +173,8 @@ def compose_window(
                 ye, xe = min(h, H - y0), min(w, W - x0)
                 if ye > ys and xe > xs:
                     _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
+        if n.kind == CONTROL and n.drawing is not None:
+            _draw_control(canvas, n)
         if n.kind == CONTROL and outline_controls:
             _outline(canvas, n.rect)
         stack.extend(reversed(n.children))

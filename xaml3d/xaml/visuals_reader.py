@@ -43,7 +43,6 @@ from xaml3d.xaml.panels_reader import (
     ElementValues,
     PanelsReader,
     _content_text,
-    parse_length,
     parse_thickness,
 )
 
@@ -75,16 +74,6 @@ class _VisualPanels(PanelsReader):
 
     def __init__(self, r) -> None:
         super().__init__(r, [])
-        self.elements: dict[int, tuple] = {}
-
-    def build(self, el, font: float = FONT_SIZE):
-        n = super().build(el, font)
-        if n is not None:
-            own = ElementValues(self.r, el).get("FontSize", parse_length, None)
-            if own is not None and math.isfinite(own) and own > 0:
-                font = own  # the element's own FontSize, as the panel reader takes it
-            self.elements[id(n)] = (el, font)
-        return n
 
     def _estimate(self, n, v, el, font: float = FONT_SIZE) -> None:
         local = n.type
@@ -180,7 +169,10 @@ def visual_drawing(r, el):
     if root is None:
         r.ctx.diag("DRW002", f"{qname(el.tag)[1]} is not a visual xaml3d draws: skipped", el)
         return None
-    layout(root, (math.inf, math.inf))
+    # an element of the window keeps the size the window's layout gave it; a brush's own
+    # visual is measured with infinite room and arranged at its desired size
+    size = getattr(r, "laid_out_sizes", {}).get(id(el))
+    layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
     out = []
     _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
     w, h = root.rect[2], root.rect[3]
@@ -207,9 +199,22 @@ def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
     if not own:
         return
     opacity = v.get("Opacity", V.parse_double, 1.0)
+    clip = _layout_clip(n) if n.type in _TEXT_CONTROLS else None
+    if clip is not None:  # the clip is in the element's own coordinates, under its transform
+        own = [DrawingGroup(children=tuple(own), clip=clip)]
     px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
     out.append(DrawingGroup(children=tuple(own), opacity=opacity, transform=m))
+
+
+def _layout_clip(n):
+    """WPF's layout clip: a control given less room than its text needs is cut at its box."""
+    if n.type not in _TEXT_CONTROLS or n.estimate is None:
+        return None
+    w, h = n.ink
+    if n.estimate[0] <= w + 1e-9 and n.estimate[1] <= h + 1e-9:
+        return None
+    return RectangleGeometry((0.0, 0.0, w, h))
 
 
 def _brush(r, v, prop: str, default=None):
@@ -340,7 +345,10 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         ty = thick[1] + pad[1]
     t = _text(r, el, v, font, inset_x, ty, inner_w, align_center=centred)
     if t is not None:
-        out.append(t)
+        # the content presenter's layout clip: text never spills over the border
+        inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
+        box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
+        out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
 
 
 _CAPS = ("Flat", "Square", "Round", "Triangle")
@@ -402,3 +410,24 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
             fill = None  # a Line is never filled
     if g is not None:
         out.append(GeometryDrawing(g, brush=fill, pen=pen))
+
+
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image"}
+
+
+def attach_control_drawings(r, root, elements: dict) -> None:
+    """``render --window``: each laid-out 2D control that the 2D layer draws gets its drawing
+    (``Node.drawing``, in its own box). The others stay undrawn, as before (LAY003 already
+    says they are estimated)."""
+    for n in root.walk():
+        if n.kind != L.CONTROL or n.type not in _WINDOW_DRAWN or not n.arranged:
+            continue
+        el, font = elements.get(id(n), (None, FONT_SIZE))
+        if el is None:
+            continue
+        out: list = []
+        v = ElementValues(r, el)
+        _element(r, v, n, el, font, n.ink[0], n.ink[1], out)
+        if out:
+            opacity = v.get("Opacity", V.parse_double, 1.0)
+            n.drawing = DrawingGroup(children=tuple(out), opacity=opacity, clip=_layout_clip(n))

@@ -467,3 +467,20 @@ def drawing_bounds(d) -> skia.Rect | None:
             return None
         return matrix(d.transform).mapRect(out)
     return None
+
+
+def rasterize(drawing, width: int, height: int, transform=None) -> np.ndarray:
+    """``drawing`` played onto a transparent ``width`` x ``height`` picture through the 3x3
+    ``transform`` (drawing coordinates -> pixels): premultiplied float32 (H, W, 4) in 0..1."""
+    info = skia.ImageInfo.Make(
+        width, height, skia.ColorType.kRGBA_8888_ColorType, skia.AlphaType.kPremul_AlphaType
+    )
+    surface = skia.Surface.MakeRaster(info)
+    canvas = surface.getCanvas()
+    canvas.clear(skia.ColorTRANSPARENT)
+    canvas.concat(matrix(transform))
+    draw(canvas, drawing)
+    arr = surface.makeImageSnapshot().toarray(
+        colorType=skia.ColorType.kRGBA_8888_ColorType, alphaType=skia.AlphaType.kPremul_AlphaType
+    )
+    return arr.astype(np.float32) / 255.0
