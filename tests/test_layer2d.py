@@ -241,3 +241,17 @@ def test_cli_renders_a_blurred_viewport(tmp_path):
     assert p.returncode == 0 and b"Traceback" not in p.stderr
     expected = Image.open(PICTURE / "blur.png")
     assert compare_images(expected, Image.open(out)).ok
+
+
+def test_progress_bar_in_aero2_look(tmp_path):
+    bar = '<ProgressBar Width="102" Height="10" Value="25"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{bar}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    track, band, indicator = group.children
+    assert track.brush.color[:3] == pytest.approx((0xE6 / 255,) * 3)
+    assert band.brush.color[:3] == pytest.approx((0xBC / 255,) * 3)
+    # a quarter of the 100 x 8 inside, from the left, in #06B025
+    assert indicator.geometry.rect == (1.0, 1.0, 25.0, 8.0)
+    assert indicator.brush.color[:3] == pytest.approx((6 / 255, 0xB0 / 255, 0x25 / 255))

@@ -8,8 +8,9 @@ each element becomes the drawing WPF's would: panel and Border backgrounds and b
 (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
 Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
-Background; one line, no wrapping), Label, Image, and Button, TextBox, CheckBox and RadioButton
-in WPF's default Windows 10/11 look (Aero2 theme values). Opacity applies to an element and its
+Background; one line, no wrapping), Label, Image, and Button, TextBox, CheckBox, RadioButton
+and ProgressBar in WPF's default Windows 10/11 look (the [[Aero2.NormalColor]] values of
+dotnet/wpf's theme files). Opacity applies to an element and its
 children. Anything else is skipped with DRW002: the rest is drawn.
 """
 
@@ -302,6 +303,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local in AERO2:
         _control(r, v, el, local, font, w, h, out)
         return
+    if local == "ProgressBar":
+        _progress_bar(r, v, w, h, out)
+        return
     if local == "Image" and v.p is not None:
         source = v.p.string("Source")
         if source:
@@ -349,6 +353,25 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
         box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
         out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
+
+
+def _progress_bar(r, v, w: float, h: float, out: list) -> None:
+    """Aero2's ProgressBar: a bordered track, the indicator filling Value's share of the inside
+    from the left (Minimum 0, Maximum 100, Value 0 by default)."""
+    background = _brush(r, v, "Background", _rgb("E6E6E6"))
+    border = _brush(r, v, "BorderBrush", _rgb("BCBCBC"))
+    thick = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    out.extend(_box_drawing(background, border, thick, 0.0, w, h))
+    lo = v.get("Minimum", V.parse_double, 0.0)
+    hi = v.get("Maximum", V.parse_double, 100.0)
+    value = v.get("Value", V.parse_double, 0.0)
+    share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
+    inner_w = max(0.0, w - thick[0] - thick[2])
+    inner_h = max(0.0, h - thick[1] - thick[3])
+    if share > 0 and inner_h > 0:
+        rect = (thick[0], thick[1], inner_w * share, inner_h)
+        fill = _brush(r, v, "Foreground", _rgb("06B025"))
+        out.append(GeometryDrawing(RectangleGeometry(rect), brush=fill))
 
 
 _CAPS = ("Flat", "Square", "Round", "Triangle")
@@ -412,7 +435,7 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
         out.append(GeometryDrawing(g, brush=fill, pen=pen))
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image"}
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar"}
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
