@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from xaml3d.errors import INFO, WARNING
 from xaml3d.scene.drawing import DrawingBrush, DrawingGroup, GeometryDrawing, ImageDrawing, Pen
+from xaml3d.scene.types import placeholder_image
 from xaml3d.xaml import values as V
 from xaml3d.xaml.geometry_reader import geometry_property
 
@@ -122,6 +123,8 @@ def drawing(r, el):
         image = None
         if source:
             image = load_image(r, source, el, p.attr_keys.get("ImageSource"))[1]
+            if image is None:  # the diagnostic says a grey checker stands in, as for ImageBrush
+                image = placeholder_image()
         return ImageDrawing(
             image=image, rect=p.value("Rect", V.parse_rect, (0.0, 0.0, 0.0, 0.0)), **pos
         )

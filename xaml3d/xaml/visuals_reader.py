@@ -34,7 +34,7 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
-from xaml3d.scene.types import SolidColorBrush
+from xaml3d.scene.types import SolidColorBrush, placeholder_image
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property, load_image
 from xaml3d.xaml.context import qname, split_markup
@@ -310,6 +310,8 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         source = v.p.string("Source")
         if source:
             image = load_image(r, source, el, v.p.attr_keys.get("Source"))[1]
+            if image is None:  # the diagnostic says a grey checker stands in
+                image = placeholder_image()
             if image is not None:
                 out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h)))
         return
