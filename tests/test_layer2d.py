@@ -255,3 +255,27 @@ def test_progress_bar_in_aero2_look(tmp_path):
     # a quarter of the 100 x 8 inside, from the left, in #06B025
     assert indicator.geometry.rect == (1.0, 1.0, 25.0, 8.0)
     assert indicator.brush.color[:3] == pytest.approx((6 / 255, 0xB0 / 255, 0x25 / 255))
+
+
+def test_outer_glow_is_an_unmoved_shadow_and_bitmap_scaling_mode_is_said(tmp_path):
+    text = (
+        (PICTURE / "opacity.xaml")
+        .read_text()
+        .replace(' Opacity="0.5"', ' RenderOptions.BitmapScalingMode="NearestNeighbor"')
+    )
+    text = text.replace(
+        "</Viewport3D.Camera>",
+        "</Viewport3D.Camera><Viewport3D.BitmapEffect>"
+        '<OuterGlowBitmapEffect GlowColor="Red" GlowSize="6"/></Viewport3D.BitmapEffect>',
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(text)
+    scene = xaml3d.load(path)
+    e = scene.viewports[0].picture.effect
+    assert (e.kind, e.shadow_depth, e.radius, e.color) == ("DropShadow", 0.0, 6.0, (1, 0, 0, 1))
+    [d] = [d for d in scene.diagnostics if d.code == "DRW003"]
+    assert "BitmapScalingMode" in d.message and d.severity == "info"
+    rgba = xaml3d.render_arrays(scene).rgba
+    # the glow shows around the picture, red, fading outwards; the picture itself is intact
+    assert rgba[6, 32, 0] == 255 and rgba[6, 32, 3] > rgba[4, 32, 3] > 0
+    assert tuple(rgba[12, 20]) == (0, 255, 0, 255)

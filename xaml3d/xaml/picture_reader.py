@@ -4,9 +4,11 @@ Covers Opacity, OpacityMask (any brush the 2D layer draws), Clip (any geometry),
 with RenderTransformOrigin (folded into one matrix about the viewport's top-left), Effect
 (BlurEffect: Radius; DropShadowEffect: Color, Direction, ShadowDepth, BlurRadius, Opacity),
 BitmapEffect (BlurBitmapEffect: Radius; DropShadowBitmapEffect: Color, Direction, ShadowDepth,
-Softness, Opacity) and RenderOptions.EdgeMode. Other effects (ShaderEffect and effects from
-other assemblies, OuterGlowBitmapEffect, BevelBitmapEffect, EmbossBitmapEffect, effect groups)
-are an info diagnostic (DRW003) and the picture is drawn without them.
+Softness, Opacity; OuterGlowBitmapEffect: GlowColor, GlowSize, Opacity, drawn as an unmoved
+shadow) and RenderOptions.EdgeMode. Other effects (ShaderEffect and effects from other
+assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) and
+RenderOptions.BitmapScalingMode are an info diagnostic (DRW003) and the picture is drawn without
+them.
 """
 
 from __future__ import annotations
@@ -44,6 +46,15 @@ def _effect(r, el) -> Effect | None:
             shadow_depth=p.value("ShadowDepth", _D, 5.0),
             opacity=p.value("Opacity", _D, 1.0),
         )
+    if t == "OuterGlowBitmapEffect":
+        # a glow is a shadow cast straight below: no offset, GlowSize as its blur
+        return Effect(
+            kind="DropShadow",
+            radius=p.value("GlowSize", _D, 20.0),
+            color=p.value("GlowColor", V.parse_color, (1.0, 215 / 255, 0.0, 1.0)),
+            shadow_depth=0.0,
+            opacity=p.value("Opacity", _D, 1.0),
+        )
     ns, local = qname(el.tag)
     what = local if ns is None or "presentation" in ns else f"{local} (from {ns})"
     r.ctx.diag("DRW003", f"the effect {what} is not applied: the picture is drawn without it", el)
@@ -71,6 +82,12 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
     if p.has("BitmapEffect"):
         bitmap = p.obj("BitmapEffect", lambda e: _effect(r, e), None)
         effect = effect or bitmap  # WPF applies Effect when both are set
+    if "RenderOptions.BitmapScalingMode" in p.attached:
+        msg = (
+            "RenderOptions.BitmapScalingMode is not applied: brushes are sampled bilinearly "
+            "(WPF's default)"
+        )
+        r.ctx.diag("DRW003", msg, p.el, attr="RenderOptions.BitmapScalingMode")
     edge = p.attached.get("RenderOptions.EdgeMode", "Unspecified").strip()
     if edge not in ("Aliased", "Unspecified"):
         r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
