@@ -279,3 +279,21 @@ def test_outer_glow_is_an_unmoved_shadow_and_bitmap_scaling_mode_is_said(tmp_pat
     # the glow shows around the picture, red, fading outwards; the picture itself is intact
     assert rgba[6, 32, 0] == 255 and rgba[6, 32, 3] > rgba[4, 32, 3] > 0
     assert tuple(rgba[12, 20]) == (0, 255, 0, 255)
+
+
+def test_textblock_wraps_to_its_width(tmp_path):
+    from xaml3d.layout.text import line_height, text_width
+
+    tb = '<TextBlock Width="60" TextWrapping="Wrap" Text="one two three four" Background="Blue"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{tb}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    background, lines = group.children
+    words = [t.text for t in lines.children]
+    assert all(text_width(t, 12.0) <= 60 for t in words) and " ".join(words) == "one two three four"
+    assert len(words) > 1
+    # one line box per line, baselines one LineSpacing apart
+    assert background.geometry.rect[3] == pytest.approx(len(words) * line_height(12.0))
+    ys = [t.origin[1] for t in lines.children]
+    assert np.allclose(np.diff(ys), line_height(12.0))

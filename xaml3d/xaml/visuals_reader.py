@@ -44,6 +44,7 @@ from xaml3d.xaml.panels_reader import (
     ElementValues,
     PanelsReader,
     _content_text,
+    parse_length,
     parse_thickness,
 )
 
@@ -83,9 +84,11 @@ class _VisualPanels(PanelsReader):
         elif local in _TEXT_CONTROLS:
             text = _text_of(el)
             weight, italic = _font_style(el)
-            w = text_width(text, font, weight, italic)
-            h = line_height(font)
             pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
+            lines = _lines(text, font, weight, italic, _wrap_width(v, pad) if local ==
+                           "TextBlock" else math.inf)  # fmt: skip
+            w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
+            h = line_height(font) * max(1, len(lines))
             border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
             if local in ("CheckBox", "RadioButton"):
                 # the mark, then the content with Aero2's Padding 4,-1,0,0
@@ -260,23 +263,65 @@ def _foreground(r, el):
     return BLACK
 
 
+_WRAPS = ("NoWrap", "Wrap", "WrapWithOverflow")
+
+
+def _wrap_width(v, pad) -> float:
+    """The width a TextBlock with TextWrapping wraps its text to: its own Width (or MaxWidth)
+    less its Padding; infinite when it does not wrap or has no width of its own."""
+    wrap = v.get("TextWrapping", lambda s: V.parse_enum(s, _WRAPS), "NoWrap")
+    if wrap == "NoWrap":
+        return math.inf
+    w = v.get("Width", parse_length, math.nan)
+    if w != w:
+        w = v.get("MaxWidth", parse_length, math.inf)
+    return max(0.0, w - pad[0] - pad[2])
+
+
+def _lines(text: str, font: float, weight: int, italic: bool, width: float) -> list[str]:
+    """``text`` broken into lines no wider than ``width`` at spaces (a word wider than the
+    line keeps a line of its own)."""
+    if not text or not math.isfinite(width):
+        return [text] if text else []
+    lines: list[str] = []
+    cur = ""
+    for word in text.split(" "):
+        trial = f"{cur} {word}" if cur else word
+        if cur and text_width(trial, font, weight, italic) > width:
+            lines.append(cur)
+            cur = word
+        else:
+            cur = trial
+    lines.append(cur)
+    return lines
+
+
 def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
+    """The element's text as one TextDrawing per line (a DrawingGroup when it wraps)."""
     text = _text_of(el)
     if not text:
         return None
     weight, italic = _font_style(el)
-    tw = text_width(text, font, weight, italic)
+    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
+    width = _wrap_width(v, pad) if qname(el.tag)[1] == "TextBlock" else math.inf
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip
-    if align_center or alignment == "Center":
-        x += (w - tw) / 2
-    elif alignment == "Right":
-        x += w - tw
     family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
-    return TextDrawing(
-        text=text, origin=(x, y + baseline(font)), font_size=font, weight=weight, italic=italic,
-        family=family, brush=_foreground(r, el), **r.ctx.position(el),
-    )  # fmt: skip
+    brush = _foreground(r, el)
+    out = []
+    for i, line in enumerate(_lines(text, font, weight, italic, width)):
+        tw = text_width(line, font, weight, italic)
+        lx = x
+        if align_center or alignment == "Center":
+            lx += (w - tw) / 2
+        elif alignment == "Right":
+            lx += w - tw
+        ly = y + i * line_height(font) + baseline(font)
+        out.append(TextDrawing(
+            text=line, origin=(lx, ly), font_size=font, weight=weight, italic=italic,
+            family=family, brush=brush, **r.ctx.position(el),
+        ))  # fmt: skip
+    return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
 
 
 def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
