@@ -216,9 +216,10 @@ def test_viewport2dvisual3d_draws_its_visual_on_the_host_material():
     b = s.viewports[0].models[0].material[0].brush
     assert isinstance(b, DrawingBrush) and b.kind == "Viewport2DVisual3D"
     assert b.viewport == (0.0, 0.0, 1.0, 1.0) and b.viewport_units == "Absolute"
-    # the Button's laid-out box: its text and Aero2's border and padding, 1 + 1 each side
-    x, y, w, h = b.content_bounds
-    assert (x, y) == (0.0, 0.0) and h == pytest.approx(2724 / 2048 * 12 + 4)
+    # the Button draws its whole laid-out box: its text line and Aero2's border and padding
+    face, band, text = b.drawing.children[0].children
+    assert face.geometry.rect[3] == pytest.approx(2724 / 2048 * 12 + 2)  # inside the 1 px border
+    assert b.content_bounds is None  # relative units refer to what the visual draws
     assert "SCN007" not in codes(s) and "DRW005" not in codes(s)
     plain = scene(xml.replace(host, ""))  # no host material: WPF shows no visual
     assert plain.viewports[0].models[0].material[0].brush is None

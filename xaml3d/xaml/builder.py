@@ -196,7 +196,7 @@ def walk_visual3d(r: Reader, el, parent: np.ndarray, acc: _Acc) -> None:
 def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc) -> None:
     """A Viewport2DVisual3D: its Visual laid out and drawn (visuals_reader) as the brush of
     the material passes marked Viewport2DVisual3D.IsVisualHostMaterial="True", texture
-    coordinates (0,0)-(1,1) spanning the visual's laid-out box (WPF's mapping)."""
+    coordinates (0,0)-(1,1) spanning the visual's bounds (WPF's internal VisualBrush)."""
     from xaml3d.xaml.drawings_reader import visual_host_brush
 
     el = p.el

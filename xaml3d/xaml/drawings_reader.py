@@ -191,15 +191,16 @@ def _bound_element(p):
 
 
 def visual_host_brush(r, p) -> DrawingBrush | None:
-    """The brush WPF puts on a Viewport2DVisual3D's host material: its Visual laid out at its
-    desired size, texture coordinates (0,0)-(1,1) spanning that box (None: no Visual)."""
+    """The brush WPF puts on a Viewport2DVisual3D's host material: a VisualBrush of its Visual
+    (laid out at its desired size) with ViewportUnits Absolute and TileMode None, so texture
+    coordinates (0,0)-(1,1) span the visual's bounds, the box of what it draws (for a control
+    with a background, its laid-out box). None: no Visual."""
     from xaml3d.xaml.visuals_reader import visual_drawing
 
     found = p.obj("Visual", lambda e: visual_drawing(r, e), None)
     if found is None:
         return None
-    content, bounds = found
     return DrawingBrush(
-        drawing=content, kind="Viewport2DVisual3D", content_bounds=bounds,
+        drawing=found[0], kind="Viewport2DVisual3D",
         viewport=(0.0, 0.0, 1.0, 1.0), viewport_units="Absolute", **r.ctx.position(p.el),
     )  # fmt: skip
