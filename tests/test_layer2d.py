@@ -297,3 +297,19 @@ def test_textblock_wraps_to_its_width(tmp_path):
     assert background.geometry.rect[3] == pytest.approx(len(words) * line_height(12.0))
     ys = [t.origin[1] for t in lines.children]
     assert np.allclose(np.diff(ys), line_height(12.0))
+
+
+def test_closed_combo_box_shows_its_selected_item(tmp_path):
+    from xaml3d.layout.text import line_height
+
+    combo = ('<ComboBox SelectedIndex="1"><ComboBoxItem>Alpha</ComboBoxItem>'
+             "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>")  # fmt: skip
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{combo}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    face, band, text, arrow = group.children
+    assert text.children[0].text == "Beta"
+    # WPF's closed ComboBox is 22 px tall at 12 px text: Padding 3 + 3, border 1 + 1
+    assert face.geometry.rect[3] + 2 == pytest.approx(line_height(12.0) + 8)
+    assert band.brush.color[:3] == pytest.approx((0xAC / 255,) * 3)

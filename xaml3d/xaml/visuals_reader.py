@@ -8,10 +8,10 @@ each element becomes the drawing WPF's would: panel and Border backgrounds and b
 (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
 Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
-Background; one line, no wrapping), Label, Image, and Button, TextBox, CheckBox, RadioButton
-and ProgressBar in WPF's default Windows 10/11 look (the [[Aero2.NormalColor]] values of
-dotnet/wpf's theme files). Opacity applies to an element and its
-children. Anything else is skipped with DRW002: the rest is drawn.
+Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
+RadioButton, ProgressBar and a closed ComboBox in WPF's default Windows 10/11 look (the
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity applies to an element and
+its children. Anything else is skipped with DRW002: the rest is drawn.
 """
 
 from __future__ import annotations
@@ -81,6 +81,11 @@ class _VisualPanels(PanelsReader):
         local = n.type
         if local in _SHAPES:
             n.estimate = _shape_extent(self.r, v)
+        elif local == "ComboBox":
+            items = [_text_of(k) for k in _combo_items(el)] or [""]
+            widest = max(text_width(t, font, *_font_style(el)) for t in items)
+            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
+            n.estimate = (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
         elif local in _TEXT_CONTROLS:
             text = _text_of(el)
             weight, italic = _font_style(el)
@@ -351,6 +356,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "ProgressBar":
         _progress_bar(r, v, w, h, out)
         return
+    if local == "ComboBox":
+        _combo_box(r, v, el, font, w, h, out)
+        return
     if local == "Image" and v.p is not None:
         source = v.p.string("Source")
         if source:
@@ -421,6 +429,50 @@ def _progress_bar(r, v, w: float, h: float, out: list) -> None:
         out.append(GeometryDrawing(RectangleGeometry(rect), brush=fill))
 
 
+_COMBO_BUTTON = 17.0  # SystemParameters.VerticalScrollBarWidth: the drop-down button's column
+# Aero2's drop-down arrow (ComboBoxToggleButton's Path), 5.33 x 4.45 px
+_COMBO_ARROW = "M0,0 L2.667,2.66665 5.3334,0 5.3334,-1.78168 2.6667,0.88501 0,-1.78168 0,0Z"
+
+
+def _combo_items(el) -> list:
+    return [k for k in el if isinstance(k.tag, str) and qname(k.tag)[1] == "ComboBoxItem"]
+
+
+def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
+    """Aero2's closed ComboBox: the #FFF0F0F0-#FFE5E5E5 face in a #FFACACAC border, the
+    selected item's text (SelectedIndex, an item's IsSelected, or Text) at Padding 6,3,5,3,
+    and the #FF606060 arrow centred in the 17 px button column."""
+    from xaml3d.scene.types import GradientStop, LinearGradientBrush
+    from xaml3d.xaml.geometry_reader import path_from_string
+
+    face = LinearGradientBrush(
+        stops=(GradientStop((0xF0 / 255,) * 3 + (1.0,), 0.0),
+               GradientStop((0xE5 / 255,) * 3 + (1.0,), 1.0)),
+        start_point=(0.0, 0.0), end_point=(0.0, 1.0),
+    )  # fmt: skip
+    background = _brush(r, v, "Background", face)
+    border = _brush(r, v, "BorderBrush", _rgb("ACACAC"))
+    out.extend(_box_drawing(background, border, (1.0,) * 4, 0.0, w, h))
+    items = _combo_items(el)
+    index = v.get("SelectedIndex", V.parse_int, -1)
+    chosen = items[index] if 0 <= index < len(items) else next(
+        (k for k in items if k.get("IsSelected") == "True"), None)  # fmt: skip
+    text = _text_of(chosen) if chosen is not None else (el.get("Text") or "")
+    if text:
+        weight, italic = _font_style(el)
+        box = (7.0, 4.0, max(0.0, w - 13.0 - _COMBO_BUTTON), max(0.0, h - 8.0))
+        line = TextDrawing(
+            text=text, origin=(7.0, (h - line_height(font)) / 2 + baseline(font)),
+            font_size=font, weight=weight, italic=italic, brush=_foreground(r, el),
+        )  # fmt: skip
+        out.append(DrawingGroup(children=(line,), clip=RectangleGeometry(box)))
+    arrow = path_from_string(_COMBO_ARROW)
+    cx, cy = w - 1.0 - _COMBO_BUTTON / 2, h / 2
+    m = np.array([[1.0, 0.0, cx - 2.6667], [0.0, 1.0, cy + 1.78168 / 2 - 0.44], [0, 0, 1.0]])
+    out.append(DrawingGroup(children=(GeometryDrawing(arrow, brush=_rgb("606060")),),
+                            transform=m))  # fmt: skip
+
+
 _CAPS = ("Flat", "Square", "Round", "Triangle")
 _JOINS = ("Miter", "Bevel", "Round")
 
@@ -482,7 +534,7 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
         out.append(GeometryDrawing(g, brush=fill, pen=pen))
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar"}
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox"}
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
