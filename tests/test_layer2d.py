@@ -313,3 +313,15 @@ def test_closed_combo_box_shows_its_selected_item(tmp_path):
     # WPF's closed ComboBox is 22 px tall at 12 px text: Padding 3 + 3, border 1 + 1
     assert face.geometry.rect[3] + 2 == pytest.approx(line_height(12.0) + 8)
     assert band.brush.color[:3] == pytest.approx((0xAC / 255,) * 3)
+
+
+def test_slider_thumb_at_its_value(tmp_path):
+    slider = '<Slider Width="111" Value="5"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{slider}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    track, thumb = group.children
+    # halfway (5 of 0..10) along the 100 px the 11 px thumb can travel; 18 px tall slider
+    assert thumb.geometry.rect == (50.5, 0.5, 10.0, 17.0)
+    assert track.transform[0, 2] == 5.5 and track.transform[1, 2] == 7.0

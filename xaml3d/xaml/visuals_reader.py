@@ -9,7 +9,7 @@ each element becomes the drawing WPF's would: panel and Border backgrounds and b
 Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
 Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
-RadioButton, ProgressBar and a closed ComboBox in WPF's default Windows 10/11 look (the
+RadioButton, ProgressBar, Slider and a closed ComboBox in WPF's default Windows 10/11 look (the
 [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity applies to an element and
 its children. Anything else is skipped with DRW002: the rest is drawn.
 """
@@ -81,6 +81,8 @@ class _VisualPanels(PanelsReader):
         local = n.type
         if local in _SHAPES:
             n.estimate = _shape_extent(self.r, v)
+        elif local == "Slider":
+            n.estimate = (0.0, 18.0)  # Aero2's thumb is 11 x 18; the track stretches
         elif local == "ComboBox":
             items = [_text_of(k) for k in _combo_items(el)] or [""]
             widest = max(text_width(t, font, *_font_style(el)) for t in items)
@@ -359,6 +361,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "ComboBox":
         _combo_box(r, v, el, font, w, h, out)
         return
+    if local == "Slider":
+        _slider(r, v, w, h, out)
+        return
     if local == "Image" and v.p is not None:
         source = v.p.string("Source")
         if source:
@@ -473,6 +478,22 @@ def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
                             transform=m))  # fmt: skip
 
 
+def _slider(r, v, w: float, h: float, out: list) -> None:
+    """Aero2's horizontal Slider: a 4 px #FFE7EAEA track in a #FFD6D6D6 border, inset by half
+    the thumb, and the 11 x 18 #FFF0F0F0 thumb (#FFACACAC edge) at Value's share of the way."""
+    lo = v.get("Minimum", V.parse_double, 0.0)
+    hi = v.get("Maximum", V.parse_double, 10.0)
+    value = v.get("Value", V.parse_double, 0.0)
+    share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
+    cy = h / 2
+    track = _box_drawing(_rgb("E7EAEA"), _rgb("D6D6D6"), (1.0,) * 4, 0.0, max(0.0, w - 11), 4.0)
+    shift = np.array([[1.0, 0.0, 5.5], [0.0, 1.0, cy - 2.0], [0.0, 0.0, 1.0]])
+    out.append(DrawingGroup(children=tuple(track), transform=shift))
+    x = max(0.0, w - 11.0) * share
+    thumb = RectangleGeometry((x + 0.5, cy - 8.5, 10.0, 17.0))
+    out.append(GeometryDrawing(thumb, brush=_rgb("F0F0F0"), pen=Pen(brush=_rgb("ACACAC"))))
+
+
 _CAPS = ("Flat", "Square", "Round", "Triangle")
 _JOINS = ("Miter", "Bevel", "Round")
 
@@ -534,7 +555,7 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
         out.append(GeometryDrawing(g, brush=fill, pen=pen))
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox"}
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider"}
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
