@@ -18,7 +18,7 @@ import numpy as np
 from xaml3d.scene.drawing import Effect, Viewport2D
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
-from xaml3d.xaml.context import qname
+from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.geometry_reader import geometry_property
 
 _D = V.parse_double
@@ -61,6 +61,19 @@ def _effect(r, el) -> Effect | None:
     return None
 
 
+def _effect_property(r, p, prop: str) -> Effect | None:
+    if not p.has(prop):
+        return None
+    for el in p.elems.get(prop, ()):
+        ns, local = qname(el.tag)
+        if isinstance(el.tag, str) and not is_presentation(ns):
+            # a ShaderEffect from another assembly: its pixel shader is not available
+            msg = f"the effect {local} (from {ns}) is not applied: the picture is drawn without it"
+            r.ctx.diag("DRW003", msg, el)
+            return None
+    return p.obj(prop, lambda e: _effect(r, e), None)
+
+
 def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
     """The viewport's Viewport2D (None when it sets none of the properties)."""
     set_any = False
@@ -78,9 +91,9 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
             o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
             back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
             transform = o @ np.asarray(m) @ back
-    effect = p.obj("Effect", lambda e: _effect(r, e), None) if p.has("Effect") else None
+    effect = _effect_property(r, p, "Effect")
     if p.has("BitmapEffect"):
-        bitmap = p.obj("BitmapEffect", lambda e: _effect(r, e), None)
+        bitmap = _effect_property(r, p, "BitmapEffect")
         effect = effect or bitmap  # WPF applies Effect when both are set
     if "RenderOptions.BitmapScalingMode" in p.attached:
         msg = (
