@@ -326,3 +326,14 @@ def test_slider_thumb_at_its_value(tmp_path):
     # halfway (5 of 0..10) along the 100 px the 11 px thumb can travel; 18 px tall slider
     assert thumb.geometry.rect == (50.5, 0.5, 10.0, 17.0)
     assert track.transform[0, 2] == 5.5 and track.transform[1, 2] == 7.0
+
+
+def test_start_and_end_caps_are_each_ends_own():
+    from xaml3d.render.layer2d.paint import rasterize
+
+    pen = Pen(brush=LIME, thickness=4.0, start_cap="Square", end_cap="Round")
+    line = GeometryDrawing(PathGeometry((("M", 4.0, 8.0), ("L", 12.0, 8.0))), pen=pen)
+    a = rasterize(line, 16, 16)[..., 3]
+    assert a[6:10, 2:4].min() == 1.0  # the square start reaches 2 px before the line's start
+    assert a[8, 14] == 0.0 and 0.0 < a[7, 13] < 1.0  # the round end is a half disc, AA edge
+    assert a[6, 13] < a[8, 13]  # rounder than a square: thinner away from the axis

@@ -10,8 +10,9 @@ ImageBrush and DrawingBrush (their tile recorded as a skia Picture and repeated 
 shader: TileMode None / Tile / FlipX / FlipY / FlipXY). Relative brush units refer to the
 bounds of the geometry (or text) being filled.
 
-Limits (docs/layer2d.md): a Pen's StartLineCap is used for both ends; Triangle caps are drawn
-flat; PathFigure.IsFilled="False" figures are filled like the others.
+Pens: StartLineCap and EndLineCap (Flat, Square, Round, Triangle) are drawn as each end's own
+shape when they differ or one is Triangle (skia strokes with one cap); dashed lines use DashCap.
+Limits (docs/layer2d.md): PathFigure.IsFilled="False" figures are filled like the others.
 """
 
 from __future__ import annotations
@@ -353,6 +354,43 @@ def _stroke_paint(pen, box: skia.Rect, dashed: bool = True) -> skia.Paint | None
     return paint
 
 
+def _cap(out: skia.Path, kind: str, pos, tan, half: float) -> None:
+    """One line cap at ``pos`` facing outwards along the unit vector ``tan``."""
+    x, y, tx, ty = pos.x(), pos.y(), tan.x(), tan.y()
+    nx, ny = -ty * half, tx * half  # the half-thickness across the line
+    if kind == "Round":
+        out.addCircle(x, y, half)
+    elif kind == "Square":
+        fx, fy = tx * half, ty * half
+        out.moveTo(x + nx, y + ny)
+        out.lineTo(x + nx + fx, y + ny + fy)
+        out.lineTo(x - nx + fx, y - ny + fy)
+        out.lineTo(x - nx, y - ny)
+        out.close()
+    elif kind == "Triangle":
+        out.moveTo(x + nx, y + ny)
+        out.lineTo(x + tx * half, y + ty * half)
+        out.lineTo(x - nx, y - ny)
+        out.close()
+
+
+def _caps(path: skia.Path, pen) -> skia.Path:
+    """The StartLineCap and EndLineCap shapes of every open figure of ``path``."""
+    out = skia.Path()
+    out.setFillType(skia.PathFillType.kWinding)
+    half = float(pen.thickness) / 2.0
+    measure = skia.PathMeasure(path, False)
+    while True:
+        length = measure.getLength()
+        if length > 0 and not measure.isClosed():
+            pos, tan = measure.getPosTan(0.0)
+            _cap(out, pen.start_cap, pos, skia.Point(-tan.x(), -tan.y()), half)
+            pos, tan = measure.getPosTan(length)
+            _cap(out, pen.end_cap, pos, tan, half)
+        if not measure.nextContour():
+            return out
+
+
 def _font(d: TextDrawing) -> skia.Font:
     font = skia.Font(typeface(d.weight, d.italic), float(d.font_size))
     font.setEdging(skia.Font.Edging.kAntiAlias)
@@ -383,7 +421,16 @@ def draw(canvas: skia.Canvas, d) -> None:
             canvas.drawPath(path, fill)
         stroke = _stroke_paint(d.pen, box)
         if stroke is not None:
+            pen = d.pen
+            own_caps = not pen.dashes and (
+                pen.start_cap != pen.end_cap or "Triangle" in (pen.start_cap, pen.end_cap)
+            )
+            if own_caps:  # skia has one cap for both ends: flat ends, then each end's cap
+                stroke.setStrokeCap(skia.Paint.Cap.kButt_Cap)
             canvas.drawPath(path, stroke)
+            if own_caps:
+                stroke.setStyle(skia.Paint.kFill_Style)
+                canvas.drawPath(_caps(path, pen), stroke)
     elif isinstance(d, TextDrawing):
         font = _font(d)
         paint = paint_of(d.brush, _text_box(d, font))
