@@ -337,3 +337,12 @@ def test_start_and_end_caps_are_each_ends_own():
     assert a[6:10, 2:4].min() == 1.0  # the square start reaches 2 px before the line's start
     assert a[8, 14] == 0.0 and 0.0 < a[7, 13] < 1.0  # the round end is a half disc, AA edge
     assert a[6, 13] < a[8, 13]  # rounder than a square: thinner away from the axis
+
+
+def test_a_figure_that_is_not_filled_is_only_stroked():
+    from xaml3d.render.layer2d.paint import rasterize
+
+    square = (("L", 12.0, 4.0), ("L", 12.0, 12.0), ("L", 4.0, 12.0), ("Z",))
+    for start, inside in (("M", 1.0), ("M-", 0.0)):
+        g = GeometryDrawing(PathGeometry(((start, 4.0, 4.0), *square)), brush=LIME)
+        assert rasterize(g, 16, 16)[8, 8, 3] == inside

@@ -12,7 +12,7 @@ bounds of the geometry (or text) being filled.
 
 Pens: StartLineCap and EndLineCap (Flat, Square, Round, Triangle) are drawn as each end's own
 shape when they differ or one is Triangle (skia strokes with one cap); dashed lines use DashCap.
-Limits (docs/layer2d.md): PathFigure.IsFilled="False" figures are filled like the others.
+PathFigure.IsFilled="False" figures are stroked, never filled.
 """
 
 from __future__ import annotations
@@ -94,8 +94,9 @@ def _color(rgba) -> int:
 # --------------------------------------------------------------------------- geometry
 
 
-def path_of(geometry) -> skia.Path | None:
-    """A scene geometry as a skia Path (its own Transform applied), None for no geometry."""
+def path_of(geometry, filled: bool = False) -> skia.Path | None:
+    """A scene geometry as a skia Path (its own Transform applied), None for no geometry.
+    ``filled``: only the figures a fill covers (PathFigure.IsFilled="False" ones left out)."""
     if geometry is None:
         return None
     p = skia.Path()
@@ -115,23 +116,33 @@ def path_of(geometry) -> skia.Path | None:
         p.moveTo(*geometry.start)
         p.lineTo(*geometry.end)
     elif isinstance(geometry, PathGeometry):
-        _commands(p, geometry.commands)
+        _commands(p, _filled_figures(geometry.commands) if filled else geometry.commands)
         p.setFillType(_fill(geometry.fill_rule))
     elif isinstance(geometry, GeometryGroup):
         for child in geometry.children:
-            cp = path_of(child)
+            cp = path_of(child, filled)
             if cp is not None:
                 p.addPath(cp)
         p.setFillType(_fill(geometry.fill_rule))
     elif isinstance(geometry, CombinedGeometry):
-        a = path_of(geometry.geometry1) or skia.Path()
-        b = path_of(geometry.geometry2) or skia.Path()
+        a = path_of(geometry.geometry1, filled) or skia.Path()
+        b = path_of(geometry.geometry2, filled) or skia.Path()
         p = skia.Op(a, b, _OPS.get(geometry.mode, skia.PathOp.kUnion_PathOp)) or skia.Path()
     else:
         return None
     if geometry.transform is not None:
         p.transform(matrix(geometry.transform))
     return p
+
+
+def _filled_figures(commands) -> tuple:
+    out, keep = [], True
+    for c in commands:
+        if c[0] in ("M", "M-"):
+            keep = c[0] == "M"
+        if keep:
+            out.append(c)
+    return tuple(out)
 
 
 def _fill(rule: str):
@@ -418,7 +429,7 @@ def draw(canvas: skia.Canvas, d) -> None:
         box = path.computeTightBounds()
         fill = paint_of(d.brush, box)
         if fill is not None:
-            canvas.drawPath(path, fill)
+            canvas.drawPath(path_of(d.geometry, filled=True), fill)
         stroke = _stroke_paint(d.pen, box)
         if stroke is not None:
             pen = d.pen
