@@ -346,3 +346,22 @@ def test_a_figure_that_is_not_filled_is_only_stroked():
     for start, inside in (("M", 1.0), ("M-", 0.0)):
         g = GeometryDrawing(PathGeometry(((start, 4.0, 4.0), *square)), brush=LIME)
         assert rasterize(g, 16, 16)[8, 8, 3] == inside
+
+
+def test_drawing_group_opacity_mask_in_the_groups_own_coordinates():
+    from xaml3d.render.layer2d.paint import rasterize
+    from xaml3d.scene.types import GradientStop, LinearGradientBrush
+
+    fade = LinearGradientBrush(
+        stops=(GradientStop((0, 0, 0, 1.0), 0.0), GradientStop((0, 0, 0, 0.0), 1.0)),
+        start_point=(0.0, 0.5), end_point=(1.0, 0.5),
+    )  # fmt: skip
+    moved = np.array([[1.0, 0, 8.0], [0, 1.0, 0], [0, 0, 1.0]])
+    g = DrawingGroup(
+        children=(GeometryDrawing(RectangleGeometry((0.0, 0.0, 8.0, 8.0)), brush=LIME),),
+        transform=moved, opacity_mask=fade,
+    )  # fmt: skip
+    a = rasterize(g, 16, 8)[4, :, 3]
+    assert (a[:8] == 0).all()  # moved right by 8: nothing on the left
+    # the mask fades across the square itself: opaque at its left edge, clear at its right
+    assert a[8] > 0.85 and a[15] < 0.15 and (np.diff(a[8:]) < 0).all()

@@ -475,13 +475,12 @@ def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
     for child in g.children:
         draw(canvas, child)
     if g.opacity_mask is not None:
-        box = drawing_bounds(g)
-        if box is not None:
-            inv = skia.Matrix()
-            mask = paint_of(g.opacity_mask, box)
-            if mask is not None and matrix(g.transform).invert(inv):
-                mask.setBlendMode(skia.BlendMode.kDstIn)
-                canvas.drawRect(box, mask)
+        # the mask's relative units refer to the group's content, in the group's coordinates
+        box = drawing_bounds(DrawingGroup(children=g.children))
+        mask = paint_of(g.opacity_mask, box) if box is not None else None
+        if mask is not None:
+            mask.setBlendMode(skia.BlendMode.kDstIn)
+            canvas.drawRect(box, mask)
     if layered:
         canvas.restore()
     canvas.restore()
