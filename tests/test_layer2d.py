@@ -365,3 +365,15 @@ def test_drawing_group_opacity_mask_in_the_groups_own_coordinates():
     assert (a[:8] == 0).all()  # moved right by 8: nothing on the left
     # the mask fades across the square itself: opaque at its left edge, clear at its right
     assert a[8] > 0.85 and a[15] < 0.15 and (np.diff(a[8:]) < 0).all()
+
+
+def test_a_buttons_element_content_is_said_not_drawn(tmp_path):
+    button = (
+        "<Button><StackPanel><Ellipse Width='4' Height='4'/><Run>Go</Run></StackPanel></Button>"
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{button}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    scene = xaml3d.load(path)
+    [d] = [d for d in scene.diagnostics if d.code == "DRW002"]
+    assert "StackPanel inside this Button" in d.message

@@ -376,8 +376,19 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     r.ctx.diag("DRW002", f"{local} is not drawn by xaml3d in a visual: skipped", el)
 
 
+_INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
+
+
 def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -> None:
     look = AERO2[local]
+    rich = [k for k in el if isinstance(k.tag, str) and "." not in qname(k.tag)[1]
+            and qname(k.tag)[1] not in _INLINES]  # fmt: skip
+    if rich:
+        msg = (
+            f"the {qname(rich[0].tag)[1]} inside this {local} is not drawn: only the text of "
+            "its content is"
+        )
+        r.ctx.diag("DRW002", msg, rich[0])
     background = _brush(r, v, "Background", look["background"])
     border = _brush(r, v, "BorderBrush", look["border"])
     thick = v.get(
