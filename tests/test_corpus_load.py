@@ -37,7 +37,7 @@ def test_corpus_file_loads(path):
     got = {d.code for d in scene.diagnostics}
     # every code is documented: the reader's own, or a value/mesh code from the shared modules
     for d in scene.diagnostics:
-        assert d.code in READER_CODES or d.code[:3] in ("VAL", "MSH", "GEO", "LAY", "ANI"), d
+        assert d.code in READER_CODES or d.code[:3] in ("VAL", "MSH", "GEO", "LAY", "ANI", "DRW"), d
         assert d.file is not None
     if num in RESOURCE_ONLY:
         assert scene.viewports == () and "SCN013" in got  # a dictionary, not a scene
