@@ -18,7 +18,8 @@ import math
 import numpy as np
 import skia
 
-from xaml3d.render.layer2d.paint import image_of, matrix, paint_of, path_of
+from xaml3d.render.layer2d.paths import matrix, path_of
+from xaml3d.render.layer2d.shaders import image_of, paint_of
 from xaml3d.scene.drawing import Viewport2D
 
 

@@ -18,7 +18,8 @@ import numpy as np
 import skia
 
 from xaml3d.render.brushes import _tile_fraction, bilinear, brush_to_texture_matrix, inverse_map
-from xaml3d.render.layer2d.paint import content_bounds, draw_content, matrix, tile_layout
+from xaml3d.render.layer2d.paths import matrix
+from xaml3d.render.layer2d.shaders import content_bounds, draw_content, tile_layout
 from xaml3d.scene.drawing import DrawingBrush
 
 MAX_TILE = 4096  # texels per side of a rasterized tile
