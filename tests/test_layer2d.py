@@ -377,3 +377,27 @@ def test_a_buttons_element_content_is_said_not_drawn(tmp_path):
     scene = xaml3d.load(path)
     [d] = [d for d in scene.diagnostics if d.code == "DRW002"]
     assert "StackPanel inside this Button" in d.message
+
+
+def test_a_window_background_drawing_brush_tiles_at_one_texel_a_pixel(tmp_path):
+    # corpus 008's grid brush: a white 10 px tile with 1 px #66CCCCFF lines on its top and left
+    lines = (
+        '<GeometryDrawing Geometry="M0,0 L1,0 1,0.1, 0,0.1Z" Brush="#66CCCCFF"/>'
+        '<GeometryDrawing Geometry="M0,0 L0,1 0.1,1, 0.1,0Z" Brush="#66CCCCFF"/>'
+    )
+    text = f"""<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+        Width="216" Height="139"><Grid><Grid.Background>
+      <DrawingBrush Viewport="0,0,10,10" ViewportUnits="Absolute" TileMode="Tile">
+        <DrawingBrush.Drawing><DrawingGroup>
+          <GeometryDrawing Brush="White" Geometry="M0,0 L1,0 1,1 0,1Z"/>{lines}
+        </DrawingGroup></DrawingBrush.Drawing></DrawingBrush></Grid.Background>
+      <Viewport3D Margin="50"/></Grid></Window>"""
+    path = tmp_path / "w.xaml"
+    path.write_text(text)
+    from xaml3d.render.window import compose_window
+
+    rgba, _ = compose_window(xaml3d.load(path))
+    assert rgba.shape == (100, 200, 4)
+    line = (235, 235, 255, 255)  # 40% of #CCCCFF over white
+    assert tuple(rgba[0, 5]) == line and tuple(rgba[5, 10]) == line and tuple(rgba[37, 40]) == line
+    assert tuple(rgba[5, 5]) == (255, 255, 255, 255) and tuple(rgba[15, 13]) == (255, 255, 255, 255)

@@ -2,12 +2,14 @@
 
 Paints, in WPF's order (parents before children, children in document order): the Window's
 background (WPF's default is the system window colour, white), every panel's and Border's
-Background (solid, gradient and image brushes, in the element's own coordinates: a brush's
+Background (solid, gradient, image, drawing and visual brushes, in the element's own
+coordinates, a drawn tile at one texel a pixel: a brush's
 relative units refer to the element's box; a Border's Background fills, and maps to, the box
 inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
 and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
 ratio (``render_arrays``), composited over what lies beneath. The 2D controls the 2D layer
-draws (TextBlock, Label, Button, TextBox, CheckBox, RadioButton, shapes, Image: ``Node.drawing``,
+draws (TextBlock, Label, Button, TextBox, CheckBox, RadioButton, ComboBox, Slider, ProgressBar,
+shapes, Image: ``Node.drawing``,
 docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
 outline of each control's layout box. Hidden and
 Collapsed elements and their content are left out. A pixel belongs to a box when its centre
@@ -54,7 +56,8 @@ def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     px, py = np.meshgrid(np.arange(c0, c1) + 0.5 - x, np.arange(r0, r1) + 0.5 - y)
     uv = np.stack([px.ravel(), py.ravel()], axis=1)
     bounds = (np.zeros(2), np.array([w, h], dtype=np.float64))
-    color = sample_brush(brush, uv, bounds).reshape(r1 - r0, c1 - c0, 4).astype(np.float32)
+    # element coordinates are pixels: a drawn tile (DrawingBrush) needs one texel per unit
+    color = sample_brush(brush, uv, bounds, 1.0).reshape(r1 - r0, c1 - c0, 4).astype(np.float32)
     if mask is not None:
         color *= mask(px, py)[..., None]
     _over(canvas, r0, c0, color)

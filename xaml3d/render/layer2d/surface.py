@@ -4,7 +4,8 @@ Pipeline step: brush sampling (``render.brushes.sample_brush``). The brush's til
 the Viewbox of the content stretched in by Stretch and the alignments) is rasterized once by
 skia at the resolution the surface needs on screen: ``density`` is the most screen pixels one
 unit of texture coordinates covers on any of the mesh's visible triangles, so the nearest part
-of the surface gets about one texel per pixel (at most ``MAX_TILE`` texels a side). Each
+of the surface gets about one texel per pixel (at most ``MAX_TILE`` texels a side and
+``MAX_TEXELS`` in all; without a density, 512 texels per unit). Each
 fragment then maps its texture coordinates into the tile (TileMode None: transparent outside
 it; Tile, FlipX, FlipY, FlipXY repeat it) and takes a bilinear sample of the premultiplied
 tile. Transparency in the drawing stays transparency on the surface.
@@ -23,6 +24,7 @@ from xaml3d.render.layer2d.shaders import content_bounds, draw_content, tile_lay
 from xaml3d.scene.drawing import DrawingBrush
 
 MAX_TILE = 4096  # texels per side of a rasterized tile
+MAX_TEXELS = 2048 * 2048  # texels of a tile (float64 rgba: 128 MiB), the sides scaled to fit
 _CACHE: list[tuple[object, tuple, object]] = []  # (brush, key, (viewport, tile)), newest last
 
 
@@ -72,8 +74,11 @@ def _make_tile(brush: DrawingBrush, bounds, density: float | None):
     t = brush_to_texture_matrix(brush, bounds, False)
     scale = math.sqrt(abs(np.linalg.det(t[:2, :2]))) or 1.0
     d = (density if density is not None and math.isfinite(density) else 512.0) * scale
-    w = int(min(MAX_TILE, max(1, math.ceil(viewport[2] * d))))
-    h = int(min(MAX_TILE, max(1, math.ceil(viewport[3] * d))))
+    fw, fh = min(MAX_TILE, viewport[2] * d), min(MAX_TILE, viewport[3] * d)
+    if fw * fh > MAX_TEXELS:
+        k = math.sqrt(MAX_TEXELS / (fw * fh))
+        fw, fh = fw * k, fh * k
+    w, h = int(max(1, math.ceil(fw))), int(max(1, math.ceil(fh)))
     tile = rasterize_tile(brush, viewport, m, (w, h))
     tile.setflags(write=False)
     return viewport, tile
