@@ -3,17 +3,15 @@
 Paints, in WPF's order (parents before children, children in document order): the Window's
 background (WPF's default is the system window colour, white), every panel's and Border's
 Background (solid, gradient, image, drawing and visual brushes, in the element's own
-coordinates, a drawn tile at one texel a pixel: a brush's
-relative units refer to the element's box; a Border's Background fills, and maps to, the box
-inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
-and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
-ratio (``render_arrays``), composited over what lies beneath. The 2D controls the 2D layer
-draws (TextBlock, Label, Button, TextBox, CheckBox, RadioButton, ComboBox, Slider, ProgressBar,
-shapes, Image: ``Node.drawing``,
+coordinates, a drawn tile at one texel a pixel: a brush's relative units refer to the element's
+box; a Border's Background fills, and maps to, the box inside its BorderThickness), each
+Border's BorderBrush band of BorderThickness, and every visible Viewport3D rendered at its
+laid-out rectangle with its own camera and aspect ratio (``render_arrays``), composited over
+what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
+CheckBox, RadioButton, ComboBox, Slider, ProgressBar, shapes, Image: ``Node.drawing``,
 docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
-outline of each control's layout box. Hidden and
-Collapsed elements and their content are left out. A pixel belongs to a box when its centre
-lies inside it.
+outline of each control's layout box. Hidden and Collapsed elements and their content are left
+out. A pixel belongs to a box when its centre lies inside it.
 """
 
 from __future__ import annotations
