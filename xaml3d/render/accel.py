@@ -5,23 +5,17 @@ than a whole small render. So the kernels are loaded only when a rasterization's
 pays for it (``for_work``), once per process; from then on blending uses them too (``active``).
 Both paths give identical pictures, so mixing them within one frame is harmless.
 
-``XAML3D_KERNELS`` chooses: ``auto`` (default, as above), ``numba`` (always; an error when numba
-cannot be imported) or ``numpy`` (never). Without numba installed, ``auto`` stays on numpy.
-
-numba's on-disk cache goes to ``NUMBA_CACHE_DIR`` when set; otherwise this module sets it before
-importing numba, to ``$XDG_CACHE_HOME/xaml3d/numba`` (``~/.cache/...``) or, when that cannot be
-written, a per-user folder in the temporary directory: never beside the installed package, which
-may be read-only (numba raises at import when it finds no writable place).
+``XAML3D_KERNELS`` chooses (``xaml3d.numba_env``): ``auto`` (default, as above), ``numba``
+(always; an error when numba cannot be imported) or ``numpy`` (never). Without numba installed,
+``auto`` stays on numpy. numba's cache folder: ``numba_env.set_cache_dir``.
 """
 
 from __future__ import annotations
 
-import os
-import tempfile
-from pathlib import Path
+from xaml3d.numba_env import ENV, MODES, mode, set_cache_dir
 
-ENV = "XAML3D_KERNELS"
-MODES = ("auto", "numba", "numpy")
+__all__ = ["ENV", "MODES", "active", "begin_frame", "for_work", "mode", "set_cache_dir"]
+
 # The work estimate is the bounding boxes' half area in samples, times the passes, times 2 when
 # weights are interpolated (see ``raster.rasterize``), added up over the frame. Measured on this
 # 2-core machine, warm render, numpy -> kernels: 1M-triangle sphere 1920x1080 flat msaa 2
@@ -35,13 +29,6 @@ TRIANGLES_WORTH = 2_000_000
 _kernels = None
 _failed = False
 _frame_work = 0.0  # estimated work of the frame being drawn so far (see ``begin_frame``)
-
-
-def mode() -> str:
-    value = os.environ.get(ENV, "auto").strip().lower() or "auto"
-    if value not in MODES:
-        raise ValueError(f"{ENV}={value!r}: use one of {', '.join(MODES)}")
-    return value
 
 
 def active():
@@ -86,23 +73,3 @@ def _load(required: bool) -> None:
             raise
         return
     _kernels = kernels
-
-
-def set_cache_dir(environ=None) -> str:
-    """Set ``NUMBA_CACHE_DIR`` (unless already set) to a writable folder; return it."""
-    env = os.environ if environ is None else environ
-    if env.get("NUMBA_CACHE_DIR"):
-        return env["NUMBA_CACHE_DIR"]
-    home = env.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    uid = os.getuid() if hasattr(os, "getuid") else "user"
-    for folder in (Path(home) / "xaml3d" / "numba", Path(tempfile.gettempdir()) / f"xaml3d-{uid}"):
-        try:
-            folder.mkdir(parents=True, exist_ok=True)
-        except OSError:
-            continue
-        if os.access(folder, os.W_OK | os.X_OK):
-            env["NUMBA_CACHE_DIR"] = str(folder)
-            return str(folder)
-    folder = tempfile.mkdtemp(prefix="xaml3d-numba-")  # last resort: a fresh private folder
-    env["NUMBA_CACHE_DIR"] = folder
-    return folder
