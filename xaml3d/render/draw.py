@@ -35,16 +35,30 @@ import numpy as np
 
 from xaml3d.errors import WARNING, Diagnostic, XamlError
 from xaml3d.render import accel
-from xaml3d.render.brushes import brush_average, brush_bounds, brush_is_uniform, sample_brush
+from xaml3d.render.brushes import (
+    brush_average,
+    brush_bounds,
+    brush_is_uniform,
+    image_layout,
+    premultiplied_image,
+    sample_brush,
+)
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
-from xaml3d.render.frame import Framebuffer
+from xaml3d.render.frame import DEPTH_OFFSET, Framebuffer
 from xaml3d.render.lighting import prepare_lights, shade_vertices
 from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
 from xaml3d.scene.transforms import normal_matrix
-from xaml3d.scene.types import DiffuseMaterial, Model
+from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
 
 _EYE3 = np.eye(3)
 KEEP_BYTES = 192 << 20  # fragments kept between the passes of a multi-pass material
+# Placeholders for the compiled pass's unused arguments (typed so that one machine-code version
+# serves every pass).
+_NO_INDEX = np.zeros(0, dtype=np.int64)
+_NO_GIVEN = np.zeros((0, 4))
+_NO_LAYOUT = np.zeros(0)
+_NO_PLANES = np.zeros((2, 0))
+_NO_IMAGE = np.zeros((0, 0, 4))
 
 
 @dataclass
@@ -259,6 +273,50 @@ class PassShader:
             self._c16 = c32.view(np.complex128).reshape(-1)
         elif not flat:
             self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)
+        self._layout = None
+        if isinstance(brush, ImageBrush):
+            self._layout = image_layout(brush, self.bounds)
+        self._image = _NO_IMAGE
+        if self._layout is not None:
+            self._image = np.ascontiguousarray(premultiplied_image(brush.image), np.float64)
+
+    def draw(self, fb: Framebuffer, frag: Fragments) -> None:
+        """Shade ``frag`` and blend it into ``fb``: with the compiled kernels loaded, in one
+        pass over the fragments (``kernels.shade_blend``), else ``self(frag)`` then blending."""
+        kernels = accel.active()
+        if kernels is None or (self.flat and self.uniform):
+            _blend(fb, self.mat, frag, self(frag))
+            return
+        if frag.inverse is not None:
+            rtri, rw, inverse = frag.wtri, frag.weights, frag.inverse
+        else:
+            rtri, rw, inverse = frag.tri, frag.weights, _NO_INDEX
+        rtri = np.ascontiguousarray(rtri, dtype=np.int64)
+        rw = np.ascontiguousarray(rw, dtype=np.float64)
+        given, lay, uvp = _NO_GIVEN, _NO_LAYOUT, _NO_PLANES
+        if self.uniform:
+            brush = kernels.BRUSH_UNIFORM
+        elif self._layout is not None:
+            brush, lay, uvp = kernels.BRUSH_IMAGE, self._layout, self._uv_planes
+        else:  # gradients (and images that draw nothing): sampled here, one row at a time
+            brush = kernels.BRUSH_GIVEN
+            uv = interpolate(self._uv_planes, self.indices, rtri, rw)
+            given = np.ascontiguousarray(sample_brush(self.mat.brush, uv, self.bounds))
+        if self.flat:
+            source, colors = kernels.COLOR_PER_TRIANGLE, self._tri_colors
+        else:
+            source, colors = kernels.COLOR_PLANES, self._planes
+        fb.fragments_drawn += kernels.shade_blend(
+            fb.zbuf, fb.color, np.ascontiguousarray(frag.pixel, dtype=np.int64),
+            np.asarray(frag.depth, dtype=np.float64) - DEPTH_OFFSET,
+            np.ascontiguousarray(inverse, dtype=np.int64), rtri, rw, source, colors,
+            self.indices, uvp, brush, given, lay, self._image,
+            not isinstance(self.mat, DiffuseMaterial),
+        )  # fmt: skip
+
+    @property
+    def _tri_colors(self) -> np.ndarray:
+        return np.ascontiguousarray(self.colors, dtype=np.float64)
 
     def __call__(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
@@ -358,18 +416,18 @@ def draw_model(
         kept: list[Fragments] | None = [] if len(shaders) > 1 else None
         size = 0
         for frag in frags:
-            _blend(fb, passes[0], frag, shaders[0](frag))
+            shaders[0].draw(fb, frag)
             if kept is not None:
                 kept.append(frag)
                 size += _nbytes(frag)
                 if size > KEEP_BYTES:
                     kept = None
-        for mat, shader in zip(passes[1:], shaders[1:], strict=True):
+        for shader in shaders[1:]:
             again = kept if kept is not None else side_fragments(
                 pm, tris, ctx, weights=need_weights, passes=len(shaders)
             )  # fmt: skip
             for frag in again:
-                _blend(fb, mat, frag, shader(frag))
+                shader.draw(fb, frag)
 
 
 def _nbytes(frag: Fragments) -> int:
