@@ -198,7 +198,7 @@ def _wavy_sheet(n: int = 24) -> dict[str, str]:
 @pytest.mark.parametrize("tile", ["None", "Tile", "FlipXY"])
 def test_compiled_passes_match_numpy_on_textured_translucent_specular(tile, tmp_path, monkeypatch):
     """Lit, textured, translucent and additive passes, front and back: the compiled pass
-    (``kernels.shade_blend``: shading and blending in one kernel) against the numpy path."""
+    (``kernels.shade_rows`` then ``blend_rows``) against the numpy path."""
     import shutil
 
     from xaml3d.render import kernels
@@ -208,13 +208,13 @@ def test_compiled_passes_match_numpy_on_textured_translucent_specular(tile, tmp_
     path.write_text(_PASS_SCENE.format(tile=tile, **_wavy_sheet()), encoding="utf-8")
     scene = load(path)
     calls = []
-    shade_blend = kernels.shade_blend
+    shade_rows = kernels.shade_rows
 
     def counting(*args):
-        calls.append(args[11])  # the brush kind
-        return shade_blend(*args)
+        calls.append(args[6])  # the brush kind
+        return shade_rows(*args)
 
-    monkeypatch.setattr(kernels, "shade_blend", counting)
+    monkeypatch.setattr(kernels, "shade_rows", counting)
     for opts in OPTIONS + [{"mode": "flat", "ssaa": 1}]:
         monkeypatch.setenv(accel.ENV, "numpy")
         a = render_arrays(scene, **opts)

@@ -269,7 +269,7 @@ def _tile_fraction(local: np.ndarray, mode: str, flip: bool) -> tuple[np.ndarray
     return frac, np.ones(local.shape, dtype=bool)
 
 
-# TileMode codes of ``image_layout`` (and of the compiled kernel, ``kernels.shade_blend``).
+# TileMode codes of ``image_layout`` (and of the compiled kernel, ``kernels.shade_rows``).
 TILE_CODES = {"None": 0, "Tile": 1, "FlipX": 2, "FlipY": 3, "FlipXY": 4}
 # Layout vector of ``image_layout``: the inverse brush map (a, b, c; d, e, f), the viewport
 # (x, y, w, h), the viewbox origin (x, y), the stretch scales (sx, sy), the content origin

@@ -281,8 +281,10 @@ class PassShader:
             self._image = np.ascontiguousarray(premultiplied_image(brush.image), np.float64)
 
     def draw(self, fb: Framebuffer, frag: Fragments) -> None:
-        """Shade ``frag`` and blend it into ``fb``: with the compiled kernels loaded, in one
-        pass over the fragments (``kernels.shade_blend``), else ``self(frag)`` then blending."""
+        """Shade ``frag`` and blend it into ``fb``: with the compiled kernels loaded, one
+        compiled pass over the rows (``kernels.shade_rows``: interpolation, brush sampling,
+        product) and one over the fragments (``kernels.blend_rows``), else ``self(frag)`` then
+        blending."""
         kernels = accel.active()
         if kernels is None or (self.flat and self.uniform):
             _blend(fb, self.mat, frag, self(frag))
@@ -306,11 +308,14 @@ class PassShader:
             source, colors = kernels.COLOR_PER_TRIANGLE, self._tri_colors
         else:
             source, colors = kernels.COLOR_PLANES, self._planes
-        fb.fragments_drawn += kernels.shade_blend(
+        rows = kernels.shade_rows(
+            rtri, rw, source, colors, _read_only(self.indices), uvp, brush, given, lay,
+            _read_only(self._image),
+        )  # fmt: skip
+        fb.fragments_drawn += kernels.blend_rows(
             fb.zbuf, fb.color, np.ascontiguousarray(frag.pixel, dtype=np.int64),
             np.asarray(frag.depth, dtype=np.float64) - DEPTH_OFFSET,
-            np.ascontiguousarray(inverse, dtype=np.int64), rtri, rw, source, colors,
-            self.indices, uvp, brush, given, lay, self._image,
+            np.ascontiguousarray(inverse, dtype=np.int64), rows,
             not isinstance(self.mat, DiffuseMaterial),
         )  # fmt: skip
 
@@ -336,6 +341,15 @@ class PassShader:
             uv = interpolate(self._uv_planes, self.indices, frag.tri, frag.weights)
             col = col * sample_brush(self.mat.brush, uv, self.bounds)
         return col
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    """A read-only view: the compiled kernels are cached per argument type, read-only flag
+    included, so arrays that may come either way are always passed read-only."""
+    if a.flags.writeable:
+        a = a.view()
+        a.flags.writeable = False
+    return a
 
 
 def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.ndarray):

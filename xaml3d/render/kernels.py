@@ -227,11 +227,11 @@ def bilinear(img, px, py):
     return out
 
 
-# Colour sources of ``shade_blend``: Gouraud vertex colours (K, N) interpolated with the row's
+# Colour sources of ``shade_rows``: Gouraud vertex colours (K, N) interpolated with the row's
 # weights, or one colour per triangle (T, K) (flat mode).
 COLOR_PLANES = 0
 COLOR_PER_TRIANGLE = 1
-# Brushes of ``shade_blend``: uniform (already in the colours), an ImageBrush sampled in the
+# Brushes of ``shade_rows``: uniform (already in the colours), an ImageBrush sampled in the
 # kernel (``brushes.image_layout``), or samples computed beforehand, one per row (gradients).
 BRUSH_UNIFORM = 0
 BRUSH_IMAGE = 1
@@ -239,7 +239,9 @@ BRUSH_GIVEN = 2
 TILE_EPS = 1e-9  # brushes._EPS
 
 
-@numba.njit(cache=True, nogil=True, inline="always")
+# error_model="numpy": a float division by zero gives inf/nan as in the numpy path instead of
+# raising, and the loops carry no zero-divisor checks.
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
 def _tile(local, code, flip):
     """``brushes._tile_fraction`` for one coordinate: (position in the tile, drawn)."""
     if code == 0:
@@ -251,125 +253,125 @@ def _tile(local, code, flip):
     return frac, True
 
 
-@numba.njit(cache=True, nogil=True, inline="always")
-def _shade_row(r, rtri, rw, source, colors, indices, uvp, brush, given, lay, img, out, k):
-    """The float32 colour of row ``r`` into ``out[k]``: the pass's colour times its brush,
-    in the arithmetic of ``draw.PassShader.__call__`` and ``brushes._sample_image``."""
-    t = rtri[r]
-    c0 = 0.0
-    c1 = 0.0
-    c2 = 0.0
-    c3 = 0.0
-    w0 = 0.0
-    w1 = 0.0
-    w2 = 0.0
-    i0 = 0
-    i1 = 0
-    i2 = 0
-    if source == COLOR_PLANES or brush == BRUSH_IMAGE:
-        i0 = indices[t, 0]
-        i1 = indices[t, 1]
-        i2 = indices[t, 2]
-        w0 = rw[r, 0]
-        w1 = rw[r, 1]
-        w2 = rw[r, 2]
-    if source == COLOR_PLANES:
-        c0 = w0 * colors[0, i0] + w1 * colors[0, i1] + w2 * colors[0, i2]
-        c1 = w0 * colors[1, i0] + w1 * colors[1, i1] + w2 * colors[1, i2]
-        c2 = w0 * colors[2, i0] + w1 * colors[2, i1] + w2 * colors[2, i2]
-        c3 = w0 * colors[3, i0] + w1 * colors[3, i1] + w2 * colors[3, i2]
-    else:
-        c0 = colors[t, 0]
-        c1 = colors[t, 1]
-        c2 = colors[t, 2]
-        c3 = colors[t, 3]
-    if brush == BRUSH_IMAGE:
-        s0 = 0.0
-        s1 = 0.0
-        s2 = 0.0
-        s3 = 0.0
-        if lay.shape[0] > 0:
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _image_sample(u, v, lay, img):
+    """The premultiplied ImageBrush colour at texture coordinates (u, v), Opacity included:
+    ``brushes._sample_image`` (placement by ``image_layout``'s numbers ``lay``) and
+    ``bilinear``, the same expressions in the same order."""
+    qx = u * lay[0] + v * lay[1] + lay[2]
+    qy = u * lay[3] + v * lay[4] + lay[5]
+    vpx = lay[6]
+    vpy = lay[7]
+    vpw = lay[8]
+    vph = lay[9]
+    code = int(lay[19])
+    fx, in_x = _tile((qx - vpx) / vpw, code, code == 2 or code == 4)
+    fy, in_y = _tile((qy - vpy) / vph, code, code == 3 or code == 4)
+    px = lay[10] + (vpx + fx * vpw - lay[14]) / lay[12]
+    py = lay[11] + (vpy + fy * vph - lay[15]) / lay[13]
+    w = lay[16]
+    h = lay[17]
+    s0 = 0.0
+    s1 = 0.0
+    s2 = 0.0
+    s3 = 0.0
+    if (
+        in_x and in_y and px >= -TILE_EPS and px <= w + TILE_EPS
+        and py >= -TILE_EPS and py <= h + TILE_EPS
+    ):  # fmt: skip
+        x = px - 0.5
+        y = py - 0.5
+        x0 = np.floor(x)
+        y0 = np.floor(y)
+        fx = x - x0
+        fy = y - y0
+        xi0 = int(min(max(x0, 0.0), w - 1.0))
+        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
+        yi0 = int(min(max(y0, 0.0), h - 1.0))
+        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        gx = 1.0 - fx
+        gy = 1.0 - fy
+        s0 = (img[yi0, xi0, 0] * gx + img[yi0, xi1, 0] * fx) * gy + (
+            img[yi1, xi0, 0] * gx + img[yi1, xi1, 0] * fx
+        ) * fy
+        s1 = (img[yi0, xi0, 1] * gx + img[yi0, xi1, 1] * fx) * gy + (
+            img[yi1, xi0, 1] * gx + img[yi1, xi1, 1] * fx
+        ) * fy
+        s2 = (img[yi0, xi0, 2] * gx + img[yi0, xi1, 2] * fx) * gy + (
+            img[yi1, xi0, 2] * gx + img[yi1, xi1, 2] * fx
+        ) * fy
+        s3 = (img[yi0, xi0, 3] * gx + img[yi0, xi1, 3] * fx) * gy + (
+            img[yi1, xi0, 3] * gx + img[yi1, xi1, 3] * fx
+        ) * fy
+    opacity = lay[18]
+    if opacity != 1.0:
+        s0 *= opacity
+        s1 *= opacity
+        s2 *= opacity
+        s3 *= opacity
+    return s0, s1, s2, s3
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
+    """The float32 colour (R, 4) of every row (a fragment, or a multisampled (triangle,
+    pixel)): the pass's colour times its brush, in the arithmetic of
+    ``draw.PassShader.__call__`` (Gouraud interpolation, ``sample_brush``, the product, then
+    float32)."""
+    n = rtri.shape[0]
+    out = np.empty((n, 4), np.float32)
+    for r in range(n):
+        t = rtri[r]
+        i0 = 0
+        i1 = 0
+        i2 = 0
+        w0 = 0.0
+        w1 = 0.0
+        w2 = 0.0
+        if source == COLOR_PLANES or brush == BRUSH_IMAGE:
+            i0 = indices[t, 0]
+            i1 = indices[t, 1]
+            i2 = indices[t, 2]
+            w0 = rw[r, 0]
+            w1 = rw[r, 1]
+            w2 = rw[r, 2]
+        if source == COLOR_PLANES:
+            c0 = w0 * colors[0, i0] + w1 * colors[0, i1] + w2 * colors[0, i2]
+            c1 = w0 * colors[1, i0] + w1 * colors[1, i1] + w2 * colors[1, i2]
+            c2 = w0 * colors[2, i0] + w1 * colors[2, i1] + w2 * colors[2, i2]
+            c3 = w0 * colors[3, i0] + w1 * colors[3, i1] + w2 * colors[3, i2]
+        else:
+            c0 = colors[t, 0]
+            c1 = colors[t, 1]
+            c2 = colors[t, 2]
+            c3 = colors[t, 3]
+        if brush == BRUSH_IMAGE:
             u = w0 * uvp[0, i0] + w1 * uvp[0, i1] + w2 * uvp[0, i2]
             v = w0 * uvp[1, i0] + w1 * uvp[1, i1] + w2 * uvp[1, i2]
-            qx = u * lay[0] + v * lay[1] + lay[2]
-            qy = u * lay[3] + v * lay[4] + lay[5]
-            vpx = lay[6]
-            vpy = lay[7]
-            vpw = lay[8]
-            vph = lay[9]
-            code = int(lay[19])
-            fx, in_x = _tile((qx - vpx) / vpw, code, code == 2 or code == 4)
-            fy, in_y = _tile((qy - vpy) / vph, code, code == 3 or code == 4)
-            px = lay[10] + (vpx + fx * vpw - lay[14]) / lay[12]
-            py = lay[11] + (vpy + fy * vph - lay[15]) / lay[13]
-            w = lay[16]
-            h = lay[17]
-            if (
-                in_x and in_y and px >= -TILE_EPS and px <= w + TILE_EPS
-                and py >= -TILE_EPS and py <= h + TILE_EPS
-            ):  # fmt: skip
-                # ``bilinear``
-                x = px - 0.5
-                y = py - 0.5
-                x0 = np.floor(x)
-                y0 = np.floor(y)
-                fx = x - x0
-                fy = y - y0
-                xi0 = int(min(max(x0, 0.0), w - 1.0))
-                xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
-                yi0 = int(min(max(y0, 0.0), h - 1.0))
-                yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
-                gx = 1.0 - fx
-                gy = 1.0 - fy
-                s0 = (img[yi0, xi0, 0] * gx + img[yi0, xi1, 0] * fx) * gy + (
-                    img[yi1, xi0, 0] * gx + img[yi1, xi1, 0] * fx
-                ) * fy
-                s1 = (img[yi0, xi0, 1] * gx + img[yi0, xi1, 1] * fx) * gy + (
-                    img[yi1, xi0, 1] * gx + img[yi1, xi1, 1] * fx
-                ) * fy
-                s2 = (img[yi0, xi0, 2] * gx + img[yi0, xi1, 2] * fx) * gy + (
-                    img[yi1, xi0, 2] * gx + img[yi1, xi1, 2] * fx
-                ) * fy
-                s3 = (img[yi0, xi0, 3] * gx + img[yi0, xi1, 3] * fx) * gy + (
-                    img[yi1, xi0, 3] * gx + img[yi1, xi1, 3] * fx
-                ) * fy
-            opacity = lay[18]
-            if opacity != 1.0:
-                s0 *= opacity
-                s1 *= opacity
-                s2 *= opacity
-                s3 *= opacity
-        c0 = c0 * s0
-        c1 = c1 * s1
-        c2 = c2 * s2
-        c3 = c3 * s3
-    elif brush == BRUSH_GIVEN:
-        c0 = c0 * given[r, 0]
-        c1 = c1 * given[r, 1]
-        c2 = c2 * given[r, 2]
-        c3 = c3 * given[r, 3]
-    out[k, 0] = np.float32(c0)
-    out[k, 1] = np.float32(c1)
-    out[k, 2] = np.float32(c2)
-    out[k, 3] = np.float32(c3)
+            s0, s1, s2, s3 = _image_sample(u, v, lay, img)
+            c0 = c0 * s0
+            c1 = c1 * s1
+            c2 = c2 * s2
+            c3 = c3 * s3
+        elif brush == BRUSH_GIVEN:
+            c0 = c0 * given[r, 0]
+            c1 = c1 * given[r, 1]
+            c2 = c2 * given[r, 2]
+            c3 = c3 * given[r, 3]
+        out[r, 0] = np.float32(c0)
+        out[r, 1] = np.float32(c1)
+        out[r, 2] = np.float32(c2)
+        out[r, 3] = np.float32(c3)
+    return out
 
 
 @numba.njit(cache=True, nogil=True)
-def shade_blend(
-    zbuf, color, pix, z, inverse, rtri, rw, source, colors, indices, uvp, brush, given, lay,
-    img, additive,
-):  # fmt: skip
-    """One material pass over a chunk of fragments, each sample touched once: the colour of the
-    fragment's row (``inverse``: the multisampling rows; empty: one row per fragment) is shaded
-    when first needed (``_shade_row``) and blended as ``blend_over`` (``additive``:
-    ``blend_add``) does. Returns how many fragments passed the depth test."""
+def blend_rows(zbuf, color, pix, z, inverse, rows, additive):
+    """Blend fragment f with colour ``rows[inverse[f]]`` (``inverse`` empty: ``rows[f]``),
+    one fragment after the other: ``blend_over``, or ``blend_add`` when ``additive``.
+    Returns how many fragments passed the depth test."""
     nf = pix.shape[0]
     spread = inverse.shape[0] > 0
-    nrows = rtri.shape[0]
-    # the shaded rows (multisampling), or one scratch row; array views are not taken inside
-    # the loop (each would cost a reference count update)
-    rows = np.empty((nrows if spread else 1, 4), dtype=np.float32)
-    done = np.zeros(nrows if spread else 0, dtype=np.bool_)
     passed = np.zeros(nf if additive else 0, dtype=np.bool_)
     one = np.float32(1.0)
     n = 0
@@ -377,15 +379,7 @@ def shade_blend(
         p = pix[f]
         if not z[f] <= zbuf[p]:
             continue
-        k = 0
-        if spread:
-            k = inverse[f]
-            if not done[k]:
-                _shade_row(k, rtri, rw, source, colors, indices, uvp, brush, given, lay, img,
-                           rows, k)  # fmt: skip
-                done[k] = True
-        else:
-            _shade_row(f, rtri, rw, source, colors, indices, uvp, brush, given, lay, img, rows, 0)
+        k = inverse[f] if spread else f
         if additive:
             passed[f] = True
             for c in range(4):
