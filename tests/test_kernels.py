@@ -73,6 +73,7 @@ def test_overdraw_ties_and_translucency_match(monkeypatch):
 def test_auto_mode_loads_numba_only_for_big_work(monkeypatch):
     monkeypatch.setenv(accel.ENV, "auto")
     monkeypatch.setattr(accel, "_kernels", None)
+    monkeypatch.delitem(sys.modules, "numba")  # as in a process that has not imported it
     accel.begin_frame()
     assert accel.for_work(1000.0, 10) is None
     assert accel.for_work(accel.FRAGMENTS_WORTH / 2, 10) is None
@@ -81,6 +82,48 @@ def test_auto_mode_loads_numba_only_for_big_work(monkeypatch):
     assert accel.active() is not None
     monkeypatch.setenv(accel.ENV, "numpy")
     assert accel.active() is None and accel.for_work(1e9, 10**7) is None
+
+
+def test_numba_already_imported_lowers_the_bar(monkeypatch):
+    """Once the reader has imported numba, the kernels cost only their cached machine code."""
+    import numba  # noqa: F401  (imported, as after reading a big file)
+
+    monkeypatch.setenv(accel.ENV, "auto")
+    monkeypatch.setattr(accel, "_kernels", None)
+    accel.begin_frame()
+    assert accel.for_work(accel.IMPORTED_WORTH / 2, 10) is None
+    assert accel.for_work(accel.IMPORTED_WORTH / 2, 10) is not None
+
+
+def test_frame_plan_loads_before_the_first_model(monkeypatch):
+    monkeypatch.setenv(accel.ENV, "auto")
+    monkeypatch.setattr(accel, "_kernels", None)
+    monkeypatch.delitem(sys.modules, "numba")
+    accel.plan(accel.FRAGMENTS_WORTH / 2 - 1, 10)
+    assert accel.active() is None
+    accel.plan(accel.FRAGMENTS_WORTH / 2, 10)
+    assert accel.active() is not None
+    monkeypatch.setenv(accel.ENV, "numpy")
+    monkeypatch.setattr(accel, "_kernels", None)
+    accel.plan(1e12, 10**9)
+    assert accel.active() is None
+
+
+def test_frame_plan_estimate_matches_the_rasterizer(tmp_path, monkeypatch):
+    """The whole frame's estimate (``draw._work``) is close to what the rasterizer counts."""
+    import shutil
+
+    shutil.copy(REFERENCE / "brush" / "textures" / "quadrants.png", tmp_path)
+    path = tmp_path / "scene.xaml"
+    path.write_text(_PASS_SCENE.format(tile="Tile", **_wavy_sheet()), encoding="utf-8")
+    planned, counted = [], []
+    monkeypatch.setenv(accel.ENV, "numpy")
+    monkeypatch.setattr(accel, "plan", lambda work, tris: planned.append(work))
+    real = accel.for_work
+    monkeypatch.setattr(accel, "for_work", lambda w, t: counted.append(w) or real(w, t))
+    render_arrays(load(path))
+    assert len(planned) == 1 and counted
+    assert 0.5 * sum(counted) <= planned[0] <= 3.0 * sum(counted), (planned, sum(counted))
 
 
 def test_bad_mode_is_refused(monkeypatch):

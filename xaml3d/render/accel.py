@@ -12,9 +12,13 @@ Both paths give identical pictures, so mixing them within one frame is harmless.
 
 from __future__ import annotations
 
+import sys
+
 from xaml3d.numba_env import ENV, MODES, mode, set_cache_dir
 
-__all__ = ["ENV", "MODES", "active", "begin_frame", "for_work", "mode", "set_cache_dir"]
+__all__ = [
+    "ENV", "MODES", "active", "begin_frame", "for_work", "mode", "plan", "set_cache_dir",
+]  # fmt: skip
 
 # The work estimate is the bounding boxes' half area in samples, times the passes, times 2 when
 # weights are interpolated (see ``raster.rasterize``), added up over the frame. Measured on this
@@ -25,6 +29,9 @@ __all__ = ["ENV", "MODES", "active", "begin_frame", "for_work", "mode", "set_cac
 # with ssaa 4 (110M) 1.65 -> 0.89 s. Very many triangles pay too (numpy's per-row setup).
 FRAGMENTS_WORTH = 12_000_000
 TRIANGLES_WORTH = 2_000_000
+# Once numba is imported and running (the reader's number scanner loads it for big files), the
+# kernels cost only their cached machine code, about 0.02 s: far less work pays.
+IMPORTED_WORTH = 500_000
 
 _kernels = None
 _failed = False
@@ -54,10 +61,26 @@ def for_work(fragments: float, triangles: int):
         return None
     _frame_work += fragments
     if _kernels is None:
-        if m == "auto" and _frame_work < FRAGMENTS_WORTH and triangles < TRIANGLES_WORTH:
+        if m == "auto" and _frame_work < _worth() and triangles < TRIANGLES_WORTH:
             return None
         _load(required=m == "numba")
     return _kernels
+
+
+def plan(fragments: float, triangles: int) -> None:
+    """The whole frame's estimated work, known before anything is drawn: when it pays, the
+    kernels are loaded now, so that no model of the frame is drawn on the numpy path first.
+    The estimate (``draw._work``: bounding boxes of whole models) runs at about half of what
+    the rasterizer counts for closed meshes (corpus hexsphere: 10.6M against 22.8M), hence
+    half the bar."""
+    m = mode()
+    if _kernels is None and m != "numpy":
+        if m == "numba" or 2.0 * fragments >= _worth() or triangles >= TRIANGLES_WORTH:
+            _load(required=m == "numba")
+
+
+def _worth() -> float:
+    return IMPORTED_WORTH if "numba" in sys.modules else FRAGMENTS_WORTH
 
 
 def _load(required: bool) -> None:

@@ -461,7 +461,35 @@ def draw_viewport_models(
             prepared.append(prepare_lights(viewport.lights, pipeline.view_matrix))
         return prepared[0]
 
-    for key, model in enumerate(viewport.models):
-        pm = prepare_model(model, pipeline, ctx)
-        if pm is not None:
-            draw_model(fb, pm, lights, ctx, mode, shading, key)
+    models = [
+        (key, prepare_model(model, pipeline, ctx)) for key, model in enumerate(viewport.models)
+    ]
+    models = [(key, pm) for key, pm in models if pm is not None]
+    accel.plan(
+        sum(_work(pm, ctx, mode) for _, pm in models), sum(pm.front.size for _, pm in models)
+    )
+    for key, pm in models:
+        draw_model(fb, pm, lights, ctx, mode, shading, key)
+
+
+def _work(pm: PreparedModel, ctx: DrawContext, mode: str) -> float:
+    """The rasterizer's work estimate (``raster.rasterize``) for a whole model, before drawing:
+    its screen bounding box in samples times the passes of each side (weighed by the share of
+    triangles facing that way), twice when weights are interpolated."""
+    model = pm.model
+    front = [p for p in model.material if p.brush is not None]
+    back = [p for p in model.back_material if p.brush is not None]
+    passes = front + back
+    if not passes or pm.front.size == 0:
+        return 0.0
+    sides = len(front) * np.count_nonzero(pm.front) + len(back) * np.count_nonzero(pm.back)
+    sides /= pm.front.size
+    clip = pm.clip[pm.clip[:, 3] > 0.0]
+    if clip.shape[0] == 0:
+        return 0.0
+    q = 1.0 / clip[:, 3]
+    sx = np.clip((clip[:, 0] * q + 1.0) * (ctx.width / 2.0), 0.0, ctx.width)
+    sy = np.clip((1.0 - clip[:, 1] * q) * (ctx.height / 2.0), 0.0, ctx.height)
+    area = float((sx.max() - sx.min()) * (sy.max() - sy.min()))
+    weights = mode != "flat" or not all(brush_is_uniform(p.brush) for p in passes)
+    return area * sides * (2 if weights else 1)
