@@ -1,9 +1,12 @@
 """Whether the compiled kernels (``xaml3d.render.kernels``, numba) are used, and loading them.
 
 numba costs about 0.3 s per process (import, loading the cached machine code, shutdown): more
-than a whole small render. So the kernels are loaded only when a rasterization's estimated work
-pays for it (``for_work``), once per process; from then on blending uses them too (``active``).
-Both paths give identical pictures, so mixing them within one frame is harmless.
+than a whole small render. So the kernels are loaded only when the frame's estimated work pays
+for it: before drawing, from the whole frame's estimate (``plan``), or when a rasterization's
+own estimate adds up to it (``for_work``); once per process; from then on blending and the
+material passes use them too (``active``). When numba is already imported (the reader's number
+scanner, for a big file), the bar is much lower. Both paths give identical pictures, so mixing
+them within one frame is harmless.
 
 ``XAML3D_KERNELS`` chooses (``xaml3d.numba_env``): ``auto`` (default, as above), ``numba``
 (always; an error when numba cannot be imported) or ``numpy`` (never). Without numba installed,

@@ -1,13 +1,14 @@
-"""Compiled inner loops (numba) of rasterization and blending (camera-pipeline.md section 6, steps
-6-7; wpf3d.md section 6, "Blending").
+"""Compiled inner loops (numba) of rasterization, shading and blending (camera-pipeline.md
+section 6, steps 6-7; wpf3d.md sections 6-7: Gouraud colours, ImageBrush sampling, "Blending").
 
 Importing this module imports numba: only ``xaml3d.render.accel`` does it, and only when the
 estimated work pays for numba's start-up (about 0.3 s here). Every kernel computes EXACTLY what
-the numpy path computes (``raster.rasterize``, ``frame.Framebuffer.over`` / ``add``): the same
-integer edge functions and spans, the same floating-point expressions in the same order (no
-fastmath, so no reassociation or fused multiply-adds), fragments in the same order, blending
-one fragment after the other, which the numpy path reproduces with its scatter tricks. Pictures
-are therefore identical; the reference-image suite runs on both paths to keep it so.
+the numpy path computes (``raster.rasterize``, ``draw.PassShader``, ``brushes.sample_brush``,
+``frame.Framebuffer.over`` / ``add``): the same integer edge functions and spans, the same
+floating-point expressions in the same order (no fastmath, so no reassociation or fused
+multiply-adds), fragments in the same order, blending one fragment after the other, which the
+numpy path reproduces with its scatter tricks. Pictures are therefore identical; the
+reference-image suite runs on both paths to keep it so.
 
 Array arguments are normalised by the callers (int64 / float64 / float32, C-contiguous) so that
 the on-disk cache holds one compiled version of each kernel.
