@@ -30,6 +30,7 @@ samples and stereo eyes of ``xaml3d.render.lens``) reuse them instead of lightin
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -68,10 +69,16 @@ class PreparedModel:
     model: Model
     clip: np.ndarray  # (N, 4) homogeneous clip coordinates
     view_pos: np.ndarray  # (N, 3)
-    view_nrm: np.ndarray  # (N, 3) unit or zero
+    normal_matrix: np.ndarray  # (3, 3): inverse-transpose of view @ world
     front: np.ndarray  # (T,) bool: front face (locally CCW side towards the viewer)
     back: np.ndarray  # (T,) bool
     face_sign: float  # +1, or -1 when view @ world mirrors (for geometric face normals)
+
+    @cached_property
+    def view_nrm(self) -> np.ndarray:
+        """(N, 3) view-space vertex normals, unit or zero: only Gouraud shading needs them
+        (flat mode lights geometric face normals), so they are made when first asked for."""
+        return _unit_rows(self.model.mesh.normals @ self.normal_matrix.T)
 
 
 @dataclass
@@ -123,7 +130,6 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             )  # fmt: skip
         )
         return None
-    nrm = _unit_rows(mesh.normals @ nm.T)
     # det [x y w] of the three vertices, expanded by the first column.
     idx = mesh.indices
     x, y, w = clip[:, 0][idx], clip[:, 1][idx], clip[:, 3][idx]
@@ -136,7 +142,7 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
     ccw = det < 0.0 if mirror else det > 0.0
     cw = det > 0.0 if mirror else det < 0.0
     sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
-    return PreparedModel(model, clip, vpos, nrm, ccw, cw, sign)
+    return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
 
 
 def _unit_rows(v: np.ndarray) -> np.ndarray:

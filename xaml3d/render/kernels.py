@@ -404,3 +404,62 @@ def blend_rows(zbuf, color, pix, z, inverse, rows, additive):
                     if color[p, c] > one:
                         color[p, c] = one
     return n
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _max32(x, y):
+    # np.maximum: NaN if either is NaN
+    return x if (x >= y or x != x) else y
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _min32(x, y):
+    return x if (x <= y or x != x) else y
+
+
+@numba.njit(cache=True, nogil=True)
+def resolve(color, zbuf, width, s, nearest, rgba, depth):
+    """``Framebuffer.resolve`` then ``frame.straight_uint8`` in one pass over the samples: the
+    s x s block's colours added in row order (or the nearest sample's colour), times 1 / s^2,
+    the nearest depth, then straight-alpha uint8, all in float32 as numpy does it."""
+    h = rgba.shape[0]
+    w = rgba.shape[1]
+    inv = np.float32(1.0 / (s * s))
+    zero = np.float32(0.0)
+    one = np.float32(1.0)
+    c255 = np.float32(255.0)
+    half = np.float32(0.5)
+    c = np.empty(4, np.float32)
+    for y in range(h):
+        for x in range(w):
+            base = y * s * width + x * s
+            for k in range(4):
+                c[k] = color[base, k]
+            z = zbuf[base]
+            for a in range(s):
+                for b in range(s):
+                    if a == 0 and b == 0:
+                        continue
+                    q = base + a * width + b
+                    if nearest:
+                        if zbuf[q] < z:
+                            for k in range(4):
+                                c[k] = color[q, k]
+                            z = zbuf[q]
+                    else:
+                        for k in range(4):
+                            c[k] += color[q, k]
+                        if zbuf[q] < z:
+                            z = zbuf[q]
+            if s > 1 and not nearest:
+                for k in range(4):
+                    c[k] *= inv
+            depth[y, x] = z + 2.0 if z < 0.0 else np.inf
+            al = _max32(_max32(c[0], c[1]), _max32(c[2], c[3]))
+            al = _min32(_max32(al, zero), one)
+            scale = c255 / al if al > zero else zero
+            for k in range(3):
+                v = _min32(_max32(c[k] * scale, zero), c255) + half
+                rgba[y, x, k] = np.uint8(v)
+            v = _min32(_max32(al * c255, zero), c255) + half
+            rgba[y, x, 3] = np.uint8(v)
