@@ -265,7 +265,7 @@ def test_compiled_passes_match_numpy_on_textured_translucent_specular(tile, tmp_
         calls.clear()
         b = render_arrays(scene, **opts)
         want = {kernels.BRUSH_IMAGE, kernels.BRUSH_GIVEN}
-        if opts.get("mode") != "flat":  # flat solid colours are gathered per triangle instead
+        if opts.get("mode") != "flat":  # flat solid colours: blended from a per-triangle table
             want.add(kernels.BRUSH_UNIFORM)
         assert set(calls) == want, opts
         assert np.array_equal(a.rgba, b.rgba), opts

@@ -292,8 +292,18 @@ class PassShader:
         product) and one over the fragments (``kernels.blend_rows``), else ``self(frag)`` then
         blending."""
         kernels = accel.active()
-        if kernels is None or (self.flat and self.uniform):
+        if kernels is None:
             _blend(fb, self.mat, frag, self(frag))
+            return
+        additive = not isinstance(self.mat, DiffuseMaterial)
+        pix = np.ascontiguousarray(frag.pixel, dtype=np.int64)
+        z = np.asarray(frag.depth, dtype=np.float64) - DEPTH_OFFSET
+        if self.flat and self.uniform:  # one colour per triangle: blended from the table
+            table = self._c16.view(np.float32).reshape(-1, 4)
+            tri = np.ascontiguousarray(frag.tri, dtype=np.int64)
+            fb.fragments_drawn += kernels.blend_rows(
+                fb.zbuf, fb.color, pix, z, tri, table, additive
+            )
             return
         if frag.inverse is not None:
             rtri, rw, inverse = frag.wtri, frag.weights, frag.inverse
@@ -319,11 +329,8 @@ class PassShader:
             _read_only(self._image),
         )  # fmt: skip
         fb.fragments_drawn += kernels.blend_rows(
-            fb.zbuf, fb.color, np.ascontiguousarray(frag.pixel, dtype=np.int64),
-            np.asarray(frag.depth, dtype=np.float64) - DEPTH_OFFSET,
-            np.ascontiguousarray(inverse, dtype=np.int64), rows,
-            not isinstance(self.mat, DiffuseMaterial),
-        )  # fmt: skip
+            fb.zbuf, fb.color, pix, z, np.ascontiguousarray(inverse, dtype=np.int64), rows, additive
+        )
 
     @property
     def _tri_colors(self) -> np.ndarray:
