@@ -302,8 +302,9 @@ class PassShader:
             table = self._c16.view(np.float32).reshape(-1, 4)
             tri = np.ascontiguousarray(frag.tri, dtype=np.int64)
             fb.fragments_drawn += kernels.blend_rows(
-                fb.zbuf, fb.color, pix, z, tri, table, additive
-            )
+                fb.zbuf, fb.color, _read_only(pix), _read_only(z), _read_only(tri),
+                _read_only(table), additive,
+            )  # fmt: skip
             return
         if frag.inverse is not None:
             rtri, rw, inverse = frag.wtri, frag.weights, frag.inverse
@@ -324,12 +325,14 @@ class PassShader:
             source, colors = kernels.COLOR_PER_TRIANGLE, self._tri_colors
         else:
             source, colors = kernels.COLOR_PLANES, self._planes
+        ro = _read_only
         rows = kernels.shade_rows(
-            rtri, rw, source, colors, _read_only(self.indices), uvp, brush, given, lay,
-            _read_only(self._image),
+            ro(rtri), ro(rw), source, ro(colors), ro(self.indices), ro(uvp), brush, ro(given),
+            ro(lay), ro(self._image),
         )  # fmt: skip
+        inverse = np.ascontiguousarray(inverse, dtype=np.int64)
         fb.fragments_drawn += kernels.blend_rows(
-            fb.zbuf, fb.color, pix, z, np.ascontiguousarray(inverse, dtype=np.int64), rows, additive
+            fb.zbuf, fb.color, ro(pix), ro(z), ro(inverse), ro(rows), additive
         )
 
     @property
@@ -358,7 +361,8 @@ class PassShader:
 
 def _read_only(a: np.ndarray) -> np.ndarray:
     """A read-only view: the compiled kernels are cached per argument type, read-only flag
-    included, so arrays that may come either way are always passed read-only."""
+    included, so the inputs of the pass kernels (which may come either way: mesh arrays are
+    read-only) are always passed read-only: one machine-code version each."""
     if a.flags.writeable:
         a = a.view()
         a.flags.writeable = False
