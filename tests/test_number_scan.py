@@ -91,6 +91,15 @@ def test_shortest_reprs_round_trip(values):
     assert np.array_equal(bits(scan(tokens)), bits(values))
 
 
+@pytest.mark.parametrize("integer", [False, True])
+def test_buffers_grow_for_short_numbers(integer):
+    """'1 2 3': more numbers than the first buffer holds (it is sized for typical numbers)."""
+    text = ",".join(str(k % 10) for k in range(100_003))
+    got = number_scan.convert(text.encode(), integer)
+    assert got.dtype == (np.int64 if integer else np.float64)
+    assert got.tolist() == [k % 10 for k in range(100_003)]
+
+
 def test_words_and_separators():
     got = scan(
         ["Infinity", "-Infinity", "+Infinity", "NaN", "1", "2", "3"],

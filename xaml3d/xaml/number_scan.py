@@ -41,10 +41,10 @@ def _is_sep(c):
 @numba.njit(cache=True, nogil=True)
 def scan(buf, integer, out, iout, slow):
     """Convert the number list in ``buf`` (uint8). Doubles go to ``out`` (float64), Int32 values
-    to ``iout`` (int64, when ``integer``); both must hold len(buf) // 2 + 1 items. Tokens needing
-    ``float()`` go to ``slow`` (rows of token index, start, end), grown by doubling.
+    to ``iout`` (int64, when ``integer``), tokens needing ``float()`` to ``slow`` (rows of token
+    index, start, end); each is grown by doubling when full.
 
-    Returns (status, count, slow rows used, slow)."""
+    Returns (status, count, slow rows used, slow, out, iout)."""
     n = buf.shape[0]
     pow10 = _POW10
     i = 0
@@ -57,14 +57,24 @@ def scan(buf, integer, out, iout, slow):
             if c == 44:
                 commas += 1
                 if commas > 1:
-                    return BAD, count, nslow, slow
+                    return BAD, count, nslow, slow, out, iout
             elif not _is_blank(c):
                 break
             i += 1
         if commas > 0 and (i >= n or count == 0):
-            return BAD, count, nslow, slow  # trailing or leading comma
+            return BAD, count, nslow, slow, out, iout  # trailing or leading comma
         if i >= n:
             break
+        # room for one more value: the buffers start at a typical size and double when full
+        if integer:
+            if count == iout.shape[0]:
+                grown_i = np.empty(2 * count + 16, np.int64)
+                grown_i[:count] = iout[:count]
+                iout = grown_i
+        elif count == out.shape[0]:
+            grown_f = np.empty(2 * count + 16)
+            grown_f[:count] = out[:count]
+            out = grown_f
         start = i
         c = buf[i]
         neg = False
@@ -82,33 +92,33 @@ def scan(buf, integer, out, iout, slow):
                 digits += 1
                 i += 1
             if digits == 0 or w > _INT32_LIMIT or (w == _INT32_LIMIT and not neg):
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             if i < n and not _is_sep(buf[i]):
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             iout[count] = -w if neg else w
             count += 1
             continue
         if i < n and buf[i] == 73:  # I: exactly "Infinity"
             if i + 8 > n:
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             word = buf[i : i + 8]
             if not (
                 word[0] == 73 and word[1] == 110 and word[2] == 102 and word[3] == 105
                 and word[4] == 110 and word[5] == 105 and word[6] == 116 and word[7] == 121
             ):  # fmt: skip
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             i += 8
             if i < n and not _is_sep(buf[i]):
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             out[count] = -np.inf if neg else np.inf
             count += 1
             continue
         if not signed and buf[i] == 78:  # N: exactly "NaN"
             if i + 3 > n or buf[i + 1] != 97 or buf[i + 2] != 78:
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             i += 3
             if i < n and not _is_sep(buf[i]):
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             out[count] = np.nan
             count += 1
             continue
@@ -143,7 +153,7 @@ def scan(buf, integer, out, iout, slow):
                     exact = False
                 i += 1
         if digits == 0:
-            return BAD, count, nslow, slow
+            return BAD, count, nslow, slow, out, iout
         if i < n and (buf[i] == 101 or buf[i] == 69):  # e E
             i += 1
             eneg = False
@@ -158,10 +168,10 @@ def scan(buf, integer, out, iout, slow):
                 edigits += 1
                 i += 1
             if edigits == 0:
-                return BAD, count, nslow, slow
+                return BAD, count, nslow, slow, out, iout
             scale += -ex if eneg else ex
         if i < n and not _is_sep(buf[i]):
-            return BAD, count, nslow, slow
+            return BAD, count, nslow, slow, out, iout
         if w == 0 and exact:
             out[count] = -0.0 if neg else 0.0
         elif exact and w <= _TWO53 and -22 <= scale <= 22:
@@ -179,23 +189,28 @@ def scan(buf, integer, out, iout, slow):
             nslow += 1
             out[count] = 0.0
         count += 1
-    return OK, count, nslow, slow
+    return OK, count, nslow, slow, out, iout
 
 
 def convert(raw: bytes, integer: bool) -> np.ndarray | None:
     """The numbers of an ASCII number list (float64, or int64 for Int32 lists), or None when the
     text breaks a rule (the caller's exact path then words the error)."""
     buf = np.frombuffer(raw, np.uint8)
-    cap = buf.shape[0] // 2 + 1
+    # A typical number and its separator take 6 bytes or more ("0.25, "); a list of shorter
+    # ones grows the buffer (the worst case, "1 2 3", would need half the text's length).
+    cap = buf.shape[0] // 6 + 16
+    out, iout = np.empty(0), np.empty(0, np.int64)
     if integer:
-        out, iout = np.empty(0), np.empty(cap, np.int64)
+        iout = np.empty(cap, np.int64)
     else:
-        out, iout = np.empty(cap), np.empty(0, np.int64)
-    status, count, nslow, slow = scan(buf, integer, out, iout, np.empty((0, 3), np.int64))
+        out = np.empty(cap)
+    status, count, nslow, slow, out, iout = scan(
+        buf, integer, out, iout, np.empty((0, 3), np.int64)
+    )
     if status != OK or count == 0:
         return None
     values = iout if integer else out
     for k, a, b in slow[:nslow].tolist():  # rare: long mantissas, far exponents
         values[k] = float(raw[a:b])
-    # the buffer was sized for the worst case ("1 2 3"): keep only what was filled
-    return values[:count].copy() if count < cap // 2 else values[:count]
+    # keep the buffer when it is mostly filled, else only what was filled
+    return values[:count] if 4 * count >= 3 * values.shape[0] else values[:count].copy()
