@@ -154,6 +154,7 @@ def main() -> None:
         if base:
             head += f"{'base s':>9}  {'min..max':13}{'ratio':>6}{'MiB':>6}"
         print(head)
+        results: dict[str, tuple[float, float, float, float]] = {}
         for name, cmd, floor in cases(files, out):
             if args.only and name not in args.only:
                 continue
@@ -179,6 +180,9 @@ def main() -> None:
                     bpeak = max(bpeak, rss)
             med = statistics.median(runs)
             fl = statistics.median(floors) if floors else float("nan")
+            results[name] = (med, min(runs), max(runs), fl)
+            if base:
+                results[name + "@base"] = (statistics.median(bruns), min(bruns), max(bruns), fl)
             cpu, fcpu = statistics.median(cpus), statistics.median(fcpus) if fcpus else float("nan")
             line = (f"{name:22}{med:>9.3f}  {min(runs):.2f}..{max(runs):<7.2f}{fl:>8.3f}"
                     f"{med / fl:>7.2f}{peak:>10.0f}"
@@ -188,17 +192,52 @@ def main() -> None:
                 line += (f"{bmed:>9.3f}  {min(bruns):.2f}..{max(bruns):<7.2f}{bmed / fl:>6.2f}"
                          f"{bpeak:>6.0f}")  # fmt: skip
             print(line, flush=True)
-        if args.only and "samples" not in args.only:
-            return
-        print(f"\n{'shaded samples/s (1 core)':40}{'samples':>11}  M/s median (min..max)")
-        for label, path, opts in (
-            ("textured+lit+translucent, default AA", files["textured"], {}),
-            ("textured+lit+translucent, ssaa 1", files["textured"], {"ssaa": 1}),
-            ("lit sphere 200k shaded, default AA", files["sphere200k"], {}),
-        ):
-            samples, rates = shaded_rate(path, opts)
-            print(f"{label:40}{samples:>11}  {statistics.median(rates):.1f} "
-                  f"({min(rates):.1f}..{max(rates):.1f})", flush=True)  # fmt: skip
+        if not args.only or "samples" in args.only:
+            print(f"\n{'shaded samples/s (1 core)':40}{'samples':>11}  M/s median (min..max)")
+            for label, path, opts in (
+                ("textured+lit+translucent, default AA", files["textured"], {}),
+                ("textured+lit+translucent, ssaa 1", files["textured"], {"ssaa": 1}),
+                ("lit sphere 200k shaded, default AA", files["sphere200k"], {}),
+            ):
+                samples, rates = shaded_rate(path, opts)
+                print(f"{label:40}{samples:>11}  {statistics.median(rates):.1f} "
+                      f"({min(rates):.1f}..{max(rates):.1f})", flush=True)  # fmt: skip
+                rate = (statistics.median(rates), min(rates), max(rates), float("nan"))
+                results["rate:" + label] = rate
+        print_targets(results)
+
+
+# (case, bound, what): a ratio to the floor at most ``bound``, or (rate) at least ``bound``.
+TARGETS = (
+    ("sphere1m-flat", 1.2, "1M sphere 1920x1080 flat, ratio to the floor <="),
+    ("sphere1m-info", 0.8, "`info` of the 1M sphere, ratio to the read floor <="),
+    ("corpus002-hexsphere", 4.0, "corpus 002 at its size, ratio to the floor <="),
+    ("rate:textured+lit+translucent, default AA", 50.0,
+     "lit textured translucent 1920x1080, M shaded samples/s (1 core) >="),
+)  # fmt: skip
+
+
+def print_targets(results: dict[str, tuple[float, float, float, float]]) -> None:
+    """Every target of the speed work with the figure measured in this run, met or not."""
+    print("\ntargets (median, min..max of this run)")
+    for name, bound, what in TARGETS:
+        if name not in results:
+            continue
+        med, lo, hi, floor = results[name]
+        if name.startswith("rate:"):
+            ok = med >= bound
+            line = f"{med:.1f} M/s ({lo:.1f}..{hi:.1f})"
+        else:
+            ok = med / floor <= bound
+            line = f"{med / floor:.2f}x ({lo / floor:.2f}..{hi / floor:.2f})"
+        print(f"  {what} {bound:g}: {line}  {'met' if ok else 'MISSED'}")
+    if "cube" in results:
+        med, lo, hi, floor = results["cube"]
+        line = f"  samples/cube.xaml: {med:.3f} s ({lo:.3f}..{hi:.3f}), {med / floor:.2f}x floor"
+        if "cube@base" in results:
+            bmed = results["cube@base"][0]
+            line += f"; base {bmed:.3f} s: {'met' if med <= bmed * 1.05 else 'MISSED'} (no slower)"
+        print(line)
 
 
 if __name__ == "__main__":

@@ -73,6 +73,7 @@ def test_overdraw_ties_and_translucency_match(monkeypatch):
 def test_auto_mode_loads_numba_only_for_big_work(monkeypatch):
     monkeypatch.setenv(accel.ENV, "auto")
     monkeypatch.setattr(accel, "_kernels", None)
+    monkeypatch.delitem(sys.modules, "numba")  # as in a process that has not imported it
     accel.begin_frame()
     assert accel.for_work(1000.0, 10) is None
     assert accel.for_work(accel.FRAGMENTS_WORTH / 2, 10) is None
@@ -81,6 +82,48 @@ def test_auto_mode_loads_numba_only_for_big_work(monkeypatch):
     assert accel.active() is not None
     monkeypatch.setenv(accel.ENV, "numpy")
     assert accel.active() is None and accel.for_work(1e9, 10**7) is None
+
+
+def test_numba_already_imported_lowers_the_bar(monkeypatch):
+    """Once the reader has imported numba, the kernels cost only their cached machine code."""
+    import numba  # noqa: F401  (imported, as after reading a big file)
+
+    monkeypatch.setenv(accel.ENV, "auto")
+    monkeypatch.setattr(accel, "_kernels", None)
+    accel.begin_frame()
+    assert accel.for_work(accel.IMPORTED_WORTH / 2, 10) is None
+    assert accel.for_work(accel.IMPORTED_WORTH / 2, 10) is not None
+
+
+def test_frame_plan_loads_before_the_first_model(monkeypatch):
+    monkeypatch.setenv(accel.ENV, "auto")
+    monkeypatch.setattr(accel, "_kernels", None)
+    monkeypatch.delitem(sys.modules, "numba")
+    accel.plan(accel.FRAGMENTS_WORTH / 2 - 1, 10)
+    assert accel.active() is None
+    accel.plan(accel.FRAGMENTS_WORTH / 2, 10)
+    assert accel.active() is not None
+    monkeypatch.setenv(accel.ENV, "numpy")
+    monkeypatch.setattr(accel, "_kernels", None)
+    accel.plan(1e12, 10**9)
+    assert accel.active() is None
+
+
+def test_frame_plan_estimate_matches_the_rasterizer(tmp_path, monkeypatch):
+    """The whole frame's estimate (``draw._work``) is close to what the rasterizer counts."""
+    import shutil
+
+    shutil.copy(REFERENCE / "brush" / "textures" / "quadrants.png", tmp_path)
+    path = tmp_path / "scene.xaml"
+    path.write_text(_PASS_SCENE.format(tile="Tile", **_wavy_sheet()), encoding="utf-8")
+    planned, counted = [], []
+    monkeypatch.setenv(accel.ENV, "numpy")
+    monkeypatch.setattr(accel, "plan", lambda work, tris: planned.append(work))
+    real = accel.for_work
+    monkeypatch.setattr(accel, "for_work", lambda w, t: counted.append(w) or real(w, t))
+    render_arrays(load(path))
+    assert len(planned) == 1 and counted
+    assert 0.5 * sum(counted) <= planned[0] <= 3.0 * sum(counted), (planned, sum(counted))
 
 
 def test_bad_mode_is_refused(monkeypatch):
@@ -137,3 +180,117 @@ def test_bilinear_texture_sampling_matches_numpy_exactly(monkeypatch):
     b = bilinear(img, px, py)
     assert np.array_equal(a, b)
     assert np.array_equal(a[-4], img[0, 0]) and np.array_equal(a[-2], img[4, 6])
+
+
+_PASS_SCENE = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    Width="96" Height="72">
+  <Viewport3D.Camera>
+    <PerspectiveCamera Position="2.5,0.6,-3" LookDirection="-2.5,-0.6,3.2" FieldOfView="60" />
+  </Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#404040" />
+    <DirectionalLight Color="#C0C0C0" Direction="-1,-1,-2" />
+    <PointLight Color="#808080" Position="1,1,2" />
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="{positions}" TriangleIndices="{indices}"
+            TextureCoordinates="{texcoords}" />
+      </GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><MaterialGroup>
+        <DiffuseMaterial>
+          <DiffuseMaterial.Brush>
+            <ImageBrush ImageSource="quadrants.png" TileMode="{tile}" Viewport="0,0,0.3,0.4"
+                Opacity="0.7" Viewbox="0.1,0,0.8,1" Stretch="Uniform" />
+          </DiffuseMaterial.Brush>
+        </DiffuseMaterial>
+        <SpecularMaterial SpecularPower="20" Brush="#A0FFFFFF" />
+        <EmissiveMaterial>
+          <EmissiveMaterial.Brush>
+            <LinearGradientBrush StartPoint="0,0" EndPoint="1,1">
+              <GradientStop Color="#40FF0000" Offset="0" />
+              <GradientStop Color="#400000FF" Offset="1" />
+            </LinearGradientBrush>
+          </EmissiveMaterial.Brush>
+        </EmissiveMaterial>
+      </MaterialGroup></GeometryModel3D.Material>
+      <GeometryModel3D.BackMaterial>
+        <DiffuseMaterial Brush="#8000C000" />
+      </GeometryModel3D.BackMaterial>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>
+"""
+
+
+def _wavy_sheet(n: int = 24) -> dict[str, str]:
+    """A folded, wavy sheet: front and back faces, overlaps, texture coordinates beyond 0..1."""
+    u, v = np.meshgrid(np.linspace(-1.2, 1.2, n), np.linspace(-1.2, 1.2, n))
+    x = np.sin(1.3 * u) * 1.1
+    z = np.cos(1.3 * u) * 0.9 + 0.2 * np.sin(3 * v)
+    pos = np.stack([x, v, z], -1).reshape(-1, 3)
+    tc = np.stack([u * 0.8 + 0.5, 0.5 - v * 0.8], -1).reshape(-1, 2)
+    k = np.arange(n * n).reshape(n, n)[:-1, :-1].ravel()
+    tri = np.stack([k, k + 1, k + n + 1, k, k + n + 1, k + n], -1).reshape(-1)
+    return {
+        "positions": " ".join(f"{a:.6g},{b:.6g},{c:.6g}" for a, b, c in pos),
+        "indices": " ".join(map(str, tri)),
+        "texcoords": " ".join(f"{a:.6g},{b:.6g}" for a, b in tc),
+    }
+
+
+@pytest.mark.parametrize("tile", ["None", "Tile", "FlipXY"])
+def test_compiled_passes_match_numpy_on_textured_translucent_specular(tile, tmp_path, monkeypatch):
+    """Lit, textured, translucent and additive passes, front and back: the compiled pass
+    (``kernels.shade_rows`` then ``blend_rows``) against the numpy path."""
+    import shutil
+
+    from xaml3d.render import kernels
+
+    shutil.copy(REFERENCE / "brush" / "textures" / "quadrants.png", tmp_path)
+    path = tmp_path / "scene.xaml"
+    path.write_text(_PASS_SCENE.format(tile=tile, **_wavy_sheet()), encoding="utf-8")
+    scene = load(path)
+    calls = []
+    shade_rows = kernels.shade_rows
+
+    def counting(*args):
+        calls.append(args[6])  # the brush kind
+        return shade_rows(*args)
+
+    monkeypatch.setattr(kernels, "shade_rows", counting)
+    for opts in OPTIONS + [{"mode": "flat", "ssaa": 1}]:
+        monkeypatch.setenv(accel.ENV, "numpy")
+        a = render_arrays(scene, **opts)
+        monkeypatch.setenv(accel.ENV, "numba")
+        calls.clear()
+        b = render_arrays(scene, **opts)
+        want = {kernels.BRUSH_IMAGE, kernels.BRUSH_GIVEN}
+        if opts.get("mode") != "flat":  # flat solid colours: blended from a per-triangle table
+            want.add(kernels.BRUSH_UNIFORM)
+        assert set(calls) == want, opts
+        assert np.array_equal(a.rgba, b.rgba), opts
+        assert np.array_equal(a.depth, b.depth), opts
+        assert 0 < np.count_nonzero(a.rgba[..., 3]) < a.rgba[..., 3].size  # a picture drawn
+
+
+@pytest.mark.parametrize("s", [1, 2, 3])
+@pytest.mark.parametrize("nearest", [False, True])
+def test_compiled_resolve_matches_numpy(s, nearest, monkeypatch):
+    """Box filter (or nearest sample), depth and straight-alpha uint8 in one compiled pass:
+    the same bytes and depths as the numpy code, luminous (colour > alpha) and empty samples
+    included."""
+    from xaml3d.render.frame import Framebuffer
+
+    rng = np.random.default_rng(s)
+    fb = Framebuffer(7 * s, 5 * s)
+    fb.color[:] = rng.uniform(0.0, 1.3, fb.color.shape).astype(np.float32)
+    fb.color[::5, 3] = 0.0  # added light over transparency
+    fb.color[::7] = 0.0
+    fb.zbuf[:] = np.where(rng.random(fb.zbuf.shape) < 0.2, 0.0, rng.uniform(-2, -1, fb.zbuf.size))
+    monkeypatch.setenv(accel.ENV, "numpy")
+    a = fb.resolve(s, nearest=nearest)
+    monkeypatch.setenv(accel.ENV, "numba")
+    assert accel.for_work(0, 0) is not None
+    b = fb.resolve(s, nearest=nearest)
+    assert np.array_equal(a[0], b[0])
+    assert np.array_equal(a[1], b[1])

@@ -1,27 +1,28 @@
 """Whether the compiled kernels (``xaml3d.render.kernels``, numba) are used, and loading them.
 
 numba costs about 0.3 s per process (import, loading the cached machine code, shutdown): more
-than a whole small render. So the kernels are loaded only when a rasterization's estimated work
-pays for it (``for_work``), once per process; from then on blending uses them too (``active``).
-Both paths give identical pictures, so mixing them within one frame is harmless.
+than a whole small render. So the kernels are loaded only when the frame's estimated work pays
+for it: before drawing, from the whole frame's estimate (``plan``), or when a rasterization's
+own estimate adds up to it (``for_work``); once per process; from then on blending and the
+material passes use them too (``active``). When numba is already imported (the reader's number
+scanner, for a big file), the bar is much lower. Both paths give identical pictures, so mixing
+them within one frame is harmless.
 
-``XAML3D_KERNELS`` chooses: ``auto`` (default, as above), ``numba`` (always; an error when numba
-cannot be imported) or ``numpy`` (never). Without numba installed, ``auto`` stays on numpy.
-
-numba's on-disk cache goes to ``NUMBA_CACHE_DIR`` when set; otherwise this module sets it before
-importing numba, to ``$XDG_CACHE_HOME/xaml3d/numba`` (``~/.cache/...``) or, when that cannot be
-written, a per-user folder in the temporary directory: never beside the installed package, which
-may be read-only (numba raises at import when it finds no writable place).
+``XAML3D_KERNELS`` chooses (``xaml3d.numba_env``): ``auto`` (default, as above), ``numba``
+(always; an error when numba cannot be imported) or ``numpy`` (never). Without numba installed,
+``auto`` stays on numpy. numba's cache folder: ``numba_env.set_cache_dir``.
 """
 
 from __future__ import annotations
 
-import os
-import tempfile
-from pathlib import Path
+import sys
 
-ENV = "XAML3D_KERNELS"
-MODES = ("auto", "numba", "numpy")
+from xaml3d.numba_env import ENV, MODES, mode, set_cache_dir
+
+__all__ = [
+    "ENV", "MODES", "active", "begin_frame", "for_work", "mode", "plan", "set_cache_dir",
+]  # fmt: skip
+
 # The work estimate is the bounding boxes' half area in samples, times the passes, times 2 when
 # weights are interpolated (see ``raster.rasterize``), added up over the frame. Measured on this
 # 2-core machine, warm render, numpy -> kernels: 1M-triangle sphere 1920x1080 flat msaa 2
@@ -31,17 +32,13 @@ MODES = ("auto", "numba", "numpy")
 # with ssaa 4 (110M) 1.65 -> 0.89 s. Very many triangles pay too (numpy's per-row setup).
 FRAGMENTS_WORTH = 12_000_000
 TRIANGLES_WORTH = 2_000_000
+# Once numba is imported and running (the reader's number scanner loads it for big files), the
+# kernels cost only their cached machine code, about 0.02 s: far less work pays.
+IMPORTED_WORTH = 500_000
 
 _kernels = None
 _failed = False
 _frame_work = 0.0  # estimated work of the frame being drawn so far (see ``begin_frame``)
-
-
-def mode() -> str:
-    value = os.environ.get(ENV, "auto").strip().lower() or "auto"
-    if value not in MODES:
-        raise ValueError(f"{ENV}={value!r}: use one of {', '.join(MODES)}")
-    return value
 
 
 def active():
@@ -67,10 +64,26 @@ def for_work(fragments: float, triangles: int):
         return None
     _frame_work += fragments
     if _kernels is None:
-        if m == "auto" and _frame_work < FRAGMENTS_WORTH and triangles < TRIANGLES_WORTH:
+        if m == "auto" and _frame_work < _worth() and triangles < TRIANGLES_WORTH:
             return None
         _load(required=m == "numba")
     return _kernels
+
+
+def plan(fragments: float, triangles: int) -> None:
+    """The whole frame's estimated work, known before anything is drawn: when it pays, the
+    kernels are loaded now, so that no model of the frame is drawn on the numpy path first.
+    The estimate (``draw._work``: bounding boxes of whole models) runs at about half of what
+    the rasterizer counts for closed meshes (corpus hexsphere: 10.6M against 22.8M), hence
+    half the bar."""
+    m = mode()
+    if _kernels is None and m != "numpy":
+        if m == "numba" or 2.0 * fragments >= _worth() or triangles >= TRIANGLES_WORTH:
+            _load(required=m == "numba")
+
+
+def _worth() -> float:
+    return IMPORTED_WORTH if "numba" in sys.modules else FRAGMENTS_WORTH
 
 
 def _load(required: bool) -> None:
@@ -87,23 +100,3 @@ def _load(required: bool) -> None:
             raise
         return
     _kernels = kernels
-
-
-def set_cache_dir(environ=None) -> str:
-    """Set ``NUMBA_CACHE_DIR`` (unless already set) to a writable folder; return it."""
-    env = os.environ if environ is None else environ
-    if env.get("NUMBA_CACHE_DIR"):
-        return env["NUMBA_CACHE_DIR"]
-    home = env.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    uid = os.getuid() if hasattr(os, "getuid") else "user"
-    for folder in (Path(home) / "xaml3d" / "numba", Path(tempfile.gettempdir()) / f"xaml3d-{uid}"):
-        try:
-            folder.mkdir(parents=True, exist_ok=True)
-        except OSError:
-            continue
-        if os.access(folder, os.W_OK | os.X_OK):
-            env["NUMBA_CACHE_DIR"] = str(folder)
-            return str(folder)
-    folder = tempfile.mkdtemp(prefix="xaml3d-numba-")  # last resort: a fresh private folder
-    env["NUMBA_CACHE_DIR"] = folder
-    return folder

@@ -85,7 +85,12 @@ def inverse_map(matrix: np.ndarray, uv: np.ndarray) -> np.ndarray | None:
     if not np.isfinite(det) or abs(det) < 1e-300:
         return None
     inv = np.linalg.inv(matrix)
-    return uv @ inv[:2, :2].T + inv[:2, 2]
+    # Written out rather than a matrix product (which BLAS may compute with fused multiply-adds):
+    # the compiled shading kernel computes the very same roundings.
+    q = np.empty_like(uv)
+    q[:, 0] = uv[:, 0] * inv[0, 0] + uv[:, 1] * inv[0, 1] + inv[0, 2]
+    q[:, 1] = uv[:, 0] * inv[1, 0] + uv[:, 1] * inv[1, 1] + inv[1, 2]
+    return q
 
 
 # --------------------------------------------------------------------------- gradients
@@ -208,7 +213,7 @@ _EPS = 1e-9  # tolerance of the TileMode None edge test (inverse-mapped coordina
 _PREMULTIPLIED: list[tuple[np.ndarray, np.ndarray]] = []  # (image, premultiplied), newest last
 
 
-def _premultiplied_image(image: np.ndarray) -> np.ndarray:
+def premultiplied_image(image: np.ndarray) -> np.ndarray:
     """The image as premultiplied float rgba. A pass samples its image once per fragment chunk:
     the conversion (a float copy of the whole image) of read-only images is kept for the last
     few images seen."""
@@ -266,15 +271,22 @@ def _tile_fraction(local: np.ndarray, mode: str, flip: bool) -> tuple[np.ndarray
     return frac, np.ones(local.shape, dtype=bool)
 
 
-def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
-    """TileBrush layout: the Viewbox of the image is stretched (Stretch, AlignmentX/Y) into the
-    Viewport, which is one tile; TileMode None leaves everything outside the tile transparent.
-    Absolute Viewbox units are image pixels (96 dpi assumed). Inside the tile, points outside the
-    image (Uniform letterboxing) are transparent."""
-    m = uv.shape[0]
-    out = np.zeros((m, 4))
+# TileMode codes of ``image_layout`` (and of the compiled kernel, ``kernels.shade_rows``).
+TILE_CODES = {"None": 0, "Tile": 1, "FlipX": 2, "FlipY": 3, "FlipXY": 4}
+# Layout vector of ``image_layout``: the inverse brush map (a, b, c; d, e, f), the viewport
+# (x, y, w, h), the viewbox origin (x, y), the stretch scales (sx, sy), the content origin
+# (ox, oy), the image size (w, h), the opacity and the TileMode code.
+LAYOUT_SIZE = 20
+
+
+def image_layout(brush: ImageBrush, bounds: Bounds) -> np.ndarray | None:
+    """The numbers that place an ImageBrush's image on texture space (``LAYOUT_SIZE`` floats),
+    or None when it draws nothing (no image, an empty viewbox or viewport, a singular map).
+
+    TileBrush layout: the Viewbox of the image is stretched (Stretch, AlignmentX/Y) into the
+    Viewport, which is one tile. Absolute Viewbox units are image pixels (96 dpi assumed)."""
     if brush.image is None or brush.image.size == 0:
-        return out
+        return None
     h, w = brush.image.shape[:2]
     vbx, vby, vbw, vbh = (float(v) for v in brush.viewbox)
     if brush.viewbox_units != "Absolute":
@@ -286,7 +298,7 @@ def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarr
         vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
         vpy, vph = lo[1] + vpy * size[1], vph * size[1]
     if min(vbw, vbh, vpw, vph) <= 0.0:
-        return out  # an empty viewbox or viewport draws nothing
+        return None  # an empty viewbox or viewport draws nothing
     sx, sy = vpw / vbw, vph / vbh
     if brush.stretch == "Uniform":
         sx = sy = min(sx, sy)
@@ -296,17 +308,38 @@ def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarr
         sx = sy = 1.0
     ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
     oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
-    q = inverse_map(brush_to_texture_matrix(brush, bounds, False), uv)
-    if q is None:
+    matrix = brush_to_texture_matrix(brush, bounds, False)
+    det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
+    if not np.isfinite(det) or abs(det) < 1e-300:
+        return None
+    inv = np.linalg.inv(matrix)
+    return np.array(
+        [*inv[0], *inv[1], vpx, vpy, vpw, vph, vbx, vby, sx, sy, ox, oy, float(w), float(h),
+         float(brush.opacity), float(TILE_CODES.get(brush.tile_mode, 0))]
+    )  # fmt: skip
+
+
+def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
+    """The image brush at ``uv``: TileMode None leaves everything outside the tile
+    transparent; inside the tile, points outside the image (Uniform letterboxing) are
+    transparent too. Opacity is NOT applied (``sample_brush`` does)."""
+    m = uv.shape[0]
+    out = np.zeros((m, 4))
+    lay = image_layout(brush, bounds)
+    if lay is None:
         return out
+    a, b, c, d, e, f, vpx, vpy, vpw, vph, vbx, vby, sx, sy, ox, oy, w, h = lay[:18].tolist()
+    # inverse_map's arithmetic, with the matrix already inverted
+    qx = uv[:, 0] * a + uv[:, 1] * b + c
+    qy = uv[:, 0] * d + uv[:, 1] * e + f
     mode = brush.tile_mode
-    fx, in_x = _tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
-    fy, in_y = _tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+    fx, in_x = _tile_fraction((qx - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+    fy, in_y = _tile_fraction((qy - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     px = vbx + (vpx + fx * vpw - ox) / sx
     py = vby + (vpy + fy * vph - oy) / sy
     keep = in_x & in_y & (px >= -_EPS) & (px <= w + _EPS) & (py >= -_EPS) & (py <= h + _EPS)
     if keep.any():
-        out[keep] = bilinear(_premultiplied_image(brush.image), px[keep], py[keep])
+        out[keep] = bilinear(premultiplied_image(brush.image), px[keep], py[keep])
     return out
 
 

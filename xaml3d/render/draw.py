@@ -30,6 +30,7 @@ samples and stereo eyes of ``xaml3d.render.lens``) reuse them instead of lightin
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -39,18 +40,27 @@ from xaml3d.render.brushes import (
     brush_average,
     brush_bounds,
     brush_is_uniform,
+    image_layout,
+    premultiplied_image,
     sample_brush,
     uv_density,
 )
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
-from xaml3d.render.frame import Framebuffer
+from xaml3d.render.frame import DEPTH_OFFSET, Framebuffer
 from xaml3d.render.lighting import prepare_lights, shade_vertices
 from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
 from xaml3d.scene.transforms import normal_matrix
-from xaml3d.scene.types import DiffuseMaterial, Model
+from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
 
 _EYE3 = np.eye(3)
 KEEP_BYTES = 192 << 20  # fragments kept between the passes of a multi-pass material
+# Placeholders for the compiled pass's unused arguments (typed so that one machine-code version
+# serves every pass).
+_NO_INDEX = np.zeros(0, dtype=np.int64)
+_NO_GIVEN = np.zeros((0, 4))
+_NO_LAYOUT = np.zeros(0)
+_NO_PLANES = np.zeros((2, 0))
+_NO_IMAGE = np.zeros((0, 0, 4))
 
 
 @dataclass
@@ -60,10 +70,16 @@ class PreparedModel:
     model: Model
     clip: np.ndarray  # (N, 4) homogeneous clip coordinates
     view_pos: np.ndarray  # (N, 3)
-    view_nrm: np.ndarray  # (N, 3) unit or zero
+    normal_matrix: np.ndarray  # (3, 3): inverse-transpose of view @ world
     front: np.ndarray  # (T,) bool: front face (locally CCW side towards the viewer)
     back: np.ndarray  # (T,) bool
     face_sign: float  # +1, or -1 when view @ world mirrors (for geometric face normals)
+
+    @cached_property
+    def view_nrm(self) -> np.ndarray:
+        """(N, 3) view-space vertex normals, unit or zero: only Gouraud shading needs them
+        (flat mode lights geometric face normals), so they are made when first asked for."""
+        return _unit_rows(self.model.mesh.normals @ self.normal_matrix.T)
 
 
 @dataclass
@@ -115,7 +131,6 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             )  # fmt: skip
         )
         return None
-    nrm = _unit_rows(mesh.normals @ nm.T)
     # det [x y w] of the three vertices, expanded by the first column.
     idx = mesh.indices
     x, y, w = clip[:, 0][idx], clip[:, 1][idx], clip[:, 3][idx]
@@ -128,7 +143,7 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
     ccw = det < 0.0 if mirror else det > 0.0
     cw = det > 0.0 if mirror else det < 0.0
     sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
-    return PreparedModel(model, clip, vpos, nrm, ccw, cw, sign)
+    return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
 
 
 def _unit_rows(v: np.ndarray) -> np.ndarray:
@@ -266,6 +281,67 @@ class PassShader:
             self._c16 = c32.view(np.complex128).reshape(-1)
         elif not flat:
             self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)
+        self._layout = None
+        if isinstance(brush, ImageBrush):
+            self._layout = image_layout(brush, self.bounds)
+        self._image = _NO_IMAGE
+        if self._layout is not None:
+            self._image = np.ascontiguousarray(premultiplied_image(brush.image), np.float64)
+
+    def draw(self, fb: Framebuffer, frag: Fragments) -> None:
+        """Shade ``frag`` and blend it into ``fb``: with the compiled kernels loaded, one
+        compiled pass over the rows (``kernels.shade_rows``: interpolation, brush sampling,
+        product) and one over the fragments (``kernels.blend_rows``), else ``self(frag)`` then
+        blending."""
+        kernels = accel.active()
+        if kernels is None:
+            _blend(fb, self.mat, frag, self(frag))
+            return
+        additive = not isinstance(self.mat, DiffuseMaterial)
+        pix = np.ascontiguousarray(frag.pixel, dtype=np.int64)
+        z = np.asarray(frag.depth, dtype=np.float64) - DEPTH_OFFSET
+        if self.flat and self.uniform:  # one colour per triangle: blended from the table
+            table = self._c16.view(np.float32).reshape(-1, 4)
+            tri = np.ascontiguousarray(frag.tri, dtype=np.int64)
+            fb.fragments_drawn += kernels.blend_rows(
+                fb.zbuf, fb.color, _read_only(pix), _read_only(z), _read_only(tri),
+                _read_only(table), additive,
+            )  # fmt: skip
+            return
+        if frag.inverse is not None:
+            rtri, rw, inverse = frag.wtri, frag.weights, frag.inverse
+        else:
+            rtri, rw, inverse = frag.tri, frag.weights, _NO_INDEX
+        rtri = np.ascontiguousarray(rtri, dtype=np.int64)
+        rw = np.ascontiguousarray(rw, dtype=np.float64)
+        given, lay, uvp = _NO_GIVEN, _NO_LAYOUT, _NO_PLANES
+        if self.uniform:
+            brush = kernels.BRUSH_UNIFORM
+        elif self._layout is not None:
+            brush, lay, uvp = kernels.BRUSH_IMAGE, self._layout, self._uv_planes
+        else:  # gradients (and images that draw nothing): sampled here, one row at a time
+            brush = kernels.BRUSH_GIVEN
+            uv = interpolate(self._uv_planes, self.indices, rtri, rw)
+            given = np.ascontiguousarray(
+                sample_brush(self.mat.brush, uv, self.bounds, self.density)
+            )
+        if self.flat:
+            source, colors = kernels.COLOR_PER_TRIANGLE, self._tri_colors
+        else:
+            source, colors = kernels.COLOR_PLANES, self._planes
+        ro = _read_only
+        rows = kernels.shade_rows(
+            ro(rtri), ro(rw), source, ro(colors), ro(self.indices), ro(uvp), brush, ro(given),
+            ro(lay), ro(self._image),
+        )  # fmt: skip
+        inverse = np.ascontiguousarray(inverse, dtype=np.int64)
+        fb.fragments_drawn += kernels.blend_rows(
+            fb.zbuf, fb.color, ro(pix), ro(z), ro(inverse), ro(rows), additive
+        )
+
+    @property
+    def _tri_colors(self) -> np.ndarray:
+        return np.ascontiguousarray(self.colors, dtype=np.float64)
 
     def __call__(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
@@ -285,6 +361,16 @@ class PassShader:
             uv = interpolate(self._uv_planes, self.indices, frag.tri, frag.weights)
             col = col * sample_brush(self.mat.brush, uv, self.bounds, self.density)
         return col
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    """A read-only view: the compiled kernels are cached per argument type, read-only flag
+    included, so the inputs of the pass kernels (which may come either way: mesh arrays are
+    read-only) are always passed read-only: one machine-code version each."""
+    if a.flags.writeable:
+        a = a.view()
+        a.flags.writeable = False
+    return a
 
 
 def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.ndarray):
@@ -370,18 +456,18 @@ def draw_model(
         kept: list[Fragments] | None = [] if len(shaders) > 1 else None
         size = 0
         for frag in frags:
-            _blend(fb, passes[0], frag, shaders[0](frag))
+            shaders[0].draw(fb, frag)
             if kept is not None:
                 kept.append(frag)
                 size += _nbytes(frag)
                 if size > KEEP_BYTES:
                     kept = None
-        for mat, shader in zip(passes[1:], shaders[1:], strict=True):
+        for shader in shaders[1:]:
             again = kept if kept is not None else side_fragments(
                 pm, tris, ctx, weights=need_weights, passes=len(shaders)
             )  # fmt: skip
             for frag in again:
-                _blend(fb, mat, frag, shader(frag))
+                shader.draw(fb, frag)
 
 
 def _texture_density(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext) -> float | None:
@@ -411,7 +497,35 @@ def draw_viewport_models(
             prepared.append(prepare_lights(viewport.lights, pipeline.view_matrix))
         return prepared[0]
 
-    for key, model in enumerate(viewport.models):
-        pm = prepare_model(model, pipeline, ctx)
-        if pm is not None:
-            draw_model(fb, pm, lights, ctx, mode, shading, key)
+    models = [
+        (key, prepare_model(model, pipeline, ctx)) for key, model in enumerate(viewport.models)
+    ]
+    models = [(key, pm) for key, pm in models if pm is not None]
+    accel.plan(
+        sum(_work(pm, ctx, mode) for _, pm in models), sum(pm.front.size for _, pm in models)
+    )
+    for key, pm in models:
+        draw_model(fb, pm, lights, ctx, mode, shading, key)
+
+
+def _work(pm: PreparedModel, ctx: DrawContext, mode: str) -> float:
+    """The rasterizer's work estimate (``raster.rasterize``) for a whole model, before drawing:
+    its screen bounding box in samples times the passes of each side (weighed by the share of
+    triangles facing that way), twice when weights are interpolated."""
+    model = pm.model
+    front = [p for p in model.material if p.brush is not None]
+    back = [p for p in model.back_material if p.brush is not None]
+    passes = front + back
+    if not passes or pm.front.size == 0:
+        return 0.0
+    sides = len(front) * np.count_nonzero(pm.front) + len(back) * np.count_nonzero(pm.back)
+    sides /= pm.front.size
+    clip = pm.clip[pm.clip[:, 3] > 0.0]
+    if clip.shape[0] == 0:
+        return 0.0
+    q = 1.0 / clip[:, 3]
+    sx = np.clip((clip[:, 0] * q + 1.0) * (ctx.width / 2.0), 0.0, ctx.width)
+    sy = np.clip((1.0 - clip[:, 1] * q) * (ctx.height / 2.0), 0.0, ctx.height)
+    area = float((sx.max() - sx.min()) * (sy.max() - sy.min()))
+    weights = mode != "flat" or not all(brush_is_uniform(p.brush) for p in passes)
+    return area * sides * (2 if weights else 1)

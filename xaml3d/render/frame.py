@@ -202,6 +202,12 @@ class Framebuffer:
         that gives the depth."""
         s = int(ssaa)
         h, w = self.height // s, self.width // s
+        kernels = accel.active()
+        if kernels is not None:  # the same numbers in one pass
+            rgba = np.empty((h, w, 4), dtype=np.uint8)
+            depth = np.empty((h, w))
+            kernels.resolve(self.color, self.zbuf, self.width, s, bool(nearest), rgba, depth)
+            return rgba, depth
         # s * s strided slices: about 5x faster here than a float32 sum over the two sample
         # axes of a 5-D reshape (numpy reduces non-adjacent axes slowly).
         c5 = self.color.reshape(h, s, w, s, 4)

@@ -1,13 +1,14 @@
-"""Compiled inner loops (numba) of rasterization and blending (camera-pipeline.md section 6, steps
-6-7; wpf3d.md section 6, "Blending").
+"""Compiled inner loops (numba) of rasterization, shading and blending (camera-pipeline.md
+section 6, steps 6-7; wpf3d.md sections 6-7: Gouraud colours, ImageBrush sampling, "Blending").
 
 Importing this module imports numba: only ``xaml3d.render.accel`` does it, and only when the
 estimated work pays for numba's start-up (about 0.3 s here). Every kernel computes EXACTLY what
-the numpy path computes (``raster.rasterize``, ``frame.Framebuffer.over`` / ``add``): the same
-integer edge functions and spans, the same floating-point expressions in the same order (no
-fastmath, so no reassociation or fused multiply-adds), fragments in the same order, blending
-one fragment after the other, which the numpy path reproduces with its scatter tricks. Pictures
-are therefore identical; the reference-image suite runs on both paths to keep it so.
+the numpy path computes (``raster.rasterize``, ``draw.PassShader``, ``brushes.sample_brush``,
+``frame.Framebuffer.over`` / ``add``): the same integer edge functions and spans, the same
+floating-point expressions in the same order (no fastmath, so no reassociation or fused
+multiply-adds), fragments in the same order, blending one fragment after the other, which the
+numpy path reproduces with its scatter tricks. Pictures are therefore identical; the
+reference-image suite runs on both paths to keep it so.
 
 Array arguments are normalised by the callers (int64 / float64 / float32, C-contiguous) so that
 the on-disk cache holds one compiled version of each kernel.
@@ -225,3 +226,240 @@ def bilinear(img, px, py):
             bottom = img[yi1, xi0, c] * (1.0 - fx) + img[yi1, xi1, c] * fx
             out[f, c] = top * (1.0 - fy) + bottom * fy
     return out
+
+
+# Colour sources of ``shade_rows``: Gouraud vertex colours (K, N) interpolated with the row's
+# weights, or one colour per triangle (T, K) (flat mode).
+COLOR_PLANES = 0
+COLOR_PER_TRIANGLE = 1
+# Brushes of ``shade_rows``: uniform (already in the colours), an ImageBrush sampled in the
+# kernel (``brushes.image_layout``), or samples computed beforehand, one per row (gradients).
+BRUSH_UNIFORM = 0
+BRUSH_IMAGE = 1
+BRUSH_GIVEN = 2
+TILE_EPS = 1e-9  # brushes._EPS
+
+
+# error_model="numpy": a float division by zero gives inf/nan as in the numpy path instead of
+# raising, and the loops carry no zero-divisor checks.
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _tile(local, code, flip):
+    """``brushes._tile_fraction`` for one coordinate: (position in the tile, drawn)."""
+    if code == 0:
+        return local, (local >= -TILE_EPS) and (local <= 1.0 + TILE_EPS)
+    index = np.floor(local)
+    frac = local - index
+    if flip and index % 2.0 == 1.0:
+        frac = 1.0 - frac
+    return frac, True
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _image_sample(u, v, lay, img):
+    """The premultiplied ImageBrush colour at texture coordinates (u, v), Opacity included:
+    ``brushes._sample_image`` (placement by ``image_layout``'s numbers ``lay``) and
+    ``bilinear``, the same expressions in the same order."""
+    qx = u * lay[0] + v * lay[1] + lay[2]
+    qy = u * lay[3] + v * lay[4] + lay[5]
+    vpx = lay[6]
+    vpy = lay[7]
+    vpw = lay[8]
+    vph = lay[9]
+    code = int(lay[19])
+    fx, in_x = _tile((qx - vpx) / vpw, code, code == 2 or code == 4)
+    fy, in_y = _tile((qy - vpy) / vph, code, code == 3 or code == 4)
+    px = lay[10] + (vpx + fx * vpw - lay[14]) / lay[12]
+    py = lay[11] + (vpy + fy * vph - lay[15]) / lay[13]
+    w = lay[16]
+    h = lay[17]
+    s0 = 0.0
+    s1 = 0.0
+    s2 = 0.0
+    s3 = 0.0
+    if (
+        in_x and in_y and px >= -TILE_EPS and px <= w + TILE_EPS
+        and py >= -TILE_EPS and py <= h + TILE_EPS
+    ):  # fmt: skip
+        x = px - 0.5
+        y = py - 0.5
+        x0 = np.floor(x)
+        y0 = np.floor(y)
+        fx = x - x0
+        fy = y - y0
+        xi0 = int(min(max(x0, 0.0), w - 1.0))
+        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
+        yi0 = int(min(max(y0, 0.0), h - 1.0))
+        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        gx = 1.0 - fx
+        gy = 1.0 - fy
+        s0 = (img[yi0, xi0, 0] * gx + img[yi0, xi1, 0] * fx) * gy + (
+            img[yi1, xi0, 0] * gx + img[yi1, xi1, 0] * fx
+        ) * fy
+        s1 = (img[yi0, xi0, 1] * gx + img[yi0, xi1, 1] * fx) * gy + (
+            img[yi1, xi0, 1] * gx + img[yi1, xi1, 1] * fx
+        ) * fy
+        s2 = (img[yi0, xi0, 2] * gx + img[yi0, xi1, 2] * fx) * gy + (
+            img[yi1, xi0, 2] * gx + img[yi1, xi1, 2] * fx
+        ) * fy
+        s3 = (img[yi0, xi0, 3] * gx + img[yi0, xi1, 3] * fx) * gy + (
+            img[yi1, xi0, 3] * gx + img[yi1, xi1, 3] * fx
+        ) * fy
+    opacity = lay[18]
+    if opacity != 1.0:
+        s0 *= opacity
+        s1 *= opacity
+        s2 *= opacity
+        s3 *= opacity
+    return s0, s1, s2, s3
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
+    """The float32 colour (R, 4) of every row (a fragment, or a multisampled (triangle,
+    pixel)): the pass's colour times its brush, in the arithmetic of
+    ``draw.PassShader.__call__`` (Gouraud interpolation, ``sample_brush``, the product, then
+    float32)."""
+    n = rtri.shape[0]
+    out = np.empty((n, 4), np.float32)
+    for r in range(n):
+        t = rtri[r]
+        i0 = 0
+        i1 = 0
+        i2 = 0
+        w0 = 0.0
+        w1 = 0.0
+        w2 = 0.0
+        if source == COLOR_PLANES or brush == BRUSH_IMAGE:
+            i0 = indices[t, 0]
+            i1 = indices[t, 1]
+            i2 = indices[t, 2]
+            w0 = rw[r, 0]
+            w1 = rw[r, 1]
+            w2 = rw[r, 2]
+        if source == COLOR_PLANES:
+            c0 = w0 * colors[0, i0] + w1 * colors[0, i1] + w2 * colors[0, i2]
+            c1 = w0 * colors[1, i0] + w1 * colors[1, i1] + w2 * colors[1, i2]
+            c2 = w0 * colors[2, i0] + w1 * colors[2, i1] + w2 * colors[2, i2]
+            c3 = w0 * colors[3, i0] + w1 * colors[3, i1] + w2 * colors[3, i2]
+        else:
+            c0 = colors[t, 0]
+            c1 = colors[t, 1]
+            c2 = colors[t, 2]
+            c3 = colors[t, 3]
+        if brush == BRUSH_IMAGE:
+            u = w0 * uvp[0, i0] + w1 * uvp[0, i1] + w2 * uvp[0, i2]
+            v = w0 * uvp[1, i0] + w1 * uvp[1, i1] + w2 * uvp[1, i2]
+            s0, s1, s2, s3 = _image_sample(u, v, lay, img)
+            c0 = c0 * s0
+            c1 = c1 * s1
+            c2 = c2 * s2
+            c3 = c3 * s3
+        elif brush == BRUSH_GIVEN:
+            c0 = c0 * given[r, 0]
+            c1 = c1 * given[r, 1]
+            c2 = c2 * given[r, 2]
+            c3 = c3 * given[r, 3]
+        out[r, 0] = np.float32(c0)
+        out[r, 1] = np.float32(c1)
+        out[r, 2] = np.float32(c2)
+        out[r, 3] = np.float32(c3)
+    return out
+
+
+@numba.njit(cache=True, nogil=True)
+def blend_rows(zbuf, color, pix, z, inverse, rows, additive):
+    """Blend fragment f with colour ``rows[inverse[f]]`` (``inverse`` empty: ``rows[f]``),
+    one fragment after the other: ``blend_over``, or ``blend_add`` when ``additive``.
+    Returns how many fragments passed the depth test."""
+    nf = pix.shape[0]
+    spread = inverse.shape[0] > 0
+    passed = np.zeros(nf if additive else 0, dtype=np.bool_)
+    one = np.float32(1.0)
+    n = 0
+    for f in range(nf):
+        p = pix[f]
+        if not z[f] <= zbuf[p]:
+            continue
+        k = inverse[f] if spread else f
+        if additive:
+            passed[f] = True
+            for c in range(4):
+                color[p, c] += rows[k, c]
+        else:
+            a = rows[k, 3]
+            if a >= one:
+                for c in range(4):
+                    color[p, c] = rows[k, c]
+            else:
+                a = one - a
+                for c in range(4):
+                    color[p, c] = rows[k, c] + a * color[p, c]
+            zbuf[p] = z[f]
+        n += 1
+    if additive:
+        for f in range(nf):
+            if passed[f]:
+                p = pix[f]
+                for c in range(4):
+                    if color[p, c] > one:
+                        color[p, c] = one
+    return n
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _max32(x, y):
+    # np.maximum: NaN if either is NaN
+    return x if (x >= y or x != x) else y
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _min32(x, y):
+    return x if (x <= y or x != x) else y
+
+
+@numba.njit(cache=True, nogil=True)
+def resolve(color, zbuf, width, s, nearest, rgba, depth):
+    """``Framebuffer.resolve`` then ``frame.straight_uint8`` in one pass over the samples: the
+    s x s block's colours added in row order (or the nearest sample's colour), times 1 / s^2,
+    the nearest depth, then straight-alpha uint8, all in float32 as numpy does it."""
+    h = rgba.shape[0]
+    w = rgba.shape[1]
+    inv = np.float32(1.0 / (s * s))
+    zero = np.float32(0.0)
+    one = np.float32(1.0)
+    c255 = np.float32(255.0)
+    half = np.float32(0.5)
+    c = np.empty(4, np.float32)
+    for y in range(h):
+        for x in range(w):
+            base = y * s * width + x * s
+            for k in range(4):
+                c[k] = color[base, k]
+            z = zbuf[base]
+            for a in range(s):
+                for b in range(s):
+                    if a == 0 and b == 0:
+                        continue
+                    q = base + a * width + b
+                    if nearest:
+                        if zbuf[q] < z:
+                            for k in range(4):
+                                c[k] = color[q, k]
+                            z = zbuf[q]
+                    else:
+                        for k in range(4):
+                            c[k] += color[q, k]
+                        if zbuf[q] < z:
+                            z = zbuf[q]
+            if s > 1 and not nearest:
+                for k in range(4):
+                    c[k] *= inv
+            depth[y, x] = z + 2.0 if z < 0.0 else np.inf
+            al = _max32(_max32(c[0], c[1]), _max32(c[2], c[3]))
+            al = _min32(_max32(al, zero), one)
+            scale = c255 / al if al > zero else zero
+            for k in range(3):
+                v = _min32(_max32(c[k] * scale, zero), c255) + half
+                rgba[y, x, k] = np.uint8(v)
+            v = _min32(_max32(al * c255, zero), c255) + half
+            rgba[y, x, 3] = np.uint8(v)

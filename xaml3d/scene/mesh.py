@@ -70,9 +70,19 @@ def face_normals(positions, indices) -> np.ndarray:
     """
     p = _rows(positions, 3)
     tri = _rows(indices, 3, np.int64)
-    v0 = p[tri[:, 0]]
+    # Per coordinate plane: gathers of one float64 column are much faster than of (T, 3) rows,
+    # and the cross product written out is several times faster than np.cross (the same
+    # products and differences, so the same values).
+    px, py, pz = (np.ascontiguousarray(p[:, k]) for k in range(3))
+    i0, i1, i2 = (np.ascontiguousarray(tri[:, k]) for k in range(3))
+    n = np.empty((tri.shape[0], 3))
     with np.errstate(all="ignore"):  # non-finite results are zeroed by _normalize_rows
-        n = np.cross(p[tri[:, 1]] - v0, p[tri[:, 2]] - v0)
+        x0, y0, z0 = px[i0], py[i0], pz[i0]
+        ax, ay, az = px[i1] - x0, py[i1] - y0, pz[i1] - z0
+        bx, by, bz = px[i2] - x0, py[i2] - y0, pz[i2] - z0
+        n[:, 0] = ay * bz - az * by
+        n[:, 1] = az * bx - ax * bz
+        n[:, 2] = ax * by - ay * bx
     return _normalize_rows(n)
 
 
