@@ -29,7 +29,12 @@ from xaml3d.xaml.context import (
     split_markup,
 )
 from xaml3d.xaml.parser import XAML_NS
-from xaml3d.xaml.struct_values import is_struct_element, struct_text
+from xaml3d.xaml.struct_values import (
+    collection_items,
+    collection_text,
+    is_struct_element,
+    struct_text,
+)
 
 NULL = object()  # an explicit {x:Null}
 _COLLECTION_KINDS = ("collection",)
@@ -243,6 +248,14 @@ class Props:
             return default
         if prop in self.elem_text:
             return self._convert(conv, self.elem_text[prop], self.line_of(prop), prop, default)
+        kids = self.elems.get(prop, ())
+        listed = collection_items(kids, self.etype.property_kind(prop) if self.etype else None)
+        if listed is not None:
+            items, item_type = listed
+            text = collection_text(self.r.ctx, items, item_type)
+            if text is None:
+                return default
+            return self._convert(conv, text, self.line_of(prop), prop, default)
         kids = self.items(prop)
         if kids:
             node = kids[-1]
