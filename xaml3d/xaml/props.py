@@ -52,6 +52,7 @@ class Props:
         self.attrs: dict[str, str] = {}
         self.attr_keys: dict[str, str] = {}  # property -> its attribute's key in el.attrib
         self.attached: dict[str, str] = {}
+        self.attached_keys: dict[str, str] = {}  # "Storyboard.TargetName" -> its attribute key
         self.elems: dict[str, list[etree._Element]] = {}
         self.elem_text: dict[str, str] = {}
         self.prop_el: dict[str, etree._Element] = {}
@@ -137,7 +138,19 @@ class Props:
                         ctx.diag("XAML008", msg, self.el, attr=name)
                     else:
                         self.attached[local] = value
+                        self.attached_keys[local] = name
                     continue
+            elif (
+                self.etype is not None
+                and local not in self.etype.properties
+                and local in voc.OWN_ATTACHED.get(self.type, ())
+            ):
+                # XAML resolves an unqualified attribute that is no member of the type to the
+                # type's attachable member: <Storyboard TargetName="..."> is
+                # Storyboard.TargetName
+                self.attached[f"{self.type}.{local}"] = value
+                self.attached_keys[f"{self.type}.{local}"] = name
+                continue
             if self._check_property(local, self.el, value, name):
                 self.attrs[local] = value
                 self.attr_keys[local] = name
