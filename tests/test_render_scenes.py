@@ -298,3 +298,19 @@ def test_viewport_bounds_are_measured_once_and_shared_read_only():
         lo += 1.0  # never changed in place by a caller
     moved = replace(vp, models=vp.models[:0])
     assert moved.bounds() is None and np.array_equal(vp.bounds()[1], hi)
+
+
+def test_near_plane_zero_draws_as_a_positive_near_does():
+    # WPF narrows near to the scene's depth span: NearPlaneDistance 0 draws the scene normally,
+    # the green quad in front of the red one, exactly as with the default 0.125
+    red_far = Model(quad(-2, -2, 2, 2, z=-1), (diffuse(RED),))
+    green_near = Model(quad(-1, -1, 1, 1, z=0), (diffuse(GREEN),))
+    pictures = []
+    for near in (0.0, 0.125):
+        cam = PerspectiveCamera(position=(0, 0, 6), near_plane_distance=near)
+        r = render([red_far, green_near], camera=cam, size=(16, 16))
+        assert r.diagnostics == []
+        pictures.append(r.rgba)
+    assert (pictures[0] == pictures[1]).all()
+    assert tuple(pictures[0][8, 8]) == (0, 255, 0, 255)
+    assert tuple(pictures[0][8, 4]) == (255, 0, 0, 255)

@@ -38,7 +38,10 @@ CAMERA_CODES: dict[str, tuple[str, str]] = {
     "CAM003": (ERROR, "UpDirection is parallel to LookDirection"),
     "CAM004": (ERROR, "FieldOfView is <= 0 or >= 180 degrees"),
     "CAM005": (ERROR, "perspective NearPlaneDistance < 0 (WPF draws nothing)"),
-    "CAM006": (ERROR, "perspective NearPlaneDistance = 0 (c = -near/far = 0, Mpp degenerate)"),
+    "CAM006": (
+        WARNING,
+        "no longer reported: NearPlaneDistance 0 is drawn as WPF draws it (CAM109 for z-fighting)",
+    ),
     "CAM007": (ERROR, "FarPlaneDistance <= NearPlaneDistance"),
     "CAM008": (ERROR, "NaN or infinite camera component (only FarPlaneDistance may be Infinity)"),
     "CAM009": (ERROR, "orthographic Width (or view height) <= 0"),
@@ -56,6 +59,10 @@ CAMERA_CODES: dict[str, tuple[str, str]] = {
     "CAM106": (WARNING, "FieldOfView very large (> 150 degrees)"),
     "CAM107": (WARNING, "the scene lies entirely outside the view volume"),
     "CAM108": (WARNING, "camera inside the scene's bounding box, its near plane cuts the scene"),
+    "CAM109": (
+        WARNING,
+        "perspective NearPlaneDistance 0 with the scene reaching the eye: depth z-fights",
+    ),
 }
 
 
@@ -198,8 +205,6 @@ def _check_projection_camera(camera, report: _Report) -> None:
             report("CAM106", f"FieldOfView {fov:g} degrees is very large: extreme distortion")
         if near_ok and near < 0.0:
             report("CAM005", f"NearPlaneDistance {near:g} < 0: WPF draws nothing")
-        elif near_ok and near == 0.0:
-            report("CAM006", "NearPlaneDistance is 0: c = -near/far = 0, depth is degenerate")
     else:
         width = float(camera.width)
         if not math.isfinite(width):
@@ -259,7 +264,16 @@ def _check_bounds(camera, width, height, bounds, report: _Report) -> None:
     eye = transform_points(camera.transform, np.asarray(camera.position, dtype=np.float64))[0]
     lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
     inside = bool(np.all(eye >= lo) and np.all(eye <= hi))
-    if inside and depth.min() < pipe.near < depth.max():
+    near_zero = pipe.kind == "perspective" and float(camera.near_plane_distance) == 0.0
+    if near_zero and not outside and float(depth.min()) <= pipe.near:
+        # WPF narrows near to the scene's nearest depth; a scene that reaches the eye leaves
+        # nothing to narrow to, and a depth buffer from 0 cannot tell its surfaces apart
+        report(
+            "CAM109",
+            "NearPlaneDistance is 0 and the scene reaches the eye: WPF's depth buffer cannot "
+            "resolve it (z-fighting); give a positive NearPlaneDistance such as 0.125",
+        )
+    elif inside and depth.min() < pipe.near < depth.max():
         report(
             "CAM108",
             f"the camera at {tuple(float(c) for c in eye)} is inside the scene's bounding box "
