@@ -441,3 +441,27 @@ def test_a_collection_written_as_a_property_element_is_pointed_at(tmp_path):
     assert [r[:4] for r in _rows(p.stdout) if r[3].startswith("MSH")] == [
         (11, 15, "warning", "MSH001")
     ]
+
+
+# --------------------------------------------------------------------------- empty viewports
+
+
+def test_zero_width_viewport_loads_with_warnings_located_at_the_viewport(tmp_path):
+    # WPF loads Width="0" and draws nothing: LAY001 says so (a warning), no CAM010 error; the
+    # default camera WPF supplies has no place in the markup, so CAM103 points at the viewport
+    scene = tmp_path / "w0.xaml"
+    scene.write_text(f"""<Grid {NS}>
+  <Viewport3D Width="0" Height="30">
+    <ModelVisual3D/>
+  </Viewport3D>
+</Grid>
+""")
+    p = xaml3d("validate", scene)
+    assert p.returncode == 0, p.stdout
+    assert _rows(p.stdout, "LAY001")[0][:3] == (2, 3, "warning")
+    assert _rows(p.stdout, "CAM103") == [
+        (2, 3, "warning", "CAM103",
+         "no camera given: WPF uses its default PerspectiveCamera (at 0,0,0 looking down -z, "
+         "FieldOfView 45)")
+    ]  # fmt: skip
+    assert b"CAM010" not in p.stdout
