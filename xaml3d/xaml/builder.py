@@ -28,6 +28,7 @@ from xaml3d.scene.types import (
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
 from xaml3d.xaml.brushes_reader import material
+from xaml3d.xaml.content_check import check_content
 from xaml3d.xaml.context import (
     ReadContext,
     a_an,
@@ -342,6 +343,7 @@ def build_scene(
     if frame is None:
         check_names(ctx, doc.root)
         check_styles(ctx, resources, doc.root)
+        check_content(ctx, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)

@@ -37,6 +37,7 @@ from xaml3d.xaml.struct_values import (
 )
 
 NULL = object()  # an explicit {x:Null}
+
 _COLLECTION_KINDS = ("collection",)
 _SILENT_X = {"Key", "Name", "Shared", "Uid", "FieldModifier", "ClassModifier", "Subclass"}
 

@@ -365,6 +365,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML020": (ERROR, "the same name given to two elements of one namescope"),
     "XAML021": (ERROR, "element with no XML namespace (the xmlns declaration is missing)"),
     "XAML022": (ERROR, "a Style whose TargetType does not match the element it is set on"),
+    "XAML023": (ERROR, "text inside an element whose content is a collection of objects"),
     "RES001": (ERROR, "StaticResource key not found"),
     "RES002": (ERROR, "StaticResource used before its definition"),
     "RES003": (ERROR, "resource reference cycle"),
