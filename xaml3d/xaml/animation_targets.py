@@ -58,6 +58,10 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         "animation that never has an effect (BeginTime {x:Null}, or a zero-length active period)",
     ),  # fmt: skip
     "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
+    "ANIM020": (
+        WARNING,
+        "animation target on an object of another assembly (clr-namespace): not evaluated",
+    ),  # fmt: skip
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
     "ANIM012": (
         WARNING,
@@ -128,7 +132,8 @@ def name_map(root) -> dict[str, object]:
     """x:Name / Name -> element, first in document order."""
     out: dict[str, object] = {}
     for el in root.iter():
-        if isinstance(el.tag, str) and is_presentation(qname(el.tag)[0]):
+        # elements of other assemblies (clr-namespace) are in the namescope too
+        if isinstance(el.tag, str):
             n = element_name(el)
             if n and n not in out:
                 out[n] = el
@@ -187,6 +192,12 @@ def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: st
         raise TargetError("ANIM001", f"Storyboard.TargetName {target_name!r} names no object")
     steps = parse_path(path)
     for n, (prop, _owner, indices) in enumerate(steps):
+        if not is_presentation(qname(el.tag)[0]):
+            # WPF animates it through that assembly's own properties, which xaml3d cannot see
+            shown = f"{el.prefix}:{qname(el.tag)[1]}" if el.prefix else qname(el.tag)[1]
+            raise TargetError(
+                "ANIM020", f"{shown} is a type of another assembly: its animation is not evaluated"
+            )
         et = voc.lookup(qname(el.tag)[1])
         tname = qname(el.tag)[1]
         if et is None or (not et.open and prop not in et.properties):

@@ -333,6 +333,18 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
+def _foreign_viewport(root) -> str | None:
+    """The prefixed name of the first element of a non-WPF namespace whose name ends in
+    Viewport3D (h:HelixViewport3D), or None."""
+    for el in root.iter():
+        if not isinstance(el.tag, str):
+            continue
+        ns, local = qname(el.tag)
+        if ns is not None and not is_presentation(ns) and local.endswith("Viewport3D"):
+            return f"{el.prefix}:{local}" if el.prefix else local
+    return None
+
+
 def build_scene(
     ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None, frame=None
 ) -> Scene:
@@ -354,7 +366,16 @@ def build_scene(
             msg = f"{a_an(root)} holds no Viewport3D: nothing to render (use it with -r)"
             ctx.diag("SCN013", msg, doc.root)
         elif ns is not None:  # else XAML021 says why nothing could be read
-            ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
+            msg = "the document holds no Viewport3D: nothing to render"
+            other = _foreign_viewport(doc.root)
+            if other is not None:
+                # a toolkit's viewport control (Helix Toolkit's HelixViewport3D ...): WPF loads
+                # it with that assembly; its own visuals are that toolkit's, not WPF's
+                msg += (
+                    f" ({other} is a control of another assembly; xaml3d draws WPF's own "
+                    "Viewport3D only)"
+                )
+            ctx.diag("SCN001", msg, doc.root)
 
     storyboards: list = []
     begun: set[int] = set()
