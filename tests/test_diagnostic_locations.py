@@ -465,3 +465,32 @@ def test_zero_width_viewport_loads_with_warnings_located_at_the_viewport(tmp_pat
          "FieldOfView 45)")
     ]  # fmt: skip
     assert b"CAM010" not in p.stdout
+
+
+def test_conformance_gathered_files_section(tmp_path):
+    # --sources: each gathered file validated, its row kept in tools/conformance_sources.tsv and
+    # the "Gathered files" section of conformance.md rewritten; a full run keeps that section
+    import importlib.util
+
+    from conftest import ROOT
+
+    spec = importlib.util.spec_from_file_location("conformance", ROOT / "tools" / "conformance.py")
+    conformance = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(conformance)
+    (tmp_path / "ok.xaml").write_text(_mesh_scene(MESH, RED))
+    (tmp_path / "text.xaml").write_text(f"<Viewport3D {NS}>stray words</Viewport3D>")
+    (tmp_path / "manifest.tsv").write_text(
+        "o/r\ta/ok.xaml\t" + "1" * 40 + "\tok.xaml\tloads\n"
+        "o/r\ta/text.xaml\t" + "2" * 40 + "\ttext.xaml\trefuses: text inside Viewport3D\n"
+    )
+    rows = conformance.gather_sources(tmp_path)
+    assert [r[4] for r in rows] == ["loads with warnings", "refused"]
+    assert rows[1][5] == "XAML023"
+    page = conformance.with_sources("# Real-world conformance\n\nbody\n", rows)
+    assert page.startswith("# Real-world conformance\n\nbody\n\n## Gathered files\n")
+    assert "agrees with WPF's for 2 of 2" in page
+    assert (
+        "| o/r | `a/text.xaml` | 222222222222 | refuses: text inside Viewport3D | refused |" in page
+    )
+    # a second pass replaces the section instead of adding another
+    assert conformance.with_sources(page, rows[:1]).count("## Gathered files") == 1

@@ -4,7 +4,7 @@ a viewport reaches; WPF parses every element): covers the closed 3D, brush and t
 - Text inside an element whose content property is a collection of objects (Viewport3D,
   ModelVisual3D, Model3DGroup, MaterialGroup, Transform3DGroup ...): XAML023, as WPF cannot add
   a string to such a collection.
-- An item of another kind in a collection of Materials, Transform3Ds, Transforms or
+- An item of another kind in a collection of Materials, Transforms or
   GradientStops ("<PerspectiveCamera/>" inside a MaterialGroup): XAML013. Model3Ds and
   Visual3Ds are checked where the builder reads them (SCN008), timelines by the storyboard reader.
 - A property element whose owner is neither the element's type nor one of its base types
@@ -35,7 +35,7 @@ _ITEMS = {
     "action[]": (("action",), "TriggerAction"),
 }
 # collections whose items this module checks (the others are checked where they are built)
-_ITEM_CHECKED = {"material[]", "transform3d[]", "transform2d[]", "gradientstop[]"}
+_ITEM_CHECKED = {"material[]", "transform2d[]", "gradientstop[]"}
 _COMMON_BASES = ("DependencyObject", "Freezable", "Animatable", "DispatcherObject")
 # element kind -> WPF base types that may own its property elements (<Model3D.Transform>)
 _BASES = {
