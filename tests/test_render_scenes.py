@@ -314,3 +314,31 @@ def test_near_plane_zero_draws_as_a_positive_near_does():
     assert (pictures[0] == pictures[1]).all()
     assert tuple(pictures[0][8, 8]) == (0, 255, 0, 255)
     assert tuple(pictures[0][8, 4]) == (255, 0, 0, 255)
+
+
+def test_missing_image_checker_shows_under_additive_materials():
+    # Two emissive squares one behind the other, both with the grey checker that stands in for
+    # a missing image: added up they would saturate to white. The stand-in is drawn as it is
+    # (opaque, unlit, nearest wins), so exactly the checker's greys 128 and 192 show, whatever
+    # the material (Emissive, Specular) and whatever lies behind.
+    from xaml3d.scene.types import placeholder_image
+
+    checker = ImageBrush(image=placeholder_image(), is_placeholder=True)
+    tc = [(0, 1), (1, 1), (1, 0), (0, 0)]
+    for material in (EmissiveMaterial(brush=checker), SpecularMaterial(brush=checker)):
+        back = Model(quad(-2, -2, 2, 2, z=-1, tc=tc), (material,))
+        front = Model(quad(-2, -2, 2, 2, z=0, tc=tc), (material,))
+        # 64 x 64 pixels: the square covers pixels 16..47, 4 pixels per checker cell
+        r = render([back, front], size=(64, 64))
+        inside = r.rgba[16:48, 16:48]
+        assert (inside[..., 3] == 255).all() and (inside[..., :3] <= 192).all()
+        assert tuple(inside[1, 1]) == (192, 192, 192, 255)  # the first cell: light grey
+        assert tuple(inside[1, 5]) == (128, 128, 128, 255)  # the next one: dark grey
+        assert (r.rgba[0, 0] == 0).all()  # around the squares: the background
+    # a found image under an Emissive material still adds (WPF's blend)
+    real = ImageBrush(image=placeholder_image())
+    glow = (EmissiveMaterial(brush=real),)
+    r = render(
+        [Model(quad(-2, -2, 2, 2, z=-1, tc=tc), glow), Model(quad(-2, -2, 2, 2, tc=tc), glow)]
+    )
+    assert (r.rgba[2:6, 2:6, :3] == 255).all()

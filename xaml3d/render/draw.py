@@ -38,10 +38,10 @@ from xaml3d.render import accel
 from xaml3d.render.brushes import brush_average, brush_bounds, brush_is_uniform, sample_brush
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import Framebuffer
-from xaml3d.render.lighting import prepare_lights, shade_vertices
+from xaml3d.render.lighting import PreparedLights, prepare_lights, shade_vertices
 from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
 from xaml3d.scene.transforms import normal_matrix
-from xaml3d.scene.types import DiffuseMaterial, Model
+from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
 
 _EYE3 = np.eye(3)
 KEEP_BYTES = 192 << 20  # fragments kept between the passes of a multi-pass material
@@ -225,6 +225,10 @@ def _face_geometry(pm: PreparedModel, tris: np.ndarray) -> tuple[np.ndarray, np.
     return centroid, _unit_rows(n)
 
 
+# white ambient light only: a DiffuseMaterial then shows its brush exactly (the stand-in checker)
+_UNLIT = PreparedLights(ambient=np.ones(3))
+
+
 class PassShader:
     """Colours of one material pass for given fragments (shaded: Gouraud, flat: per face)."""
 
@@ -236,6 +240,18 @@ class PassShader:
         self.mat = mat
         self.indices = pm.model.mesh.indices
         self.flat = flat
+        # The grey checker standing in for a missing image is drawn as it is, opaque and
+        # unlit, whatever the material: added by an Emissive or Specular pass it would sum
+        # with what lies behind and saturate to white, and the promised checker would not show.
+        brush = mat.brush
+        self.standin = (
+            isinstance(brush, ImageBrush)
+            and brush.is_placeholder
+            and not isinstance(mat, DiffuseMaterial)
+        )
+        if self.standin:
+            mat = DiffuseMaterial(brush=brush)
+            lights = _UNLIT
         if flat:
             centroid, n = faces
             self.colors = np.zeros((self.indices.shape[0], 4))
@@ -298,8 +314,8 @@ def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.
     return out
 
 
-def _blend(fb: Framebuffer, mat, frag: Fragments, col: np.ndarray) -> None:
-    if isinstance(mat, DiffuseMaterial):
+def _blend(fb: Framebuffer, shader: PassShader, frag: Fragments, col: np.ndarray) -> None:
+    if shader.standin or isinstance(shader.mat, DiffuseMaterial):
         fb.over(frag.pixel, frag.depth, col)
     else:
         fb.add(frag.pixel, frag.depth, col)
@@ -358,18 +374,18 @@ def draw_model(
         kept: list[Fragments] | None = [] if len(shaders) > 1 else None
         size = 0
         for frag in frags:
-            _blend(fb, passes[0], frag, shaders[0](frag))
+            _blend(fb, shaders[0], frag, shaders[0](frag))
             if kept is not None:
                 kept.append(frag)
                 size += _nbytes(frag)
                 if size > KEEP_BYTES:
                     kept = None
-        for mat, shader in zip(passes[1:], shaders[1:], strict=True):
+        for shader in shaders[1:]:
             again = kept if kept is not None else side_fragments(
                 pm, tris, ctx, weights=need_weights, passes=len(shaders)
             )  # fmt: skip
             for frag in again:
-                _blend(fb, mat, frag, shader(frag))
+                _blend(fb, shader, frag, shader(frag))
 
 
 def _nbytes(frag: Fragments) -> int:
