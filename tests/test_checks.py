@@ -310,3 +310,48 @@ def test_chk008_only_where_the_brush_is_sampled_at_one_point():
     assert "the DrawingBrush of" in chk008("<DrawingBrush/>")[0]
     assert "the VisualBrush of" in chk008("<VisualBrush/>")[0]
     assert "the ImageBrush of" in chk008('<ImageBrush ImageSource="none.png"/>')[0]
+
+
+def test_camera_inside_a_closed_or_emissive_model():
+    # CHK009: from inside a closed cube (8 shared vertices, or 24 written per face: welded by
+    # position) or inside the box of an emissive model, that model fills the view
+    from xaml3d.scene.checks import CHECK_CODES, check_viewport, is_closed
+    from xaml3d.scene.types import (
+        DiffuseMaterial,
+        EmissiveMaterial,
+        Mesh,
+        Model,
+        PerspectiveCamera,
+        SolidColorBrush,
+        Viewport,
+        frozen_array,
+    )
+
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], float)
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    tris = [(a, b, c) for q in faces for (a, b, c) in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))]
+
+    def mesh(pos, idx):
+        pos = frozen_array(pos)
+        idx = frozen_array(np.asarray(idx).reshape(-1, 3), np.int64)
+        zeros = frozen_array(np.zeros_like(pos))
+        return Mesh(pos, idx, zeros, frozen_array(np.zeros((len(pos), 2))))
+
+    shared = mesh(corners, tris)
+    per_face = mesh(corners[[i for q in faces for i in q]],
+                    [(4 * f + a, 4 * f + b, 4 * f + c) for f in range(6)
+                     for a, b, c in ((0, 1, 2), (0, 2, 3))])  # fmt: skip
+    open_box = mesh(corners, tris[:-2])  # one face missing
+    assert is_closed(shared) and is_closed(per_face) and not is_closed(open_box)
+    red = (DiffuseMaterial(brush=SolidColorBrush((1.0, 0.0, 0.0, 1.0))),)
+    glow = (EmissiveMaterial(brush=SolidColorBrush((1.0, 0.0, 0.0, 1.0))),)
+    inside = PerspectiveCamera(position=(0, 0, 0.5), line=7, column=3)
+
+    def codes(mesh_, material, camera=inside):
+        vp = Viewport(0, None, 40, 30, "test", camera, (Model(mesh_, material),), ())
+        return [(d.code, d.line) for d in check_viewport(vp) if d.code == "CHK009"]
+
+    assert codes(shared, red) == [("CHK009", 7)] and codes(per_face, red) == [("CHK009", 7)]
+    assert codes(open_box, red) == [] and codes(open_box, glow) == [("CHK009", 7)]
+    assert codes(shared, red, PerspectiveCamera(position=(0, 0, 5))) == []  # outside
+    assert CHECK_CODES["CHK009"][0] == "warning"

@@ -342,3 +342,14 @@ def test_missing_image_checker_shows_under_additive_materials():
         [Model(quad(-2, -2, 2, 2, z=-1, tc=tc), glow), Model(quad(-2, -2, 2, 2, tc=tc), glow)]
     )
     assert (r.rgba[2:6, 2:6, :3] == 255).all()
+
+
+def test_an_image_of_one_colour_is_reported():
+    # RND009: something was drawn, yet every pixel has the same colour (the quad fills the view)
+    r = render([Model(quad(-5, -5, 5, 5), (diffuse(RED),))])
+    assert (r.rgba == (255, 0, 0, 255)).all()
+    (d,) = r.diagnostics
+    assert d.code == "RND009" and d.severity == "warning"
+    assert d.message.startswith("every pixel of the image is #FFFF0000:")
+    assert "--fit" in d.message and "--background" in d.message
+    assert render([Model(quad(-2, -2, 2, 2), (diffuse(RED),))]).diagnostics == []

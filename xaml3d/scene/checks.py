@@ -41,6 +41,10 @@ CHECK_CODES: dict[str, tuple[str, str]] = {
         WARNING,
         "a brush that varies over the surface on a mesh without TextureCoordinates: one colour",
     ),
+    "CHK009": (
+        WARNING,
+        "the camera is inside a closed or emissive model: it fills the view (try --fit)",
+    ),
 }
 
 
@@ -246,6 +250,57 @@ def _not_seen(vp: Viewport, file: str | None) -> Diagnostic:
     )
 
 
+def is_closed(mesh) -> bool:
+    """Whether every edge of the mesh is shared by exactly two of its triangles (a watertight
+    surface: seen from inside, it is all there is to see)."""
+    idx = mesh.indices
+    if idx.shape[0] == 0:
+        return False
+    # vertices at the same place are one (a cube written with 4 vertices per face is closed)
+    _, weld = np.unique(mesh.positions, axis=0, return_inverse=True)
+    idx = weld.reshape(-1)[idx]
+    edges = np.sort(np.concatenate([idx[:, [0, 1]], idx[:, [1, 2]], idx[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool(np.all(counts == 2))
+
+
+def _check_inside(vp: Viewport, file: str | None) -> list[Diagnostic]:
+    """CHK009: the eye inside the bounding box of a closed or emissive model. From inside a
+    closed mesh its back faces fill the view; an emissive one adds its glow over everything
+    seen through it: the picture is that model, often one colour."""
+    cam = vp.camera
+    if cam is None or not hasattr(cam, "position"):
+        return []
+    from xaml3d.scene.transforms import transform_points
+
+    models = [m for m in vp.models if m.mesh.triangle_count > 0]
+    if not models:
+        return []
+    with np.errstate(all="ignore"):
+        eye = transform_points(cam.transform, np.asarray(cam.position, dtype=np.float64))[0]
+        points = world_vertices(vp)
+        starts = np.cumsum([0] + [m.mesh.positions.shape[0] for m in models[:-1]])
+        lo = np.minimum.reduceat(points, starts, axis=0)
+        hi = np.maximum.reduceat(points, starts, axis=0)
+        inside = np.flatnonzero(np.all((lo <= eye) & (eye <= hi), axis=1))
+    for k in inside:  # few: the models whose box holds the eye
+        model = models[int(k)]
+        glows = any(isinstance(p, EmissiveMaterial) for p in model.material + model.back_material)
+        if not (glows or is_closed(model.mesh)):
+            continue
+        what = "an emissive material" if glows else "a closed mesh"
+        index = vp.models.index(model)
+        msg = (
+            f"the camera of viewport {vp.index} is inside {_label(model, index)} ({what}): "
+            "it fills the view from inside, so the picture may be that model alone or one "
+            "colour; render with --fit to move the camera out of the scene, or with "
+            "--background to tell the model from the background"
+        )
+        located = getattr(cam, "line", None) is not None
+        return [_diag("CHK009", msg, file, cam if located else vp)]
+    return []
+
+
 def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     """Every scene-level finding for one viewport (its models, lights and camera coverage)."""
     out: list[Diagnostic] = []
@@ -257,6 +312,7 @@ def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
         out.extend(_check_model(model, i, file))
     out.extend(_check_lights(vp, file))
     out.extend(_check_visibility(vp, file))
+    out.extend(_check_inside(vp, file))
     return out
 
 
