@@ -286,11 +286,18 @@ def test_varying_brush_without_texture_coordinates_is_chk008(tmp_path):
     p = xaml3d("validate", "s.xaml", cwd=tmp_path)
     assert p.returncode == 0
     assert [ln for ln in p.stdout.decode().splitlines() if " info " not in ln] == [
-        "s.xaml:4:3: warning CHK008 the LinearGradientBrush of model #0 is drawn in one colour, "
-        "as in WPF: it has no TextureCoordinates (WPF takes 0,0 for each vertex), so the brush "
-        "is sampled at that one point; give the mesh TextureCoordinates spread over the surface "
+        "s.xaml:4:3: warning CHK008 the LinearGradientBrush of model #0 draws nothing, as in "
+        "WPF: it has no TextureCoordinates (WPF takes 0,0 for each vertex), so the brush is "
+        "mapped onto an empty box; give the mesh TextureCoordinates spread over the surface "
         "(e.g. 0,1 1,1 1,0 0,0 for a quad)"
     ]
+    # and nothing is drawn, as a capture of WPF shows (the gradient triangle leaves it empty)
+    p = xaml3d("render", "s.xaml", "-o", "s.png", cwd=tmp_path)
+    assert p.returncode == 0 and b"RND002" in p.stderr
+    from PIL import Image
+
+    with Image.open(tmp_path / "s.png") as im:
+        assert im.getextrema()[3] == (0, 0)  # every pixel transparent
 
 
 def test_chk008_only_where_the_brush_is_sampled_at_one_point():

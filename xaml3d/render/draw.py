@@ -40,6 +40,7 @@ from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.lighting import PreparedLights, prepare_lights, shade_vertices
 from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
+from xaml3d.scene.checks import unmapped
 from xaml3d.scene.transforms import normal_matrix
 from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
 
@@ -345,12 +346,14 @@ def draw_model(
     ``lights``: the prepared lights, or a callable returning them (called only when a side
     must be lit). ``shading``/``key``: the cache and this model's position in it."""
     flat = mode == "flat"
+    mesh = pm.model.mesh
     sides = (
         (pm.model.back_material, pm.back, -1.0),
         (pm.model.material, pm.front, 1.0),
     )
     for passes, mask, sign in sides:
-        passes = [p for p in passes if p.brush is not None]
+        # a varying brush on a mesh without texture coordinates: WPF draws nothing (CHK008)
+        passes = [p for p in passes if p.brush is not None and not unmapped(p.brush, mesh)]
         tris = np.flatnonzero(mask)
         if not passes or tris.size == 0:
             continue

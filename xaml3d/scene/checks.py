@@ -39,7 +39,7 @@ CHECK_CODES: dict[str, tuple[str, str]] = {
     "CHK007": (INFO, "only ambient light: every surface is lit flat, without shading"),
     "CHK008": (
         WARNING,
-        "a brush that varies over the surface on a mesh without TextureCoordinates: one colour",
+        "a brush that varies over the surface on a mesh without TextureCoordinates: nothing drawn",
     ),
     "CHK009": (
         WARNING,
@@ -111,17 +111,30 @@ def _varies(brush) -> bool:
     return isinstance(brush, _VARYING)
 
 
+def unmapped(brush, mesh) -> bool:
+    """Whether WPF draws nothing for a pass of ``brush`` on ``mesh``: a gradient, image,
+    visual or drawing brush on a mesh whose texture coordinates are all one point (none
+    given: WPF takes 0,0 for each vertex). Their bounding box, which the brush is mapped
+    onto, is then empty: a real capture of WPF shows nothing drawn (a RadialGradientBrush
+    triangle under white ambient light leaves the viewport empty)."""
+    if not _varies(brush):
+        return False
+    uv = mesh.texcoords
+    return not (uv.shape[0] and np.ptp(uv, axis=0).any())
+
+
 def _check_texture_coordinates(model: Model, label: str, file: str | None) -> list[Diagnostic]:
     """CHK008: a gradient, image, visual or drawing brush on a mesh whose texture coordinates
     are all one point (none given: WPF uses (0,0) for each vertex, wpf3d.md section 5) is
-    sampled at that point only: the whole surface takes one colour, in WPF as here."""
+    mapped onto an empty box: WPF draws nothing for that pass, and neither does the renderer
+    (``unmapped``)."""
     mesh = model.mesh
     if mesh.triangle_count == 0 or "TextureCoordinates" in mesh.rejected:
         return []
     uv = mesh.texcoords
-    if uv.shape[0] and np.ptp(uv, axis=0).any():
-        return []
-    brush = next((p.brush for p in model.material + model.back_material if _varies(p.brush)), None)
+    brush = next(
+        (p.brush for p in model.material + model.back_material if unmapped(p.brush, mesh)), None
+    )
     if brush is None:
         return []
     kind = brush.kind if isinstance(brush, PlaceholderBrush) else type(brush).__name__
@@ -129,8 +142,8 @@ def _check_texture_coordinates(model: Model, label: str, file: str | None) -> li
         reason = f"all its TextureCoordinates are the point {uv[0, 0]:g},{uv[0, 1]:g}"
     else:
         reason = "it has no TextureCoordinates (WPF takes 0,0 for each vertex)"
-    msg = (f"the {kind} of {label} is drawn in one colour, as in WPF: {reason}, so the brush is "
-           "sampled at that one point; give the mesh TextureCoordinates spread over the "
+    msg = (f"the {kind} of {label} draws nothing, as in WPF: {reason}, so the brush is "
+           "mapped onto an empty box; give the mesh TextureCoordinates spread over the "
            "surface (e.g. 0,1 1,1 1,0 0,0 for a quad)")  # fmt: skip
     return [_diag("CHK008", msg, file, model if model.line is not None else mesh)]
 
