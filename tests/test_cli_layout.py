@@ -136,3 +136,15 @@ def test_validate_reports_an_empty_layout_as_a_warning(tmp_path):
     assert p.returncode == 0 and "warning LAY001" in found and "CAM010" not in found
     p = xaml3d("validate", "s.xaml", "--strict", cwd=tmp_path)
     assert p.returncode == 1
+
+
+def test_window_usage_error_names_only_the_options_given(tmp_path):
+    src = REF / "grid-toolbar-row.xaml"
+    out = tmp_path / "x.png"
+    for args, said in (
+        (("--fit",), b"--fit applies to one viewport, not to --window"),
+        (("--scale", "2"), b"--scale applies to one viewport, not to --window"),
+        (("--scale", "2", "--fit"), b"--scale and --fit apply to one viewport, not to --window"),
+    ):
+        p = xaml3d("render", src, "-o", out, "--window", *args)
+        assert p.returncode == 2 and said in p.stderr, (args, p.stderr)
