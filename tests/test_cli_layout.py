@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pytest
 from PIL import Image
 from test_cli_subprocess import xaml3d
 
@@ -148,3 +149,42 @@ def test_window_usage_error_names_only_the_options_given(tmp_path):
     ):
         p = xaml3d("render", src, "-o", out, "--window", *args)
         assert p.returncode == 2 and said in p.stderr, (args, p.stderr)
+
+
+WINDOW = '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" {}>{}</Window>'
+
+
+@pytest.mark.parametrize(
+    "size, said",
+    [
+        ('Width="100000" Height="100000"', b"window client area 99984 x 99961 exceeds the limit"),
+        ('Width="1e308" Height="100"', b"window client area 1e+308 x 61 exceeds the limit"),
+    ],
+)
+def test_window_has_the_size_limits_of_a_plain_render(tmp_path, size, said):
+    # no 149 GiB canvas, no traceback: RND001 as a plain render says it, nothing written
+    src = tmp_path / "w.xaml"
+    src.write_text(WINDOW.format(size, "<Viewport3D/>"))
+    for lenient in ((), ("--lenient",)):
+        p = xaml3d("render", src, "-o", tmp_path / "w.png", "--window", *lenient)
+        assert p.returncode == 1 and b"error RND001 " + said in p.stderr, p.stderr
+        assert b"Traceback" not in p.stderr and not (tmp_path / "w.png").exists()
+
+
+def test_window_with_elements_placed_at_huge_offsets(tmp_path):
+    # Canvas.Top="1e308" (and an infinite extent) puts an element far outside: it is not drawn,
+    # no OverflowError; what is inside the window still is
+    src = tmp_path / "w.xaml"
+    body = (
+        '<Canvas><Border Canvas.Top="1e308" Width="50" Height="1e308" Background="Red"/>'
+        '<Border Canvas.Left="-1e308" Width="1e308" Height="50" Background="Red"/>'
+        '<Viewport3D Canvas.Top="1e308" Width="50" Height="1e308"/>'
+        '<Border Canvas.Left="10" Canvas.Top="10" Width="20" Height="20" Background="Blue"/>'
+        "</Canvas>"
+    )
+    src.write_text(WINDOW.format('Width="100" Height="100"', body))
+    p = xaml3d("render", src, "-o", tmp_path / "w.png", "--window", "--outline-controls")
+    assert p.returncode == 0 and b"Traceback" not in p.stderr, p.stderr
+    with Image.open(tmp_path / "w.png") as im:
+        assert im.getpixel((20, 20)) == (0, 0, 255, 255)
+        assert im.getpixel((5, 5)) == (255, 255, 255, 255)  # the window's white, no red

@@ -80,7 +80,7 @@ def _resolve_size(vp, width, height, max_size: int) -> tuple[int, int]:
         raise RenderError(f"image size {w} x {h} is empty (width and height must be >= 1)")
     if w > max_size or h > max_size:
         raise RenderError(
-            f"image size {w} x {h} exceeds the limit of {max_size} pixels per side "
+            f"image size {w:g} x {h:g} exceeds the limit of {max_size} pixels per side "
             "(raise max_size to allow it)",
             code="RND001",
         )

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from xaml3d.errors import Diagnostic
+from xaml3d.errors import Diagnostic, RenderError
 from xaml3d.layout.tree import BORDER, CONTROL, VIEWPORT, WINDOW, Node
 from xaml3d.render.brushes import sample_brush
 from xaml3d.render.frame import straight_uint8
@@ -26,13 +26,42 @@ from xaml3d.scene.types import Scene, SolidColorBrush
 
 WINDOW_BACKGROUND = SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0))
 OUTLINE = (0.0, 120 / 255, 215 / 255, 1.0)  # the Windows accent blue, premultiplied (opaque)
+MAX_WINDOW_SIDE = 16384  # pixels per side, as a plain render's default max_size
+
+
+def _clamped(v: float, limit: int) -> float:
+    """``v`` within [-1, limit + 1]: the same pixels, and never an infinite or huge number
+    (a Canvas.Top of 1e308 puts an element far outside, not into an OverflowError)."""
+    return min(max(v, -1.0), limit + 1.0) if not math.isnan(v) else -1.0
 
 
 def _span(a: float, length: float, limit: int) -> tuple[int, int]:
     """Pixels [i0, i1) whose centres lie in [a, a + length)."""
-    i0 = max(0, math.ceil(a - 0.5))
-    i1 = min(limit, math.ceil(a + length - 0.5))
+    i0 = max(0, math.ceil(_clamped(a - 0.5, limit)))
+    i1 = min(limit, math.ceil(_clamped(a + length - 0.5, limit)))
     return i0, max(i0, i1)
+
+
+def client_pixels(client, max_size: int = MAX_WINDOW_SIDE) -> tuple[int, int]:
+    """The picture's size for a client area of ``client`` (width, height), with the limits of
+    a plain render: RND001 past ``max_size`` pixels per side or MAX_SUPERSAMPLED_PIXELS."""
+    from xaml3d.render.api import MAX_SUPERSAMPLED_PIXELS
+
+    cw, ch = (float(v) for v in client)
+    if not (math.isfinite(cw) and math.isfinite(ch)) or cw > max_size or ch > max_size:
+        raise RenderError(
+            f"window client area {cw:g} x {ch:g} exceeds the limit of {max_size} pixels per "
+            "side (lower --window-size, or render one viewport)",
+            code="RND001",
+        )
+    w, h = max(1, round(cw)), max(1, round(ch))
+    if w * h > MAX_SUPERSAMPLED_PIXELS:
+        raise RenderError(
+            f"window client area {w} x {h} is over the limit of {MAX_SUPERSAMPLED_PIXELS} "
+            "pixels (lower --window-size)",
+            code="RND001",
+        )
+    return w, h
 
 
 def _over(canvas: np.ndarray, y0: int, x0: int, premul: np.ndarray) -> None:
@@ -44,6 +73,8 @@ def _over(canvas: np.ndarray, y0: int, x0: int, premul: np.ndarray) -> None:
 
 def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     x, y, w, h = rect
+    if not all(math.isfinite(float(v)) for v in rect):
+        return  # a box at or of infinite extent: WPF's layout never arranges one on screen
     H, W = canvas.shape[:2]
     c0, c1 = _span(x, w, W)
     r0, r1 = _span(y, h, H)
@@ -86,6 +117,8 @@ def _inner(n: Node):
 
 def _outline(canvas: np.ndarray, rect) -> None:
     x, y, w, h = rect
+    if not all(math.isfinite(float(v)) for v in rect):
+        return
     H, W = canvas.shape[:2]
     c0, c1 = _span(x, w, W)
     r0, r1 = _span(y, h, H)
@@ -96,6 +129,17 @@ def _outline(canvas: np.ndarray, rect) -> None:
     canvas[r1 - 1, c0:c1] = color
     canvas[r0:r1, c0] = color
     canvas[r0:r1, c1 - 1] = color
+
+
+def _overlaps(rect, W: int, H: int) -> bool:
+    """Whether a laid-out box (finite) covers part of the client area: a viewport wholly
+    outside it is not rendered (nothing of it would show)."""
+    x, y, w, h = (float(v) for v in rect)
+    if not all(math.isfinite(v) for v in (x, y, w, h)):
+        return False
+    c0, c1 = _span(x, w, W)
+    r0, r1 = _span(y, h, H)
+    return c1 > c0 and r1 > r0
 
 
 def compose_window(
@@ -117,8 +161,7 @@ def compose_window(
     scene = scene_at(scene, time, storyboard)
 
     result = scene.layout
-    W = max(1, round(result.client[0]))
-    H = max(1, round(result.client[1]))
+    W, H = client_pixels(result.client)
     canvas = np.zeros((H, W, 4), dtype=np.float32)
     if background is not None:
         bg = np.array(background, dtype=np.float32)
@@ -138,7 +181,7 @@ def compose_window(
         if brush is not None:
             # a Border paints its Background inside the border band (its brush maps there)
             _fill(canvas, _inner(n) if n.kind == BORDER else n.rect, brush)
-        if n.kind == VIEWPORT:
+        if n.kind == VIEWPORT and _overlaps(n.rect, W, H):
             w, h = round(n.rect[2]), round(n.rect[3])
             if w >= 1 and h >= 1:
                 r = render_arrays(
