@@ -250,7 +250,20 @@ def _located(r, p) -> dict:
 
 
 def material(r, el) -> tuple:
-    """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order)."""
+    """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order). Built
+    once however many models share it, unless an animation frame may change it."""
+    shared = not r.overrides
+    if shared:
+        hit = r.cache.get(("material", id(el)))
+        if hit is not None and hit[0] is el:
+            return hit[1]
+    out = _material(r, el)
+    if shared:
+        r.cache["material", id(el)] = (el, out)  # the element kept: its id stays its own
+    return out
+
+
+def _material(r, el) -> tuple:
     p = r.props(el)
     t = p.type
     if t == "MaterialGroup":

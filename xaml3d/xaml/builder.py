@@ -68,7 +68,9 @@ class Reader:
         # an animation frame being built (xaml3d.xaml.animation_scene.Frame): animated values
         # by (element id, property), and what earlier frames built that animation cannot change
         self.overrides: dict = frame.overrides if frame is not None else {}
-        self.cache: dict | None = frame.cache if frame is not None else None
+        # what is built once however often it is used (a mesh resource shared by thousands of
+        # models, an image): kept across the frames of an animation, else for this build
+        self.cache: dict = frame.cache if frame is not None else {}
 
     def animated(self, el, prop: str, value):
         """The value of ``el``'s property ``prop`` in the frame being built."""
@@ -116,13 +118,15 @@ class Reader:
 
     def build_resource(self, entry, build, default, ref_el, attr=None):
         """Build a resource entry referred to from ``ref_el`` (its attribute ``attr``)."""
-        with self.ctx.building(entry) as ok:
-            if not ok:
-                key = x_attr(entry, "Key")
-                msg = f"resource {key!r} refers to itself (cycle)"
-                self.ctx.diag("RES003", msg, ref_el, attr=attr)
-                return default
+        if not self.ctx.enter_building(entry):
+            key = x_attr(entry, "Key")
+            msg = f"resource {key!r} refers to itself (cycle)"
+            self.ctx.diag("RES003", msg, ref_el, attr=attr)
+            return default
+        try:
             return self.build_node(entry, build, default)
+        finally:
+            self.ctx.leave_building()
 
 
 class _Acc:

@@ -26,7 +26,6 @@ from xaml3d.errors import ResourceError, XamlError
 from xaml3d.xaml.context import (
     ReadContext,
     as_written,
-    doc_position,
     ignorable_namespaces,
     is_presentation,
     markup_key,
@@ -161,6 +160,7 @@ class Resources:
         self.type_keys: set[str] = set()  # keys of the implicit Styles read so far
         # the references looked up so far: id(element) -> (element, its attributes)
         self._looked: dict[int, tuple[etree._Element, set[str | None]]] = {}
+        self._orders: dict[int, tuple] = {}  # id(root) -> (root, its elements, id -> index)
 
     # ----------------------------------------------------------------- dictionaries
     def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
@@ -355,6 +355,20 @@ class Resources:
                 return hit[0]
         return None
 
+    def _order(self, el: etree._Element) -> int:
+        """The element's place in its document's order: one walk of each document, kept (a
+        lookup is then O(1), not a walk up the tree counting siblings: thousands of
+        references to one resource stay linear)."""
+        root = el.getroottree().getroot()
+        table = self._orders.get(id(root))
+        hit = table[2].get(id(el)) if table is not None and table[0] is root else None
+        if hit is None:  # a document not walked yet (or an element added since)
+            elements = list(root.iter())  # held: the ids below stay those of these elements
+            table = (root, elements, {id(e): i for i, e in enumerate(elements)})
+            self._orders[id(root)] = table
+            hit = table[2][id(el)]
+        return hit
+
     def lookup(
         self, key: str, from_el: etree._Element, *, dynamic: bool = False, attr: str | None = None
     ) -> etree._Element | None:
@@ -367,7 +381,7 @@ class Resources:
         system = key.lstrip().startswith("{")  # {x:Static SystemColors...Key}, {x:Type T}...
         if system and is_type_key(key):
             key = type_key(key)  # an implicit Style's key, as the dictionaries store it
-        here = doc_position(from_el)
+        here = self._order(from_el)
         later = None
         unavailable: list[str] = []  # assemblies of merged dictionaries in scope not read
         node = from_el
@@ -378,7 +392,7 @@ class Resources:
                 hit = d.find(key)
                 if hit is not None:
                     entry, local = hit
-                    if dynamic or not local or doc_position(entry) < here:
+                    if dynamic or not local or self._order(entry) < here:
                         return entry
                     later = later or entry
             node = node.getparent()
