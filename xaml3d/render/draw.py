@@ -82,10 +82,13 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
         return None
     world = np.asarray(model.world, dtype=np.float64)
     view = np.asarray(pipeline.view_matrix, dtype=np.float64)
-    mv = view @ world
-    pos = mesh.positions
-    clip = pos @ (pipeline.clip_matrix @ world)[:, :3].T + (pipeline.clip_matrix @ world)[:, 3]
-    vpos = pos @ mv[:3, :3].T + mv[:3, 3]  # world and view are affine
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        # coordinates out of range come out infinite or NaN here: checked just below
+        mv = view @ world
+        pos = mesh.positions
+        to_clip = pipeline.clip_matrix @ world
+        clip = pos @ to_clip[:, :3].T + to_clip[:, 3]
+        vpos = pos @ mv[:3, :3].T + mv[:3, 3]  # world and view are affine
     try:
         nm = normal_matrix(mv)
     except XamlError:
@@ -99,31 +102,50 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             )  # fmt: skip
         )
         return None
-    if not (np.isfinite(clip).all() and np.isfinite(vpos).all()):
+    if not (_in_range(clip) and _in_range(vpos) and np.isfinite(mv).all()):
+        # WPF's renderer works in single precision: coordinates past its range (3.4e38) are
+        # infinite there and such triangles are not drawn; past it here the products of
+        # lighting and clipping would overflow
         ctx.diagnostics.append(
             Diagnostic(
                 "RND004",
                 WARNING,
-                "model skipped: non-finite coordinates",
+                "model skipped: coordinates infinite or beyond single precision (3.4e38), "
+                "which WPF's renderer cannot draw",
                 line=model.line,
                 column=model.column,
             )  # fmt: skip
         )
         return None
     nrm = _unit_rows(mesh.normals @ nm.T)
-    # det [x y w] of the three vertices, expanded by the first column.
+    # det [x y w] of the three vertices, expanded by the first column. Only its sign is used:
+    # each vertex's (x, y, w) is first divided by its largest magnitude (a positive factor per
+    # row keeps the sign), so coordinates near 1e308 cannot overflow the products, and a
+    # product too small for a double is 0 (harmless).
     idx = mesh.indices
-    x, y, w = clip[:, 0][idx], clip[:, 1][idx], clip[:, 3][idx]
-    det = (
-        x[:, 0] * (y[:, 1] * w[:, 2] - y[:, 2] * w[:, 1])
-        - y[:, 0] * (x[:, 1] * w[:, 2] - x[:, 2] * w[:, 1])
-        + w[:, 0] * (x[:, 1] * y[:, 2] - x[:, 2] * y[:, 1])
-    )
+    xyw = clip[:, [0, 1, 3]]
+    scale = np.max(np.abs(xyw), axis=1, keepdims=True)
+    with np.errstate(under="ignore"):
+        xyw = xyw / np.where(scale > 0.0, scale, 1.0)
+        x, y, w = xyw[:, 0][idx], xyw[:, 1][idx], xyw[:, 2][idx]
+        det = (
+            x[:, 0] * (y[:, 1] * w[:, 2] - y[:, 2] * w[:, 1])
+            - y[:, 0] * (x[:, 1] * w[:, 2] - x[:, 2] * w[:, 1])
+            + w[:, 0] * (x[:, 1] * y[:, 2] - x[:, 2] * y[:, 1])
+        )
     mirror = np.linalg.det(world[:3, :3]) < 0.0
     ccw = det < 0.0 if mirror else det > 0.0
     cw = det > 0.0 if mirror else det < 0.0
     sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
     return PreparedModel(model, clip, vpos, nrm, ccw, cw, sign)
+
+
+SINGLE_MAX = float(np.finfo(np.float32).max)
+
+
+def _in_range(a: np.ndarray) -> bool:
+    """Every value finite and within single precision's range."""
+    return bool(np.all(np.abs(a) <= SINGLE_MAX))  # NaN compares False
 
 
 def _unit_rows(v: np.ndarray) -> np.ndarray:

@@ -43,7 +43,11 @@ CAMERA_CODES: dict[str, tuple[str, str]] = {
         "no longer reported: NearPlaneDistance 0 is drawn as WPF draws it (CAM109 for z-fighting)",
     ),
     "CAM007": (ERROR, "FarPlaneDistance <= NearPlaneDistance"),
-    "CAM008": (ERROR, "NaN or infinite camera component (only FarPlaneDistance may be Infinity)"),
+    "CAM008": (
+        ERROR,
+        "NaN, infinite or out-of-range camera component (beyond 3.4e38; only "
+        "FarPlaneDistance may be Infinity)",
+    ),
     "CAM009": (ERROR, "orthographic Width (or view height) <= 0"),
     "CAM010": (ERROR, "zero-size (or invalid) viewport: no aspect ratio"),
     "CAM011": (ERROR, "Camera.Transform is singular (WPF draws nothing)"),
@@ -68,6 +72,16 @@ CAMERA_CODES: dict[str, tuple[str, str]] = {
 
 def _finite(x) -> bool:
     return bool(np.all(np.isfinite(np.asarray(x, dtype=np.float64))))
+
+
+SINGLE_MAX = float(np.finfo(np.float32).max)
+_RANGE = "NaN, infinite or beyond 3.4e38 (WPF's renderer is single precision)"
+
+
+def _usable(x) -> bool:
+    """Finite and within single precision's range: a camera value WPF's renderer can use (the
+    pipeline's products then stay far from double precision's overflow)."""
+    return bool(np.all(np.abs(np.asarray(x, dtype=np.float64)) <= SINGLE_MAX))
 
 
 def _box_corners(bounds) -> np.ndarray:
@@ -133,15 +147,15 @@ def _check(camera, width, height, bounds, report: _Report) -> None:
             "no camera given: WPF uses its default PerspectiveCamera "
             "(at 0,0,0 looking down -z, FieldOfView 45)",
         )
-    if not _finite(camera.transform):
-        report("CAM008", "Camera.Transform has a NaN or infinite component")
+    if not _usable(camera.transform):
+        report("CAM008", f"Camera.Transform has a component that is {_RANGE}")
     elif is_singular(camera.transform):
         report("CAM011", "Camera.Transform is singular: WPF draws nothing")
     if isinstance(camera, MatrixCamera):
         for label in ("ViewMatrix", "ProjectionMatrix"):
             m = camera.view_matrix if label == "ViewMatrix" else camera.projection_matrix
-            if not _finite(m):
-                report("CAM008", f"MatrixCamera.{label} has a NaN or infinite component")
+            if not _usable(m):
+                report("CAM008", f"MatrixCamera.{label} has a component that is {_RANGE}")
             elif is_singular(m):
                 report("CAM012", f"MatrixCamera.{label} is singular")
     else:
@@ -162,11 +176,11 @@ def _check_projection_camera(camera, report: _Report) -> None:
         ("LookDirection", camera.look_direction),
         ("UpDirection", camera.up_direction),
     ):
-        if not _finite(value):
-            report("CAM008", f"{label} {tuple(value)} has a NaN or infinite component")
+        if not _usable(value):
+            report("CAM008", f"{label} {tuple(value)} has a component that is {_RANGE}")
     look = np.asarray(camera.look_direction, dtype=np.float64)
     up = np.asarray(camera.up_direction, dtype=np.float64)
-    if _finite(look) and _finite(up):
+    if _usable(look) and _usable(up):
         look_len, up_len = float(np.linalg.norm(look)), float(np.linalg.norm(up))
         if look_len == 0.0:
             report("CAM001", "LookDirection is the zero vector: the camera looks nowhere")
@@ -187,16 +201,16 @@ def _check_projection_camera(camera, report: _Report) -> None:
                 )
 
     near, far = float(camera.near_plane_distance), float(camera.far_plane_distance)
-    near_ok = math.isfinite(near)
+    near_ok = _usable(near)
     far_ok = not math.isnan(far) and far != -math.inf
     if not near_ok:
-        report("CAM008", f"NearPlaneDistance {near} is NaN or infinite")
+        report("CAM008", f"NearPlaneDistance {near} is {_RANGE}")
     if not far_ok:
         report("CAM008", f"FarPlaneDistance {far} is NaN or -Infinity (only +Infinity is allowed)")
     if perspective:
         fov = float(camera.field_of_view)
-        if not math.isfinite(fov):
-            report("CAM008", f"FieldOfView {fov} is NaN or infinite")
+        if not _usable(fov):
+            report("CAM008", f"FieldOfView {fov} is {_RANGE}")
         elif fov <= 0.0 or fov >= 180.0:
             report("CAM004", f"FieldOfView {fov:g} is outside (0, 180) degrees")
         elif fov < FOV_SMALL_DEG:
@@ -207,8 +221,8 @@ def _check_projection_camera(camera, report: _Report) -> None:
             report("CAM005", f"NearPlaneDistance {near:g} < 0: WPF draws nothing")
     else:
         width = float(camera.width)
-        if not math.isfinite(width):
-            report("CAM008", f"Width {width} is NaN or infinite")
+        if not _usable(width):
+            report("CAM008", f"Width {width} is {_RANGE}")
         elif width <= 0.0:
             report("CAM009", f"orthographic Width {width:g} <= 0")
     if near_ok and far_ok and far <= near:

@@ -42,6 +42,7 @@ FAR_FALLBACK_RATIO = 1e5  # perspective: far = near * 1e5 when infinite and no b
 NEAR_FLOOR_RATIO = 1e-6
 FAR_FALLBACK_ORTHO = 1e5  # orthographic: far = near + 1e5 when infinite and no bounds
 FAR_MARGIN = 1e-3  # relative margin beyond the farthest bounding-box corner
+_SINGLE_MAX = float(np.finfo(np.float32).max)
 
 
 def _v3(v) -> np.ndarray:
@@ -339,8 +340,9 @@ def effective_far(view: np.ndarray, near: float, far: float, kind: str, bounds=N
     """The finite far distance used for rendering (module docstring): ``far`` itself when finite,
     else just beyond the scene's farthest bounding-box corner, else a fixed fallback.
     ``view``: world -> view space (column form), the eye looking down -z."""
-    if math.isfinite(far):
+    if math.isfinite(far) and far <= _SINGLE_MAX:
         return far
+    # infinite, or past single precision (WPF's renderer narrows it to the scene all the same)
     perspective = kind == "perspective"
     if bounds is None:
         return near * FAR_FALLBACK_RATIO if perspective else near + FAR_FALLBACK_ORTHO

@@ -199,12 +199,15 @@ def _check_lights(vp: Viewport, file: str | None) -> list[Diagnostic]:
 
 
 def world_vertices(vp: Viewport) -> np.ndarray:
-    """Every drawn vertex of the viewport in world space, (N, 3): one matmul per model."""
-    parts = [
-        m.mesh.positions @ m.world[:3, :3].T + m.world[:3, 3]
-        for m in vp.models
-        if m.mesh.triangle_count > 0
-    ]
+    """Every vertex of the viewport's drawn models in world space, (N, 3): one matmul per
+    model. A vertex that is or becomes infinite or NaN (it draws nothing, MSH007) comes out
+    non-finite; the callers' comparisons then leave it out."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        parts = [
+            m.mesh.positions @ m.world[:3, :3].T + m.world[:3, 3]
+            for m in vp.models
+            if m.mesh.triangle_count > 0
+        ]
     return np.concatenate(parts) if parts else np.zeros((0, 3))
 
 
