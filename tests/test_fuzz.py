@@ -3,8 +3,8 @@ samples and the reference cases) must load into a Scene or fail with a clean Xam
 another exception -- and render without a RuntimeWarning or a floating-point error (the test
 configuration makes numpy raise on each; only an underflow to 0, which numpy ignores by default
 and which never changes a picture, is let through here: a 5e-324 in a direction divides to 0).
-Mutations: a number of an attribute replaced by an extreme value (1e308, -1e308, 5e-324, 0, Infinity, NaN, 3.5e38), an attribute dropped, a
-value cut short or given a stray character, an element's text doubled.
+Mutations: a number of an attribute replaced by an extreme value (1e308, -1e308, 5e-324, 0,
+Infinity, NaN, 3.5e38 ...), an attribute dropped, a value cut short or given a stray character.
 
 The suite runs a short search (FUZZ_EXAMPLES, default 25 examples per target); a longer one:
 
