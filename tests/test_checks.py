@@ -362,3 +362,28 @@ def test_camera_inside_a_closed_or_emissive_model():
     assert codes(open_box, red) == [] and codes(open_box, glow) == [("CHK009", 7)]
     assert codes(shared, red, PerspectiveCamera(position=(0, 0, 5))) == []  # outside
     assert CHECK_CODES["CHK009"][0] == "warning"
+
+
+def test_camera_inside_check_with_models_equal_in_value():
+    # two models sharing one mesh and one material (equal dataclasses holding arrays): the
+    # check finds the model by position, never by comparing models (found by fuzzing)
+    from xaml3d.findings import scene_findings
+    from xaml3d.xaml.loader import load
+
+    ns = (
+        'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+    )
+    m = '<GeometryModel3D Geometry="{StaticResource g}" Material="{StaticResource e}"/>'
+    x = (
+        f"<Viewport3D {ns}><Viewport3D.Resources>"
+        '<MeshGeometry3D x:Key="g" Positions="-1,-1,-1 1,-1,-1 0,1,1"/>'
+        '<EmissiveMaterial x:Key="e" Brush="Red"/></Viewport3D.Resources>'
+        '<Viewport3D.Camera><PerspectiveCamera Position="0,0,0"/></Viewport3D.Camera>'
+        f"<ModelVisual3D><ModelVisual3D.Content><Model3DGroup>{m}{m}</Model3DGroup>"
+        "</ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+    found = [d for d in scene_findings(load(x, text=True)) if d.code == "CHK009"]
+    assert [d.message.split(" (")[0] for d in found] == [
+        "the camera of viewport 0 is inside model #0"
+    ]

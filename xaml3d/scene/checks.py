@@ -289,7 +289,8 @@ def _check_inside(vp: Viewport, file: str | None) -> list[Diagnostic]:
         return []
     from xaml3d.scene.transforms import transform_points
 
-    models = [m for m in vp.models if m.mesh.triangle_count > 0]
+    drawn = [i for i, m in enumerate(vp.models) if m.mesh.triangle_count > 0]
+    models = [vp.models[i] for i in drawn]
     if not models:
         return []
     with np.errstate(all="ignore"):
@@ -305,7 +306,7 @@ def _check_inside(vp: Viewport, file: str | None) -> list[Diagnostic]:
         if not (glows or is_closed(model.mesh)):
             continue
         what = "an emissive material" if glows else "a closed mesh"
-        index = vp.models.index(model)
+        index = drawn[int(k)]  # (models hold arrays: compared by identity, not ==)
         msg = (
             f"the camera of viewport {vp.index} is inside {_label(model, index)} ({what}): "
             "it fills the view from inside, so the picture may be that model alone or one "
