@@ -350,7 +350,10 @@ def effective_far(view: np.ndarray, near: float, far: float, kind: str, bounds=N
     corners = np.array(
         [[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
     )
-    depth = float(np.max(-transform_homogeneous(view, corners)[:, 2]))
+    with np.errstate(over="ignore", invalid="ignore"):
+        depth = float(np.max(-transform_homogeneous(view, corners)[:, 2]))
+    # a scene reaching past single precision: far stops there (what lies beyond is not drawn)
+    depth = min(depth, _SINGLE_MAX / 2.0) if depth == depth else _SINGLE_MAX / 2.0
     result = depth + FAR_MARGIN * max(abs(depth), abs(near))
     if perspective:
         return max(result, 2.0 * near)

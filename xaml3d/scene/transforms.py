@@ -39,11 +39,18 @@ def _vec(v: ArrayLike, n: int = 3, what: str = "vector") -> np.ndarray:
 
 def _sine_measure(vectors: list[np.ndarray]) -> float:
     """|det| (or, for two 2D vectors, |cross|) over the product of the lengths: 0 when flat."""
-    lengths = [float(np.linalg.norm(e)) for e in vectors]
-    if min(lengths) == 0.0 or not all(math.isfinite(x) for x in lengths):
-        return 0.0
-    det = float(np.linalg.det(np.stack(vectors, axis=1)))
-    return abs(det) / math.prod(lengths)
+    # the determinant of the vectors made unit length (each divided by its largest component
+    # first): the same measure, and no length or product can overflow
+    units = []
+    for e in vectors:
+        e = np.asarray(e, dtype=np.float64)
+        big = float(np.max(np.abs(e)))
+        if not math.isfinite(big) or big == 0.0:
+            return 0.0
+        with np.errstate(under="ignore"):
+            s = e / big
+        units.append(s / float(np.sqrt(s @ s)))
+    return abs(float(np.linalg.det(np.stack(units, axis=1))))
 
 
 def _solve_homogeneous(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
