@@ -86,3 +86,20 @@ def test_positions_past_single_precision_are_reported_not_drawn():
     assert "beyond single precision" in r.diagnostics[0].message
     _, diags = export_bytes(scene, "glb")
     assert "EXP017" in [d.code for d in diags]
+
+
+def test_a_transform_that_overflows_leaves_its_model_out():
+    # a QuaternionRotation3D of 1e308 gives a matrix that is not finite (found by fuzzing): the
+    # scene loads, and the model is left out where it is drawn (RND004), no numpy error
+    quaternion = (
+        "<RotateTransform3D><RotateTransform3D.Rotation>"
+        '<QuaternionRotation3D Quaternion="1e308,0,0,1"/>'
+        "</RotateTransform3D.Rotation></RotateTransform3D>"
+    )
+    xml = scene_with("SCALE", "1").replace('<TranslateTransform3D OffsetX="0"/>', quaternion)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        scene = load(xml, text=True)
+        assert all(d.code for d in scene_findings(scene))
+        r = render_arrays(scene, ssaa=1)
+    assert "RND004" in [d.code for d in r.diagnostics]
