@@ -376,3 +376,40 @@ def test_indefinite_article_before_type_names():
     app = '<Application xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"/>'
     msgs = [d.message for d in load(app, text=True).diagnostics if d.code == "SCN013"]
     assert msgs == ["an Application holds no Viewport3D: nothing to render (use it with -r)"]
+
+
+def test_shared_resources_are_built_once_however_many_models_use_them(monkeypatch):
+    # N models sharing a mesh and a material resource: the mesh and the material are built
+    # once (the work per model stays constant: loading is linear in the number of models)
+    import xaml3d.scene.mesh as mesh_module
+    from xaml3d.xaml import brushes_reader
+    from xaml3d.xaml.loader import load
+
+    calls = {"mesh": 0, "material": 0}
+    build_mesh, material = mesh_module.build_mesh, brushes_reader._material
+
+    def counting_mesh(*a, **k):
+        calls["mesh"] += 1
+        return build_mesh(*a, **k)
+
+    def counting_material(*a, **k):
+        calls["material"] += 1
+        return material(*a, **k)
+
+    monkeypatch.setattr(mesh_module, "build_mesh", counting_mesh)
+    monkeypatch.setattr(brushes_reader, "_material", counting_material)
+    model = '<GeometryModel3D Geometry="{StaticResource g}" Material="{StaticResource m}"/>'
+    xml = (
+        '<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"><Viewport3D.Resources>'
+        '<MeshGeometry3D x:Key="g" Positions="0,0,0 1,0,0 0,1,0"/>'
+        '<DiffuseMaterial x:Key="m" Brush="Red"/></Viewport3D.Resources>'
+        f"<ModelVisual3D><ModelVisual3D.Content><Model3DGroup>{model * 300}"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+    scene = load(xml, text=True)
+    models = scene.viewports[0].models
+    assert len(models) == 300 and calls == {"mesh": 1, "material": 1}
+    assert all(m.mesh is models[0].mesh for m in models)
+    # each model keeps its own place in the markup
+    assert [m.column for m in models[:2]] == [328, 328 + len(model)]

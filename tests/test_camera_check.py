@@ -34,7 +34,6 @@ CASES = [
     (PerspectiveCamera(field_of_view=180), None, None, "CAM004"),
     (PerspectiveCamera(field_of_view=-30), None, None, "CAM004"),
     (PerspectiveCamera(near_plane_distance=-1), None, None, "CAM005"),
-    (PerspectiveCamera(near_plane_distance=0), None, None, "CAM006"),
     (PerspectiveCamera(near_plane_distance=2, far_plane_distance=1), None, None, "CAM007"),
     (PerspectiveCamera(near_plane_distance=2, far_plane_distance=2), None, None, "CAM007"),
     (OrthographicCamera(near_plane_distance=-1, far_plane_distance=-2), None, None, "CAM007"),
@@ -81,6 +80,8 @@ CASES = [
     (OrthographicCamera(), None, ((5, -1, -5), (6, 1, -4)), "CAM107"),  # right of width 2
     (MatrixCamera(), None, ((5, 5, 5), (6, 6, 6)), "CAM107"),  # identity: clip = world
     (PerspectiveCamera(), None, ((-5, -5, -5), (5, 5, 5)), "CAM108"),
+    # NearPlaneDistance 0 with the eye inside the scene: nothing to narrow the near plane to
+    (PerspectiveCamera(near_plane_distance=0), None, ((-5, -5, -5), (5, 5, 5)), "CAM109"),
 ]
 
 
@@ -100,7 +101,8 @@ def test_each_problem_has_its_code(camera, viewport, bounds, code):
 def test_every_catalogued_code_is_exercised():
     exercised = {case[3] for case in CASES}
     # CAM013 / CAM014 come from orthographic_map's explicit width/height/aspect (test_cameras).
-    assert set(CAMERA_CODES) - exercised == {"CAM013", "CAM014"}
+    # CAM006 (NearPlaneDistance 0 as an error) is no longer reported: WPF draws such cameras.
+    assert set(CAMERA_CODES) - exercised == {"CAM006", "CAM013", "CAM014"}
     for severity, meaning in CAMERA_CODES.values():
         assert severity in (ERROR, WARNING) and meaning
 
@@ -133,7 +135,7 @@ def test_all_problems_are_reported_together():
         line=12,
     )  # fmt: skip
     found = codes(cam, 0, 0)
-    for code in ("CAM010", "CAM001", "CAM004", "CAM006", "CAM007"):
+    for code in ("CAM010", "CAM001", "CAM004", "CAM007"):
         assert code in found
     assert all(d.line == 12 for d in check_camera(cam, 0, 0))
 
@@ -158,3 +160,12 @@ def test_scene_out_of_view_names_the_real_cause(box, cause):
     cam = PerspectiveCamera(position=(0, 0, 5), near_plane_distance=0.125, far_plane_distance=100)
     found = [d for d in check_camera(cam, 40, 30, box) if d.code == "CAM107"]
     assert len(found) == 1 and cause in found[0].message, found
+
+
+def test_near_plane_zero_is_narrowed_to_the_scene_as_wpf_does():
+    # WPF narrows near to the scene's nearest depth (9 here): no error, no depth warning
+    cam = PerspectiveCamera(position=(0, 0, 10), near_plane_distance=0, line=4)
+    assert codes(cam) == []
+    assert codes(cam, bounds=((-1, -1, -1), (1, 1, 1))) == []
+    # the narrowed ratio still z-fights when the scene is deep: 1e6 / 9 > 65536
+    assert codes(cam, bounds=((-1, -1, -1e6), (1, 1, 1))) == ["CAM102"]

@@ -374,7 +374,6 @@ def test_matrix_camera_from_wpf_matrices():
 def test_degenerate_cameras_raise_with_codes():
     cases = [
         (PerspectiveCamera(look_direction=(0, 0, 0)), "CAM001"),
-        (PerspectiveCamera(near_plane_distance=0), "CAM006"),
         (PerspectiveCamera(field_of_view=180), "CAM004"),
         (OrthographicCamera(width=0), "CAM009"),
         (MatrixCamera(view_matrix=np.zeros((4, 4))), "CAM012"),
@@ -395,3 +394,18 @@ def test_as_dict_is_json_ready():
     text = json.dumps(d)
     assert '"kind": "perspective"' in text and d["far_is_infinite"] is True
     assert to_wpf(np.array(d["view_matrix"])).shape == (4, 4)
+
+
+def test_near_plane_zero_renders_with_the_scene_nearest_depth():
+    # WPF narrows near to the scene's depth span: the box at depths 9..11 gives near = 9 (a hair
+    # less), and a point of the box lands inside the depth range
+    cam = PerspectiveCamera(position=(0, 0, 10), near_plane_distance=0)
+    pipe = camera_pipeline(cam, 100, 100, bounds=((-1, -1, -1), (1, 1, 1)))
+    assert pipe.near == pytest.approx(9.0, rel=1e-8) and pipe.near < 9.0
+    assert pipe.far == pytest.approx(11.011)  # the far corner plus the 0.1 % margin
+    assert pipe.c == pytest.approx(-9.0 / 11.011)
+    # without bounds (or with the eye in the scene) a floor of far * 1e-6 stands in
+    pipe = camera_pipeline(cam, 100, 100)
+    assert pipe.far == 1e5 and pipe.near == pytest.approx(0.1)
+    pipe = camera_pipeline(cam, 100, 100, bounds=((-1, -1, -1), (1, 1, 11)))
+    assert pipe.near == pytest.approx(pipe.far * 1e-6)

@@ -286,11 +286,18 @@ def test_varying_brush_without_texture_coordinates_is_chk008(tmp_path):
     p = xaml3d("validate", "s.xaml", cwd=tmp_path)
     assert p.returncode == 0
     assert [ln for ln in p.stdout.decode().splitlines() if " info " not in ln] == [
-        "s.xaml:4:3: warning CHK008 the LinearGradientBrush of model #0 is drawn in one colour, "
-        "as in WPF: it has no TextureCoordinates (WPF takes 0,0 for each vertex), so the brush "
-        "is sampled at that one point; give the mesh TextureCoordinates spread over the surface "
+        "s.xaml:4:3: warning CHK008 the LinearGradientBrush of model #0 draws nothing, as in "
+        "WPF: it has no TextureCoordinates (WPF takes 0,0 for each vertex), so the brush is "
+        "mapped onto an empty box; give the mesh TextureCoordinates spread over the surface "
         "(e.g. 0,1 1,1 1,0 0,0 for a quad)"
     ]
+    # and nothing is drawn, as a capture of WPF shows (the gradient triangle leaves it empty)
+    p = xaml3d("render", "s.xaml", "-o", "s.png", cwd=tmp_path)
+    assert p.returncode == 0 and b"RND002" in p.stderr
+    from PIL import Image
+
+    with Image.open(tmp_path / "s.png") as im:
+        assert im.getextrema()[3] == (0, 0)  # every pixel transparent
 
 
 def test_chk008_only_where_the_brush_is_sampled_at_one_point():
@@ -310,3 +317,73 @@ def test_chk008_only_where_the_brush_is_sampled_at_one_point():
     assert "the DrawingBrush of" in chk008("<DrawingBrush/>")[0]
     assert "the VisualBrush of" in chk008("<VisualBrush/>")[0]
     assert "the ImageBrush of" in chk008('<ImageBrush ImageSource="none.png"/>')[0]
+
+
+def test_camera_inside_a_closed_or_emissive_model():
+    # CHK009: from inside a closed cube (8 shared vertices, or 24 written per face: welded by
+    # position) or inside the box of an emissive model, that model fills the view
+    from xaml3d.scene.checks import CHECK_CODES, check_viewport, is_closed
+    from xaml3d.scene.types import (
+        DiffuseMaterial,
+        EmissiveMaterial,
+        Mesh,
+        Model,
+        PerspectiveCamera,
+        SolidColorBrush,
+        Viewport,
+        frozen_array,
+    )
+
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], float)
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    tris = [(a, b, c) for q in faces for (a, b, c) in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))]
+
+    def mesh(pos, idx):
+        pos = frozen_array(pos)
+        idx = frozen_array(np.asarray(idx).reshape(-1, 3), np.int64)
+        zeros = frozen_array(np.zeros_like(pos))
+        return Mesh(pos, idx, zeros, frozen_array(np.zeros((len(pos), 2))))
+
+    shared = mesh(corners, tris)
+    per_face = mesh(corners[[i for q in faces for i in q]],
+                    [(4 * f + a, 4 * f + b, 4 * f + c) for f in range(6)
+                     for a, b, c in ((0, 1, 2), (0, 2, 3))])  # fmt: skip
+    open_box = mesh(corners, tris[:-2])  # one face missing
+    assert is_closed(shared) and is_closed(per_face) and not is_closed(open_box)
+    red = (DiffuseMaterial(brush=SolidColorBrush((1.0, 0.0, 0.0, 1.0))),)
+    glow = (EmissiveMaterial(brush=SolidColorBrush((1.0, 0.0, 0.0, 1.0))),)
+    inside = PerspectiveCamera(position=(0, 0, 0.5), line=7, column=3)
+
+    def codes(mesh_, material, camera=inside):
+        vp = Viewport(0, None, 40, 30, "test", camera, (Model(mesh_, material),), ())
+        return [(d.code, d.line) for d in check_viewport(vp) if d.code == "CHK009"]
+
+    assert codes(shared, red) == [("CHK009", 7)] and codes(per_face, red) == [("CHK009", 7)]
+    assert codes(open_box, red) == [] and codes(open_box, glow) == [("CHK009", 7)]
+    assert codes(shared, red, PerspectiveCamera(position=(0, 0, 5))) == []  # outside
+    assert CHECK_CODES["CHK009"][0] == "warning"
+
+
+def test_camera_inside_check_with_models_equal_in_value():
+    # two models sharing one mesh and one material (equal dataclasses holding arrays): the
+    # check finds the model by position, never by comparing models (found by fuzzing)
+    from xaml3d.findings import scene_findings
+    from xaml3d.xaml.loader import load
+
+    ns = (
+        'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+    )
+    m = '<GeometryModel3D Geometry="{StaticResource g}" Material="{StaticResource e}"/>'
+    x = (
+        f"<Viewport3D {ns}><Viewport3D.Resources>"
+        '<MeshGeometry3D x:Key="g" Positions="-1,-1,-1 1,-1,-1 0,1,1"/>'
+        '<EmissiveMaterial x:Key="e" Brush="Red"/></Viewport3D.Resources>'
+        '<Viewport3D.Camera><PerspectiveCamera Position="0,0,0"/></Viewport3D.Camera>'
+        f"<ModelVisual3D><ModelVisual3D.Content><Model3DGroup>{m}{m}</Model3DGroup>"
+        "</ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+    found = [d for d in scene_findings(load(x, text=True)) if d.code == "CHK009"]
+    assert [d.message.split(" (")[0] for d in found] == [
+        "the camera of viewport 0 is inside model #0"
+    ]

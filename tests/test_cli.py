@@ -594,16 +594,19 @@ def test_camera_point_must_be_finite_and_infinite_far_sees_beyond_the_scene(tmp_
 
 @pytest.mark.parametrize("width", ["0", "-5"])
 def test_empty_viewport_is_an_error_unless_a_size_is_given(tmp_path, width):
-    # WPF draws nothing in a zero-size viewport (a negative one it refuses: SCN012, taken as 0);
-    # validate and render both say CAM010 and exit 1, while an explicit -W/-H still renders.
+    # WPF loads a zero-size viewport and draws nothing (a negative size it refuses: SCN012,
+    # taken as 0): validate warns LAY001 and exits 0 for Width 0; render has nothing to draw
+    # (CAM010, exit 1), while an explicit -W/-H still renders.
     scene = tmp_path / "empty.xaml"
     scene.write_text(square_scene(size=(width, 30)))
     run = CliRunner().invoke(main, ["validate", str(scene)])
-    assert run.exit_code == 1 and "CAM010" in run.stdout
+    assert run.exit_code == (1 if width == "-5" else 0) and "CAM010" not in run.stdout
+    assert "warning LAY001" in run.stdout
     assert ("SCN012" in run.stdout) == (width == "-5")
     out = tmp_path / "o.png"
     run = CliRunner().invoke(main, ["render", str(scene), "-o", str(out)])
-    assert run.exit_code == 1 and "error CAM010" in run.stderr and not out.exists()
+    refused = "error SCN012" if width == "-5" else "error CAM010"
+    assert run.exit_code == 1 and refused in run.stderr and not out.exists()
     sized = ["render", str(scene), "-o", str(out), "-W", "40", "-H", "30"]
     run = CliRunner().invoke(main, sized)
     if width == "-5":  # WPF refuses a negative Width at load: only --lenient renders it

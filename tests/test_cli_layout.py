@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pytest
 from PIL import Image
 from test_cli_subprocess import xaml3d
 
@@ -106,11 +107,17 @@ def test_empty_viewport_in_all_is_an_error_the_others_render(tmp_path):
     p = xaml3d("render", "s.xaml", "-o", "v.png", "--viewport", "all", cwd=tmp_path)
     assert p.returncode == 1
     err = p.stderr.decode()
-    assert err.splitlines()[1:] == [
+    cam103 = (
+        "warning CAM103 no camera given: WPF uses its default PerspectiveCamera (at 0,0,0 "
+        "looking down -z, FieldOfView 45)"
+    )
+    assert err.splitlines() == [
         "s.xaml:1:102: warning LAY001 Viewport3D #0 is laid out with height 0 (a vertical "
         "StackPanel gives each child its desired height, and a Viewport3D without Height wants "
         "0): WPF draws nothing",
+        f"s.xaml:1:102: {cam103}",
         "s.xaml:1:102: warning CHK006 viewport 0 holds no models: it draws nothing",
+        f"s.xaml:1:115: {cam103}",
         "s.xaml:1:115: warning CHK006 viewport 1 holds no models: it draws nothing",
         "s.xaml:1:102: error RND008 Viewport3D #0 is laid out 40 x 0 (see LAY001): nothing to "
         "draw; render it alone (--viewport 0) with -W/-H to give it a size, or --window to "
@@ -132,3 +139,54 @@ def test_validate_reports_an_empty_layout_as_a_warning(tmp_path):
     assert p.returncode == 0 and "warning LAY001" in found and "CAM010" not in found
     p = xaml3d("validate", "s.xaml", "--strict", cwd=tmp_path)
     assert p.returncode == 1
+
+
+def test_window_usage_error_names_only_the_options_given(tmp_path):
+    src = REF / "grid-toolbar-row.xaml"
+    out = tmp_path / "x.png"
+    for args, said in (
+        (("--fit",), b"--fit applies to one viewport, not to --window"),
+        (("--scale", "2"), b"--scale applies to one viewport, not to --window"),
+        (("--scale", "2", "--fit"), b"--scale and --fit apply to one viewport, not to --window"),
+    ):
+        p = xaml3d("render", src, "-o", out, "--window", *args)
+        assert p.returncode == 2 and said in p.stderr, (args, p.stderr)
+
+
+WINDOW = '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" {}>{}</Window>'
+
+
+@pytest.mark.parametrize(
+    "size, said",
+    [
+        ('Width="100000" Height="100000"', b"window client area 99984 x 99961 exceeds the limit"),
+        ('Width="1e308" Height="100"', b"window client area 1e+308 x 61 exceeds the limit"),
+    ],
+)
+def test_window_has_the_size_limits_of_a_plain_render(tmp_path, size, said):
+    # no 149 GiB canvas, no traceback: RND001 as a plain render says it, nothing written
+    src = tmp_path / "w.xaml"
+    src.write_text(WINDOW.format(size, "<Viewport3D/>"))
+    for lenient in ((), ("--lenient",)):
+        p = xaml3d("render", src, "-o", tmp_path / "w.png", "--window", *lenient)
+        assert p.returncode == 1 and b"error RND001 " + said in p.stderr, p.stderr
+        assert b"Traceback" not in p.stderr and not (tmp_path / "w.png").exists()
+
+
+def test_window_with_elements_placed_at_huge_offsets(tmp_path):
+    # Canvas.Top="1e308" (and an infinite extent) puts an element far outside: it is not drawn,
+    # no OverflowError; what is inside the window still is
+    src = tmp_path / "w.xaml"
+    body = (
+        '<Canvas><Border Canvas.Top="1e308" Width="50" Height="1e308" Background="Red"/>'
+        '<Border Canvas.Left="-1e308" Width="1e308" Height="50" Background="Red"/>'
+        '<Viewport3D Canvas.Top="1e308" Width="50" Height="1e308"/>'
+        '<Border Canvas.Left="10" Canvas.Top="10" Width="20" Height="20" Background="Blue"/>'
+        "</Canvas>"
+    )
+    src.write_text(WINDOW.format('Width="100" Height="100"', body))
+    p = xaml3d("render", src, "-o", tmp_path / "w.png", "--window", "--outline-controls")
+    assert p.returncode == 0 and b"Traceback" not in p.stderr, p.stderr
+    with Image.open(tmp_path / "w.png") as im:
+        assert im.getpixel((20, 20)) == (0, 0, 255, 255)
+        assert im.getpixel((5, 5)) == (255, 255, 255, 255)  # the window's white, no red

@@ -441,3 +441,56 @@ def test_a_collection_written_as_a_property_element_is_pointed_at(tmp_path):
     assert [r[:4] for r in _rows(p.stdout) if r[3].startswith("MSH")] == [
         (11, 15, "warning", "MSH001")
     ]
+
+
+# --------------------------------------------------------------------------- empty viewports
+
+
+def test_zero_width_viewport_loads_with_warnings_located_at_the_viewport(tmp_path):
+    # WPF loads Width="0" and draws nothing: LAY001 says so (a warning), no CAM010 error; the
+    # default camera WPF supplies has no place in the markup, so CAM103 points at the viewport
+    scene = tmp_path / "w0.xaml"
+    scene.write_text(f"""<Grid {NS}>
+  <Viewport3D Width="0" Height="30">
+    <ModelVisual3D/>
+  </Viewport3D>
+</Grid>
+""")
+    p = xaml3d("validate", scene)
+    assert p.returncode == 0, p.stdout
+    assert _rows(p.stdout, "LAY001")[0][:3] == (2, 3, "warning")
+    assert _rows(p.stdout, "CAM103") == [
+        (2, 3, "warning", "CAM103",
+         "no camera given: WPF uses its default PerspectiveCamera (at 0,0,0 looking down -z, "
+         "FieldOfView 45)")
+    ]  # fmt: skip
+    assert b"CAM010" not in p.stdout
+
+
+def test_conformance_gathered_files_section(tmp_path):
+    # --sources: each gathered file validated, its row kept in tools/conformance_sources.tsv and
+    # the "Gathered files" section of conformance.md rewritten; a full run keeps that section
+    import importlib.util
+
+    from conftest import ROOT
+
+    spec = importlib.util.spec_from_file_location("conformance", ROOT / "tools" / "conformance.py")
+    conformance = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(conformance)
+    (tmp_path / "ok.xaml").write_text(_mesh_scene(MESH, RED))
+    (tmp_path / "text.xaml").write_text(f"<Viewport3D {NS}>stray words</Viewport3D>")
+    (tmp_path / "manifest.tsv").write_text(
+        "o/r\ta/ok.xaml\t" + "1" * 40 + "\tok.xaml\tloads\n"
+        "o/r\ta/text.xaml\t" + "2" * 40 + "\ttext.xaml\trefuses: text inside Viewport3D\n"
+    )
+    rows = conformance.gather_sources(tmp_path)
+    assert [r[4] for r in rows] == ["loads with warnings", "refused"]
+    assert rows[1][5] == "XAML023"
+    page = conformance.with_sources("# Real-world conformance\n\nbody\n", rows)
+    assert page.startswith("# Real-world conformance\n\nbody\n\n## Gathered files\n")
+    assert "agrees with WPF's for 2 of 2" in page
+    assert (
+        "| o/r | `a/text.xaml` | 222222222222 | refuses: text inside Viewport3D | refused |" in page
+    )
+    # a second pass replaces the section instead of adding another
+    assert conformance.with_sources(page, rows[:1]).count("## Gathered files") == 1

@@ -135,6 +135,33 @@ def test_relative_links_resolve(page):
     assert not broken, f"{page} links to missing files: {broken}"
 
 
+def _anchors(md: Path) -> set[str]:
+    """GitHub's anchors of a page's headings: lower case, punctuation but '-' and '_' dropped,
+    spaces made '-'."""
+    out = set()
+    for line in md.read_text(encoding="utf-8").splitlines():
+        m = re.match(r"#+\s+(.*)", line)
+        if m:
+            text = re.sub(r"[^\w\- ]", "", m.group(1).strip().lower())
+            out.add(text.replace(" ", "-"))
+    return out
+
+
+@pytest.mark.parametrize("page", PAGES, ids=str)
+def test_link_anchors_name_headings(page):
+    text = (ROOT / page).read_text(encoding="utf-8")
+    base = (ROOT / page).parent
+    broken = []
+    for target in _LINK.findall(text):
+        if re.match(r"[a-z]+:", target) or "#" not in target:
+            continue
+        path, anchor = target.split("#", 1)
+        md = base / path if path else ROOT / page
+        if md.suffix == ".md" and md.exists() and anchor not in _anchors(md):
+            broken.append(target)
+    assert not broken, f"{page} links to headings that do not exist: {broken}"
+
+
 @pytest.mark.parametrize(
     "page", PAGES + sorted(str(p.relative_to(ROOT)) for p in (ROOT / "samples").glob("*.xaml"))
 )

@@ -191,3 +191,26 @@ def test_static_scene_keeps_base_values():
            f"Position='0,0,9'/></Viewport3D.Camera>{triggers}</Viewport3D>")  # fmt: skip
     s = load(xml, text=True)
     assert s.viewports[0].camera.position == (0.0, 0.0, 9.0)
+
+
+def test_storyboard_target_written_without_owner_prefix():
+    # XAML resolves an unqualified attribute that is no member of Storyboard to its attachable
+    # member: <Storyboard TargetName=..> is <Storyboard Storyboard.TargetName=..>
+    xml = f"""<Viewport3D {NS}>
+  <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+    <Storyboard TargetName="rot" TargetProperty="Angle">
+      <DoubleAnimation From="0" To="90" Duration="0:0:2"/>
+    </Storyboard>
+  </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+  <ModelVisual3D><ModelVisual3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+    <AxisAngleRotation3D x:Name="rot" Axis="0,1,0"/>
+  </RotateTransform3D.Rotation></RotateTransform3D></ModelVisual3D.Transform></ModelVisual3D>
+</Viewport3D>"""
+    s = load(xml, text=True)
+    assert [d for d in s.diagnostics if d.severity == "error"] == []
+    (anim,) = s.storyboards[0].animations
+    assert (anim.target_name, anim.target_property) == ("rot", "Angle")
+    # another type's attachable member still needs its owner: an error, as in WPF
+    s = load(xml.replace('<DoubleAnimation From="0"', '<DoubleAnimation TargetName="rot" From="0"'),
+             text=True)  # fmt: skip
+    assert [d.code for d in s.diagnostics if d.severity == "error"] == ["XAML004"]

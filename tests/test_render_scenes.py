@@ -298,3 +298,58 @@ def test_viewport_bounds_are_measured_once_and_shared_read_only():
         lo += 1.0  # never changed in place by a caller
     moved = replace(vp, models=vp.models[:0])
     assert moved.bounds() is None and np.array_equal(vp.bounds()[1], hi)
+
+
+def test_near_plane_zero_draws_as_a_positive_near_does():
+    # WPF narrows near to the scene's depth span: NearPlaneDistance 0 draws the scene normally,
+    # the green quad in front of the red one, exactly as with the default 0.125
+    red_far = Model(quad(-2, -2, 2, 2, z=-1), (diffuse(RED),))
+    green_near = Model(quad(-1, -1, 1, 1, z=0), (diffuse(GREEN),))
+    pictures = []
+    for near in (0.0, 0.125):
+        cam = PerspectiveCamera(position=(0, 0, 6), near_plane_distance=near)
+        r = render([red_far, green_near], camera=cam, size=(16, 16))
+        assert r.diagnostics == []
+        pictures.append(r.rgba)
+    assert (pictures[0] == pictures[1]).all()
+    assert tuple(pictures[0][8, 8]) == (0, 255, 0, 255)
+    assert tuple(pictures[0][8, 4]) == (255, 0, 0, 255)
+
+
+def test_missing_image_checker_shows_under_additive_materials():
+    # Two emissive squares one behind the other, both with the grey checker that stands in for
+    # a missing image: added up they would saturate to white. The stand-in is drawn as it is
+    # (opaque, unlit, nearest wins), so exactly the checker's greys 128 and 192 show, whatever
+    # the material (Emissive, Specular) and whatever lies behind.
+    from xaml3d.scene.types import placeholder_image
+
+    checker = ImageBrush(image=placeholder_image(), is_placeholder=True)
+    tc = [(0, 1), (1, 1), (1, 0), (0, 0)]
+    for material in (EmissiveMaterial(brush=checker), SpecularMaterial(brush=checker)):
+        back = Model(quad(-2, -2, 2, 2, z=-1, tc=tc), (material,))
+        front = Model(quad(-2, -2, 2, 2, z=0, tc=tc), (material,))
+        # 64 x 64 pixels: the square covers pixels 16..47, 4 pixels per checker cell
+        r = render([back, front], size=(64, 64))
+        inside = r.rgba[16:48, 16:48]
+        assert (inside[..., 3] == 255).all() and (inside[..., :3] <= 192).all()
+        assert tuple(inside[1, 1]) == (192, 192, 192, 255)  # the first cell: light grey
+        assert tuple(inside[1, 5]) == (128, 128, 128, 255)  # the next one: dark grey
+        assert (r.rgba[0, 0] == 0).all()  # around the squares: the background
+    # a found image under an Emissive material still adds (WPF's blend)
+    real = ImageBrush(image=placeholder_image())
+    glow = (EmissiveMaterial(brush=real),)
+    r = render(
+        [Model(quad(-2, -2, 2, 2, z=-1, tc=tc), glow), Model(quad(-2, -2, 2, 2, tc=tc), glow)]
+    )
+    assert (r.rgba[2:6, 2:6, :3] == 255).all()
+
+
+def test_an_image_of_one_colour_is_reported():
+    # RND009: something was drawn, yet every pixel has the same colour (the quad fills the view)
+    r = render([Model(quad(-5, -5, 5, 5), (diffuse(RED),))])
+    assert (r.rgba == (255, 0, 0, 255)).all()
+    (d,) = r.diagnostics
+    assert d.code == "RND009" and d.severity == "warning"
+    assert d.message.startswith("every pixel of the image is #FFFF0000:")
+    assert "--fit" in d.message and "--background" in d.message
+    assert render([Model(quad(-2, -2, 2, 2), (diffuse(RED),))]).diagnostics == []

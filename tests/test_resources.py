@@ -200,3 +200,41 @@ def test_missing_static_resource_suggests_the_closest_key_in_scope(tmp_path):
         "s.xaml:7:9: error RES001 StaticResource 'Unrelated' not found "
         "(if the application's App.xaml defines it, give it with -r App.xaml)",
     ]
+
+
+def test_missing_key_hint_names_the_sibling_dictionary_that_defines_it(tmp_path):
+    # RES001: a resource dictionary beside the scene defines the key -> "give it with -r ..."
+    from xaml3d.xaml.loader import load
+
+    ns = (
+        'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+    )
+    (tmp_path / "008_app-resources.xaml").write_text(
+        f"<!-- shared brushes -->\n<ResourceDictionary {ns}>"
+        '<SolidColorBrush x:Key="Paint" Color="Red"/></ResourceDictionary>'
+    )
+    # a scene that happens to define the key in its own resources is not a dictionary to give
+    brush = '<SolidColorBrush x:Key="Paint" Color="Red"/>'
+    (tmp_path / "other.xaml").write_text(
+        f"<Grid {ns}><Grid.Resources>{brush}</Grid.Resources></Grid>"
+    )
+    scene = tmp_path / "scene.xaml"
+    scene.write_text(
+        f"<Viewport3D {ns}><ModelVisual3D><ModelVisual3D.Content><GeometryModel3D>"
+        '<GeometryModel3D.Material><DiffuseMaterial Brush="{StaticResource Paint}"/>'
+        "</GeometryModel3D.Material></GeometryModel3D></ModelVisual3D.Content></ModelVisual3D>"
+        '<Viewport3D Tag="{StaticResource Nowhere}"/></Viewport3D>'
+    )
+    msgs = [d.message for d in load(scene).diagnostics if d.code == "RES001"]
+    assert msgs == [
+        "StaticResource 'Paint' not found (008_app-resources.xaml beside the scene defines it: "
+        "give it with -r 008_app-resources.xaml)",
+        "StaticResource 'Nowhere' not found (if the application's App.xaml defines it, give it "
+        "with -r App.xaml)",
+    ]
+    # given with -r, the key is found
+    found = load(scene, resources=[tmp_path / "008_app-resources.xaml"])
+    assert [d.message for d in found.diagnostics if d.code == "RES001"] == [
+        "StaticResource 'Nowhere' not found"
+    ]

@@ -164,3 +164,59 @@ def test_struct_text(xml, text):
 
     el = etree.fromstring(xml.replace(" ", f" {NS} ", 1))
     assert struct_text(ReadContext(), el) == text
+
+
+def _mesh_scene(inner: str):
+    return scene(
+        models=f"""<GeometryModel3D><GeometryModel3D.Geometry>
+      <MeshGeometry3D xmlns:sys="clr-namespace:System;assembly=mscorlib">{inner}</MeshGeometry3D>
+    </GeometryModel3D.Geometry>
+    <GeometryModel3D.Material><DiffuseMaterial Brush="Red"/></GeometryModel3D.Material>
+    </GeometryModel3D>"""
+    )
+
+
+def test_value_collections_written_one_item_per_element():
+    # as WPF's XAML reader adds each item to the collection: Point3D, Vector3D, Point, Int32
+    s = _mesh_scene(
+        """<MeshGeometry3D.Positions><Point3DCollection>
+        <Point3D X="-2" Y="-1" Z="2"/><Point3D X="2" Y="-1"/><Point3D>0,1.5,2</Point3D>
+      </Point3DCollection></MeshGeometry3D.Positions>
+      <MeshGeometry3D.Normals><Vector3DCollection>
+        <Vector3D Z="1"/><Vector3D Z="2"/><Vector3D X="0" Y="0" Z="1"/>
+      </Vector3DCollection></MeshGeometry3D.Normals>
+      <MeshGeometry3D.TextureCoordinates><PointCollection>
+        <Point X="0" Y="1"/><Point X="1" Y="1"/><Point X="0.5"/>
+      </PointCollection></MeshGeometry3D.TextureCoordinates>
+      <MeshGeometry3D.TriangleIndices><Int32Collection>
+        <sys:Int32>2</sys:Int32><x:Int32>1</x:Int32><sys:Int32>0</sys:Int32>
+      </Int32Collection></MeshGeometry3D.TriangleIndices>"""
+    )
+    assert errors(s) == []
+    mesh = s.viewports[0].models[0].mesh
+    assert mesh.positions.tolist() == [[-2, -1, 2], [2, -1, 0], [0, 1.5, 2]]
+    assert mesh.normals.tolist() == [[0, 0, 1]] * 3
+    assert mesh.texcoords.tolist() == [[0, 1], [1, 1], [0.5, 0]]
+    assert mesh.indices.tolist() == [[2, 1, 0]]
+
+
+def test_items_straight_inside_the_property_element_all_count():
+    # without the collection element every item is added (not only the last one)
+    s = _mesh_scene(
+        """<MeshGeometry3D.Positions>
+        <Point3D X="1"/><Point3D Y="1"/><Point3D Z="1"/>
+      </MeshGeometry3D.Positions>"""
+    )
+    assert errors(s) == []
+    assert s.viewports[0].models[0].mesh.positions.tolist() == [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+
+
+def test_empty_collection_element_and_wrong_item_type():
+    s = _mesh_scene("""<MeshGeometry3D.Positions><Point3DCollection/></MeshGeometry3D.Positions>""")
+    assert errors(s) == []
+    assert s.viewports[0].models[0].mesh.positions.shape == (0, 3)
+    s = _mesh_scene(
+        """<MeshGeometry3D.Positions><Point3DCollection>
+        <Point X="1" Y="2"/></Point3DCollection></MeshGeometry3D.Positions>"""
+    )
+    assert [e[0] for e in errors(s)] == ["XAML013"]

@@ -45,6 +45,11 @@ CASES = {
     "camera-fov-180": ("CAM004", 3, 5, "FieldOfView 180"),
     "name-invalid": ("XAML019", 9, 26, "'1cube' is not a valid name"),
     "name-twice": ("XAML020", 9, 26, "'sun' is already used in this namescope (line 8)"),
+    # text where a collection of objects is the content: at the element the text follows
+    "text-in-model-group": ("XAML023", 8, 9, "'a word where models belong' inside Model3DGroup"),
+    "camera-in-material-group": ("XAML013", 13, 15, "cannot add the OrthographicCamera"),
+    # <Model3D.Transform> on a GeometryModel3D is fine (a base type); Viewport is no type
+    "property-element-owner-unknown": ("XAML004", 2, 3, "<Viewport.Camera>"),
 }
 NOT_RENDERABLE = {
     "malformed-xml",

@@ -1,6 +1,8 @@
 """Render every file of a real-world XAML corpus in every mode and write a report.
 
     python tools/conformance.py [CORPUS_DIR] [--out docs]
+    python tools/conformance.py --sources DIR      # only the "Gathered files" section
+
 
 Writes ``docs/conformance.md`` (per file: status -- the command line's verdict, "refused
 (errors)" for a file whose findings hold an error --, warnings, refusal, triangles, times, running
@@ -8,11 +10,20 @@ animations), ``docs/conformance-sheet.png`` (a contact sheet of every shaded ren
 every file that animates, ``docs/conformance-anim/<file>.gif`` (one cycle of what runs at load;
 a storyboard that only code-behind begins is begun by name). The default corpus is
 ``../shared/corpus`` beside the checkout.
+
+The section "Gathered files" lists Viewport3D XAML gathered from public repositories (not kept
+in the repository): ``tools/conformance_sources.tsv`` holds, per file, the repository, path,
+commit, what WPF does with it, and xaml3d's verdict. ``--sources DIR`` re-runs ``xaml3d
+validate`` over the downloaded copies (``DIR/manifest.tsv``: repository, path, commit, local
+file name, WPF's verdict, tab-separated), rewrites that table and the section of
+``docs/conformance.md``; a full run keeps the section.
 """
 
 from __future__ import annotations
 
 import argparse
+import re
+import subprocess
 import sys
 from collections import Counter
 from pathlib import Path
@@ -149,12 +160,94 @@ def report(results, corpus: Path, anims: dict) -> str:
     return "\n".join(lines)
 
 
+SOURCES = ROOT / "tools" / "conformance_sources.tsv"
+SOURCES_TITLE = "## Gathered files"
+_FINDING = re.compile(r"^\S+:\d+:\d+: (error|warning) (\w+) ")
+
+
+def validate_verdict(path: Path) -> tuple[str, str]:
+    """(verdict, codes) of ``xaml3d validate`` on one file: "loads", "loads with warnings" or
+    "refused", and its error and warning codes (sorted, with counts)."""
+    run = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "validate", str(path)],
+        capture_output=True, text=True, cwd=path.parent, timeout=300,
+    )  # fmt: skip
+    found = [m.groups() for m in map(_FINDING.match, run.stdout.splitlines()) if m]
+    errors = sorted({c for sev, c in found if sev == "error"})
+    warnings = Counter(c for sev, c in found if sev == "warning")
+    if run.returncode != 0:
+        return "refused", ", ".join(errors) or run.stderr.strip().splitlines()[-1]
+    codes = ", ".join(f"{c}x{n}" if n > 1 else c for c, n in sorted(warnings.items()))
+    return ("loads with warnings" if warnings else "loads"), codes
+
+
+def gather_sources(folder: Path) -> list[list[str]]:
+    """Validate every file of ``folder/manifest.tsv``; the rows of conformance_sources.tsv."""
+    rows = []
+    for line in (folder / "manifest.tsv").read_text(encoding="utf-8").splitlines():
+        repo, path, commit, local, wpf = line.split("\t")
+        verdict, codes = validate_verdict(folder / local)
+        rows.append([repo, path, commit, wpf, verdict, codes])
+        print(f"{local}: {verdict} {codes}", file=sys.stderr)
+    return rows
+
+
+def sources_section(rows: list[list[str]]) -> str:
+    agree = sum(1 for r in rows if r[3].startswith("refuses") == (r[4] == "refused"))
+    lines = [
+        SOURCES_TITLE,
+        "",
+        f"{len(rows)} Viewport3D files gathered from public repositories (WPF's own test suite "
+        "dotnet/wpf-test, tutorials and sample applications), beyond the shared corpus, each "
+        "run through `xaml3d validate` (`python tools/conformance.py --sources DIR`; the files "
+        "are not kept here). The WPF column says what WPF's loader does with the file: files "
+        "that need their own project's assembly (a `clr-namespace` type, a toolkit) load in "
+        "that project. xaml3d's verdict agrees with WPF's for "
+        f"{agree} of {len(rows)}; each refusal names WPF's reason.",
+        "",
+        "| repository | path | commit | WPF | xaml3d | codes |",
+        "|---|---|---|---|---|---|",
+    ]
+    for repo, path, commit, wpf, verdict, codes in rows:
+        cells = [repo, f"`{path}`", commit[:12], wpf, verdict, codes]
+        lines.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+    # SCN001 (no Viewport3D) is xaml3d's own reason, never WPF's: say so for each such file
+    odd = [r for r in rows if "SCN001" in r[5]]
+    if odd:
+        lines += [
+            "",
+            "Refused with xaml3d's own reason, not WPF's (SCN001, no Viewport3D to draw):",
+        ]
+        lines += [f"- {r[0]} `{r[1]}`: WPF {r[3]}" for r in odd]
+    return "\n".join(lines) + "\n"
+
+
+def read_sources() -> list[list[str]]:
+    if not SOURCES.exists():
+        return []
+    return [ln.split("\t") for ln in SOURCES.read_text(encoding="utf-8").splitlines() if ln]
+
+
+def with_sources(text: str, rows: list[list[str]]) -> str:
+    """``text`` (conformance.md) with its "Gathered files" section replaced by ``rows``."""
+    head = text.split(SOURCES_TITLE, 1)[0].rstrip("\n") + "\n\n"
+    return head + sources_section(rows) if rows else head
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("corpus", nargs="?", default=str(ROOT.parent / "shared" / "corpus"))
     ap.add_argument("--out", default=str(ROOT / "docs"))
+    ap.add_argument("--sources", help="folder of gathered files with manifest.tsv")
     args = ap.parse_args(argv)
     corpus, out = Path(args.corpus), Path(args.out)
+    if args.sources:
+        rows = gather_sources(Path(args.sources))
+        SOURCES.write_text("".join("\t".join(r) + "\n" for r in rows), encoding="utf-8")
+        page = out / "conformance.md"
+        page.write_text(with_sources(page.read_text(encoding="utf-8"), rows), encoding="utf-8")
+        print(f"wrote {SOURCES} and the section of {page}", file=sys.stderr)
+        return 0
     files = sorted(corpus.glob("*.xaml"))
     if not files:
         print(f"{corpus}: no .xaml files", file=sys.stderr)
@@ -168,7 +261,8 @@ def main(argv=None) -> int:
         anims[f.name] = animate_file(f, out / "conformance-anim")
         print(f"[{k}/{len(files)}] {f.name}: {r.status}, animations {anims[f.name]}",
               file=sys.stderr)  # fmt: skip
-    (out / "conformance.md").write_text(report(results, corpus, anims), encoding="utf-8")
+    page = report(results, corpus, anims)
+    (out / "conformance.md").write_text(with_sources(page, read_sources()), encoding="utf-8")
     contact_sheet(results, out / "conformance-sheet.png")
     print(f"wrote {out / 'conformance.md'}", file=sys.stderr)
     return 0

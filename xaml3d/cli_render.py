@@ -86,7 +86,9 @@ def _check_layout_options(window, outline, viewport, width, height, scale, fit, 
             f"-W/-H size one viewport; with {many} use --window-size (the root's client size)"
         )
     if window and (scale is not None or fit):
-        raise click.UsageError("--scale and --fit apply to one viewport, not to --window")
+        given = " and ".join(o for o, on in (("--scale", scale is not None), ("--fit", fit)) if on)
+        verb = "applies" if " and " not in given else "apply"
+        raise click.UsageError(f"{given} {verb} to one viewport, not to --window")
     if many and output == "-":
         raise click.UsageError(f"{many} writes files: give -o FILE or a directory")
 

@@ -45,13 +45,25 @@ def scene_findings(
     found: list[Diagnostic] = begun_by_name(scene.diagnostics, scene, storyboard)
     for vp in scene.viewports:
         w, h = size_of(vp)
-        if vp.size_source.startswith("layout: ") and not (w > 0 and h > 0):
-            if (w, h) == (vp.width, vp.height):
-                continue  # laid out empty: LAY001/LAY002 say why WPF draws nothing (a warning)
-        found.extend(check_camera(vp.camera, w, h, vp.bounds()))
+        own_empty = not (w > 0 and h > 0) and (w, h) == (vp.width, vp.height)
+        if own_empty:
+            # Width="0" in markup, or laid out empty: WPF loads it and draws nothing (LAY001 /
+            # LAY002 say why, a warning). The camera's own problems are still reported; those
+            # of the size (CAM010) and of the scene seen through it are not.
+            diags = [d for d in check_camera(vp.camera, 1.0, 1.0) if d.code != "CAM010"]
+        else:
+            diags = check_camera(vp.camera, w, h, vp.bounds())
+        # a camera WPF supplies (no Camera in markup) has no position: the viewport's stands in
+        found.extend(_at_viewport(d, vp) for d in diags)
     found.extend(check_scene(scene))
     file = scene.file or file
     return sort_findings(with_file(d, file) for d in found)
+
+
+def _at_viewport(d: Diagnostic, vp: Viewport) -> Diagnostic:
+    if d.line is not None or vp.line is None:
+        return d
+    return Diagnostic(d.code, d.severity, d.message, d.file, vp.line, vp.column)
 
 
 def begun_by_name(diags: Iterable[Diagnostic], scene: Scene, storyboard: str | None):

@@ -87,6 +87,7 @@ EXTRA_CODES: dict[str, tuple[str, str]] = {
         ERROR,
         "the viewport is laid out empty (LAY001/LAY002): nothing to draw without -W/-H",
     ),
+    "RND009": (WARNING, "the image came out one uniform colour, though something was drawn"),
 }
 
 

@@ -45,4 +45,8 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         WARNING,
         "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",
     ),  # fmt: skip
+    "ANIM020": (
+        WARNING,
+        "animation target on an object of another assembly (clr-namespace): not evaluated",
+    ),  # fmt: skip
 }

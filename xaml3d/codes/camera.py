@@ -14,9 +14,16 @@ CAMERA_CODES: dict[str, tuple[str, str]] = {
     "CAM003": (ERROR, "UpDirection is parallel to LookDirection"),
     "CAM004": (ERROR, "FieldOfView is <= 0 or >= 180 degrees"),
     "CAM005": (ERROR, "perspective NearPlaneDistance < 0 (WPF draws nothing)"),
-    "CAM006": (ERROR, "perspective NearPlaneDistance = 0 (c = -near/far = 0, Mpp degenerate)"),
+    "CAM006": (
+        WARNING,
+        "no longer reported: NearPlaneDistance 0 is drawn as WPF draws it (CAM109 for z-fighting)",
+    ),  # fmt: skip
     "CAM007": (ERROR, "FarPlaneDistance <= NearPlaneDistance"),
-    "CAM008": (ERROR, "NaN or infinite camera component (only FarPlaneDistance may be Infinity)"),
+    "CAM008": (
+        ERROR,
+        "NaN, infinite or out-of-range camera component "
+        "(beyond 3.4e38; only FarPlaneDistance may be Infinity)",
+    ),  # fmt: skip
     "CAM009": (ERROR, "orthographic Width (or view height) <= 0"),
     "CAM010": (ERROR, "zero-size (or invalid) viewport: no aspect ratio"),
     "CAM011": (ERROR, "Camera.Transform is singular (WPF draws nothing)"),
@@ -32,4 +39,8 @@ CAMERA_CODES: dict[str, tuple[str, str]] = {
     "CAM106": (WARNING, "FieldOfView very large (> 150 degrees)"),
     "CAM107": (WARNING, "the scene lies entirely outside the view volume"),
     "CAM108": (WARNING, "camera inside the scene's bounding box, its near plane cuts the scene"),
+    "CAM109": (
+        WARNING,
+        "perspective NearPlaneDistance 0 with the scene reaching the eye: depth z-fights",
+    ),  # fmt: skip
 }

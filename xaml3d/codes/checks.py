@@ -18,6 +18,10 @@ CHECK_CODES: dict[str, tuple[str, str]] = {
     "CHK007": (INFO, "only ambient light: every surface is lit flat, without shading"),
     "CHK008": (
         WARNING,
-        "a brush that varies over the surface on a mesh without TextureCoordinates: one colour",
-    ),
+        "a brush that varies over the surface on a mesh without TextureCoordinates: nothing drawn",
+    ),  # fmt: skip
+    "CHK009": (
+        WARNING,
+        "the camera is inside a closed or emissive model: it fills the view (try --fit)",
+    ),  # fmt: skip
 }

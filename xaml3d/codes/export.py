@@ -54,4 +54,8 @@ EXPORT_CODES: dict[str, tuple[str, str]] = {
         "the format cannot carry part of the scene (OBJ: lights, camera, "
         "animation, specular; STL: everything but the triangles)",
     ),
+    "EXP017": (
+        WARNING,
+        "a model or light is left out: values beyond single precision (3.4e38, glTF's floats)",
+    ),  # fmt: skip
 }

@@ -89,4 +89,5 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
     "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),
     "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
+    "XAML023": (ERROR, "text inside an element whose content is a collection of objects"),
 }

@@ -47,8 +47,10 @@ def gltf_camera(vp, file=None) -> tuple[dict, np.ndarray, list] | None:
         return _matrix_camera(cam, world, aspect, name, file)
     near, far = float(cam.near_plane_distance), float(cam.far_plane_distance)
     if isinstance(cam, PerspectiveCamera):
+        # glTF's znear must be > 0: a NearPlaneDistance 0 takes the near WPF narrows it to
+        znear = near if near > 0.0 else float(pipe.near)
         persp = {"yfov": yfov_of(float(cam.field_of_view), aspect), "aspectRatio": aspect,
-                 "znear": near}  # fmt: skip
+                 "znear": znear}  # fmt: skip
         if math.isfinite(far):
             persp["zfar"] = far
         return {"type": "perspective", "perspective": persp, "name": name}, world, notes

@@ -26,6 +26,14 @@ from xaml3d.scene.types import AmbientLight, DirectionalLight, PointLight, SpotL
 GENERATOR = "xaml3d"
 
 
+_SINGLE_MAX = float(np.finfo(np.float32).max)
+
+
+def _in_single(a) -> bool:
+    """Every value finite and within single precision (what glTF's floats hold)."""
+    return bool(np.all(np.abs(np.asarray(a, dtype=np.float64)) <= _SINGLE_MAX))
+
+
 def _node_transform(node: dict, m: np.ndarray) -> None:
     parts = trs.decompose(m)
     t, q, s = parts
@@ -40,6 +48,8 @@ def _node_transform(node: dict, m: np.ndarray) -> None:
 def frame_looking(position, direction, up_hint=(0.0, 1.0, 0.0)) -> np.ndarray:
     """A rigid matrix placing a node at ``position`` with its -Z along ``direction``."""
     d = np.asarray(direction, dtype=np.float64)
+    with np.errstate(under="ignore"):
+        d = d / np.max(np.abs(d))  # largest component 1 first: a 1e-300 direction has a length
     w = -d / np.linalg.norm(d)
     up = np.asarray(up_hint, dtype=np.float64)
     if abs(float(up @ w)) > 0.999:
@@ -130,6 +140,11 @@ class ViewportExport:
     def _model_node(self, i: int, model) -> int | None:
         where = f"GeometryModel3D {model.name!r}" if model.name else "a GeometryModel3D"
         worlds = self._worlds(i, model)
+        if not all(_in_single(a) for a in (*worlds, model.mesh.positions)):
+            self.note("EXP017", f"{where} has coordinates beyond single precision (3.4e38): "
+                      "glTF cannot hold them, and WPF's renderer draws nothing of them",
+                      model)  # fmt: skip
+            return None
         nested = any(trs.decompose(w) is None for w in worlds)
         if trs.split(model.world) is None:
             self.note("EXP013", f"{where} has a singular or projective transform: WPF "
@@ -265,9 +280,10 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
     # intensities are physical (lux, candela), and a Lambertian surface returns 1/pi of it
     spec: dict = {"color": color, "intensity": math.pi}
     if isinstance(light, DirectionalLight):
-        d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
-        if not (np.all(np.isfinite(d)) and np.linalg.norm(d) > 0):
-            return None
+        with np.errstate(over="ignore", invalid="ignore"):
+            d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
+        if not (_in_single(d) and np.any(d != 0.0)):
+            return None  # not a direction WPF's renderer can use either
         spec["type"] = "directional"
         return spec, frame_looking(np.zeros(3), d)
     p = world @ np.array([*light.position, 1.0])
@@ -280,9 +296,10 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
         spec["type"] = "point"
         return spec, frame_looking(p, (0.0, 0.0, -1.0))
     if isinstance(light, SpotLight):
-        d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
-        if not (np.all(np.isfinite(d)) and np.linalg.norm(d) > 0):
-            return None
+        with np.errstate(over="ignore", invalid="ignore"):
+            d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
+        if not (_in_single(d) and np.any(d != 0.0)):
+            return None  # not a direction WPF's renderer can use either
         outer = min(max(math.radians(float(light.outer_cone_angle)) / 2.0, 1e-6), math.pi / 2)
         inner = min(max(math.radians(float(light.inner_cone_angle)) / 2.0, 0.0), outer * 0.999)
         spec["type"] = "spot"

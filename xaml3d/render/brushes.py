@@ -180,18 +180,21 @@ def _radial_t(brush: RadialGradientBrush, q: np.ndarray) -> np.ndarray:
         return np.full(q.shape[0], np.nan)
     c = np.array(brush.center, dtype=np.float64)
     r = np.array([rx, ry])
-    p = (q - c) / r  # unit-circle space
-    o = (np.array(brush.gradient_origin, dtype=np.float64) - c) / r
-    d = p - o
-    dd = np.einsum("ij,ij->i", d, d)
-    od = d @ o
-    oo = float(o @ o)
-    # |o + s d| = 1 at s = (-od + sqrt(od^2 - dd (oo - 1))) / dd; t = 1 / s.
-    disc = od * od - dd * (oo - 1.0)
-    root = np.sqrt(np.maximum(disc, 0.0))
-    den = root - od
-    ok = (dd > 0.0) & (disc >= 0.0) & (den > 0.0)
-    t = np.where(ok, dd / np.where(ok, den, 1.0), np.nan)  # NaN: ray misses -> end colour
+    # A tiny radius sends points far out in unit-circle space: their products overflow to
+    # infinity or NaN, which fall through ``ok`` below to the end colour (outside the ellipse).
+    with np.errstate(over="ignore", invalid="ignore"):
+        p = (q - c) / r  # unit-circle space
+        o = (np.array(brush.gradient_origin, dtype=np.float64) - c) / r
+        d = p - o
+        dd = np.einsum("ij,ij->i", d, d)
+        od = d @ o
+        oo = float(o @ o)
+        # |o + s d| = 1 at s = (-od + sqrt(od^2 - dd (oo - 1))) / dd; t = 1 / s.
+        disc = od * od - dd * (oo - 1.0)
+        root = np.sqrt(np.maximum(disc, 0.0))
+        den = root - od
+        ok = (dd > 0.0) & (disc >= 0.0) & (den > 0.0) & np.isfinite(den) & np.isfinite(dd)
+        t = np.where(ok, dd / np.where(ok, den, 1.0), np.nan)  # NaN: ray misses -> end colour
     return np.where(dd > 0.0, t, 0.0)  # at the origin itself: the first colour
 
 
@@ -352,18 +355,40 @@ def _premultiplied(color) -> np.ndarray:
     return c
 
 
+_SINGLE_MAX = float(np.finfo(np.float32).max)
+_GEOMETRY = ("start_point", "end_point", "center", "gradient_origin", "radius_x", "radius_y",
+             "transform", "relative_transform", "viewport", "viewbox")  # fmt: skip
+
+
+def _opacity(brush) -> float:
+    """Brush.Opacity as drawn: within [0, 1] (NaN: 0)."""
+    o = float(brush.opacity)
+    return min(max(o, 0.0), 1.0) if o == o else 0.0
+
+
+def _out_of_range(brush, uv: np.ndarray, bounds: Bounds) -> bool:
+    """A brush placed with values (or sampled at texture coordinates) that are not finite or
+    beyond single precision: WPF's renderer cannot draw it, and its mapping would overflow."""
+    values = [getattr(brush, f) for f in _GEOMETRY if getattr(brush, f, None) is not None]
+    values += [uv, *bounds]
+    return not all(np.all(np.abs(np.asarray(v, dtype=np.float64)) <= _SINGLE_MAX) for v in values)
+
+
 def sample_brush(
     brush: Brush, uv: np.ndarray, bounds: Bounds, density: float | None = None
 ) -> np.ndarray:
     """Premultiplied rgba (M, 4) of ``brush`` at texture coordinates ``uv`` (M, 2), Opacity
-    included. ``bounds`` is ``brush_bounds`` of the mesh's texture coordinates; ``density``
-    the screen pixels per texture-coordinate unit a drawn tile needs (``uv_density``)."""
+    included (clamped to [0, 1] as drawn). ``bounds`` is ``brush_bounds`` of the mesh's texture
+    coordinates; ``density`` the screen pixels per texture-coordinate unit a drawn tile needs
+    (``uv_density``). A brush placed beyond single precision draws nothing (transparent)."""
     uv = np.asarray(uv, dtype=np.float64).reshape(-1, 2)
     m = uv.shape[0]
     with np.errstate(under="ignore"):
         if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
-            c = _premultiplied(brush.color) * float(brush.opacity)
+            c = _premultiplied(brush.color) * _opacity(brush)
             return np.broadcast_to(c, (m, 4)).copy()
+        if _out_of_range(brush, uv, bounds):
+            return np.zeros((m, 4))
         if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)):
             out = _sample_gradient(brush, uv, bounds)
         elif isinstance(brush, ImageBrush):
@@ -374,8 +399,8 @@ def sample_brush(
             out = sample_drawing_brush(brush, uv, bounds, density)
         else:
             raise TypeError(f"not a brush: {type(brush).__name__}")
-        if brush.opacity != 1.0:
-            out *= float(brush.opacity)
+        if _opacity(brush) != 1.0:
+            out *= _opacity(brush)
         return out
 
 
@@ -388,22 +413,22 @@ def brush_average(brush: Brush) -> np.ndarray:
     """A representative premultiplied colour (4,) for the ``flat`` and ``wireframe`` modes:
     the solid colour, the mean of the gradient stops, the mean of the image pixels."""
     if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
-        return _premultiplied(brush.color) * float(brush.opacity)
+        return _premultiplied(brush.color) * _opacity(brush)
     if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)):
         if not brush.stops:
             return np.zeros(4)
         cols = np.array([_premultiplied(s.color) for s in brush.stops])
-        return cols.mean(axis=0) * float(brush.opacity)
+        return cols.mean(axis=0) * _opacity(brush)
     if isinstance(brush, ImageBrush):
         if brush.image is None or brush.image.size == 0:
             return np.zeros(4)
         img = np.asarray(brush.image, dtype=np.float64).reshape(-1, 4) / 255.0
         img[:, :3] *= img[:, 3:4]
-        return img.mean(axis=0) * float(brush.opacity)
+        return img.mean(axis=0) * _opacity(brush)
     if isinstance(brush, DrawingBrush):
         from xaml3d.render.layer2d.surface import average
 
-        return average(brush) * float(brush.opacity)
+        return average(brush) * _opacity(brush)
     raise TypeError(f"not a brush: {type(brush).__name__}")
 
 

@@ -47,8 +47,9 @@ from xaml3d.render.brushes import (
 )
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import DEPTH_OFFSET, Framebuffer
-from xaml3d.render.lighting import prepare_lights, shade_vertices
+from xaml3d.render.lighting import PreparedLights, prepare_lights, shade_vertices
 from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
+from xaml3d.scene.checks import unmapped
 from xaml3d.scene.transforms import normal_matrix
 from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
 
@@ -103,10 +104,13 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
         return None
     world = np.asarray(model.world, dtype=np.float64)
     view = np.asarray(pipeline.view_matrix, dtype=np.float64)
-    mv = view @ world
-    pos = mesh.positions
-    clip = pos @ (pipeline.clip_matrix @ world)[:, :3].T + (pipeline.clip_matrix @ world)[:, 3]
-    vpos = pos @ mv[:3, :3].T + mv[:3, 3]  # world and view are affine
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        # coordinates out of range come out infinite or NaN here: checked just below
+        mv = view @ world
+        pos = mesh.positions
+        to_clip = pipeline.clip_matrix @ world
+        clip = pos @ to_clip[:, :3].T + to_clip[:, 3]
+        vpos = pos @ mv[:3, :3].T + mv[:3, 3]  # world and view are affine
     try:
         nm = normal_matrix(mv)
     except XamlError:
@@ -120,30 +124,49 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             )  # fmt: skip
         )
         return None
-    if not (np.isfinite(clip).all() and np.isfinite(vpos).all()):
+    if not (_in_range(clip) and _in_range(vpos) and np.isfinite(mv).all()):
+        # WPF's renderer works in single precision: coordinates past its range (3.4e38) are
+        # infinite there and such triangles are not drawn; past it here the products of
+        # lighting and clipping would overflow
         ctx.diagnostics.append(
             Diagnostic(
                 "RND004",
                 WARNING,
-                "model skipped: non-finite coordinates",
+                "model skipped: coordinates infinite or beyond single precision (3.4e38), "
+                "which WPF's renderer cannot draw",
                 line=model.line,
                 column=model.column,
             )  # fmt: skip
         )
         return None
-    # det [x y w] of the three vertices, expanded by the first column.
+    # det [x y w] of the three vertices, expanded by the first column. Only its sign is used:
+    # each vertex's (x, y, w) is first divided by its largest magnitude (a positive factor per
+    # row keeps the sign), so coordinates near 1e308 cannot overflow the products, and a
+    # product too small for a double is 0 (harmless).
     idx = mesh.indices
-    x, y, w = clip[:, 0][idx], clip[:, 1][idx], clip[:, 3][idx]
-    det = (
-        x[:, 0] * (y[:, 1] * w[:, 2] - y[:, 2] * w[:, 1])
-        - y[:, 0] * (x[:, 1] * w[:, 2] - x[:, 2] * w[:, 1])
-        + w[:, 0] * (x[:, 1] * y[:, 2] - x[:, 2] * y[:, 1])
-    )
+    xyw = clip[:, [0, 1, 3]]
+    scale = np.max(np.abs(xyw), axis=1, keepdims=True)
+    with np.errstate(under="ignore"):
+        xyw = xyw / np.where(scale > 0.0, scale, 1.0)
+        x, y, w = xyw[:, 0][idx], xyw[:, 1][idx], xyw[:, 2][idx]
+        det = (
+            x[:, 0] * (y[:, 1] * w[:, 2] - y[:, 2] * w[:, 1])
+            - y[:, 0] * (x[:, 1] * w[:, 2] - x[:, 2] * w[:, 1])
+            + w[:, 0] * (x[:, 1] * y[:, 2] - x[:, 2] * y[:, 1])
+        )
     mirror = np.linalg.det(world[:3, :3]) < 0.0
     ccw = det < 0.0 if mirror else det > 0.0
     cw = det > 0.0 if mirror else det < 0.0
     sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
     return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
+
+
+SINGLE_MAX = float(np.finfo(np.float32).max)
+
+
+def _in_range(a: np.ndarray) -> bool:
+    """Every value finite and within single precision's range."""
+    return bool(np.all(np.abs(a) <= SINGLE_MAX))  # NaN compares False
 
 
 def _unit_rows(v: np.ndarray) -> np.ndarray:
@@ -246,6 +269,10 @@ def _face_geometry(pm: PreparedModel, tris: np.ndarray) -> tuple[np.ndarray, np.
     return centroid, _unit_rows(n)
 
 
+# white ambient light only: a DiffuseMaterial then shows its brush exactly (the stand-in checker)
+_UNLIT = PreparedLights(ambient=np.ones(3))
+
+
 class PassShader:
     """Colours of one material pass for given fragments (shaded: Gouraud, flat: per face)."""
 
@@ -257,6 +284,18 @@ class PassShader:
         self.mat = mat
         self.indices = pm.model.mesh.indices
         self.flat = flat
+        # The grey checker standing in for a missing image is drawn as it is, opaque and
+        # unlit, whatever the material: added by an Emissive or Specular pass it would sum
+        # with what lies behind and saturate to white, and the promised checker would not show.
+        brush = mat.brush
+        self.standin = (
+            isinstance(brush, ImageBrush)
+            and brush.is_placeholder
+            and not isinstance(mat, DiffuseMaterial)
+        )
+        if self.standin:
+            mat = DiffuseMaterial(brush=brush)
+            lights = _UNLIT
         if flat:
             centroid, n = faces
             self.colors = np.zeros((self.indices.shape[0], 4))
@@ -295,9 +334,9 @@ class PassShader:
         blending."""
         kernels = accel.active()
         if kernels is None:
-            _blend(fb, self.mat, frag, self(frag))
+            _blend(fb, self, frag, self(frag))
             return
-        additive = not isinstance(self.mat, DiffuseMaterial)
+        additive = not (self.standin or isinstance(self.mat, DiffuseMaterial))
         pix = np.ascontiguousarray(frag.pixel, dtype=np.int64)
         z = np.asarray(frag.depth, dtype=np.float64) - DEPTH_OFFSET
         if self.flat and self.uniform:  # one colour per triangle: blended from the table
@@ -391,8 +430,8 @@ def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.
     return out
 
 
-def _blend(fb: Framebuffer, mat, frag: Fragments, col: np.ndarray) -> None:
-    if isinstance(mat, DiffuseMaterial):
+def _blend(fb: Framebuffer, shader: PassShader, frag: Fragments, col: np.ndarray) -> None:
+    if shader.standin or isinstance(shader.mat, DiffuseMaterial):
         fb.over(frag.pixel, frag.depth, col)
     else:
         fb.add(frag.pixel, frag.depth, col)
@@ -422,12 +461,14 @@ def draw_model(
     ``lights``: the prepared lights, or a callable returning them (called only when a side
     must be lit). ``shading``/``key``: the cache and this model's position in it."""
     flat = mode == "flat"
+    mesh = pm.model.mesh
     sides = (
         (pm.model.back_material, pm.back, -1.0),
         (pm.model.material, pm.front, 1.0),
     )
     for passes, mask, sign in sides:
-        passes = [p for p in passes if p.brush is not None]
+        # a varying brush on a mesh without texture coordinates: WPF draws nothing (CHK008)
+        passes = [p for p in passes if p.brush is not None and not unmapped(p.brush, mesh)]
         tris = np.flatnonzero(mask)
         if not passes or tris.size == 0:
             continue

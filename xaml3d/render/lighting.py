@@ -85,19 +85,31 @@ class PreparedLights:
         return int(self.pos_color.shape[0])
 
 
+SINGLE_MAX = float(np.finfo(np.float32).max)
+
+
 def _unit(v: np.ndarray) -> np.ndarray | None:
-    """v normalized, or None when v is zero or not finite (WPF drops such a light)."""
-    n = float(np.linalg.norm(v))
-    if not math.isfinite(n) or n == 0.0:
+    """v normalized, or None when v is zero, not finite or beyond single precision (WPF's
+    renderer cannot use such a light: it is dropped). Divided by its largest component first,
+    so the length cannot overflow."""
+    v = np.asarray(v, dtype=np.float64)
+    big = float(np.max(np.abs(v)))
+    if not big <= SINGLE_MAX or big == 0.0:
         return None
-    return v / n
+    with np.errstate(under="ignore"):
+        s = v / big
+    return s / float(np.sqrt(s @ s))
 
 
 def _transform_point(m: np.ndarray, p) -> np.ndarray | None:
-    h = m @ np.array([p[0], p[1], p[2], 1.0], dtype=np.float64)
-    if h[3] == 0.0 or not np.all(np.isfinite(h)):
+    """A light's position in view space, or None when it is not finite or beyond single
+    precision (then WPF's renderer drops the light)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        h = m @ np.array([p[0], p[1], p[2], 1.0], dtype=np.float64)
+        out = h[:3] / h[3] if h[3] != 0.0 else None
+    if out is None or not np.all(np.abs(out) <= SINGLE_MAX):
         return None
-    return h[:3] / h[3]
+    return out
 
 
 def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> PreparedLights:
@@ -114,7 +126,9 @@ def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> Prepared
         m = view @ np.asarray(light.world, dtype=np.float64)
         m3 = m[:3, :3]
         if isinstance(light, DirectionalLight):
-            to_light = _unit(-(m3 @ np.array(light.direction, dtype=np.float64)))
+            with np.errstate(over="ignore", invalid="ignore"):  # out of range: _unit drops it
+                d = -(m3 @ np.array(light.direction, dtype=np.float64))
+            to_light = _unit(d)
             if to_light is not None:
                 dcol.append(rgb)
                 ddir.append(to_light)
@@ -133,7 +147,9 @@ def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> Prepared
         axis = np.zeros(3)
         cos_o = cos_i = -2.0  # unused for point lights
         if isinstance(light, SpotLight):
-            a = _unit(-(m3 @ np.array(light.direction, dtype=np.float64)))
+            with np.errstate(over="ignore", invalid="ignore"):
+                d = -(m3 @ np.array(light.direction, dtype=np.float64))
+            a = _unit(d)
             if a is None:
                 continue
             axis = a

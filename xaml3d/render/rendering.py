@@ -99,6 +99,16 @@ def draw_viewport(
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
     rgba, depth = fb.resolve(grid, nearest=nearest)
+    if fb.fragments_drawn and w * h > 1 and bool((rgba == rgba[0, 0]).all()):
+        # something was drawn, yet the image is one colour: a surface fills the view (the
+        # camera inside a model), or the models draw in the background's colour
+        hexa = "#" + "".join(f"{int(c):02X}" for c in rgba[0, 0][[3, 0, 1, 2]])
+        msg = (
+            f"every pixel of the image is {hexa}: a surface fills the whole view or the models "
+            "draw in the background's colour; try --fit to frame the scene, or --background "
+            "with another colour to see what is drawn"
+        )
+        diags.append(Diagnostic("RND009", WARNING, msg, scene.file))
     if picture is not None and not nearest:
         from xaml3d.render.layer2d.picture import apply_picture  # imports skia: only when needed
 

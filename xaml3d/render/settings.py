@@ -234,7 +234,7 @@ def check_limits(size: FrameSize, settings: RenderSettings) -> None:
     w, h, grid = size.width, size.height, settings.grid
     if w > settings.max_size or h > settings.max_size:
         raise RenderError(
-            f"image size {w} x {h} exceeds the limit of {settings.max_size} pixels per side "
+            f"image size {w:g} x {h:g} exceeds the limit of {settings.max_size} pixels per side "
             "(raise max_size to allow it)",
             code="RND001",
         )

@@ -22,23 +22,55 @@ import math
 import numpy as np
 
 from xaml3d.animation.moment import scene_at
-from xaml3d.errors import Diagnostic
+from xaml3d.errors import Diagnostic, RenderError
 from xaml3d.render.brushes import sample_brush
 from xaml3d.render.frame import straight_uint8
 from xaml3d.render.pipeline import render_scene
-from xaml3d.render.settings import FrameSize, RenderSettings, settings_of
+from xaml3d.render.settings import (
+    MAX_SUPERSAMPLED_PIXELS,
+    FrameSize,
+    RenderSettings,
+    settings_of,
+)
 from xaml3d.scene.boxes import BORDER, CONTROL, VIEWPORT, WINDOW, Box
 from xaml3d.scene.types import Scene, SolidColorBrush
 
 WINDOW_BACKGROUND = SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0))
 OUTLINE = (0.0, 120 / 255, 215 / 255, 1.0)  # the Windows accent blue, premultiplied (opaque)
+MAX_WINDOW_SIDE = 16384  # pixels per side, as a plain render's default max_size
+
+
+def _clamped(v: float, limit: int) -> float:
+    """``v`` within [-1, limit + 1]: the same pixels, and never an infinite or huge number
+    (a Canvas.Top of 1e308 puts an element far outside, not into an OverflowError)."""
+    return min(max(v, -1.0), limit + 1.0) if not math.isnan(v) else -1.0
 
 
 def _span(a: float, length: float, limit: int) -> tuple[int, int]:
     """Pixels [i0, i1) whose centres lie in [a, a + length)."""
-    i0 = max(0, math.ceil(a - 0.5))
-    i1 = min(limit, math.ceil(a + length - 0.5))
+    i0 = max(0, math.ceil(_clamped(a - 0.5, limit)))
+    i1 = min(limit, math.ceil(_clamped(a + length - 0.5, limit)))
     return i0, max(i0, i1)
+
+
+def client_pixels(client, max_size: int = MAX_WINDOW_SIDE) -> tuple[int, int]:
+    """The picture's size for a client area of ``client`` (width, height), with the limits of
+    a plain render: RND001 past ``max_size`` pixels per side or MAX_SUPERSAMPLED_PIXELS."""
+    cw, ch = (float(v) for v in client)
+    if not (math.isfinite(cw) and math.isfinite(ch)) or cw > max_size or ch > max_size:
+        raise RenderError(
+            f"window client area {cw:g} x {ch:g} exceeds the limit of {max_size} pixels per "
+            "side (lower --window-size, or render one viewport)",
+            code="RND001",
+        )
+    w, h = max(1, round(cw)), max(1, round(ch))
+    if w * h > MAX_SUPERSAMPLED_PIXELS:
+        raise RenderError(
+            f"window client area {w} x {h} is over the limit of {MAX_SUPERSAMPLED_PIXELS} "
+            "pixels (lower --window-size)",
+            code="RND001",
+        )
+    return w, h
 
 
 def _over(canvas: np.ndarray, y0: int, x0: int, premul: np.ndarray) -> None:
@@ -50,6 +82,8 @@ def _over(canvas: np.ndarray, y0: int, x0: int, premul: np.ndarray) -> None:
 
 def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     x, y, w, h = rect
+    if not all(math.isfinite(float(v)) for v in rect):
+        return  # a box at or of infinite extent: WPF's layout never arranges one on screen
     H, W = canvas.shape[:2]
     c0, c1 = _span(x, w, W)
     r0, r1 = _span(y, h, H)
@@ -79,6 +113,8 @@ def _band(b: Box):
 
 def _outline(canvas: np.ndarray, rect) -> None:
     x, y, w, h = rect
+    if not all(math.isfinite(float(v)) for v in rect):
+        return
     H, W = canvas.shape[:2]
     c0, c1 = _span(x, w, W)
     r0, r1 = _span(y, h, H)
@@ -108,6 +144,17 @@ def _draw_control(canvas: np.ndarray, b: Box) -> None:
     _over(canvas, y0, x0, rasterize(b.drawing, x1 - x0, y1 - y0, m))
 
 
+def _overlaps(rect, W: int, H: int) -> bool:
+    """Whether a laid-out box (finite) covers part of the client area: a viewport wholly
+    outside it is not rendered (nothing of it would show)."""
+    x, y, w, h = (float(v) for v in rect)
+    if not all(math.isfinite(v) for v in (x, y, w, h)):
+        return False
+    c0, c1 = _span(x, w, W)
+    r0, r1 = _span(y, h, H)
+    return c1 > c0 and r1 > r0
+
+
 def compose_window(
     scene: Scene,
     settings: RenderSettings | None = None,
@@ -127,8 +174,7 @@ def compose_window(
                             scale=None)  # fmt: skip
 
     result = scene.layout
-    W = max(1, round(result.client[0]))
-    H = max(1, round(result.client[1]))
+    W, H = client_pixels(result.client)
     canvas = np.zeros((H, W, 4), dtype=np.float32)
     if background is not None:
         bg = np.array(background, dtype=np.float32)
@@ -146,7 +192,7 @@ def compose_window(
         if brush is not None:
             # a Border paints its Background inside the border band (its brush maps there)
             _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush)
-        if b.kind == VIEWPORT:
+        if b.kind == VIEWPORT and _overlaps(b.rect, W, H):
             w, h = round(b.rect[2]), round(b.rect[3])
             if w >= 1 and h >= 1:
                 r = render_scene(

@@ -107,7 +107,16 @@ def _check_bounds(camera, width, height, bounds, report: Report) -> None:
     eye = transform_points(camera.transform, np.asarray(camera.position, dtype=np.float64))[0]
     lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
     inside = bool(np.all(eye >= lo) and np.all(eye <= hi))
-    if inside and depth.min() < pipe.near < depth.max():
+    near_zero = pipe.kind == "perspective" and float(camera.near_plane_distance) == 0.0
+    if near_zero and not outside and float(depth.min()) <= pipe.near:
+        # WPF narrows near to the scene's nearest depth; a scene that reaches the eye leaves
+        # nothing to narrow to, and a depth buffer from 0 cannot tell its surfaces apart
+        report(
+            "CAM109",
+            "NearPlaneDistance is 0 and the scene reaches the eye: WPF's depth buffer cannot "
+            "resolve it (z-fighting); give a positive NearPlaneDistance such as 0.125",
+        )
+    elif inside and depth.min() < pipe.near < depth.max():
         report(
             "CAM108",
             f"the camera at {tuple(float(c) for c in eye)} is inside the scene's bounding box "

@@ -38,8 +38,11 @@ from xaml3d.scene.types import MatrixCamera, OrthographicCamera, PerspectiveCame
 # UpDirection counts as parallel to LookDirection when the sine of the angle between them is
 # below this (the frame is then undefined, not merely unstable).
 FAR_FALLBACK_RATIO = 1e5  # perspective: far = near * 1e5 when infinite and no bounds
+# NearPlaneDistance 0 with the scene reaching the eye: the near used for depth is far * this
+NEAR_FLOOR_RATIO = 1e-6
 FAR_FALLBACK_ORTHO = 1e5  # orthographic: far = near + 1e5 when infinite and no bounds
 FAR_MARGIN = 1e-3  # relative margin beyond the farthest bounding-box corner
+_SINGLE_MAX = float(np.finfo(np.float32).max)
 
 
 def _v3(v) -> np.ndarray:
@@ -337,8 +340,9 @@ def effective_far(view: np.ndarray, near: float, far: float, kind: str, bounds=N
     """The finite far distance used for rendering (module docstring): ``far`` itself when finite,
     else just beyond the scene's farthest bounding-box corner, else a fixed fallback.
     ``view``: world -> view space (column form), the eye looking down -z."""
-    if math.isfinite(far):
+    if math.isfinite(far) and far <= _SINGLE_MAX:
         return far
+    # infinite, or past single precision (WPF's renderer narrows it to the scene all the same)
     perspective = kind == "perspective"
     if bounds is None:
         return near * FAR_FALLBACK_RATIO if perspective else near + FAR_FALLBACK_ORTHO
@@ -346,11 +350,37 @@ def effective_far(view: np.ndarray, near: float, far: float, kind: str, bounds=N
     corners = np.array(
         [[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
     )
-    depth = float(np.max(-transform_homogeneous(view, corners)[:, 2]))
+    with np.errstate(over="ignore", invalid="ignore"):
+        depth = float(np.max(-transform_homogeneous(view, corners)[:, 2]))
+    # a scene reaching past single precision: far stops there (what lies beyond is not drawn)
+    depth = min(depth, _SINGLE_MAX / 2.0) if depth == depth else _SINGLE_MAX / 2.0
     result = depth + FAR_MARGIN * max(abs(depth), abs(near))
     if perspective:
         return max(result, 2.0 * near)
     return max(result, near + max(abs(near), 1.0))
+
+
+def effective_near(view: np.ndarray, near: float, far: float, kind: str, bounds=None) -> float:
+    """The near distance the perspective depth map uses: ``near`` itself when positive, else
+    (NearPlaneDistance 0, which WPF draws normally) the scene's nearest bounding-box depth, as
+    WPF's renderer narrows near to the scene's depth span before it builds the depth buffer.
+    Nothing of the scene lies between the eye and that depth, so what is visible is unchanged.
+    When the scene reaches the eye (or without bounds), ``far * NEAR_FLOOR_RATIO`` stands in:
+    ``camera_check`` then warns that the depth buffer cannot resolve the scene (CAM006)."""
+    if kind != "perspective" or near != 0.0:
+        return near
+    floor = far * NEAR_FLOOR_RATIO
+    if bounds is None:
+        return floor
+    lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
+    corners = np.array(
+        [[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
+    )
+    with np.errstate(all="ignore"):  # an overflowing corner depth is not a usable near plane
+        depth = float(np.min(-transform_homogeneous(view, corners)[:, 2]))
+    # a hair in front of the nearest corner, so that it is not clipped by rounding
+    nearest = depth * (1.0 - 1e-9)
+    return nearest if math.isfinite(nearest) and floor < nearest < far else floor
 
 
 def _view_from_frame(P, u, v, w) -> np.ndarray:
@@ -406,7 +436,14 @@ def camera_pipeline(
     near, far_user = float(camera.near_plane_distance), float(camera.far_plane_distance)
     perspective = isinstance(camera, PerspectiveCamera)
     kind = "perspective" if perspective else "orthographic"
-    far = effective_far(view, near, far_user, kind, bounds)
+    if perspective and near == 0.0:
+        # the far fallback of a near 0 (no bounds, infinite far) must still be finite and > 0
+        far = effective_far(view, 1.0 if bounds is None else near, far_user, kind, bounds)
+        if far <= 0.0:
+            far = FAR_FALLBACK_RATIO
+        near = effective_near(view, near, far, kind, bounds)
+    else:
+        far = effective_far(view, near, far_user, kind, bounds)
     fields = dict(
         kind=kind, u=u, v=v, w=w, near=near, far=far, far_is_infinite=math.isinf(far_user),
         view_matrix=_m(view), wpf_view=wpf_view_matrix(camera),

@@ -26,6 +26,16 @@ def finite(x) -> bool:
     return bool(np.all(np.isfinite(np.asarray(x, dtype=np.float64))))
 
 
+SINGLE_MAX = float(np.finfo(np.float32).max)
+_RANGE = "NaN, infinite or beyond 3.4e38 (WPF's renderer is single precision)"
+
+
+def usable(x) -> bool:
+    """Finite and within single precision's range: a camera value WPF's renderer can use (the
+    pipeline's products then stay far from double precision's overflow)."""
+    return bool(np.all(np.abs(np.asarray(x, dtype=np.float64)) <= SINGLE_MAX))
+
+
 class Report:
     """Collects diagnostics with the camera's line."""
 
@@ -72,15 +82,15 @@ def check_values(camera, width, height, report: Report) -> None:
             "no camera given: WPF uses its default PerspectiveCamera "
             "(at 0,0,0 looking down -z, FieldOfView 45)",
         )
-    if not finite(camera.transform):
-        report("CAM008", "Camera.Transform has a NaN or infinite component")
+    if not usable(camera.transform):
+        report("CAM008", f"Camera.Transform has a component that is {_RANGE}")
     elif is_singular(camera.transform):
         report("CAM011", "Camera.Transform is singular: WPF draws nothing")
     if isinstance(camera, MatrixCamera):
         for label in ("ViewMatrix", "ProjectionMatrix"):
             m = camera.view_matrix if label == "ViewMatrix" else camera.projection_matrix
-            if not finite(m):
-                report("CAM008", f"MatrixCamera.{label} has a NaN or infinite component")
+            if not usable(m):
+                report("CAM008", f"MatrixCamera.{label} has a component that is {_RANGE}")
             elif is_singular(m):
                 report("CAM012", f"MatrixCamera.{label} is singular")
     else:
@@ -94,11 +104,11 @@ def _check_projection_camera(camera, report: Report) -> None:
         ("LookDirection", camera.look_direction),
         ("UpDirection", camera.up_direction),
     ):
-        if not finite(value):
-            report("CAM008", f"{label} {tuple(value)} has a NaN or infinite component")
+        if not usable(value):
+            report("CAM008", f"{label} {tuple(value)} has a component that is {_RANGE}")
     look = np.asarray(camera.look_direction, dtype=np.float64)
     up = np.asarray(camera.up_direction, dtype=np.float64)
-    if finite(look) and finite(up):
+    if usable(look) and usable(up):
         look_len, up_len = float(np.linalg.norm(look)), float(np.linalg.norm(up))
         if look_len == 0.0:
             report("CAM001", "LookDirection is the zero vector: the camera looks nowhere")
@@ -119,16 +129,16 @@ def _check_projection_camera(camera, report: Report) -> None:
                 )
 
     near, far = float(camera.near_plane_distance), float(camera.far_plane_distance)
-    near_ok = math.isfinite(near)
+    near_ok = usable(near)
     far_ok = not math.isnan(far) and far != -math.inf
     if not near_ok:
-        report("CAM008", f"NearPlaneDistance {near} is NaN or infinite")
+        report("CAM008", f"NearPlaneDistance {near} is {_RANGE}")
     if not far_ok:
         report("CAM008", f"FarPlaneDistance {far} is NaN or -Infinity (only +Infinity is allowed)")
     if perspective:
         fov = float(camera.field_of_view)
-        if not math.isfinite(fov):
-            report("CAM008", f"FieldOfView {fov} is NaN or infinite")
+        if not usable(fov):
+            report("CAM008", f"FieldOfView {fov} is {_RANGE}")
         elif fov <= 0.0 or fov >= 180.0:
             report("CAM004", f"FieldOfView {fov:g} is outside (0, 180) degrees")
         elif fov < FOV_SMALL_DEG:
@@ -137,12 +147,10 @@ def _check_projection_camera(camera, report: Report) -> None:
             report("CAM106", f"FieldOfView {fov:g} degrees is very large: extreme distortion")
         if near_ok and near < 0.0:
             report("CAM005", f"NearPlaneDistance {near:g} < 0: WPF draws nothing")
-        elif near_ok and near == 0.0:
-            report("CAM006", "NearPlaneDistance is 0: c = -near/far = 0, depth is degenerate")
     else:
         width = float(camera.width)
-        if not math.isfinite(width):
-            report("CAM008", f"Width {width} is NaN or infinite")
+        if not usable(width):
+            report("CAM008", f"Width {width} is {_RANGE}")
         elif width <= 0.0:
             report("CAM009", f"orthographic Width {width:g} <= 0")
     if near_ok and far_ok and far <= near:

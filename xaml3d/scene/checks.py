@@ -97,17 +97,30 @@ def _varies(brush) -> bool:
     return isinstance(brush, _VARYING)
 
 
+def unmapped(brush, mesh) -> bool:
+    """Whether WPF draws nothing for a pass of ``brush`` on ``mesh``: a gradient, image,
+    visual or drawing brush on a mesh whose texture coordinates are all one point (none
+    given: WPF takes 0,0 for each vertex). Their bounding box, which the brush is mapped
+    onto, is then empty: a real capture of WPF shows nothing drawn (a RadialGradientBrush
+    triangle under white ambient light leaves the viewport empty)."""
+    if not _varies(brush):
+        return False
+    uv = mesh.texcoords
+    return not (uv.shape[0] and np.ptp(uv, axis=0).any())
+
+
 def _check_texture_coordinates(model: Model, label: str, file: str | None) -> list[Diagnostic]:
     """CHK008: a gradient, image, visual or drawing brush on a mesh whose texture coordinates
     are all one point (none given: WPF uses (0,0) for each vertex, wpf3d.md section 5) is
-    sampled at that point only: the whole surface takes one colour, in WPF as here."""
+    mapped onto an empty box: WPF draws nothing for that pass, and neither does the renderer
+    (``unmapped``)."""
     mesh = model.mesh
     if mesh.triangle_count == 0 or "TextureCoordinates" in mesh.rejected:
         return []
     uv = mesh.texcoords
-    if uv.shape[0] and np.ptp(uv, axis=0).any():
-        return []
-    brush = next((p.brush for p in model.material + model.back_material if _varies(p.brush)), None)
+    brush = next(
+        (p.brush for p in model.material + model.back_material if unmapped(p.brush, mesh)), None
+    )
     if brush is None:
         return []
     kind = (
@@ -119,8 +132,8 @@ def _check_texture_coordinates(model: Model, label: str, file: str | None) -> li
         reason = f"all its TextureCoordinates are the point {uv[0, 0]:g},{uv[0, 1]:g}"
     else:
         reason = "it has no TextureCoordinates (WPF takes 0,0 for each vertex)"
-    msg = (f"the {kind} of {label} is drawn in one colour, as in WPF: {reason}, so the brush is "
-           "sampled at that one point; give the mesh TextureCoordinates spread over the "
+    msg = (f"the {kind} of {label} draws nothing, as in WPF: {reason}, so the brush is "
+           "mapped onto an empty box; give the mesh TextureCoordinates spread over the "
            "surface (e.g. 0,1 1,1 1,0 0,0 for a quad)")  # fmt: skip
     return [_diag("CHK008", msg, file, model if model.line is not None else mesh)]
 
@@ -176,12 +189,15 @@ def _check_lights(vp: Viewport, file: str | None) -> list[Diagnostic]:
 
 
 def world_vertices(vp: Viewport) -> np.ndarray:
-    """Every drawn vertex of the viewport in world space, (N, 3): one matmul per model."""
-    parts = [
-        m.mesh.positions @ m.world[:3, :3].T + m.world[:3, 3]
-        for m in vp.models
-        if m.mesh.triangle_count > 0
-    ]
+    """Every vertex of the viewport's drawn models in world space, (N, 3): one matmul per
+    model. A vertex that is or becomes infinite or NaN (it draws nothing, MSH007) comes out
+    non-finite; the callers' comparisons then leave it out."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        parts = [
+            m.mesh.positions @ m.world[:3, :3].T + m.world[:3, 3]
+            for m in vp.models
+            if m.mesh.triangle_count > 0
+        ]
     return np.concatenate(parts) if parts else np.zeros((0, 3))
 
 
@@ -239,6 +255,58 @@ def _not_seen(vp: Viewport, file: str | None) -> Diagnostic:
     )
 
 
+def is_closed(mesh) -> bool:
+    """Whether every edge of the mesh is shared by exactly two of its triangles (a watertight
+    surface: seen from inside, it is all there is to see)."""
+    idx = mesh.indices
+    if idx.shape[0] == 0:
+        return False
+    # vertices at the same place are one (a cube written with 4 vertices per face is closed)
+    _, weld = np.unique(mesh.positions, axis=0, return_inverse=True)
+    idx = weld.reshape(-1)[idx]
+    edges = np.sort(np.concatenate([idx[:, [0, 1]], idx[:, [1, 2]], idx[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool(np.all(counts == 2))
+
+
+def _check_inside(vp: Viewport, file: str | None) -> list[Diagnostic]:
+    """CHK009: the eye inside the bounding box of a closed or emissive model. From inside a
+    closed mesh its back faces fill the view; an emissive one adds its glow over everything
+    seen through it: the picture is that model, often one colour."""
+    cam = vp.camera
+    if cam is None or not hasattr(cam, "position"):
+        return []
+    from xaml3d.scene.transforms import transform_points
+
+    drawn = [i for i, m in enumerate(vp.models) if m.mesh.triangle_count > 0]
+    models = [vp.models[i] for i in drawn]
+    if not models:
+        return []
+    with np.errstate(all="ignore"):
+        eye = transform_points(cam.transform, np.asarray(cam.position, dtype=np.float64))[0]
+        points = world_vertices(vp)
+        starts = np.cumsum([0] + [m.mesh.positions.shape[0] for m in models[:-1]])
+        lo = np.minimum.reduceat(points, starts, axis=0)
+        hi = np.maximum.reduceat(points, starts, axis=0)
+        inside = np.flatnonzero(np.all((lo <= eye) & (eye <= hi), axis=1))
+    for k in inside:  # few: the models whose box holds the eye
+        model = models[int(k)]
+        glows = any(isinstance(p, EmissiveMaterial) for p in model.material + model.back_material)
+        if not (glows or is_closed(model.mesh)):
+            continue
+        what = "an emissive material" if glows else "a closed mesh"
+        index = drawn[int(k)]  # (models hold arrays: compared by identity, not ==)
+        msg = (
+            f"the camera of viewport {vp.index} is inside {_label(model, index)} ({what}): "
+            "it fills the view from inside, so the picture may be that model alone or one "
+            "colour; render with --fit to move the camera out of the scene, or with "
+            "--background to tell the model from the background"
+        )
+        located = getattr(cam, "line", None) is not None
+        return [_diag("CHK009", msg, file, cam if located else vp)]
+    return []
+
+
 def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     """Every scene-level finding for one viewport (its models, lights and camera coverage)."""
     out: list[Diagnostic] = []
@@ -250,6 +318,7 @@ def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
         out.extend(_check_model(model, i, file))
     out.extend(_check_lights(vp, file))
     out.extend(_check_visibility(vp, file))
+    out.extend(_check_inside(vp, file))
     return out
 
 

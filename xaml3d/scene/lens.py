@@ -86,9 +86,10 @@ def default_focus(camera: PerspectiveCamera, bounds) -> float:
     if bounds is None:
         return 1.0
     lo, hi = (np.asarray(b, dtype=np.float64).reshape(3) for b in bounds)
-    centre = np.append((lo + hi) / 2.0, 1.0)
+    centre = np.append(lo / 2.0 + hi / 2.0, 1.0)  # halves first: no overflow near 1e308
     view = camera_view(camera)
-    d = -float((view @ centre)[2])
+    with np.errstate(over="ignore", invalid="ignore"):  # far out: not finite, 1 is used
+        d = -float((view @ centre)[2])
     return d if d > 0 and math.isfinite(d) else 1.0
 
 

@@ -39,11 +39,18 @@ def _vec(v: ArrayLike, n: int = 3, what: str = "vector") -> np.ndarray:
 
 def _sine_measure(vectors: list[np.ndarray]) -> float:
     """|det| (or, for two 2D vectors, |cross|) over the product of the lengths: 0 when flat."""
-    lengths = [float(np.linalg.norm(e)) for e in vectors]
-    if min(lengths) == 0.0 or not all(math.isfinite(x) for x in lengths):
-        return 0.0
-    det = float(np.linalg.det(np.stack(vectors, axis=1)))
-    return abs(det) / math.prod(lengths)
+    # the determinant of the vectors made unit length (each divided by its largest component
+    # first): the same measure, and no length or product can overflow
+    units = []
+    for e in vectors:
+        e = np.asarray(e, dtype=np.float64)
+        big = float(np.max(np.abs(e)))
+        if not math.isfinite(big) or big == 0.0:
+            return 0.0
+        with np.errstate(under="ignore"):
+            s = e / big
+        units.append(s / float(np.sqrt(s @ s)))
+    return abs(float(np.linalg.det(np.stack(units, axis=1))))
 
 
 def _solve_homogeneous(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
@@ -122,7 +129,10 @@ def _about_center(linear: np.ndarray, center: ArrayLike) -> np.ndarray:
     c = _vec(center, 3, "center")
     m = np.eye(4)
     m[:3, :3] = linear
-    m[:3, 3] = c - linear @ c
+    # values near 1e308 overflow here: the matrix is then not finite, and a model under it is
+    # left out where it is drawn (RND004) and measured (its bounds), as WPF draws nothing of it
+    with np.errstate(over="ignore", invalid="ignore"):
+        m[:3, 3] = c - linear @ c
     return frozen_array(m)
 
 
@@ -167,25 +177,29 @@ def rotation_quaternion(
     WPF does NOT normalize the quaternion, so neither do we: a non-unit quaternion also scales
     and shears, as in WPF. The formula is WPF's row-vector matrix; ours is its transpose.
     """
-    x2, y2, z2 = x + x, y + y, z + z
-    xx, yy, zz = x * x2, y * y2, z * z2
-    xy, xz, yz = x * y2, x * z2, y * z2
-    wx, wy, wz = w * x2, w * y2, w * z2
-    row_form = np.array(
-        [
-            [1.0 - (yy + zz), xy + wz, xz - wy],
-            [xy - wz, 1.0 - (xx + zz), yz + wx],
-            [xz + wy, yz - wx, 1.0 - (xx + yy)],
-        ]
-    )
+    with np.errstate(over="ignore", invalid="ignore"):  # past 1e154: not finite (see below)
+        x2, y2, z2 = np.float64(x) * 2, np.float64(y) * 2, np.float64(z) * 2
+        xx, yy, zz = x * x2, y * y2, z * z2
+        xy, xz, yz = x * y2, x * z2, y * z2
+        wx, wy, wz = w * x2, w * y2, w * z2
+        row_form = np.array(
+            [
+                [1.0 - (yy + zz), xy + wz, xz - wy],
+                [xy - wz, 1.0 - (xx + zz), yz + wx],
+                [xz + wy, yz - wx, 1.0 - (xx + yy)],
+            ]
+        )
     return _about_center(row_form.T, center)
 
 
 def compose(*matrices: np.ndarray) -> np.ndarray:
     """Transform3DGroup: apply ``matrices`` first to last, so compose(A, B) == B @ A."""
     m = np.eye(4)
-    for a in matrices:
-        m = np.asarray(a, dtype=np.float64) @ m
+    # a part that is not finite (a quaternion of 1e308) makes the whole not finite: such a
+    # model is left out where it is drawn and measured (RND004), as WPF draws nothing of it
+    with np.errstate(over="ignore", invalid="ignore"):
+        for a in matrices:
+            m = np.asarray(a, dtype=np.float64) @ m
     return frozen_array(m)
 
 

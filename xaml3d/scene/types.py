@@ -506,7 +506,8 @@ class Viewport:
             if p.shape[0] == 0 or m.mesh.indices.shape[0] == 0:
                 continue
             p = p[np.isfinite(p).all(axis=1)]  # non-finite vertices draw nothing (MSH007)
-            w = p @ m.world[:3, :3].T + m.world[:3, 3]
+            with np.errstate(over="ignore", invalid="ignore"):  # overflowing ones: dropped here
+                w = p @ m.world[:3, :3].T + m.world[:3, 3]
             w = w[np.isfinite(w).all(axis=1)]
             if w.shape[0] == 0:
                 continue

@@ -136,11 +136,11 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
     """One timeline element -> TimelineGroup | Animation | None (not a timeline)."""
     p = r.props(el)
     t = p.type
-    own = "Storyboard.TargetName" in p.attached
+    own = p.attached_keys.get("Storyboard.TargetName")
     target = {
         "name": p.attached.get("Storyboard.TargetName", inherited.get("name")),
         "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
-        "name_at": r.ctx.locate(el, "Storyboard.TargetName") if own else inherited.get("name_at"),
+        "name_at": r.ctx.locate(el, own) if own else inherited.get("name_at"),
     }
     if t in _GROUPS:
         if t == "Storyboard" and not top:

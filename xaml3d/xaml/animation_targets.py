@@ -94,7 +94,8 @@ def name_map(root) -> dict[str, object]:
     """x:Name / Name -> element, first in document order."""
     out: dict[str, object] = {}
     for el in root.iter():
-        if isinstance(el.tag, str) and is_presentation(qname(el.tag)[0]):
+        # elements of other assemblies (clr-namespace) are in the namescope too
+        if isinstance(el.tag, str):
             n = element_name(el)
             if n and n not in out:
                 out[n] = el
@@ -153,6 +154,12 @@ def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: st
         raise TargetError("ANIM001", f"Storyboard.TargetName {target_name!r} names no object")
     steps = parse_path(path)
     for n, (prop, _owner, indices) in enumerate(steps):
+        if not is_presentation(qname(el.tag)[0]):
+            # WPF animates it through that assembly's own properties, which xaml3d cannot see
+            shown = f"{el.prefix}:{qname(el.tag)[1]}" if el.prefix else qname(el.tag)[1]
+            raise TargetError(
+                "ANIM020", f"{shown} is a type of another assembly: its animation is not evaluated"
+            )
         et = voc.lookup(qname(el.tag)[1])
         tname = qname(el.tag)[1]
         if et is None or (not et.open and prop not in et.properties):

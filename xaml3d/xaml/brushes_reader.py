@@ -209,8 +209,15 @@ def _image_brush(r, p, nodes: list) -> ImageBrush:
 
 def load_image(r, source: str, el, attr: str | None = None) -> tuple[str | None, np.ndarray | None]:
     """Resolve and decode an ImageSource; diagnostics (located at ``el``'s attribute ``attr``
-    when the source is an attribute) say why when there is no image."""
-    return _load_image(r, source, el, attr)
+    when the source is an attribute) say why when there is no image. Decoded once per element
+    however many models use it."""
+    key = ("image", id(el), source)
+    hit = r.cache.get(key)
+    if hit is not None and hit[0] is el:
+        return hit[1]
+    found = _load_image(r, source, el, attr)
+    r.cache[key] = (el, found)  # the element kept: its id stays its own
+    return found
 
 
 def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.ndarray | None]:
@@ -279,11 +286,16 @@ def _located(r, p) -> dict:
 
 
 def material(r, el) -> tuple:
-    """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order)."""
+    """A Material element -> tuple of leaf passes (MaterialGroup flattened, in order). Built
+    once however many models share it (a resource used by thousands of models)."""
+    hit = r.cache.get(("material", id(el)))
+    if hit is not None and hit[0] is el:
+        return hit[1]  # already tagged for the animation tracks when first built
     passes = _material(r, el)
     if r.props(el).type != "MaterialGroup":
         for ps in passes:
             r.tag(ps, el, _PASS_FIELDS)
+    r.cache["material", id(el)] = (el, passes)  # the element kept: its id stays its own
     return passes
 
 

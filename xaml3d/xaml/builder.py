@@ -30,6 +30,7 @@ from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.animation_reader import read_storyboard, read_trigger
 from xaml3d.xaml.animation_tracks import Slots, resolve_targets, tracks
 from xaml3d.xaml.brushes_reader import material
+from xaml3d.xaml.content_check import check_content
 from xaml3d.xaml.context import (
     ReadContext,
     a_an,
@@ -70,6 +71,9 @@ class Reader:
         # the properties the storyboards animate (animation_tracks.Slots), None when none:
         # the build notes where their values land in the Scene
         self.slots: Slots | None = None
+        # what is built once however often it is used (a mesh, material or image resource
+        # shared by thousands of models)
+        self.cache: dict = {}
 
     def read(self, el, prop: str) -> None:
         """``el``'s property ``prop`` has been read (an animated one must land in the Scene)."""
@@ -136,13 +140,15 @@ class Reader:
 
     def build_resource(self, entry, build, default, ref_el, attr=None):
         """Build a resource entry referred to from ``ref_el`` (its attribute ``attr``)."""
-        with self.ctx.building(entry) as ok:
-            if not ok:
-                key = x_attr(entry, "Key")
-                msg = f"resource {key!r} refers to itself (cycle)"
-                self.ctx.diag("RES003", msg, ref_el, attr=attr)
-                return default
+        if not self.ctx.enter_building(entry):
+            key = x_attr(entry, "Key")
+            msg = f"resource {key!r} refers to itself (cycle)"
+            self.ctx.diag("RES003", msg, ref_el, attr=attr)
+            return default
+        try:
             return self.build_node(entry, build, default)
+        finally:
+            self.ctx.leave_building()
 
 
 class _Acc:
@@ -393,6 +399,18 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
+def _foreign_viewport(root) -> str | None:
+    """The prefixed name of the first element of a non-WPF namespace whose name ends in
+    Viewport3D (h:HelixViewport3D), or None."""
+    for el in root.iter():
+        if not isinstance(el.tag, str):
+            continue
+        ns, local = qname(el.tag)
+        if ns is not None and not is_presentation(ns) and local.endswith("Viewport3D"):
+            return f"{el.prefix}:{local}" if el.prefix else local
+    return None
+
+
 def build_scene(
     ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
 ) -> Scene:
@@ -401,6 +419,7 @@ def build_scene(
     r = Reader(ctx, resources)
     check_names(ctx, doc.root)
     check_styles(ctx, resources, doc.root)
+    check_content(ctx, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
     # the storyboards first: the viewports' build notes where what they animate lands
@@ -425,7 +444,16 @@ def build_scene(
             msg = f"{a_an(root)} holds no Viewport3D: nothing to render (use it with -r)"
             ctx.diag("SCN013", msg, doc.root)
         elif ns is not None:  # else XAML021 says why nothing could be read
-            ctx.diag("SCN001", "the document holds no Viewport3D: nothing to render", doc.root)
+            msg = "the document holds no Viewport3D: nothing to render"
+            other = _foreign_viewport(doc.root)
+            if other is not None:
+                # a toolkit's viewport control (Helix Toolkit's HelixViewport3D ...): WPF loads
+                # it with that assembly; its own visuals are that toolkit's, not WPF's
+                msg += (
+                    f" ({other} is a control of another assembly; xaml3d draws WPF's own "
+                    "Viewport3D only)"
+                )
+            ctx.diag("SCN001", msg, doc.root)
 
     resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
     found = None if resolution is None else tracks(resolution, viewports)

@@ -229,19 +229,29 @@ class ReadContext:
         )
 
     # ----------------------------------------------------------------- resource build guard
+    def enter_building(self, el: etree._Element) -> bool:
+        """Guard against a resource whose value refers back to itself: False on a cycle, else
+        True and ``leave_building`` must follow."""
+        key = id(el)
+        if key in self._building:
+            return False
+        self.keep(el)
+        self._building.append(key)
+        return True
+
+    def leave_building(self) -> None:
+        self._building.pop()
+
     @contextmanager
     def building(self, el: etree._Element):
         """Guard against a resource whose value refers back to itself (yields False on a cycle)."""
-        key = id(el)
-        if key in self._building:
+        if not self.enter_building(el):
             yield False
             return
-        self.keep(el)
-        self._building.append(key)
         try:
             yield True
         finally:
-            self._building.pop()
+            self.leave_building()
 
 
 def ignorable_namespaces(el: etree._Element) -> set[str]:

@@ -226,8 +226,11 @@ def _mesh_locator(r, el, p):
 
 
 def mesh(r, el):
-    """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types)."""
-
+    """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types). Built once
+    however many models share it (nothing animates a mesh)."""
+    hit = r.cache.get(("mesh", id(el)))
+    if hit is not None and hit[0] is el:
+        return hit[1]
     p = r.props(el)
     if p.type != "MeshGeometry3D":
         r.ctx.diag("SCN006", f"{p.type} is not a MeshGeometry3D: the model is skipped", el)
@@ -248,6 +251,7 @@ def mesh(r, el):
     result = replace(result, rejected=frozenset(p.rejected))
     for dg in diags:
         r.ctx.add(dg, el)
+    r.cache["mesh", id(el)] = (el, result)  # the element kept: its id stays its own
     return result
 
 

@@ -29,9 +29,15 @@ from xaml3d.xaml.context import (
     split_markup,
 )
 from xaml3d.xaml.parser import XAML_NS
-from xaml3d.xaml.struct_values import is_struct_element, struct_text
+from xaml3d.xaml.struct_values import (
+    collection_items,
+    collection_text,
+    is_struct_element,
+    struct_text,
+)
 
 NULL = object()  # an explicit {x:Null}
+
 _COLLECTION_KINDS = ("collection",)
 _SILENT_X = {"Key", "Name", "Shared", "Uid", "FieldModifier", "ClassModifier", "Subclass"}
 
@@ -47,6 +53,7 @@ class Props:
         self.attrs: dict[str, str] = {}
         self.attr_keys: dict[str, str] = {}  # property -> its attribute's key in el.attrib
         self.attached: dict[str, str] = {}
+        self.attached_keys: dict[str, str] = {}  # "Storyboard.TargetName" -> its attribute key
         self.elems: dict[str, list[etree._Element]] = {}
         self.elem_text: dict[str, str] = {}
         self.prop_el: dict[str, etree._Element] = {}
@@ -132,7 +139,19 @@ class Props:
                         ctx.diag("XAML008", msg, self.el, attr=name)
                     else:
                         self.attached[local] = value
+                        self.attached_keys[local] = name
                     continue
+            elif (
+                self.etype is not None
+                and local not in self.etype.properties
+                and local in voc.OWN_ATTACHED.get(self.type, ())
+            ):
+                # XAML resolves an unqualified attribute that is no member of the type to the
+                # type's attachable member: <Storyboard TargetName="..."> is
+                # Storyboard.TargetName
+                self.attached[f"{self.type}.{local}"] = value
+                self.attached_keys[f"{self.type}.{local}"] = name
+                continue
             if self._check_property(local, self.el, value, name):
                 self.attrs[local] = value
                 self.attr_keys[local] = name
@@ -244,6 +263,14 @@ class Props:
             return default
         if prop in self.elem_text:
             return self._convert(conv, self.elem_text[prop], self.line_of(prop), prop, default)
+        kids = self.elems.get(prop, ())
+        listed = collection_items(kids, self.etype.property_kind(prop) if self.etype else None)
+        if listed is not None:
+            items, item_type = listed
+            text = collection_text(self.r.ctx, items, item_type)
+            if text is None:
+                return default
+            return self._convert(conv, text, self.line_of(prop), prop, default)
         kids = self.items(prop)
         if kids:
             node = kids[-1]

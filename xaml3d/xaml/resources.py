@@ -26,7 +26,6 @@ from xaml3d.errors import ResourceError, XamlError
 from xaml3d.xaml.context import (
     ReadContext,
     as_written,
-    doc_position,
     ignorable_namespaces,
     is_presentation,
     markup_key,
@@ -103,6 +102,52 @@ class Dictionary:
         return None
 
 
+_SIBLINGS_MAX = 200  # files of a folder looked into for a missing key's hint
+_SIBLING_BYTES = 4 << 20
+_DICTIONARY_ROOT = re.compile(rb"<\s*(?:[\w.-]+:)?(ResourceDictionary|Application)[\s>/]")
+_sibling_cache: dict[tuple[str, float], list[tuple[str, bytes]]] = {}
+
+
+def _dictionaries_in(folder: Path) -> list[tuple[str, bytes]]:
+    """(name, text) of the resource dictionaries and Application files of ``folder``: the
+    first element past the prolog and comments is a ResourceDictionary or Application."""
+    try:
+        stamp = (str(folder), folder.stat().st_mtime)
+    except OSError:
+        return []
+    hit = _sibling_cache.get(stamp)
+    if hit is not None:
+        return hit
+    out = []
+    try:
+        names = sorted(p for p in folder.iterdir() if p.suffix.lower() == ".xaml")
+    except OSError:
+        names = []
+    for path in names[:_SIBLINGS_MAX]:
+        try:
+            if path.stat().st_size > _SIBLING_BYTES:
+                continue
+            data = path.read_bytes()
+        except OSError:
+            continue
+        first = re.sub(rb"<\?.*?\?>|<!--.*?-->", b"", data[:65536], flags=re.S).lstrip()
+        if _DICTIONARY_ROOT.match(first):
+            out.append((path.name, data))
+    _sibling_cache.clear()  # one folder at a time: a scene's own
+    _sibling_cache[stamp] = out
+    return out
+
+
+def sibling_defining(folder: Path, key: str) -> str | None:
+    """The name of a resource dictionary (or Application file) in ``folder`` that defines
+    ``key`` as an x:Key, or None."""
+    pattern = re.compile(rb"\b(?:[\w]+:)?Key\s*=\s*[\"']" + re.escape(key.encode()) + rb"[\"']")
+    for name, data in _dictionaries_in(folder):
+        if pattern.search(data):
+            return name
+    return None
+
+
 class Resources:
     """Resource lookup for one load."""
 
@@ -115,6 +160,7 @@ class Resources:
         self.type_keys: set[str] = set()  # keys of the implicit Styles read so far
         # the references looked up so far: id(element) -> (element, its attributes)
         self._looked: dict[int, tuple[etree._Element, set[str | None]]] = {}
+        self._orders: dict[int, tuple] = {}  # id(root) -> (root, its elements, id -> index)
 
     # ----------------------------------------------------------------- dictionaries
     def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
@@ -309,6 +355,20 @@ class Resources:
                 return hit[0]
         return None
 
+    def _order(self, el: etree._Element) -> int:
+        """The element's place in its document's order: one walk of each document, kept (a
+        lookup is then O(1), not a walk up the tree counting siblings: thousands of
+        references to one resource stay linear)."""
+        root = el.getroottree().getroot()
+        table = self._orders.get(id(root))
+        hit = table[2].get(id(el)) if table is not None and table[0] is root else None
+        if hit is None:  # a document not walked yet (or an element added since)
+            elements = list(root.iter())  # held: the ids below stay those of these elements
+            table = (root, elements, {id(e): i for i, e in enumerate(elements)})
+            self._orders[id(root)] = table
+            hit = table[2][id(el)]
+        return hit
+
     def lookup(
         self, key: str, from_el: etree._Element, *, dynamic: bool = False, attr: str | None = None
     ) -> etree._Element | None:
@@ -321,7 +381,7 @@ class Resources:
         system = key.lstrip().startswith("{")  # {x:Static SystemColors...Key}, {x:Type T}...
         if system and is_type_key(key):
             key = type_key(key)  # an implicit Style's key, as the dictionaries store it
-        here = doc_position(from_el)
+        here = self._order(from_el)
         later = None
         unavailable: list[str] = []  # assemblies of merged dictionaries in scope not read
         node = from_el
@@ -332,7 +392,7 @@ class Resources:
                 hit = d.find(key)
                 if hit is not None:
                     entry, local = hit
-                    if dynamic or not local or doc_position(entry) < here:
+                    if dynamic or not local or self._order(entry) < here:
                         return entry
                     later = later or entry
             node = node.getparent()
@@ -373,7 +433,7 @@ class Resources:
             near = difflib.get_close_matches(key, sorted(self._keys_in_scope(from_el)), 1, 0.8)
             hint = f" (did you mean {near[0]}?)" if near else ""
             # a near key in scope is the likelier cause than an application resource
-            msg = f"StaticResource {key!r} not found{hint or self._app_hint()}"
+            msg = f"StaticResource {key!r} not found{hint or self._app_hint(key, from_el)}"
             self.ctx.diag("RES001", msg, from_el, attr=attr)
         return None
 
@@ -391,9 +451,15 @@ class Resources:
             keys.update(d.keys())
         return {k for k in keys if not k.startswith("{")}
 
-    def _app_hint(self) -> str:
-        """For a key no dictionary defines: the application's resources may (an App.xaml is
-        read only when found beside the scene or above it, or given with -r)."""
+    def _app_hint(self, key: str, from_el: etree._Element) -> str:
+        """For a key no dictionary defines: a resource dictionary beside the scene that defines
+        it, else the application's resources may (an App.xaml is read only when found beside
+        the scene or above it, or given with -r)."""
+        doc = self.ctx.doc_of(from_el)
+        folder = doc.path.parent if doc is not None and doc.path is not None else None
+        sibling = sibling_defining(folder, key) if folder is not None else None
+        if sibling is not None:
+            return f" ({sibling} beside the scene defines it: give it with -r {sibling})"
         if self.app:
             return ""
         return " (if the application's App.xaml defines it, give it with -r App.xaml)"

@@ -18,8 +18,6 @@ Lines count ``\n`` as libxml2 does (``\r\n`` is one line break, a lone ``\r`` no
 
 from __future__ import annotations
 
-import bisect
-import math
 import re
 
 from lxml import etree
@@ -34,6 +32,7 @@ _ATTR = re.compile(r"""\s*([^\s=/>"']+)\s*=\s*(["'])""")
 _TAG_END = re.compile(r"\s*>")  # what closes a start tag after its last attribute
 _XML_NS = "http://www.w3.org/XML/1998/namespace"
 _WALK_LIMIT = 4096  # steps back in document order before asking libxml2 for the index
+_CHUNK = 1 << 14  # characters between two entries of the line index
 
 _BOMS = (
     (b"\xef\xbb\xbf", "utf-8-sig"),
@@ -101,7 +100,7 @@ class SourceMap:
         self._starts: list[int] = []  # offset of each start tag's "<", in document order
         self._names: list[str] = []  # its name as written
         self._memo: dict[int, tuple[etree._Element, int]] = {}  # keeps located proxies alive
-        self._marks = [(0, 1, 0)]  # (offset, its line, its line's start) already placed, sorted
+        self._lines = None  # (text length, (line, line start) at every _CHUNK characters)
 
     def _tokens_upto(self, i: int) -> bool:
         """Scan until start tag ``i`` is known; False when the text has fewer tags."""
@@ -148,19 +147,37 @@ class SourceMap:
         return i
 
     def position_at(self, offset: int) -> tuple[int, int]:
-        """1-based (line, column) of a text offset. Counting starts from the nearest offset
-        already placed, so positions asked in document order cost one pass in all (even when
-        the whole document is one line)."""
-        marks = self._marks
-        k = bisect.bisect_right(marks, (offset, math.inf)) - 1
-        base, line, line_start = marks[k]
+        """1-based (line, column) of a text offset: the line and line start at the chunk
+        holding it (counted once for the whole text), then the newlines within that chunk.
+        Each position costs at most one chunk, in whatever order they are asked (hundreds of
+        thousands of models each asking for theirs stay linear)."""
+        lines, starts = self._line_index()
+        k = offset // _CHUNK
+        base = k * _CHUNK
+        line, line_start = lines[k], starts[k]
         text = self.text
         newlines = text.count("\n", base, offset)
         if newlines:
             line += newlines
             line_start = text.rfind("\n", base, offset) + 1
-        marks.insert(k + 1, (offset, line, line_start))
         return line, offset - line_start + 1
+
+    def _line_index(self) -> tuple[list[int], list[int]]:
+        """(line, line start) at the start of every chunk of the text."""
+        if self._lines is None or self._lines[0] != len(self.text):
+            text = self.text
+            lines, starts = [1], [0]
+            line, start = 1, 0
+            for a in range(0, len(text), _CHUNK):
+                b = a + _CHUNK
+                count = text.count("\n", a, b)
+                if count:
+                    line += count
+                    start = text.rfind("\n", a, b) + 1
+                lines.append(line)
+                starts.append(start)
+            self._lines = (len(text), (lines, starts))
+        return self._lines[1]
 
     def locate(
         self, el: etree._Element, attr: str | None = None, index: int | None = None

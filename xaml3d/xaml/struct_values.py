@@ -120,3 +120,73 @@ def _color_text(ctx, el) -> str | None:
     if sc:
         return "sc#" + ",".join(repr(v) for v in values)
     return "#" + "".join(f"{int(v):02X}" for v in values)
+
+
+# Value collections written with one element per item: <Point3DCollection><Point3D X=".."/>...
+# (or the items straight inside the property element). XAML adds each item to the collection;
+# the joined string forms give the same collection the attribute form gives.
+COLLECTION_ITEMS = {
+    "Point3DCollection": "Point3D",
+    "Vector3DCollection": "Vector3D",
+    "PointCollection": "Point",
+    "Int32Collection": "Int32",
+    "DoubleCollection": "Double",
+}
+_KIND_ITEMS = {
+    "point3d[]": "Point3D",
+    "vector3d[]": "Vector3D",
+    "point[]": "Point",
+    "int[]": "Int32",
+}
+# primitive items come from the XAML language namespace (x:Int32) or from mscorlib (sys:Int32)
+_PRIMITIVES = {"Int32", "Double"}
+
+
+def _is_item_namespace(ns: str | None, local: str) -> bool:
+    if local in _PRIMITIVES:
+        clr = (ns or "").replace(" ", "")
+        return ns == XAML_NS or clr.startswith("clr-namespace:System;") or is_presentation(ns)
+    return is_presentation(ns)
+
+
+def collection_items(kids: list, kind: str | None) -> tuple[list, str] | None:
+    """(item elements, item type) when ``kids`` write a value collection one item per element:
+    a single collection element holding item elements, or item elements straight inside a
+    property element of collection ``kind`` ('point3d[]' ...). None for any other form."""
+    if len(kids) == 1:
+        ns, local = qname(kids[0].tag)
+        if is_presentation(ns) and local in COLLECTION_ITEMS and not (kids[0].text or "").strip():
+            # no items at all: an empty collection, as the attribute form ""
+            return [k for k in kids[0] if isinstance(k.tag, str)], COLLECTION_ITEMS[local]
+    item = _KIND_ITEMS.get(kind or "")
+    if item is not None and all(
+        qname(k.tag)[1] == item and _is_item_namespace(*qname(k.tag)) for k in kids
+    ):
+        return list(kids), item
+    return None
+
+
+def collection_text(ctx, items: list, item_type: str) -> str | None:
+    """The string form of a collection written one item per element (see COLLECTION_ITEMS),
+    or None when an item is of another type or unreadable (reported at the item)."""
+    parts: list[str] = []
+    for el in items:
+        ns, local = qname(el.tag)
+        if local != item_type or not _is_item_namespace(ns, local):
+            msg = f"a collection of {item_type} cannot hold {local!r}"
+            ctx.diag("XAML013", msg, el)
+            return None
+        text = (el.text or "").strip()
+        members = [k for k in el.attrib if qname(k)[0] != XAML_NS]
+        if local in _PRIMITIVES or (text and not members):
+            # <x:Int32>3</x:Int32>, or a struct initialised from its string form
+            if not text:
+                ctx.diag("XAML013", f"{local} item without a value", el)
+                return None
+            parts.append(text)
+            continue
+        part = struct_text(ctx, el)
+        if part is None:
+            return None
+        parts.append(part)
+    return " ".join(parts)

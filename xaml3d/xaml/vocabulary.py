@@ -283,6 +283,12 @@ ATTACHED_OWNERS = frozenset(
     "Viewport3D Window Page".split()
 )
 
+# attachable members a type owns, which XAML also resolves when they are written on an element
+# of that type without the owner prefix (<Storyboard TargetName="...">)
+OWN_ATTACHED: dict[str, tuple[str, ...]] = {
+    "Storyboard": ("TargetName", "TargetProperty", "Target"),
+}
+
 # event attributes: a handler name in code-behind (not evaluable)
 EVENT_SUFFIXES = (
     "Loaded", "Unloaded", "Click", "Checked", "Unchecked", "Indeterminate", "Changed", "Down",

@@ -1,0 +1,57 @@
+"""Markup WPF loads that xaml3d once refused, each class with a small hand-written scene (the
+real files they come from are listed in docs/conformance.md): the file loads without an error,
+and what xaml3d cannot draw is said as a warning or info with WPF's reason."""
+
+from __future__ import annotations
+
+from xaml3d.xaml.loader import load
+
+NS = (
+    'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+    'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+)
+
+
+def _errors(scene) -> list[str]:
+    return [d.code for d in scene.diagnostics if d.severity == "error"]
+
+
+def test_animation_of_an_object_of_another_assembly_is_a_warning():
+    # x:Name on a clr-namespace element is in the namescope: WPF finds it and animates it with
+    # that assembly's properties; xaml3d says it cannot (ANIM020), it is not "names no object"
+    scene = load(
+        f"""<Page {NS} xmlns:my="clr-namespace:Test.Graphics">
+  <Page.Resources>
+    <Storyboard x:Key="spin">
+      <ColorAnimation To="Blue" Duration="0:0:1" Storyboard.TargetName="plane"
+                      Storyboard.TargetProperty="Brush.Color"/>
+      <Point3DAnimation To="0,0,9" Duration="0:0:1" Storyboard.TargetName="viewport"
+                        Storyboard.TargetProperty="Children[0].Position"/>
+    </Storyboard>
+  </Page.Resources>
+  <Viewport3D Name="viewport">
+    <my:SceneLight/>
+    <my:XYPlane x:Name="plane" Brush="White"/>
+  </Viewport3D>
+</Page>""",
+        text=True,
+    )
+    assert _errors(scene) == []
+    found = [d for d in scene.diagnostics if d.code == "ANIM020"]
+    assert [d.severity for d in found] == ["warning", "warning"]
+    assert "my:XYPlane is a type of another assembly" in found[0].message
+    assert "my:SceneLight is a type of another assembly" in found[1].message
+
+
+def test_a_toolkit_viewport_is_named_in_the_no_viewport_error():
+    scene = load(
+        f"""<UserControl {NS} xmlns:h="http://helix-toolkit.org/wpf">
+  <h:HelixViewport3D><h:DefaultLights/></h:HelixViewport3D>
+</UserControl>""",
+        text=True,
+    )
+    (scn,) = [d for d in scene.diagnostics if d.code == "SCN001"]
+    assert scn.message == (
+        "the document holds no Viewport3D: nothing to render (h:HelixViewport3D is a control "
+        "of another assembly; xaml3d draws WPF's own Viewport3D only)"
+    )
