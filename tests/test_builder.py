@@ -381,8 +381,8 @@ def test_indefinite_article_before_type_names():
 def test_shared_resources_are_built_once_however_many_models_use_them(monkeypatch):
     # N models sharing a mesh and a material resource: the mesh and the material are built
     # once (the work per model stays constant: loading is linear in the number of models)
-    import xaml3d.scene.mesh as mesh_module
     from xaml3d.xaml import brushes_reader
+    from xaml3d.xaml import models_reader as mesh_module  # where the reader calls build_mesh
     from xaml3d.xaml.loader import load
 
     calls = {"mesh": 0, "material": 0}
