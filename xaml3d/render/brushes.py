@@ -440,9 +440,10 @@ def uv_density(screen: np.ndarray, texcoords: np.ndarray, indices: np.ndarray) -
         return None
     s = screen[indices]
     t = texcoords[indices]
-    sa = np.abs(_cross2(s[:, 1] - s[:, 0], s[:, 2] - s[:, 0]))
-    ta = np.abs(_cross2(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]))
-    ok = np.isfinite(sa) & (ta > 1e-12)
+    with np.errstate(over="ignore", invalid="ignore"):  # out-of-range areas are left out
+        sa = np.abs(_cross2(s[:, 1] - s[:, 0], s[:, 2] - s[:, 0]))
+        ta = np.abs(_cross2(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]))
+    ok = np.isfinite(sa) & np.isfinite(ta) & (ta > 1e-12)
     if not ok.any():
         return None
     return float(np.sqrt(sa[ok] / ta[ok]).max())

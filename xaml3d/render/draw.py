@@ -50,6 +50,7 @@ from xaml3d.render.frame import DEPTH_OFFSET, Framebuffer
 from xaml3d.render.lighting import PreparedLights, prepare_lights, shade_vertices
 from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
 from xaml3d.scene.checks import unmapped
+from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.transforms import normal_matrix
 from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
 
@@ -481,7 +482,7 @@ def draw_model(
             shaders = [PassShader(pm, p, sign, lights, flat, faces, lit) for p in passes]
             density = None
             for sh in shaders:
-                if not sh.uniform:
+                if isinstance(sh.mat.brush, DrawingBrush):  # a drawn tile's resolution
                     density = _texture_density(pm, tris, ctx) if density is None else density
                     sh.density = density
             if shading is not None:
@@ -515,9 +516,9 @@ def _texture_density(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext) -> f
     """Screen pixels per texture-coordinate unit on the side's triangles (in front of the eye):
     how finely a drawn tile (DrawingBrush, VisualBrush) is rasterized."""
     w = pm.clip[:, 3]
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         xy = pm.clip[:, :2] / w[:, None]
-    screen = np.where((w > 0)[:, None], (xy + 1.0) * 0.5 * [ctx.width, ctx.height], np.nan)
+        screen = np.where((w > 0)[:, None], (xy + 1.0) * 0.5 * [ctx.width, ctx.height], np.nan)
     return uv_density(screen, pm.model.mesh.texcoords, pm.model.mesh.indices[tris])
 
 

@@ -294,7 +294,10 @@ def is_mirroring(m) -> bool:
 def _about_2d(linear: np.ndarray, cx: float, cy: float) -> np.ndarray:
     m = np.eye(3)
     m[:2, :2] = linear
-    m[:2, 2] = np.array([cx, cy]) - linear @ np.array([cx, cy])
+    # a centre at infinity gives a non-finite matrix: its users refuse such a transform (a
+    # brush placed beyond single precision draws nothing; a viewport's is not applied)
+    with np.errstate(over="ignore", invalid="ignore"):
+        m[:2, 2] = np.array([cx, cy]) - linear @ np.array([cx, cy])
     return m
 
 

@@ -74,6 +74,9 @@ def _effect_property(r, p, prop: str) -> Effect | None:
     return p.obj(prop, lambda e: _effect(r, e), None)
 
 
+_SINGLE_MAX = float(np.finfo(np.float32).max)  # WPF's renderer is single precision
+
+
 def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
     """The viewport's Viewport2D (None when it sets none of the properties)."""
     set_any = False
@@ -86,11 +89,19 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
         m = p.obj(
             "RenderTransform", lambda e: transform2d(r, e), None, from_string=transform2d_text
         )
-        if m is not None and not np.allclose(m, np.eye(3)):
+        if m is not None and not np.allclose(m, np.eye(3), equal_nan=False):
             ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
-            o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
-            back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
-            transform = o @ np.asarray(m) @ back
+            with np.errstate(over="ignore", invalid="ignore"):  # checked just below
+                o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
+                back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
+                transform = o @ np.asarray(m) @ back
+            if not np.all(np.abs(transform) <= _SINGLE_MAX):
+                msg = (
+                    "RenderTransform (with its RenderTransformOrigin) has values that are "
+                    "infinite or beyond 3.4e38: not applied"
+                )
+                r.ctx.diag("DRW003", msg, p.el, attr=p.attr_keys.get("RenderTransform"))
+                transform = None
     effect = _effect_property(r, p, "Effect")
     if p.has("BitmapEffect"):
         bitmap = _effect_property(r, p, "BitmapEffect")
