@@ -215,3 +215,20 @@ def test_info_names_the_trigger_holder_as_the_target(tmp_path):
     assert p.returncode == 0, p.stderr.decode()
     (a,) = json.loads(p.stdout)["animations"]["storyboards"][0]["animations"]
     assert a["target"] == f"Viewport3D.{FOV}" and a["resolves"] is True
+
+
+def test_the_holders_own_size_is_drawn_at_its_load_value():
+    s = xaml3d.load(viewport(loaded("Viewport3D", anim("Width", 64, 128))), text=True)
+    (d,) = [d for d in s.diagnostics if d.code.startswith("ANIM")]
+    assert d.code == "ANIM014" and d.message.startswith("DoubleAnimation -> Viewport3D.Width:")
+    assert xaml3d.render_arrays(s, time=1.0).width == 64
+
+
+def test_a_storyboard_target_naming_nothing_is_located_at_the_attribute():
+    body = ('<DoubleAnimation Storyboard.Target="{x:Reference nobody}" '
+            'Storyboard.TargetProperty="FieldOfView" To="60"/>')  # fmt: skip
+    doc = viewport(loaded("Viewport3D", body))
+    s = xaml3d.load(doc, text=True)
+    (d,) = [d for d in s.diagnostics if d.code.startswith("ANIM")]
+    where = doc.splitlines()[d.line - 1].index('Storyboard.Target="') + 1
+    assert d.code == "ANIM001" and d.line == 17 and d.column == where
