@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     DiffuseMaterial,
     EmissiveMaterial,
     PerspectiveCamera,
-    PlaceholderBrush,
     SolidColorBrush,
     SpecularMaterial,
 )
@@ -207,14 +207,23 @@ def test_bare_model_in_modelvisual3d_children_reported():
     assert s.viewports[0].models == () and "SCN008" in codes(s)
 
 
-def test_viewport2dvisual3d_placeholder():
+def test_viewport2dvisual3d_draws_its_visual_on_the_host_material():
+    host = 'Viewport2DVisual3D.IsVisualHostMaterial="True"'
     xml = (f"<Viewport2DVisual3D><Viewport2DVisual3D.Geometry>{MESH}"
-           "</Viewport2DVisual3D.Geometry><Viewport2DVisual3D.Material><DiffuseMaterial/>"
+           f"</Viewport2DVisual3D.Geometry><Viewport2DVisual3D.Material><DiffuseMaterial {host}/>"
            "</Viewport2DVisual3D.Material><Button>Hi</Button></Viewport2DVisual3D>")  # fmt: skip
     s = scene(xml)
-    m = s.viewports[0].models[0]
-    assert isinstance(m.material[0].brush, PlaceholderBrush)
-    assert "SCN007" in codes(s)
+    b = s.viewports[0].models[0].material[0].brush
+    assert isinstance(b, DrawingBrush) and b.kind == "Viewport2DVisual3D"
+    assert b.viewport == (0.0, 0.0, 1.0, 1.0) and b.viewport_units == "Absolute"
+    # the Button draws its whole laid-out box: its text line and Aero2's border and padding
+    face, band, text = b.drawing.children[0].children
+    assert face.geometry.rect[3] == pytest.approx(2724 / 2048 * 12 + 2)  # inside the 1 px border
+    assert b.content_bounds is None  # relative units refer to what the visual draws
+    assert "SCN007" not in codes(s) and "DRW005" not in codes(s)
+    plain = scene(xml.replace(host, ""))  # no host material: WPF shows no visual
+    assert plain.viewports[0].models[0].material[0].brush is None
+    assert "DRW005" in codes(plain)
 
 
 # ------------------------------------------------------------------ viewport

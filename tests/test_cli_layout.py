@@ -41,13 +41,15 @@ def test_window_picture_and_outline(tmp_path):
     with Image.open(tmp_path / "win.png") as im:
         a = np.asarray(im.convert("RGBA"))
     assert a.shape == (48, 100, 4)
-    assert (a[..., :3] == (0, 0, 255)).all()  # the Grid's blue; the Button is not drawn
+    assert (a[8:, :, :3] == (0, 0, 255)).all()  # the Grid's blue below the Button
+    # the Button (row 0, both columns: 100 x 8) in Aero2's look: its #707070 border, #DDDDDD face
+    assert (a[0, 1:99, :3] == (112, 112, 112)).all() and (a[3, 2:20, :3] == (221, 221, 221)).all()
     p = xaml3d("render", "two.xaml", "-o", "o.png", "--window", "--outline-controls", cwd=tmp_path)
     assert p.returncode == 0, p.stderr
     with Image.open(tmp_path / "o.png") as im:
         b = np.asarray(im.convert("RGBA"))
-    # the Button's layout box (row 0, both columns: 100 x 8) is outlined, its inside is not
-    assert (b[0, :, 2] != 255).all() and (b[7, :, 2] != 255).all()
+    # the Button's layout box is outlined in the accent blue over its drawing, its inside is not
+    assert (b[0, :, :3] == (0, 120, 215)).all() and (b[7, :, :3] == (0, 120, 215)).all()
     assert (b[3, 1:99] == a[3, 1:99]).all() and (b[8:] == a[8:]).all()
 
 

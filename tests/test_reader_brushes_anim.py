@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 from PIL import Image
 
+from xaml3d.scene.drawing import DrawingBrush, GeometryDrawing
 from xaml3d.scene.types import (
     ImageBrush,
     LinearGradientBrush,
-    PlaceholderBrush,
     placeholder_image,
 )
 from xaml3d.xaml.loader import load
@@ -81,11 +81,13 @@ def test_brush_transforms_written_as_text():
     assert "VAL003" in codes(s)
 
 
-def test_visual_and_drawing_brush_placeholders():
+def test_drawing_brush_is_read_as_a_drawing():
     s = with_brush("<DrawingBrush><DrawingBrush.Drawing><GeometryDrawing Brush='Red'/>"
                    "</DrawingBrush.Drawing></DrawingBrush>")  # fmt: skip
-    assert isinstance(brush_of(s), PlaceholderBrush) and "BRU001" in codes(s)
-    assert brush_of(s).kind == "DrawingBrush"
+    b = brush_of(s)
+    assert isinstance(b, DrawingBrush) and "BRU001" not in codes(s)
+    assert b.kind == "DrawingBrush" and isinstance(b.drawing, GeometryDrawing)
+    assert b.drawing.geometry is None and b.drawing.brush.color == (1.0, 0.0, 0.0, 1.0)
 
 
 def test_image_brush_loads_relative_and_pack_uri(tmp_path):

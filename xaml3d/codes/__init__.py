@@ -30,6 +30,7 @@ from xaml3d.codes import (
     camera,
     checks,
     cli,
+    drawing,
     export,
     fit,
     layout,
@@ -55,11 +56,12 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.codes.lens", "LENS_CODES", True),
     ("xaml3d.codes.animation", "ANIM_CODES", True),
     ("xaml3d.codes.export", "EXPORT_CODES", True),
+    ("xaml3d.codes.drawing", "DRAWING_CODES", True),
 )
 _MODULES = {
     m.__name__: m
     for m in (reader, values, layout, mesh, camera, checks, fit, cli, outputs, lens, animation,
-              export)
+              export, drawing)
 }  # fmt: skip
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {

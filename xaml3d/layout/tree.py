@@ -114,6 +114,8 @@ class Node:
     background: object = None
     border_brush: object = None
     viewport: int | None = None
+    # a 2D control's own drawing in its box (scene.drawing; None: not drawn, outlined at most)
+    drawing: object = None
     # ----------------------------------------------------------------- results
     parent: Node | None = field(default=None, repr=False)
     desired: tuple[float, float] = (0.0, 0.0)  # including the margin, as WPF's DesiredSize

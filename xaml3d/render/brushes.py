@@ -1,10 +1,11 @@
 """Per-pixel brush sampling on 3D surfaces (wpf3d.md section 7).
 
-Covers SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush and the
-PlaceholderBrush (VisualBrush / DrawingBrush stand-in). Pipeline step: after rasterization, each
-covered pixel has perspective-correct texture coordinates; ``sample_brush`` turns them into
-PREMULTIPLIED rgba (Brush.Opacity included), which the rasterizer multiplies by the interpolated
-vertex lighting colour.
+Covers SolidColorBrush, LinearGradientBrush, RadialGradientBrush, ImageBrush, DrawingBrush
+(DrawingBrush, VisualBrush and Viewport2DVisual3D content: rasterized by the 2D layer,
+``render.layer2d.surface``) and the PlaceholderBrush (BitmapCacheBrush stand-in). Pipeline step:
+after rasterization, each covered pixel has perspective-correct texture coordinates;
+``sample_brush`` turns them into PREMULTIPLIED rgba (Brush.Opacity included), which the
+rasterizer multiplies by the interpolated vertex lighting colour.
 
 Brush space is texture-coordinate space, y down. Relative units (RelativeToBoundingBox) refer to
 the axis-aligned box of ALL the mesh's texture coordinates (``brush_bounds``). With B the map of the
@@ -27,6 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from xaml3d.render import accel
+from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     Brush,
     ImageBrush,
@@ -317,9 +319,12 @@ def _premultiplied(color) -> np.ndarray:
     return c
 
 
-def sample_brush(brush: Brush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
+def sample_brush(
+    brush: Brush, uv: np.ndarray, bounds: Bounds, density: float | None = None
+) -> np.ndarray:
     """Premultiplied rgba (M, 4) of ``brush`` at texture coordinates ``uv`` (M, 2), Opacity
-    included. ``bounds`` is ``brush_bounds`` of the mesh's texture coordinates."""
+    included. ``bounds`` is ``brush_bounds`` of the mesh's texture coordinates; ``density``
+    the screen pixels per texture-coordinate unit a drawn tile needs (``uv_density``)."""
     uv = np.asarray(uv, dtype=np.float64).reshape(-1, 2)
     m = uv.shape[0]
     with np.errstate(under="ignore"):
@@ -330,6 +335,10 @@ def sample_brush(brush: Brush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
             out = _sample_gradient(brush, uv, bounds)
         elif isinstance(brush, ImageBrush):
             out = _sample_image(brush, uv, bounds)
+        elif isinstance(brush, DrawingBrush):
+            from xaml3d.render.layer2d.surface import sample_drawing_brush  # imports skia
+
+            out = sample_drawing_brush(brush, uv, bounds, density)
         else:
             raise TypeError(f"not a brush: {type(brush).__name__}")
         if brush.opacity != 1.0:
@@ -358,4 +367,28 @@ def brush_average(brush: Brush) -> np.ndarray:
         img = np.asarray(brush.image, dtype=np.float64).reshape(-1, 4) / 255.0
         img[:, :3] *= img[:, 3:4]
         return img.mean(axis=0) * float(brush.opacity)
+    if isinstance(brush, DrawingBrush):
+        from xaml3d.render.layer2d.surface import average
+
+        return average(brush) * float(brush.opacity)
     raise TypeError(f"not a brush: {type(brush).__name__}")
+
+
+def uv_density(screen: np.ndarray, texcoords: np.ndarray, indices: np.ndarray) -> float | None:
+    """The most screen pixels one texture-coordinate unit covers on any of the triangles
+    ``indices`` (T, 3): sqrt(screen area / texture area) per triangle, for drawn tiles'
+    resolution. ``screen``: (N, 2) pixel positions, NaN where a vertex is behind the eye."""
+    if indices.shape[0] == 0:
+        return None
+    s = screen[indices]
+    t = texcoords[indices]
+    sa = np.abs(_cross2(s[:, 1] - s[:, 0], s[:, 2] - s[:, 0]))
+    ta = np.abs(_cross2(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]))
+    ok = np.isfinite(sa) & (ta > 1e-12)
+    if not ok.any():
+        return None
+    return float(np.sqrt(sa[ok] / ta[ok]).max())
+
+
+def _cross2(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]

@@ -35,7 +35,13 @@ import numpy as np
 
 from xaml3d.errors import WARNING, Diagnostic, XamlError
 from xaml3d.render import accel
-from xaml3d.render.brushes import brush_average, brush_bounds, brush_is_uniform, sample_brush
+from xaml3d.render.brushes import (
+    brush_average,
+    brush_bounds,
+    brush_is_uniform,
+    sample_brush,
+    uv_density,
+)
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.lighting import prepare_lights, shade_vertices
@@ -244,6 +250,7 @@ class PassShader:
             self.colors = shade_vertices(mat, pm.view_pos, pm.view_nrm * normal_sign, lights)
         brush = mat.brush
         self.uniform = brush_is_uniform(brush)
+        self.density = None  # screen pixels per texture unit, for drawn tiles (draw_model)
         self.indices = np.ascontiguousarray(self.indices, dtype=np.int64)
         if self.uniform:
             self.colors = self.colors * brush_average(brush)[None, :]
@@ -276,7 +283,7 @@ class PassShader:
                 col = col.astype(np.float32)
         if not self.uniform:
             uv = interpolate(self._uv_planes, self.indices, frag.tri, frag.weights)
-            col = col * sample_brush(self.mat.brush, uv, self.bounds)
+            col = col * sample_brush(self.mat.brush, uv, self.bounds, self.density)
         return col
 
 
@@ -345,6 +352,11 @@ def draw_model(
             faces = _face_geometry(pm, lit) if flat else None
             lights = lights() if callable(lights) else lights
             shaders = [PassShader(pm, p, sign, lights, flat, faces, lit) for p in passes]
+            density = None
+            for sh in shaders:
+                if not sh.uniform:
+                    density = _texture_density(pm, tris, ctx) if density is None else density
+                    sh.density = density
             if shading is not None:
                 shading.shaders[(key, sign, mode)] = shaders
                 shading.lightings += 1
@@ -370,6 +382,16 @@ def draw_model(
             )  # fmt: skip
             for frag in again:
                 _blend(fb, mat, frag, shader(frag))
+
+
+def _texture_density(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext) -> float | None:
+    """Screen pixels per texture-coordinate unit on the side's triangles (in front of the eye):
+    how finely a drawn tile (DrawingBrush, VisualBrush) is rasterized."""
+    w = pm.clip[:, 3]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xy = pm.clip[:, :2] / w[:, None]
+    screen = np.where((w > 0)[:, None], (xy + 1.0) * 0.5 * [ctx.width, ctx.height], np.nan)
+    return uv_density(screen, pm.model.mesh.texcoords, pm.model.mesh.indices[tris])
 
 
 def _nbytes(frag: Fragments) -> int:

@@ -35,6 +35,9 @@ def render_scene(
     try:
         scene = scene_at(scene, settings.time, settings.storyboard)
         vp = scene.viewport(settings.viewport)
+        if settings.ssaa is None and settings.msaa is None and _edge_aliased(vp):
+            # RenderOptions.EdgeMode="Aliased": WPF draws 3D edges without anti-aliasing
+            settings = settings.replace(msaa=1)
         size = frame_size(vp, settings) if size is None else size
         check_limits(size, settings)
         if settings.lens:
@@ -50,6 +53,10 @@ def render_scene(
     except XamlError as exc:  # a setting refused for this scene: name its file
         exc.with_location(file=scene.file)
         raise
+
+
+def _edge_aliased(vp) -> bool:
+    return vp.picture is not None and vp.picture.edge_mode == "Aliased"
 
 
 def _with_ids(r: Rendering, scene, vp, size: FrameSize, settings) -> Rendering:

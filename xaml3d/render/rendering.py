@@ -69,7 +69,10 @@ def draw_viewport(
     diags: list[Diagnostic] = []
     sw, sh = w * grid, h * grid
     accel.begin_frame()
-    fb = Framebuffer(sw, sh, settings.fill)
+    picture = vp.picture if vp.picture is not None and vp.picture.changes_picture else None
+    bg = settings.fill
+    # the viewport's own Opacity, Clip, Effect... act on its picture alone, not the background
+    fb = Framebuffer(sw, sh, bg if picture is None or nearest else (0.0, 0.0, 0.0, 0.0))
     ctx = make_context(sw, sh, settings.effective_msaa)
     try:
         if bounds is False:
@@ -96,7 +99,27 @@ def draw_viewport(
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
     rgba, depth = fb.resolve(grid, nearest=nearest)
+    if picture is not None and not nearest:
+        from xaml3d.render.layer2d.picture import apply_picture  # imports skia: only when needed
+
+        scale = (w / vp.width if vp.width > 0 else 1.0, h / vp.height if vp.height > 0 else 1.0)
+        rgba = _over(apply_picture(rgba, picture, scale), bg)
     result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
     if pipeline is not None:
         result.distance = eye_depth(depth, pipeline)
     return result
+
+
+def _over(rgba: np.ndarray, bg) -> np.ndarray:
+    """Straight-alpha uint8 ``rgba`` composed over the straight RGBA float background."""
+    if bg[3] == 0.0:
+        return rgba
+    src = rgba.astype(np.float64) / 255.0
+    a = src[..., 3:4]
+    back = np.array(bg, dtype=np.float64)
+    out_a = a + back[3] * (1.0 - a)
+    premul = src[..., :3] * a + back[:3] * back[3] * (1.0 - a)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rgb = np.where(out_a > 0, premul / np.where(out_a > 0, out_a, 1.0), 0.0)
+    out = np.concatenate([rgb, out_a], axis=-1)
+    return np.clip(np.rint(out * 255.0), 0, 255).astype(np.uint8)

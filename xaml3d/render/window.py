@@ -3,14 +3,16 @@ Scene holds (``xaml3d.scene.boxes``: the reader ran the layout).
 
 Paints, in WPF's order (parents before children, children in document order): the Window's
 background (WPF's default is the system window colour, white), every panel's and Border's
-Background (solid, gradient and image brushes, in the element's own coordinates: a brush's
-relative units refer to the element's box; a Border's Background fills, and maps to, the box
-inside its BorderThickness), each Border's BorderBrush band of BorderThickness,
-and every visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect
-ratio (``render_scene``), composited over what lies beneath. 2D controls are not drawn;
-``outline_controls`` draws a one-pixel outline of each control's layout box. Hidden and
-Collapsed elements and their content are left out. A pixel belongs to a box when its centre
-lies inside it.
+Background (solid, gradient, image, drawing and visual brushes, in the element's own
+coordinates, a drawn tile at one texel a pixel: a brush's relative units refer to the element's
+box; a Border's Background fills, and maps to, the box inside its BorderThickness), each
+Border's BorderBrush band of BorderThickness, and every visible Viewport3D rendered at its
+laid-out rectangle with its own camera and aspect ratio (``render_scene``), composited over
+what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
+CheckBox, RadioButton, ComboBox, Slider, ProgressBar, shapes, Image: ``Box.drawing``,
+docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
+outline of each control's layout box. Hidden and Collapsed elements and their content are left
+out. A pixel belongs to a box when its centre lies inside it.
 """
 
 from __future__ import annotations
@@ -56,7 +58,8 @@ def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     px, py = np.meshgrid(np.arange(c0, c1) + 0.5 - x, np.arange(r0, r1) + 0.5 - y)
     uv = np.stack([px.ravel(), py.ravel()], axis=1)
     bounds = (np.zeros(2), np.array([w, h], dtype=np.float64))
-    color = sample_brush(brush, uv, bounds).reshape(r1 - r0, c1 - c0, 4).astype(np.float32)
+    # element coordinates are pixels: a drawn tile (DrawingBrush) needs one texel per unit
+    color = sample_brush(brush, uv, bounds, 1.0).reshape(r1 - r0, c1 - c0, 4).astype(np.float32)
     if mask is not None:
         color *= mask(px, py)[..., None]
     _over(canvas, r0, c0, color)
@@ -86,6 +89,23 @@ def _outline(canvas: np.ndarray, rect) -> None:
     canvas[r1 - 1, c0:c1] = color
     canvas[r0:r1, c0] = color
     canvas[r0:r1, c1 - 1] = color
+
+
+def _draw_control(canvas: np.ndarray, b: Box) -> None:
+    """A control's drawing (the 2D layer, skia: imported only when a control is drawn) over
+    the canvas at its laid-out box."""
+    from xaml3d.render.layer2d.paint import rasterize
+
+    x, y, w, h = b.rect
+    H, W = canvas.shape[:2]
+    x0, y0 = max(0, math.floor(x)), max(0, math.floor(y))
+    x1, y1 = min(W, math.ceil(x + w)), min(H, math.ceil(y + h))
+    if x1 <= x0 or y1 <= y0:
+        return
+    sx = w / b.ink[0] if b.ink[0] > 0 else 1.0
+    sy = h / b.ink[1] if b.ink[1] > 0 else 1.0
+    m = np.array([[sx, 0.0, x - x0], [0.0, sy, y - y0], [0.0, 0.0, 1.0]])
+    _over(canvas, y0, x0, rasterize(b.drawing, x1 - x0, y1 - y0, m))
 
 
 def compose_window(
@@ -143,6 +163,8 @@ def compose_window(
                 ye, xe = min(h, H - y0), min(w, W - x0)
                 if ye > ys and xe > xs:
                     _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
+        if b.kind == CONTROL and b.drawing is not None:
+            _draw_control(canvas, b)
         if b.kind == CONTROL and outline_controls:
             _outline(canvas, b.rect)
     return straight_uint8(canvas), diags

@@ -17,6 +17,7 @@ import numpy as np
 from xaml3d.codes.checks import CHECK_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import CameraError, Diagnostic, GeometryError
 from xaml3d.scene.camera_math import camera_pipeline
+from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     AmbientLight,
     DiffuseMaterial,
@@ -89,6 +90,8 @@ _PLACEHOLDERS_OF_BRUSHES = ("VisualBrush", "DrawingBrush", "BitmapCacheBrush")
 
 def _varies(brush) -> bool:
     """Whether a brush can give different colours at different texture coordinates."""
+    if isinstance(brush, DrawingBrush):
+        return brush.kind != "Viewport2DVisual3D"
     if isinstance(brush, PlaceholderBrush):
         return brush.kind in _PLACEHOLDERS_OF_BRUSHES
     return isinstance(brush, _VARYING)
@@ -107,7 +110,11 @@ def _check_texture_coordinates(model: Model, label: str, file: str | None) -> li
     brush = next((p.brush for p in model.material + model.back_material if _varies(p.brush)), None)
     if brush is None:
         return []
-    kind = brush.kind if isinstance(brush, PlaceholderBrush) else type(brush).__name__
+    kind = (
+        brush.kind
+        if isinstance(brush, (PlaceholderBrush, DrawingBrush))
+        else (type(brush).__name__)
+    )
     if uv.shape[0] and uv.any():
         reason = f"all its TextureCoordinates are the point {uv[0, 0]:g},{uv[0, 1]:g}"
     else:

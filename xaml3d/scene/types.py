@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xaml3d.errors import Diagnostic, SceneError
+from xaml3d.scene.drawing import DrawingBrush, Viewport2D
 
 if TYPE_CHECKING:
     from xaml3d.scene.tracks import Tracks
@@ -146,7 +147,10 @@ class PlaceholderBrush:
     column: int | None = None
 
 
-Brush = SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush | PlaceholderBrush
+Brush = (
+    SolidColorBrush | LinearGradientBrush | RadialGradientBrush | ImageBrush | DrawingBrush
+    | PlaceholderBrush
+)  # fmt: skip
 
 
 # --------------------------------------------------------------------------- materials
@@ -479,6 +483,7 @@ class Viewport:
     line: int | None = None
     column: int | None = None
     layout_rect: tuple[float, float, float, float] | None = None  # x, y, w, h in the root
+    picture: Viewport2D | None = None  # its Opacity, Clip, Effect... (None: none is set)
 
     @property
     def triangle_count(self) -> int:

@@ -2,7 +2,8 @@
 
 Covers SolidColorBrush, LinearGradientBrush, RadialGradientBrush (+ GradientStop), ImageBrush
 (ImageSource resolved relative to the XAML file that holds it, pack URIs reduced, loaded with
-Pillow, never from the network), VisualBrush / DrawingBrush / BitmapCacheBrush (placeholders),
+Pillow, never from the network), DrawingBrush and VisualBrush (drawings_reader.py),
+BitmapCacheBrush (a placeholder),
 a colour string where a Brush is expected; DiffuseMaterial, SpecularMaterial, EmissiveMaterial and
 MaterialGroup (flattened into a tuple of leaf passes, nested groups too); and the 2D transforms
 TranslateTransform, ScaleTransform, RotateTransform, SkewTransform, MatrixTransform and
@@ -166,7 +167,11 @@ def _brush(r, el, nodes: list):
         )
     if t == "ImageBrush":
         return _image_brush(r, p, nodes)
-    if t in ("VisualBrush", "DrawingBrush", "BitmapCacheBrush"):
+    if t in ("DrawingBrush", "VisualBrush"):
+        from xaml3d.xaml.drawings_reader import drawing_brush
+
+        return drawing_brush(r, p, _common(r, p, nodes))
+    if t == "BitmapCacheBrush":
         r.ctx.diag("BRU001", f"{t} content cannot be drawn: a neutral placeholder is used", el)
         return PlaceholderBrush(
             kind=t, opacity=p.value("Opacity", V.parse_double, 1.0), **r.ctx.position(el)

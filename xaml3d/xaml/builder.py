@@ -21,10 +21,8 @@ import numpy as np
 from xaml3d.scene import transforms as T
 from xaml3d.scene.tracks import WorldChain, slots_in
 from xaml3d.scene.types import (
-    DiffuseMaterial,
     Model,
     PerspectiveCamera,
-    PlaceholderBrush,
     Scene,
     Viewport,
 )
@@ -220,18 +218,54 @@ def walk_visual3d(r: Reader, el, parent: np.ndarray, acc: _Acc, chain=None) -> N
 
 
 def _viewport2d(r: Reader, p: Props, world: np.ndarray, acc: _Acc, chain) -> None:
+    """A Viewport2DVisual3D: its Visual laid out and drawn (visuals_reader) as the brush of
+    the material passes marked Viewport2DVisual3D.IsVisualHostMaterial="True", texture
+    coordinates (0,0)-(1,1) spanning the visual's bounds (WPF's internal VisualBrush)."""
+    from xaml3d.xaml.drawings_reader import visual_host_brush
+
     el = p.el
-    r.ctx.diag("SCN007", "Viewport2DVisual3D: its 2D content is drawn as a placeholder", el)
     m = p.obj("Geometry", lambda e: mesh(r, e), None)
     if m is None:
         return
-    placeholder = PlaceholderBrush(kind="Viewport2DVisual3D", **r.ctx.position(el))
+    brush = visual_host_brush(r, p)
     mat = p.obj("Material", lambda e: material(r, e), ()) or ()
-    mat = tuple(replace(x, brush=placeholder) for x in mat) or (
-        DiffuseMaterial(brush=placeholder, **r.ctx.position(el)),
-    )
-    model = Model(m, mat, (), world, element_name(el), **r.ctx.position(el))
+    hosts = _host_flags(r, p)
+    if len(hosts) != len(mat):
+        hosts = [False] * len(mat)
+    if brush is not None:
+        pairs = zip(mat, hosts, strict=True)
+        mat = tuple(replace(x, brush=brush) if host else x for x, host in pairs)
+    if not any(hosts):
+        msg = (
+            "no material of this Viewport2DVisual3D has "
+            'Viewport2DVisual3D.IsVisualHostMaterial="True": its Visual is not shown'
+        )
+        r.ctx.diag("DRW005", msg, el)
+    model = Model(m, tuple(mat), (), world, element_name(el), **r.ctx.position(el))
     acc.models.append(model if chain is None else r.world(model, "world", *chain))
+
+
+def _host_flags(r: Reader, p: Props) -> list[bool]:
+    """Per leaf material pass (MaterialGroup flattened in order): is it the visual's host?"""
+    from xaml3d.xaml.values import parse_bool
+
+    out: list[bool] = []
+
+    def walk(el) -> None:
+        q = r.props(el)
+        if q.type == "MaterialGroup":
+            for k in q.items("Children"):
+                walk(k)
+            return
+        raw = q.attached.get("Viewport2DVisual3D.IsVisualHostMaterial", "False")
+        try:
+            out.append(parse_bool(raw))
+        except Exception:  # a markup extension or a bad value: not the host
+            out.append(False)
+
+    for k in p.elems.get("Material", ()):
+        walk(k)
+    return out
 
 
 # --------------------------------------------------------------------------- viewports
@@ -261,9 +295,13 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     acc = _Acc()
     for k in p.items("Children"):
         r.build_node(k, lambda e: walk_visual3d(r, e, T.identity(), acc))
+    from xaml3d.xaml.picture_reader import viewport_picture
+
+    picture = viewport_picture(r, p, w, h)
     return Viewport(
         index=index,
         name=element_name(el),
+        picture=picture,
         width=w,
         height=h,
         size_source=source,

@@ -84,6 +84,8 @@ def window_layout(result: LayoutResult) -> WindowLayout:
                 border_brush=n.border_brush,
                 border=(left * sx, top * sy, right * sx, bottom * sy),
                 viewport=n.viewport,
+                drawing=n.drawing,
+                ink=(float(n.ink[0]), float(n.ink[1])),
                 line=n.line,
                 column=n.column,
             )  # fmt: skip
@@ -96,8 +98,20 @@ def window_layout(result: LayoutResult) -> WindowLayout:
 
 def lay_out(r, root_el, viewport_elements: list, window_size=None):
     """({viewport index: ViewportLayout}, WindowLayout or None)."""
-    root, nodes = read_layout(r, root_el, viewport_elements) if viewport_elements else (None, {})
+    root, nodes, elements = (
+        read_layout(r, root_el, viewport_elements) if viewport_elements else (None, {}, {})
+    )
     result = layout(root, window_size) if root is not None else None
+    if result is not None:
+        from xaml3d.xaml.visuals_reader import attach_control_drawings
+
+        attach_control_drawings(r, root, elements)
+        # a VisualBrush bound to an element of the window draws it at its laid-out size
+        r.laid_out_sizes = {
+            id(el): n.ink
+            for n in root.walk()
+            if (el := elements.get(id(n), (None,))[0]) is not None
+        }
     out: dict[int, ViewportLayout] = {}
     if result is not None:
         for note in viewport_notes(result.viewports):

@@ -256,6 +256,8 @@ class PanelsReader:
                 self.holds_viewport.add(id(node))
                 node = node.getparent()
         self.viewports: dict[int, L.Node] = {}
+        # id(node) -> (element, FontSize in effect): what draws a control (visuals_reader)
+        self.elements: dict[int, tuple] = {}
 
     def note(self, code: str, message: str, el, attr: str | None = None) -> None:
         if attr is not None:
@@ -309,6 +311,7 @@ class PanelsReader:
             size = v.attached("TextElement.FontSize", parse_length, None)
         if size is not None and math.isfinite(size) and size > 0:
             font = size  # inherited by the content, as WPF's FontSize is
+        self.elements[id(n)] = (el, font)
         if kind == L.VIEWPORT:
             n.viewport = self.index[id(el)]
             self.viewports[n.viewport] = n
@@ -594,8 +597,8 @@ def _design(el, name: str) -> float | None:
 
 
 def read_layout(r, root_el, viewport_elements: list):
-    """(layout root or None, {viewport index: Node}) for the document whose root is
-    ``root_el``; None when the root takes no part in layout."""
+    """(layout root or None, {viewport index: Node}, {id(node): (element, FontSize)}) for the
+    document whose root is ``root_el``; None when the root takes no part in layout."""
     reader = PanelsReader(r, viewport_elements)
     root = reader.build(root_el)
-    return root, reader.viewports
+    return root, reader.viewports, reader.elements

@@ -108,7 +108,7 @@ _t("ModelUIElement3D", "visual3d", {"Model": "model3d"}, "Model", base=(_UI3D,))
 _t("ContainerUIElement3D", "visual3d", {"Children": "visual3d[]"}, "Children", base=(_UI3D,))
 _t("Viewport2DVisual3D", "visual3d",
    {"Geometry": "geometry", "Material": "material", "Visual": "object", "CacheMode": "object"},
-   "Visual", base=(_UI3D,), note="2D content is drawn as a placeholder")  # fmt: skip
+   "Visual", base=(_UI3D,), note="its Visual is drawn by the 2D layer")  # fmt: skip
 _t("Model3DGroup", "model3d", {"Children": "model3d[]"}, "Children", base=(_TRANSFORMABLE,))
 _t("GeometryModel3D", "model3d",
    {"Geometry": "geometry", "Material": "material", "BackMaterial": "material"},
@@ -164,12 +164,11 @@ _t(
     "brush",
     {"Visual": "object", "AutoLayoutContent": _B},
     "Visual",
-    supported=False,
     base=(_BRUSH, _TILE),
-    note="2D content: drawn as a placeholder",
+    note="its Visual is drawn by the 2D layer (docs/layer2d.md)",
 )
-_t("DrawingBrush", "brush", {"Drawing": "object"}, "Drawing", supported=False,
-   base=(_BRUSH, _TILE), note="2D drawing: drawn as a placeholder")  # fmt: skip
+_t("DrawingBrush", "brush", {"Drawing": "object"}, "Drawing",
+   base=(_BRUSH, _TILE), note="drawn by the 2D layer (docs/layer2d.md)")  # fmt: skip
 _t(
     "BitmapCacheBrush",
     "brush",
@@ -264,7 +263,9 @@ DataGrid TreeView TreeViewItem PathGeometry PathFigure PathFigureCollection Path
 BezierSegment LineSegment ArcSegment PolyLineSegment PolyBezierSegment QuadraticBezierSegment
 PolyQuadraticBezierSegment EllipseGeometry RectangleGeometry LineGeometry GeometryGroup
 CombinedGeometry StreamGeometry DrawingGroup GeometryDrawing ImageDrawing GlyphRunDrawing
-VideoDrawing DrawingImage BitmapImage Pen DropShadowEffect BlurEffect VisualTarget
+VideoDrawing DrawingImage BitmapImage Pen DashStyle DropShadowEffect BlurEffect VisualTarget
+BlurBitmapEffect DropShadowBitmapEffect OuterGlowBitmapEffect BevelBitmapEffect EmbossBitmapEffect
+BitmapEffectGroup ShaderEffect DrawingCollection GeometryCollection
 ObjectDataProvider XmlDataProvider Binding MultiBinding RelativeSource ImageSource BitmapCache
 Color Double Int32 String Boolean Point Point3D Vector3D Thickness CornerRadius FontFamily
 FontWeight Array Null Static Type Key Code XData

@@ -1,0 +1,403 @@
+"""The 2D layer's foundation: reading geometries and drawings, drawing them, skia on demand.
+
+Reference pictures of drawings on surfaces are cases of ``tests/reference/drawing/``; here:
+exact values of the path reader, pixels of drawn tiles, the resolution rule, corpus 014 against
+its checked picture, and that a scene without 2D content never imports skia.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from conftest import CORPUS, ROOT, needs_corpus
+from PIL import Image
+from test_reference import compare_images
+
+import xaml3d
+from xaml3d.errors import ValueSyntaxError
+from xaml3d.scene.drawing import (
+    DrawingBrush,
+    DrawingGroup,
+    GeometryDrawing,
+    PathGeometry,
+    Pen,
+    RectangleGeometry,
+)
+from xaml3d.scene.types import SolidColorBrush
+from xaml3d.xaml.geometry_reader import parse_path_data
+
+LIME = SolidColorBrush(color=(0.0, 1.0, 0.0, 1.0))
+
+
+def test_path_data_absolute_commands():
+    cmds, fill = parse_path_data("F1 M 10,10 h 5 v 5 l -5,0 z m 1,1 L2,2 3,3")
+    assert fill == "Nonzero"
+    assert cmds == (
+        ("M", 10.0, 10.0), ("L", 15.0, 10.0), ("L", 15.0, 15.0), ("L", 10.0, 15.0), ("Z",),
+        ("M", 11.0, 11.0), ("L", 2.0, 2.0), ("L", 3.0, 3.0),
+    )  # fmt: skip
+
+
+def test_path_data_curves_and_arcs():
+    cmds, fill = parse_path_data("M0,0 C1,1 2,1 3,0 S5,-1 6,0 Q7,1 8,0 T10,0 a2,3 45 1 0 4,0")
+    assert fill == "EvenOdd"  # F0, PathGeometry's default
+    assert cmds[1] == ("C", 1.0, 1.0, 2.0, 1.0, 3.0, 0.0)
+    assert cmds[2] == ("C", 4.0, -1.0, 5.0, -1.0, 6.0, 0.0)  # S mirrors the last control
+    assert cmds[3] == ("Q", 7.0, 1.0, 8.0, 0.0)
+    assert cmds[4] == ("Q", 9.0, -1.0, 10.0, 0.0)  # T mirrors the quadratic control
+    assert cmds[5] == ("A", 2.0, 3.0, 45.0, True, False, 14.0, 0.0)
+
+
+def test_path_data_commas_as_in_real_files():
+    # corpus 014 writes "1,0.9, 0.9,1z": a comma after a pair is a separator
+    cmds, _ = parse_path_data("M0,0.1 L0.1,0 1,0.9, 0.9,1z")
+    assert cmds[-2] == ("L", 0.9, 1.0) and cmds[-1] == ("Z",)
+    with pytest.raises(ValueSyntaxError):
+        parse_path_data("L 1,1")
+
+
+def _tile(brush, size=(8, 8)):
+    from xaml3d.render.layer2d.shaders import content_bounds, tile_layout
+    from xaml3d.render.layer2d.surface import rasterize_tile
+
+    viewport, m = tile_layout(brush, (np.zeros(2), np.ones(2)), content_bounds(brush))
+    return rasterize_tile(brush, viewport, m, size)
+
+
+def test_tile_of_a_drawing_premultiplied_exact():
+    half = SolidColorBrush(color=(0.0, 1.0, 0.0, 0.5))
+    d = DrawingGroup(children=(
+        GeometryDrawing(RectangleGeometry((0.0, 0.0, 4.0, 4.0)), brush=half),
+        GeometryDrawing(RectangleGeometry((0.0, 0.0, 2.0, 4.0)), brush=LIME),
+    ))  # fmt: skip
+    tile = _tile(DrawingBrush(drawing=d))
+    # the 4x4 drawing fills the 8x8 tile: left half opaque lime, right half lime at 50%
+    assert np.allclose(tile[:, :4], (0.0, 1.0, 0.0, 1.0))
+    assert np.allclose(tile[:, 4:], (0.0, 128 / 255, 0.0, 128 / 255))
+
+
+def test_drawing_bounds_include_the_pen():
+    from xaml3d.render.layer2d.paint import drawing_bounds
+
+    g = GeometryDrawing(
+        PathGeometry((("M", 0.0, 0.0), ("L", 10.0, 0.0))), pen=Pen(brush=LIME, thickness=4.0)
+    )
+    r = drawing_bounds(g)
+    assert (r.left(), r.top(), r.right(), r.bottom()) == (0.0, -2.0, 10.0, 2.0)
+
+
+def test_texture_density_is_screen_pixels_per_uv_unit():
+    from xaml3d.render.brushes import uv_density
+
+    screen = np.array([[0.0, 0.0], [100.0, 0.0], [0.0, 50.0], [np.nan, np.nan]])
+    uv = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]])
+    # 100 x 50 pixels for a unit: sqrt(5000); a triangle behind the eye does not count
+    d = uv_density(screen, uv, np.array([[0, 1, 2], [1, 3, 2]]))
+    assert d == pytest.approx(np.sqrt(5000.0))
+
+
+def test_a_scene_without_2d_content_does_not_import_skia():
+    code = (
+        "import sys, xaml3d; xaml3d.render_arrays('samples/cube.xaml', 32, 32); "
+        "print('skia' in sys.modules)"
+    )
+    p = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.decode().strip() == "False"
+
+
+@needs_corpus
+def test_corpus_014_shows_its_drawing_pattern():
+    path = CORPUS / "014_docs-apply-drawing-material.xaml"
+    scene = xaml3d.load(path)
+    brush = scene.viewports[0].models[0].material[0].brush
+    assert isinstance(brush, DrawingBrush) and brush.tile_mode == "Tile"
+    assert len(brush.drawing.children) == 6
+    got = xaml3d.render(scene)
+    expected = Image.open(ROOT / "tests" / "reference" / "_corpus" / f"{path.stem}.png")
+    result = compare_images(expected, got)
+    assert result.ok, result.reason
+    # the pattern's colours are there: yellow, red, medium blue and grey tiles
+    px = np.asarray(got.convert("RGBA")).reshape(-1, 4)
+    opaque = px[px[:, 3] == 255, :3].astype(int)
+    assert (opaque[:, 0] > 2 * opaque[:, 2] + 60).any()  # red / yellow
+    assert (opaque[:, 2] > opaque[:, 0] + 60).any()  # blue
+
+
+def test_text_is_measured_with_the_package_font_and_segoe_line_metrics():
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    assert text_width("Hello World", 12.0) == pytest.approx(65.666, abs=0.01)  # Segoe UI: 63.8
+    assert line_height(12.0) == pytest.approx(12 * 2724 / 2048)  # WPF: 15.96 px per line
+    assert baseline(12.0) == pytest.approx(12 * 2210 / 2048)
+
+
+def _visual_scene(visual: str, extra: str = "") -> str:
+    return f"""<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">{extra}
+  <Viewport3D Width="64" Height="48">
+    <Viewport3D.Camera><OrthographicCamera Position="0,0,10" Width="64"/></Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-16,-16,0 16,-16,0 16,16,0 -16,16,0"
+            TriangleIndices="0 1 2 0 2 3" TextureCoordinates="0,1 1,1 1,0 0,0"/>
+      </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial>
+        <DiffuseMaterial.Brush>{visual}</DiffuseMaterial.Brush>
+      </DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D></Grid>"""
+
+
+def test_visual_brush_bound_by_element_name_draws_that_element(tmp_path):
+    panel = '<Border x:Name="panel" Width="20" Height="10" Background="Lime"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene('<VisualBrush Visual="{Binding ElementName=panel}"/>', panel))
+    scene = xaml3d.load(path)
+    brush = scene.viewports[0].models[0].material[0].brush
+    assert isinstance(brush, DrawingBrush) and brush.kind == "VisualBrush"
+    rgba = xaml3d.render_arrays(scene).rgba
+    # the lime 20x10 border fills the whole square (Viewbox relative to its bounds, Fill)
+    assert (rgba[8:40, 16:48] == (0, 255, 0, 255)).all()
+    assert not {d.code for d in scene.diagnostics if d.code.startswith(("BRU", "DRW"))}
+
+
+def test_textblock_in_a_visual_brush_sits_where_wpf_lays_it_out(tmp_path):
+    path = tmp_path / "s.xaml"
+    tb = '<TextBlock Text="x" FontSize="24" Padding="4,2,0,0" Background="Blue"/>'
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{tb}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    scene = xaml3d.load(path)
+    group = scene.viewports[0].models[0].material[0].brush.drawing.children[0]
+    background, text = group.children
+    from xaml3d.layout.text import text_width
+
+    w = text_width("x", 24.0) + 4
+    assert background.geometry.rect == pytest.approx((0.0, 0.0, w, 2 + 24 * 2724 / 2048))
+    assert text.origin == pytest.approx((4.0, 2 + 24 * 2210 / 2048))
+    assert text.font_size == 24.0 and text.brush.color == (0.0, 0.0, 0.0, 1.0)
+
+
+PICTURE = ROOT / "tests" / "reference" / "picture"
+
+
+def test_render_transform_origin_is_folded_into_the_matrix():
+    vp = xaml3d.load(PICTURE / "render-transform-flip.xaml").viewports[0]
+    # ScaleY=-1 about (0.5, 0.5) of 64 x 48: y' = 48 - y
+    assert np.array_equal(vp.picture.render_transform, [[1, 0, 0], [0, -1, 48], [0, 0, 1]])
+    assert vp.picture.changes_picture and vp.picture.edge_mode == "Unspecified"
+
+
+def test_effect_defaults_and_edge_mode_alone():
+    shadow = xaml3d.load(PICTURE / "drop-shadow.xaml").viewports[0].picture.effect
+    assert (shadow.kind, shadow.direction, shadow.shadow_depth, shadow.radius) == (
+        "DropShadow", 270.0, 4.0, 0.0,
+    )  # fmt: skip
+    assert shadow.color == (0.0, 0.0, 0.0, 1.0) and shadow.opacity == 1.0
+    aliased = xaml3d.load(PICTURE / "aliased-edges.xaml").viewports[0].picture
+    assert aliased.edge_mode == "Aliased" and not aliased.changes_picture
+
+
+def test_an_effect_from_another_assembly_is_an_info_and_is_not_applied(tmp_path):
+    text = (PICTURE / "opacity.xaml").read_text().replace(' Opacity="0.5"', "")
+    text = text.replace(
+        "</Viewport3D.Camera>",
+        '</Viewport3D.Camera><Viewport3D.Effect><fx:Glow xmlns:fx="clr-namespace:Fx"/>'
+        "</Viewport3D.Effect>",
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(text)
+    scene = xaml3d.load(path)
+    assert scene.viewports[0].picture is None  # drawn without it
+    [found] = [d for d in scene.diagnostics if d.code in ("DRW003", "XAML001")]
+    assert (found.code, found.severity) == ("DRW003", "info")
+    assert "Glow" in found.message and "drawn without it" in found.message
+
+
+def test_viewport_opacity_fades_the_picture_not_the_background():
+    scene = xaml3d.load(PICTURE / "opacity.xaml")
+    rgba = xaml3d.render_arrays(scene, background=(1.0, 1.0, 1.0, 1.0)).rgba
+    # lime at 50% over white (the picture's alpha is 8-bit: 128/255)
+    assert np.abs(rgba[12, 20].astype(int) - (128, 255, 128, 255)).max() <= 1
+    assert tuple(rgba[0, 0]) == (255, 255, 255, 255)  # the background itself is not faded
+
+
+def test_aliased_edges_unless_anti_aliasing_is_asked_for():
+    scene = xaml3d.load(PICTURE / "aliased-edges.xaml")
+    plain = xaml3d.render_arrays(scene).rgba.reshape(-1, 4)
+    assert len(np.unique(plain, axis=0)) == 3  # lime, blue, transparent: no edge blends
+    smooth = xaml3d.render_arrays(scene, msaa=2).rgba.reshape(-1, 4)
+    assert len(np.unique(smooth, axis=0)) > 3  # an explicit --msaa still anti-aliases
+
+
+def test_cli_renders_a_blurred_viewport(tmp_path):
+    out = tmp_path / "b.png"
+    p = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "render", str(PICTURE / "blur.xaml"), "-o", str(out)],
+        capture_output=True,
+        timeout=120,
+    )
+    assert p.returncode == 0 and b"Traceback" not in p.stderr
+    expected = Image.open(PICTURE / "blur.png")
+    assert compare_images(expected, Image.open(out)).ok
+
+
+def test_progress_bar_in_aero2_look(tmp_path):
+    bar = '<ProgressBar Width="102" Height="10" Value="25"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{bar}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    track, band, indicator = group.children
+    assert track.brush.color[:3] == pytest.approx((0xE6 / 255,) * 3)
+    assert band.brush.color[:3] == pytest.approx((0xBC / 255,) * 3)
+    # a quarter of the 100 x 8 inside, from the left, in #06B025
+    assert indicator.geometry.rect == (1.0, 1.0, 25.0, 8.0)
+    assert indicator.brush.color[:3] == pytest.approx((6 / 255, 0xB0 / 255, 0x25 / 255))
+
+
+def test_outer_glow_is_an_unmoved_shadow_and_bitmap_scaling_mode_is_said(tmp_path):
+    text = (
+        (PICTURE / "opacity.xaml")
+        .read_text()
+        .replace(' Opacity="0.5"', ' RenderOptions.BitmapScalingMode="NearestNeighbor"')
+    )
+    text = text.replace(
+        "</Viewport3D.Camera>",
+        "</Viewport3D.Camera><Viewport3D.BitmapEffect>"
+        '<OuterGlowBitmapEffect GlowColor="Red" GlowSize="6"/></Viewport3D.BitmapEffect>',
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(text)
+    scene = xaml3d.load(path)
+    e = scene.viewports[0].picture.effect
+    assert (e.kind, e.shadow_depth, e.radius, e.color) == ("DropShadow", 0.0, 6.0, (1, 0, 0, 1))
+    [d] = [d for d in scene.diagnostics if d.code == "DRW003"]
+    assert "BitmapScalingMode" in d.message and d.severity == "info"
+    rgba = xaml3d.render_arrays(scene).rgba
+    # the glow shows around the picture, red, fading outwards; the picture itself is intact
+    assert rgba[6, 32, 0] == 255 and rgba[6, 32, 3] > rgba[4, 32, 3] > 0
+    assert tuple(rgba[12, 20]) == (0, 255, 0, 255)
+
+
+def test_textblock_wraps_to_its_width(tmp_path):
+    from xaml3d.layout.text import line_height, text_width
+
+    tb = '<TextBlock Width="60" TextWrapping="Wrap" Text="one two three four" Background="Blue"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{tb}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    background, lines = group.children
+    words = [t.text for t in lines.children]
+    assert all(text_width(t, 12.0) <= 60 for t in words) and " ".join(words) == "one two three four"
+    assert len(words) > 1
+    # one line box per line, baselines one LineSpacing apart
+    assert background.geometry.rect[3] == pytest.approx(len(words) * line_height(12.0))
+    ys = [t.origin[1] for t in lines.children]
+    assert np.allclose(np.diff(ys), line_height(12.0))
+
+
+def test_closed_combo_box_shows_its_selected_item(tmp_path):
+    from xaml3d.layout.text import line_height
+
+    combo = ('<ComboBox SelectedIndex="1"><ComboBoxItem>Alpha</ComboBoxItem>'
+             "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>")  # fmt: skip
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{combo}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    face, band, text, arrow = group.children
+    assert text.children[0].text == "Beta"
+    # WPF's closed ComboBox is 22 px tall at 12 px text: Padding 3 + 3, border 1 + 1
+    assert face.geometry.rect[3] + 2 == pytest.approx(line_height(12.0) + 8)
+    assert band.brush.color[:3] == pytest.approx((0xAC / 255,) * 3)
+
+
+def test_slider_thumb_at_its_value(tmp_path):
+    slider = '<Slider Width="111" Value="5"/>'
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{slider}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
+    track, thumb = group.children
+    # halfway (5 of 0..10) along the 100 px the 11 px thumb can travel; 18 px tall slider
+    assert thumb.geometry.rect == (50.5, 0.5, 10.0, 17.0)
+    assert track.transform[0, 2] == 5.5 and track.transform[1, 2] == 7.0
+
+
+def test_start_and_end_caps_are_each_ends_own():
+    from xaml3d.render.layer2d.paint import rasterize
+
+    pen = Pen(brush=LIME, thickness=4.0, start_cap="Square", end_cap="Round")
+    line = GeometryDrawing(PathGeometry((("M", 4.0, 8.0), ("L", 12.0, 8.0))), pen=pen)
+    a = rasterize(line, 16, 16)[..., 3]
+    assert a[6:10, 2:4].min() == 1.0  # the square start reaches 2 px before the line's start
+    assert a[8, 14] == 0.0 and 0.0 < a[7, 13] < 1.0  # the round end is a half disc, AA edge
+    assert a[6, 13] < a[8, 13]  # rounder than a square: thinner away from the axis
+
+
+def test_a_figure_that_is_not_filled_is_only_stroked():
+    from xaml3d.render.layer2d.paint import rasterize
+
+    square = (("L", 12.0, 4.0), ("L", 12.0, 12.0), ("L", 4.0, 12.0), ("Z",))
+    for start, inside in (("M", 1.0), ("M-", 0.0)):
+        g = GeometryDrawing(PathGeometry(((start, 4.0, 4.0), *square)), brush=LIME)
+        assert rasterize(g, 16, 16)[8, 8, 3] == inside
+
+
+def test_drawing_group_opacity_mask_in_the_groups_own_coordinates():
+    from xaml3d.render.layer2d.paint import rasterize
+    from xaml3d.scene.types import GradientStop, LinearGradientBrush
+
+    fade = LinearGradientBrush(
+        stops=(GradientStop((0, 0, 0, 1.0), 0.0), GradientStop((0, 0, 0, 0.0), 1.0)),
+        start_point=(0.0, 0.5), end_point=(1.0, 0.5),
+    )  # fmt: skip
+    moved = np.array([[1.0, 0, 8.0], [0, 1.0, 0], [0, 0, 1.0]])
+    g = DrawingGroup(
+        children=(GeometryDrawing(RectangleGeometry((0.0, 0.0, 8.0, 8.0)), brush=LIME),),
+        transform=moved, opacity_mask=fade,
+    )  # fmt: skip
+    a = rasterize(g, 16, 8)[4, :, 3]
+    assert (a[:8] == 0).all()  # moved right by 8: nothing on the left
+    # the mask fades across the square itself: opaque at its left edge, clear at its right
+    assert a[8] > 0.85 and a[15] < 0.15 and (np.diff(a[8:]) < 0).all()
+
+
+def test_a_buttons_element_content_is_said_not_drawn(tmp_path):
+    button = (
+        "<Button><StackPanel><Ellipse Width='4' Height='4'/><Run>Go</Run></StackPanel></Button>"
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{button}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    scene = xaml3d.load(path)
+    [d] = [d for d in scene.diagnostics if d.code == "DRW002"]
+    assert "StackPanel inside this Button" in d.message
+
+
+def test_a_window_background_drawing_brush_tiles_at_one_texel_a_pixel(tmp_path):
+    # corpus 008's grid brush: a white 10 px tile with 1 px #66CCCCFF lines on its top and left
+    lines = (
+        '<GeometryDrawing Geometry="M0,0 L1,0 1,0.1, 0,0.1Z" Brush="#66CCCCFF"/>'
+        '<GeometryDrawing Geometry="M0,0 L0,1 0.1,1, 0.1,0Z" Brush="#66CCCCFF"/>'
+    )
+    text = f"""<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+        Width="216" Height="139"><Grid><Grid.Background>
+      <DrawingBrush Viewport="0,0,10,10" ViewportUnits="Absolute" TileMode="Tile">
+        <DrawingBrush.Drawing><DrawingGroup>
+          <GeometryDrawing Brush="White" Geometry="M0,0 L1,0 1,1 0,1Z"/>{lines}
+        </DrawingGroup></DrawingBrush.Drawing></DrawingBrush></Grid.Background>
+      <Viewport3D Margin="50"/></Grid></Window>"""
+    path = tmp_path / "w.xaml"
+    path.write_text(text)
+    from xaml3d.render.window import compose_window
+
+    rgba, _ = compose_window(xaml3d.load(path))
+    assert rgba.shape == (100, 200, 4)
+    line = (235, 235, 255, 255)  # 40% of #CCCCFF over white
+    assert tuple(rgba[0, 5]) == line and tuple(rgba[5, 10]) == line and tuple(rgba[37, 40]) == line
+    assert tuple(rgba[5, 5]) == (255, 255, 255, 255) and tuple(rgba[15, 13]) == (255, 255, 255, 255)

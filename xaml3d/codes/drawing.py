@@ -1,0 +1,25 @@
+"""The 2D layer's codes (drawings, visuals, the viewport's picture).
+
+Plain data at the ground of the package (``xaml3d.codes`` merges every table): any stage
+may read it, and it imports nothing but the severities.
+"""
+
+from __future__ import annotations
+
+from xaml3d.errors import INFO, WARNING
+
+DRAWING_CODES: dict[str, tuple[str, str]] = {
+    "DRW001": (WARNING, "a geometry or path segment xaml3d does not draw: skipped"),
+    "DRW002": (
+        WARNING,
+        "a Drawing or visual element xaml3d does not draw: skipped (the rest "
+        "of the brush is drawn)",
+    ),  # fmt: skip
+    "DRW003": (INFO, "a 2D effect, mask or property of the viewport's picture not applied"),
+    "DRW004": (WARNING, "VisualBrush without a Visual: it draws nothing"),
+    "DRW005": (
+        WARNING,
+        "a Viewport2DVisual3D with no material marked IsVisualHostMaterial: "
+        "its Visual is not shown (as in WPF)",
+    ),  # fmt: skip
+}

@@ -1,0 +1,37 @@
+"""Measuring text for layout: a TextBlock's (and a control's text's) width and line height.
+
+Widths are the advance widths of the package's font (``xaml3d.fonts``: Open Sans, within a few
+percent of Segoe UI's); the line height and baseline are Segoe UI's, as WPF lays a line out
+(FontFamily.LineSpacing x FontSize). skia is imported on the first measurement only.
+"""
+
+from __future__ import annotations
+
+import functools
+
+from xaml3d.fonts import SEGOE_UI_BASELINE, SEGOE_UI_LINE_SPACING
+
+
+@functools.lru_cache(maxsize=4096)
+def text_width(text: str, size: float, weight: int = 400, italic: bool = False) -> float:
+    """The advance width (DIPs) of one line of ``text`` at ``size`` px."""
+    if not text:
+        return 0.0
+    import skia
+
+    from xaml3d.fonts import typeface
+
+    font = skia.Font(typeface(weight, italic), float(size))
+    font.setSubpixel(True)
+    font.setHinting(skia.FontHinting.kNone)
+    return float(font.measureText(text))
+
+
+def line_height(size: float) -> float:
+    """WPF's height of one line of text at ``size`` px (Segoe UI's LineSpacing)."""
+    return SEGOE_UI_LINE_SPACING * size
+
+
+def baseline(size: float) -> float:
+    """Distance from the top of a line to its baseline at ``size`` px."""
+    return SEGOE_UI_BASELINE * size

@@ -1,0 +1,166 @@
+"""Drawing the scene's 2D content with skia: drawings and text (the 2D layer).
+
+Pipeline step: the 2D layer. A ``scene.drawing`` Drawing is played onto a skia Canvas in
+device-independent pixels (96 dpi: one DIP is one pixel at scale 1), anti-aliased, blended as
+WPF blends (premultiplied sRGB, source over): GeometryDrawing (fill, then pen: ``paths``,
+``shaders``, ``pens``), ImageDrawing, TextDrawing (the package's font, ``xaml3d.fonts``) and
+DrawingGroup (Transform, ClipGeometry, Opacity and OpacityMask on the composed group); and a
+drawing's bounds (WPF's Drawing.Bounds: pens included, clips applied).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import skia
+
+from xaml3d.fonts import typeface
+from xaml3d.render.layer2d.paths import matrix, path_of
+from xaml3d.render.layer2d.pens import caps_path, stroke_paint
+from xaml3d.render.layer2d.shaders import image_of, paint_of
+from xaml3d.scene.drawing import (
+    DrawingGroup,
+    GeometryDrawing,
+    ImageDrawing,
+    TextDrawing,
+)
+
+
+def _font(d: TextDrawing) -> skia.Font:
+    font = skia.Font(typeface(d.weight, d.italic), float(d.font_size))
+    font.setEdging(skia.Font.Edging.kAntiAlias)
+    font.setSubpixel(True)
+    font.setHinting(skia.FontHinting.kNone)
+    return font
+
+
+def _text_box(d: TextDrawing, font: skia.Font) -> skia.Rect:
+    from xaml3d.fonts import SEGOE_UI_BASELINE, SEGOE_UI_LINE_SPACING
+
+    width = font.measureText(d.text)
+    top = d.origin[1] - SEGOE_UI_BASELINE * d.font_size
+    return skia.Rect.MakeXYWH(d.origin[0], top, width, SEGOE_UI_LINE_SPACING * d.font_size)
+
+
+def draw(canvas: skia.Canvas, d) -> None:
+    """Play one scene drawing onto ``canvas`` (in the canvas's current coordinates)."""
+    if d is None:
+        return
+    if isinstance(d, GeometryDrawing):
+        path = path_of(d.geometry)
+        if path is None:
+            return
+        box = path.computeTightBounds()
+        fill = paint_of(d.brush, box)
+        if fill is not None:
+            canvas.drawPath(path_of(d.geometry, filled=True), fill)
+        stroke = stroke_paint(d.pen, box)
+        if stroke is not None:
+            pen = d.pen
+            own_caps = not pen.dashes and (
+                pen.start_cap != pen.end_cap or "Triangle" in (pen.start_cap, pen.end_cap)
+            )
+            if own_caps:  # skia has one cap for both ends: flat ends, then each end's cap
+                stroke.setStrokeCap(skia.Paint.Cap.kButt_Cap)
+            canvas.drawPath(path, stroke)
+            if own_caps:
+                stroke.setStyle(skia.Paint.kFill_Style)
+                canvas.drawPath(caps_path(path, pen), stroke)
+    elif isinstance(d, TextDrawing):
+        font = _font(d)
+        paint = paint_of(d.brush, _text_box(d, font))
+        if paint is not None and d.text:
+            canvas.drawString(d.text, float(d.origin[0]), float(d.origin[1]), font, paint)
+    elif isinstance(d, ImageDrawing):
+        img = image_of(d.image)
+        x, y, w, h = d.rect
+        if img is not None and w > 0 and h > 0:
+            canvas.drawImageRect(
+                img, skia.Rect.MakeXYWH(x, y, w, h), skia.SamplingOptions(skia.FilterMode.kLinear)
+            )
+    elif isinstance(d, DrawingGroup):
+        _draw_group(canvas, d)
+
+
+def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
+    if g.opacity <= 0:
+        return
+    canvas.save()
+    canvas.concat(matrix(g.transform))
+    clip = path_of(g.clip)
+    if clip is not None:
+        canvas.clipPath(clip, skia.ClipOp.kIntersect, True)
+    layered = g.opacity < 1.0 or g.opacity_mask is not None
+    if layered:
+        # the group is composed first, then faded as a whole (not each child on its own)
+        layer = skia.Paint()
+        layer.setAlphaf(min(1.0, float(g.opacity)))
+        canvas.saveLayer(None, layer)
+    for child in g.children:
+        draw(canvas, child)
+    if g.opacity_mask is not None:
+        # the mask's relative units refer to the group's content, in the group's coordinates
+        box = drawing_bounds(DrawingGroup(children=g.children))
+        mask = paint_of(g.opacity_mask, box) if box is not None else None
+        if mask is not None:
+            mask.setBlendMode(skia.BlendMode.kDstIn)
+            canvas.drawRect(box, mask)
+    if layered:
+        canvas.restore()
+    canvas.restore()
+
+
+def drawing_bounds(d) -> skia.Rect | None:
+    """A drawing's bounds in its own coordinates (WPF's Drawing.Bounds: pens included,
+    clips applied), None for nothing drawn."""
+    if d is None:
+        return None
+    if isinstance(d, GeometryDrawing):
+        path = path_of(d.geometry)
+        if path is None or (d.brush is None and d.pen is None):
+            return None
+        r = path.computeTightBounds()
+        stroke = stroke_paint(d.pen, r, dashed=False)
+        if stroke is not None:
+            wide = skia.Path()
+            if stroke.getFillPath(path, wide):
+                r = skia.Rect(r.left(), r.top(), r.right(), r.bottom())
+                r.join(wide.computeTightBounds())
+        return r
+    if isinstance(d, TextDrawing):
+        return _text_box(d, _font(d)) if d.text else None
+    if isinstance(d, ImageDrawing):
+        return skia.Rect.MakeXYWH(*d.rect)
+    if isinstance(d, DrawingGroup):
+        out = None
+        for child in d.children:
+            r = drawing_bounds(child)
+            if r is None:
+                continue
+            if out is None:
+                out = skia.Rect(r.left(), r.top(), r.right(), r.bottom())
+            else:
+                out.join(r)
+        if out is None:
+            return None
+        clip = path_of(d.clip)
+        if clip is not None and not out.intersect(clip.computeTightBounds()):
+            return None
+        return matrix(d.transform).mapRect(out)
+    return None
+
+
+def rasterize(drawing, width: int, height: int, transform=None) -> np.ndarray:
+    """``drawing`` played onto a transparent ``width`` x ``height`` picture through the 3x3
+    ``transform`` (drawing coordinates -> pixels): premultiplied float32 (H, W, 4) in 0..1."""
+    info = skia.ImageInfo.Make(
+        width, height, skia.ColorType.kRGBA_8888_ColorType, skia.AlphaType.kPremul_AlphaType
+    )
+    surface = skia.Surface.MakeRaster(info)
+    canvas = surface.getCanvas()
+    canvas.clear(skia.ColorTRANSPARENT)
+    canvas.concat(matrix(transform))
+    draw(canvas, drawing)
+    arr = surface.makeImageSnapshot().toarray(
+        colorType=skia.ColorType.kRGBA_8888_ColorType, alphaType=skia.AlphaType.kPremul_AlphaType
+    )
+    return arr.astype(np.float32) / 255.0

@@ -1,0 +1,221 @@
+"""Brushes as skia paints and shaders (the 2D layer).
+
+SolidColorBrush, LinearGradientBrush and RadialGradientBrush (stops interpolated in straight
+alpha as WPF does; SpreadMethod Pad / Reflect / Repeat; MappingMode and the brush transforms
+through the same matrices as the 3D brushes, ``render.brushes.brush_to_texture_matrix``), and the
+tile brushes ImageBrush and DrawingBrush (TileBrush layout: the Viewbox of the content stretched
+into the Viewport by Stretch and the alignments; the tile recorded as a skia Picture and
+repeated by a picture shader: TileMode None / Tile / FlipX / FlipY / FlipXY). Relative brush
+units refer to the box of what is filled.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import skia
+
+from xaml3d.render.brushes import brush_to_texture_matrix
+from xaml3d.render.layer2d.paths import matrix
+from xaml3d.scene.drawing import (
+    DrawingBrush,
+)
+from xaml3d.scene.types import (
+    ImageBrush,
+    LinearGradientBrush,
+    PlaceholderBrush,
+    RadialGradientBrush,
+    SolidColorBrush,
+)
+
+_SPREAD = {
+    "Pad": skia.TileMode.kClamp,
+    "Reflect": skia.TileMode.kMirror,
+    "Repeat": skia.TileMode.kRepeat,
+}
+_ALIGN = {"Left": 0.0, "Top": 0.0, "Center": 0.5, "Right": 1.0, "Bottom": 1.0}
+
+
+def _color4f(rgba, opacity: float = 1.0) -> skia.Color4f:
+    r, g, b, a = (float(c) for c in rgba)
+    return skia.Color4f(r, g, b, a * opacity)
+
+
+def _color(rgba) -> int:
+    r, g, b, a = (int(round(min(1.0, max(0.0, float(c))) * 255)) for c in rgba)
+    return skia.ColorSetARGB(a, r, g, b)
+
+
+# --------------------------------------------------------------------------- geometry
+
+
+def _gradient_stops(brush) -> tuple[list, list]:
+    order = sorted(range(len(brush.stops)), key=lambda i: brush.stops[i].offset)
+    stops = [brush.stops[i] for i in order]
+    colors = [_color(s.color) for s in stops]
+    offsets = [min(1.0, max(0.0, float(s.offset))) for s in stops]
+    return colors, offsets
+
+
+def _bounds(rect: skia.Rect) -> tuple[np.ndarray, np.ndarray]:
+    lo = np.array([rect.left(), rect.top()], dtype=np.float64)
+    hi = np.array([rect.right(), rect.bottom()], dtype=np.float64)
+    # an empty box (a horizontal line) keeps relative units invertible, as the 3D brushes do
+    return lo, np.where(hi - lo > 0.0, hi, lo + 1.0)
+
+
+def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
+    """The brush as a skia shader over the element box ``box`` (relative units refer to it);
+    None: a flat colour (or nothing) is enough, see ``paint_of``."""
+    bounds = _bounds(box)
+    if isinstance(brush, LinearGradientBrush) and brush.stops:
+        m = brush_to_texture_matrix(brush, bounds, brush.mapping_mode != "Absolute")
+        colors, offsets = _gradient_stops(brush)
+        pts = [skia.Point(*brush.start_point), skia.Point(*brush.end_point)]
+        return skia.GradientShader.MakeLinear(
+            pts, colors, offsets, _SPREAD[brush.spread_method], 0, matrix(m)
+        )
+    if isinstance(brush, RadialGradientBrush) and brush.stops:
+        m = brush_to_texture_matrix(brush, bounds, brush.mapping_mode != "Absolute")
+        rx, ry = float(brush.radius_x), float(brush.radius_y)
+        if rx == 0 or ry == 0:
+            return None
+        cx, cy = brush.center
+        ellipse = np.array([[rx, 0.0, cx], [0.0, ry, cy], [0.0, 0.0, 1.0]])
+        ox, oy = (brush.gradient_origin[0] - cx) / rx, (brush.gradient_origin[1] - cy) / ry
+        colors, offsets = _gradient_stops(brush)
+        return skia.GradientShader.MakeTwoPointConical(
+            skia.Point(ox, oy), 0.0, skia.Point(0.0, 0.0), 1.0, colors, offsets,
+            _SPREAD[brush.spread_method], 0, matrix(m @ ellipse),
+        )  # fmt: skip
+    if isinstance(brush, (ImageBrush, DrawingBrush)):
+        return _tile_shader(brush, bounds)
+    return None
+
+
+def paint_of(brush, box: skia.Rect, opacity: float = 1.0) -> skia.Paint | None:
+    """A fill Paint for ``brush`` over ``box``; None when the brush draws nothing."""
+    if brush is None:
+        return None
+    paint = skia.Paint(AntiAlias=True)
+    op = float(getattr(brush, "opacity", 1.0)) * opacity
+    if isinstance(brush, (SolidColorBrush, PlaceholderBrush)):
+        paint.setColor4f(_color4f(brush.color, op))
+        return paint
+    if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)) and not brush.stops:
+        return None  # no stops: transparent
+    shader = shader_of(brush, box)
+    if shader is None:
+        if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)):
+            # a degenerate gradient paints its last stop's colour, as the 3D brushes do
+            colors, _ = _gradient_stops(brush)
+            paint.setColor(colors[-1])
+            paint.setAlphaf(paint.getAlphaf() * op)
+            return paint
+        return None
+    paint.setShader(shader)
+    paint.setAlphaf(op)
+    return paint
+
+
+def tile_layout(brush, bounds, content: tuple[float, float, float, float]):
+    """TileBrush layout (wpf3d.md section 7, as ``render.brushes`` does for images): the
+    viewport (x, y, w, h) in brush space and the 3x3 matrix taking content coordinates into
+    brush space (Viewbox stretched into the Viewport by Stretch and the alignments); None when
+    the viewbox or viewport is empty."""
+    cx, cy, cw, ch = content
+    vbx, vby, vbw, vbh = (float(v) for v in brush.viewbox)
+    if brush.viewbox_units != "Absolute":
+        vbx, vbw, vby, vbh = cx + vbx * cw, vbw * cw, cy + vby * ch, vbh * ch
+    vpx, vpy, vpw, vph = (float(v) for v in brush.viewport)
+    if brush.viewport_units != "Absolute":
+        lo, hi = bounds
+        size = hi - lo
+        vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
+        vpy, vph = lo[1] + vpy * size[1], vph * size[1]
+    if min(vbw, vbh, vpw, vph) <= 0.0 or not all(map(math.isfinite, (vbw, vbh, vpw, vph))):
+        return None
+    sx, sy = vpw / vbw, vph / vbh
+    if brush.stretch == "Uniform":
+        sx = sy = min(sx, sy)
+    elif brush.stretch == "UniformToFill":
+        sx = sy = max(sx, sy)
+    elif brush.stretch == "None":
+        sx = sy = 1.0
+    ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
+    oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
+    m = np.array([[sx, 0.0, ox - vbx * sx], [0.0, sy, oy - vby * sy], [0.0, 0.0, 1.0]])
+    return (vpx, vpy, vpw, vph), m
+
+
+def content_bounds(brush) -> tuple[float, float, float, float] | None:
+    """The box relative Viewbox units refer to: an ImageBrush's picture (one pixel per DIP),
+    a drawing's bounds, or the bounds the reader gave (a Viewport2DVisual3D's visual)."""
+    if isinstance(brush, ImageBrush):
+        if brush.image is None or brush.image.size == 0:
+            return None
+        h, w = brush.image.shape[:2]
+        return (0.0, 0.0, float(w), float(h))
+    if brush.content_bounds is not None:
+        return brush.content_bounds
+    from xaml3d.render.layer2d.paint import drawing_bounds  # a drawing holds brushes
+
+    r = drawing_bounds(brush.drawing)
+    if r is None or r.isEmpty():
+        return None
+    return (r.left(), r.top(), r.width(), r.height())
+
+
+def draw_content(canvas: skia.Canvas, brush) -> None:
+    """A tile brush's content in its own coordinates."""
+    if isinstance(brush, ImageBrush):
+        img = image_of(brush.image)
+        if img is not None:
+            canvas.drawImage(img, 0, 0, skia.SamplingOptions(skia.FilterMode.kLinear))
+    else:
+        from xaml3d.render.layer2d.paint import draw  # a drawing holds brushes
+
+        draw(canvas, brush.drawing)
+
+
+def _tile_shader(brush, bounds) -> skia.Shader | None:
+    content = content_bounds(brush)
+    if content is None:
+        return None
+    found = tile_layout(brush, bounds, content)
+    if found is None:
+        return None
+    (vpx, vpy, vpw, vph), m = found
+    rec = skia.PictureRecorder()
+    canvas = rec.beginRecording(skia.Rect.MakeXYWH(vpx, vpy, vpw, vph))
+    canvas.clipRect(skia.Rect.MakeXYWH(vpx, vpy, vpw, vph))
+    canvas.concat(matrix(m))
+    draw_content(canvas, brush)
+    picture = rec.finishRecordingAsPicture()
+    mode = brush.tile_mode
+    tx, ty = (_tile_mode(mode, flip) for flip in (("FlipX", "FlipXY"), ("FlipY", "FlipXY")))
+    local = brush_to_texture_matrix(brush, bounds, False)
+    return picture.makeShader(
+        tx, ty, skia.FilterMode.kLinear, matrix(local), skia.Rect.MakeXYWH(vpx, vpy, vpw, vph)
+    )
+
+
+def _tile_mode(mode: str, flips: tuple[str, ...]):
+    if mode == "None":
+        return skia.TileMode.kDecal
+    return skia.TileMode.kMirror if mode in flips else skia.TileMode.kRepeat
+
+
+def image_of(arr) -> skia.Image | None:
+    """A straight-alpha (H, W, 4) uint8 array as a skia Image."""
+    if arr is None or arr.size == 0:
+        return None
+    return skia.Image.fromarray(
+        np.ascontiguousarray(arr, dtype=np.uint8),
+        colorType=skia.ColorType.kRGBA_8888_ColorType,
+        alphaType=skia.AlphaType.kUnpremul_AlphaType,
+    )
+
+
+# --------------------------------------------------------------------------- drawings

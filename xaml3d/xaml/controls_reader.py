@@ -1,0 +1,175 @@
+"""WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
+
+Covers Button, ToggleButton, RepeatButton, TextBox, Label, CheckBox, RadioButton, ProgressBar,
+a closed ComboBox and a horizontal Slider in their resting state, with the values of the
+[[Aero2.NormalColor]] sections of dotnet/wpf's theme files (PresentationFramework.Aero2):
+backgrounds, borders, paddings, marks, arrows and thumbs; their text through ``visual_text``.
+Element content of a content control other than text is said (DRW002), its text drawn.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.layout.text import baseline, line_height
+from xaml3d.scene.drawing import (
+    DrawingGroup,
+    EllipseGeometry,
+    GeometryDrawing,
+    Pen,
+    RectangleGeometry,
+    TextDrawing,
+)
+from xaml3d.xaml import values as V
+from xaml3d.xaml.context import qname
+from xaml3d.xaml.panels_reader import parse_thickness
+from xaml3d.xaml.visual_text import (
+    _box_drawing,
+    _brush,
+    _font_style,
+    _foreground,
+    _rgb,
+    _text,
+    _text_of,
+)
+
+AERO2 = {
+    "Button": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
+    "ToggleButton": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
+    "RepeatButton": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
+    "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),
+    "Label": dict(background=None, border=None, padding=(5, 5, 5, 5)),
+    "CheckBox": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
+    "RadioButton": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
+}
+_OPTION_MARK = 13.0  # the Aero2 check box / radio button mark's size (px)
+_TEXT_BOX_INSET = 2.0  # TextBox text sits 2 px inside its padding (the text view's margin)
+
+
+_INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
+
+
+def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -> None:
+    look = AERO2[local]
+    rich = [k for k in el if isinstance(k.tag, str) and "." not in qname(k.tag)[1]
+            and qname(k.tag)[1] not in _INLINES]  # fmt: skip
+    if rich:
+        msg = (
+            f"the {qname(rich[0].tag)[1]} inside this {local} is not drawn: only the text of "
+            "its content is"
+        )
+        r.ctx.diag("DRW002", msg, rich[0])
+    background = _brush(r, v, "Background", look["background"])
+    border = _brush(r, v, "BorderBrush", look["border"])
+    thick = v.get(
+        "BorderThickness", parse_thickness, (1.0,) * 4 if border is not None else (0,) * 4
+    )
+    pad = v.get("Padding", parse_thickness, look["padding"])
+    if local in ("CheckBox", "RadioButton"):
+        top = (h - _OPTION_MARK) / 2
+        if local == "CheckBox":
+            box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
+            shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
+            out.append(DrawingGroup(children=tuple(box), transform=shift))
+        else:
+            out.append(GeometryDrawing(
+                EllipseGeometry((6.5, top + 6.5), 6.0, 6.0), brush=background,
+                pen=Pen(brush=border, thickness=1.0),
+            ))  # fmt: skip
+        t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - line_height(font)) / 2 - 0.5, w)
+        if t is not None:
+            out.append(t)
+        return
+    out.extend(_box_drawing(background, border, thick, 0.0, w, h))
+    inset_x = thick[0] + pad[0] + (_TEXT_BOX_INSET if local == "TextBox" else 0.0)
+    inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
+    centred = local in ("Button", "ToggleButton", "RepeatButton")
+    if centred:  # Aero2: HorizontalContentAlignment and VerticalContentAlignment Center
+        ty = thick[1] + pad[1] + (h - thick[1] - thick[3] - pad[1] - pad[3] - line_height(font)) / 2
+    else:
+        ty = thick[1] + pad[1]
+    t = _text(r, el, v, font, inset_x, ty, inner_w, align_center=centred)
+    if t is not None:
+        # the content presenter's layout clip: text never spills over the border
+        inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
+        box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
+        out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
+
+
+def _progress_bar(r, v, w: float, h: float, out: list) -> None:
+    """Aero2's ProgressBar: a bordered track, the indicator filling Value's share of the inside
+    from the left (Minimum 0, Maximum 100, Value 0 by default)."""
+    background = _brush(r, v, "Background", _rgb("E6E6E6"))
+    border = _brush(r, v, "BorderBrush", _rgb("BCBCBC"))
+    thick = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    out.extend(_box_drawing(background, border, thick, 0.0, w, h))
+    lo = v.get("Minimum", V.parse_double, 0.0)
+    hi = v.get("Maximum", V.parse_double, 100.0)
+    value = v.get("Value", V.parse_double, 0.0)
+    share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
+    inner_w = max(0.0, w - thick[0] - thick[2])
+    inner_h = max(0.0, h - thick[1] - thick[3])
+    if share > 0 and inner_h > 0:
+        rect = (thick[0], thick[1], inner_w * share, inner_h)
+        fill = _brush(r, v, "Foreground", _rgb("06B025"))
+        out.append(GeometryDrawing(RectangleGeometry(rect), brush=fill))
+
+
+_COMBO_BUTTON = 17.0  # SystemParameters.VerticalScrollBarWidth: the drop-down button's column
+# Aero2's drop-down arrow (ComboBoxToggleButton's Path), 5.33 x 4.45 px
+_COMBO_ARROW = "M0,0 L2.667,2.66665 5.3334,0 5.3334,-1.78168 2.6667,0.88501 0,-1.78168 0,0Z"
+
+
+def _combo_items(el) -> list:
+    return [k for k in el if isinstance(k.tag, str) and qname(k.tag)[1] == "ComboBoxItem"]
+
+
+def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
+    """Aero2's closed ComboBox: the #FFF0F0F0-#FFE5E5E5 face in a #FFACACAC border, the
+    selected item's text (SelectedIndex, an item's IsSelected, or Text) at Padding 6,3,5,3,
+    and the #FF606060 arrow centred in the 17 px button column."""
+    from xaml3d.scene.types import GradientStop, LinearGradientBrush
+    from xaml3d.xaml.geometry_reader import path_from_string
+
+    face = LinearGradientBrush(
+        stops=(GradientStop((0xF0 / 255,) * 3 + (1.0,), 0.0),
+               GradientStop((0xE5 / 255,) * 3 + (1.0,), 1.0)),
+        start_point=(0.0, 0.0), end_point=(0.0, 1.0),
+    )  # fmt: skip
+    background = _brush(r, v, "Background", face)
+    border = _brush(r, v, "BorderBrush", _rgb("ACACAC"))
+    out.extend(_box_drawing(background, border, (1.0,) * 4, 0.0, w, h))
+    items = _combo_items(el)
+    index = v.get("SelectedIndex", V.parse_int, -1)
+    chosen = items[index] if 0 <= index < len(items) else next(
+        (k for k in items if k.get("IsSelected") == "True"), None)  # fmt: skip
+    text = _text_of(chosen) if chosen is not None else (el.get("Text") or "")
+    if text:
+        weight, italic = _font_style(el)
+        box = (7.0, 4.0, max(0.0, w - 13.0 - _COMBO_BUTTON), max(0.0, h - 8.0))
+        line = TextDrawing(
+            text=text, origin=(7.0, (h - line_height(font)) / 2 + baseline(font)),
+            font_size=font, weight=weight, italic=italic, brush=_foreground(r, el),
+        )  # fmt: skip
+        out.append(DrawingGroup(children=(line,), clip=RectangleGeometry(box)))
+    arrow = path_from_string(_COMBO_ARROW)
+    cx, cy = w - 1.0 - _COMBO_BUTTON / 2, h / 2
+    m = np.array([[1.0, 0.0, cx - 2.6667], [0.0, 1.0, cy + 1.78168 / 2 - 0.44], [0, 0, 1.0]])
+    out.append(DrawingGroup(children=(GeometryDrawing(arrow, brush=_rgb("606060")),),
+                            transform=m))  # fmt: skip
+
+
+def _slider(r, v, w: float, h: float, out: list) -> None:
+    """Aero2's horizontal Slider: a 4 px #FFE7EAEA track in a #FFD6D6D6 border, inset by half
+    the thumb, and the 11 x 18 #FFF0F0F0 thumb (#FFACACAC edge) at Value's share of the way."""
+    lo = v.get("Minimum", V.parse_double, 0.0)
+    hi = v.get("Maximum", V.parse_double, 10.0)
+    value = v.get("Value", V.parse_double, 0.0)
+    share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
+    cy = h / 2
+    track = _box_drawing(_rgb("E7EAEA"), _rgb("D6D6D6"), (1.0,) * 4, 0.0, max(0.0, w - 11), 4.0)
+    shift = np.array([[1.0, 0.0, 5.5], [0.0, 1.0, cy - 2.0], [0.0, 0.0, 1.0]])
+    out.append(DrawingGroup(children=tuple(track), transform=shift))
+    x = max(0.0, w - 11.0) * share
+    thumb = RectangleGeometry((x + 0.5, cy - 8.5, 10.0, 17.0))
+    out.append(GeometryDrawing(thumb, brush=_rgb("F0F0F0"), pen=Pen(brush=_rgb("ACACAC"))))

@@ -1,0 +1,114 @@
+"""Reading what a Viewport3D's own UIElement properties do to its picture (scene Viewport2D).
+
+Covers Opacity, OpacityMask (any brush the 2D layer draws), Clip (any geometry), RenderTransform
+with RenderTransformOrigin (folded into one matrix about the viewport's top-left), Effect
+(BlurEffect: Radius; DropShadowEffect: Color, Direction, ShadowDepth, BlurRadius, Opacity),
+BitmapEffect (BlurBitmapEffect: Radius; DropShadowBitmapEffect: Color, Direction, ShadowDepth,
+Softness, Opacity; OuterGlowBitmapEffect: GlowColor, GlowSize, Opacity, drawn as an unmoved
+shadow) and RenderOptions.EdgeMode. Other effects (ShaderEffect and effects from other
+assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) and
+RenderOptions.BitmapScalingMode are an info diagnostic (DRW003) and the picture is drawn without
+them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.scene.drawing import Effect, Viewport2D
+from xaml3d.xaml import values as V
+from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
+from xaml3d.xaml.context import is_presentation, qname
+from xaml3d.xaml.geometry_reader import geometry_property
+
+_D = V.parse_double
+
+
+def _effect(r, el) -> Effect | None:
+    p = r.props(el)
+    t = p.type
+    if t in ("BlurEffect", "BlurBitmapEffect"):
+        if p.string("KernelType", "Gaussian") == "Box":
+            r.ctx.diag("DRW003", f"{t} KernelType Box is drawn as Gaussian", el)
+        return Effect(kind="Blur", radius=p.value("Radius", _D, 5.0))
+    if t in ("DropShadowEffect", "DropShadowBitmapEffect"):
+        # DropShadowBitmapEffect's blur is its Softness (0..1) of a 5 px kernel
+        radius = (
+            p.value("BlurRadius", _D, 5.0)
+            if t == "DropShadowEffect"
+            else 5.0 * p.value("Softness", _D, 0.5)
+        )
+        return Effect(
+            kind="DropShadow",
+            radius=radius,
+            color=p.value("Color", V.parse_color, (0.0, 0.0, 0.0, 1.0)),
+            direction=p.value("Direction", _D, 315.0),
+            shadow_depth=p.value("ShadowDepth", _D, 5.0),
+            opacity=p.value("Opacity", _D, 1.0),
+        )
+    if t == "OuterGlowBitmapEffect":
+        # a glow is a shadow cast straight below: no offset, GlowSize as its blur
+        return Effect(
+            kind="DropShadow",
+            radius=p.value("GlowSize", _D, 20.0),
+            color=p.value("GlowColor", V.parse_color, (1.0, 215 / 255, 0.0, 1.0)),
+            shadow_depth=0.0,
+            opacity=p.value("Opacity", _D, 1.0),
+        )
+    ns, local = qname(el.tag)
+    what = local if ns is None or "presentation" in ns else f"{local} (from {ns})"
+    r.ctx.diag("DRW003", f"the effect {what} is not applied: the picture is drawn without it", el)
+    return None
+
+
+def _effect_property(r, p, prop: str) -> Effect | None:
+    if not p.has(prop):
+        return None
+    for el in p.elems.get(prop, ()):
+        ns, local = qname(el.tag)
+        if isinstance(el.tag, str) and not is_presentation(ns):
+            # a ShaderEffect from another assembly: its pixel shader is not available
+            msg = f"the effect {local} (from {ns}) is not applied: the picture is drawn without it"
+            r.ctx.diag("DRW003", msg, el)
+            return None
+    return p.obj(prop, lambda e: _effect(r, e), None)
+
+
+def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
+    """The viewport's Viewport2D (None when it sets none of the properties)."""
+    set_any = False
+    opacity = p.value("Opacity", _D, 1.0)
+    set_any |= opacity != 1.0
+    mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
+    clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
+    transform = None
+    if p.has("RenderTransform"):
+        m = p.obj(
+            "RenderTransform", lambda e: transform2d(r, e), None, from_string=transform2d_text
+        )
+        if m is not None and not np.allclose(m, np.eye(3)):
+            ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
+            o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
+            back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
+            transform = o @ np.asarray(m) @ back
+    effect = _effect_property(r, p, "Effect")
+    if p.has("BitmapEffect"):
+        bitmap = _effect_property(r, p, "BitmapEffect")
+        effect = effect or bitmap  # WPF applies Effect when both are set
+    if "RenderOptions.BitmapScalingMode" in p.attached:
+        msg = (
+            "RenderOptions.BitmapScalingMode is not applied: brushes are sampled bilinearly "
+            "(WPF's default)"
+        )
+        r.ctx.diag("DRW003", msg, p.el, attr="RenderOptions.BitmapScalingMode")
+    edge = p.attached.get("RenderOptions.EdgeMode", "Unspecified").strip()
+    if edge not in ("Aliased", "Unspecified"):
+        r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
+        edge = "Unspecified"
+    set_any |= any(x is not None for x in (mask, clip, transform, effect)) or edge != "Unspecified"
+    if not set_any:
+        return None
+    return Viewport2D(
+        opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform,
+        effect=effect, edge_mode=edge,
+    )  # fmt: skip

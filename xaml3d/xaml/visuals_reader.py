@@ -1,0 +1,324 @@
+"""A VisualBrush's Visual (and a Viewport2DVisual3D's) laid out and turned into a Drawing.
+
+WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
+xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
+measured with the package's font, shapes by their geometry), laid out by ``xaml3d.layout`` as
+WPF lays out a brush's visual (measured with infinite room, arranged at its desired size), and
+each element becomes the drawing WPF's would: panel and Border backgrounds and borders
+(BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
+Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
+and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
+Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
+RadioButton, ProgressBar, Slider and a closed ComboBox in WPF's default Windows 10/11 look (the
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity applies to an element and
+its children. Anything else is skipped with DRW002: the rest is drawn.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xaml3d.layout import layout
+from xaml3d.layout import tree as L
+from xaml3d.layout.text import line_height, text_width
+from xaml3d.scene.drawing import (
+    DrawingGroup,
+    EllipseGeometry,
+    GeometryDrawing,
+    ImageDrawing,
+    PathGeometry,
+    Pen,
+    RectangleGeometry,
+)
+from xaml3d.scene.types import placeholder_image
+from xaml3d.xaml import values as V
+from xaml3d.xaml.brushes_reader import load_image
+from xaml3d.xaml.context import qname
+from xaml3d.xaml.controls_reader import (
+    _COMBO_BUTTON,
+    _OPTION_MARK,
+    _TEXT_BOX_INSET,
+    AERO2,
+    _combo_box,
+    _combo_items,
+    _control,
+    _progress_bar,
+    _slider,
+)
+from xaml3d.xaml.geometry_reader import geometry_property
+from xaml3d.xaml.panels_reader import (
+    FONT_SIZE,
+    ElementValues,
+    PanelsReader,
+    parse_thickness,
+)
+from xaml3d.xaml.visual_text import (
+    _box_drawing,
+    _brush,
+    _font_style,
+    _lines,
+    _text,
+    _text_of,
+    _wrap_width,
+)
+
+_TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
+                  "CheckBox", "RadioButton"}  # fmt: skip
+_SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
+
+
+class _VisualPanels(PanelsReader):
+    """The panel reader, recording each node's element and measuring text and shapes."""
+
+    def __init__(self, r) -> None:
+        super().__init__(r, [])
+
+    def _estimate(self, n, v, el, font: float = FONT_SIZE) -> None:
+        local = n.type
+        if local in _SHAPES:
+            n.estimate = _shape_extent(self.r, v)
+        elif local == "Slider":
+            n.estimate = (0.0, 18.0)  # Aero2's thumb is 11 x 18; the track stretches
+        elif local == "ComboBox":
+            items = [_text_of(k) for k in _combo_items(el)] or [""]
+            widest = max(text_width(t, font, *_font_style(el)) for t in items)
+            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
+            n.estimate = (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
+        elif local in _TEXT_CONTROLS:
+            text = _text_of(el)
+            weight, italic = _font_style(el)
+            pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
+            lines = _lines(text, font, weight, italic, _wrap_width(v, pad) if local ==
+                           "TextBlock" else math.inf)  # fmt: skip
+            w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
+            h = line_height(font) * max(1, len(lines))
+            border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
+            if local in ("CheckBox", "RadioButton"):
+                # the mark, then the content with Aero2's Padding 4,-1,0,0
+                w, h = _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
+            else:
+                w += pad[0] + pad[2] + 2 * border
+                h += pad[1] + pad[3] + 2 * border
+                if local == "TextBox":
+                    w += 2 * _TEXT_BOX_INSET
+            n.estimate = (w, h)
+        else:
+            super()._estimate(n, v, el, font)
+
+
+def _shape_extent(r, v) -> tuple[float, float]:
+    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
+    p = v.p
+    if p is None:
+        return (0.0, 0.0)
+    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
+    pts = _shape_points(r, p)
+    if pts is None or pts.size == 0:
+        return (0.0, 0.0)
+    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
+
+
+def _shape_points(r, p) -> np.ndarray | None:
+    d = V.parse_double
+    if p.type == "Line":
+        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
+        return np.array([[x1, y1], [x2, y2]])
+    if p.type in ("Polyline", "Polygon"):
+        text = p.string("Points")
+        return V.parse_point_collection(text).reshape(-1, 2) if text else None
+    if p.type == "Path":
+        g = geometry_property(r, p, "Data")
+        if isinstance(g, PathGeometry):
+            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
+            return np.array(xy, dtype=float).reshape(-1, 2)
+        if isinstance(g, RectangleGeometry):
+            x, y, w, h = g.rect
+            return np.array([[x + w, y + h]])
+        if isinstance(g, EllipseGeometry):
+            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
+            return np.array([[cx + rx, cy + ry]])
+    return None
+
+
+def visual_drawing(r, el):
+    """(Drawing, (0, 0, width, height)) of the visual ``el`` laid out at its desired size."""
+    reader = _VisualPanels(r)
+    root = reader.build(el)
+    if root is None:
+        r.ctx.diag("DRW002", f"{qname(el.tag)[1]} is not a visual xaml3d draws: skipped", el)
+        return None
+    # an element of the window keeps the size the window's layout gave it; a brush's own
+    # visual is measured with infinite room and arranged at its desired size
+    size = getattr(r, "laid_out_sizes", {}).get(id(el))
+    layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
+    out = []
+    _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
+    w, h = root.rect[2], root.rect[3]
+    return DrawingGroup(children=tuple(out)), (0.0, 0.0, float(w), float(h))
+
+
+def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
+    """``parent``: the parent's absolute origin and scale (x, y, sx, sy); the layout's
+    rectangles are absolute, the drawing groups nest."""
+    if not n.arranged or n.visibility != "Visible":
+        return
+    el, font = reader.elements.get(id(n), (None, FONT_SIZE))
+    if el is None:
+        return
+    x, y, w, h = n.rect
+    ink_w, ink_h = n.ink
+    sx = w / ink_w if ink_w > 0 else 1.0
+    sy = h / ink_h if ink_h > 0 else 1.0
+    own: list = []
+    v = ElementValues(r, el)
+    _element(r, v, n, el, font, ink_w, ink_h, own)
+    for k in n.children:
+        _compile(r, reader, k, own, (x, y, sx, sy))
+    if not own:
+        return
+    opacity = v.get("Opacity", V.parse_double, 1.0)
+    clip = _layout_clip(n) if n.type in _TEXT_CONTROLS else None
+    if clip is not None:  # the clip is in the element's own coordinates, under its transform
+        own = [DrawingGroup(children=tuple(own), clip=clip)]
+    px, py, psx, psy = parent
+    m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
+    out.append(DrawingGroup(children=tuple(own), opacity=opacity, transform=m))
+
+
+def _layout_clip(n):
+    """WPF's layout clip: a control given less room than its text needs is cut at its box."""
+    if n.type not in _TEXT_CONTROLS or n.estimate is None:
+        return None
+    w, h = n.ink
+    if n.estimate[0] <= w + 1e-9 and n.estimate[1] <= h + 1e-9:
+        return None
+    return RectangleGeometry((0.0, 0.0, w, h))
+
+
+def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
+    local = n.type
+    if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
+                  L.UNIFORM, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
+        out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        return
+    if n.kind == L.BORDER:
+        radius = v.get("CornerRadius", V.parse_double, 0.0) if v.p is not None else 0.0
+        out.extend(_box_drawing(_brush(r, v, "Background"), _brush(r, v, "BorderBrush"),
+                                n.border, radius, w, h))  # fmt: skip
+        return
+    if local in _SHAPES:
+        _shape(r, v, local, w, h, out)
+        return
+    if local == "TextBlock":
+        out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        pad = v.get("Padding", parse_thickness, (0.0,) * 4)
+        t = _text(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
+        if t is not None:
+            out.append(t)
+        return
+    if local in AERO2:
+        _control(r, v, el, local, font, w, h, out)
+        return
+    if local == "ProgressBar":
+        _progress_bar(r, v, w, h, out)
+        return
+    if local == "ComboBox":
+        _combo_box(r, v, el, font, w, h, out)
+        return
+    if local == "Slider":
+        _slider(r, v, w, h, out)
+        return
+    if local == "Image" and v.p is not None:
+        source = v.p.string("Source")
+        if source:
+            image = load_image(r, source, el, v.p.attr_keys.get("Source"))[1]
+            if image is None:  # the diagnostic says a grey checker stands in
+                image = placeholder_image()
+            if image is not None:
+                out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h)))
+        return
+    r.ctx.diag("DRW002", f"{local} is not drawn by xaml3d in a visual: skipped", el)
+
+
+_CAPS = ("Flat", "Square", "Round", "Triangle")
+_JOINS = ("Miter", "Bevel", "Round")
+
+
+def _doubles(s: str) -> tuple[float, ...]:
+    return tuple(float(x) for x in V.parse_double_collection(s))
+
+
+def _pen(r, v):
+    stroke = _brush(r, v, "Stroke")
+    if stroke is None:
+        return None, 0.0
+    t = v.get("StrokeThickness", V.parse_double, 1.0)
+    dashes = v.get("StrokeDashArray", _doubles, ())
+    pen = Pen(
+        brush=stroke, thickness=t,
+        start_cap=v.get("StrokeStartLineCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
+        end_cap=v.get("StrokeEndLineCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
+        dash_cap=v.get("StrokeDashCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
+        line_join=v.get("StrokeLineJoin", lambda s: V.parse_enum(s, _JOINS), "Miter"),
+        miter_limit=v.get("StrokeMiterLimit", V.parse_double, 10.0),
+        dashes=dashes, dash_offset=v.get("StrokeDashOffset", V.parse_double, 0.0),
+    )  # fmt: skip
+    return pen, t
+
+
+def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
+    if v.p is None:
+        return
+    fill = _brush(r, v, "Fill")
+    pen, t = _pen(r, v)
+    if local in ("Rectangle", "Ellipse"):
+        # WPF's Rectangle and Ellipse keep their stroke inside the element's box
+        x0, y0 = t / 2, t / 2
+        rw, rh = max(0.0, w - t), max(0.0, h - t)
+        if local == "Rectangle":
+            rx = v.get("RadiusX", V.parse_double, 0.0)
+            ry = v.get("RadiusY", V.parse_double, 0.0)
+            g = RectangleGeometry((x0, y0, rw, rh), rx, ry)
+        else:
+            g = EllipseGeometry((x0 + rw / 2, y0 + rh / 2), rw / 2, rh / 2)
+        out.append(GeometryDrawing(g, brush=fill, pen=pen))
+        return
+    if local == "Path":
+        g = geometry_property(r, v.p, "Data")
+    else:
+        pts = _shape_points(r, v.p)
+        if pts is None or pts.shape[0] < 2:
+            return
+        cmds = [("M", *pts[0])] + [("L", *q) for q in pts[1:]]
+        if local == "Polygon":
+            cmds.append(("Z",))
+        rule = v.get("FillRule", lambda s: V.parse_enum(s, ("EvenOdd", "Nonzero")), "EvenOdd")
+        g = PathGeometry(tuple(tuple(float(c) if not isinstance(c, str) else c for c in cmd)
+                               for cmd in cmds), rule)  # fmt: skip
+        if local == "Line":
+            fill = None  # a Line is never filled
+    if g is not None:
+        out.append(GeometryDrawing(g, brush=fill, pen=pen))
+
+
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider"}
+
+
+def attach_control_drawings(r, root, elements: dict) -> None:
+    """``render --window``: each laid-out 2D control that the 2D layer draws gets its drawing
+    (``Node.drawing``, in its own box). The others stay undrawn, as before (LAY003 already
+    says they are estimated)."""
+    for n in root.walk():
+        if n.kind != L.CONTROL or n.type not in _WINDOW_DRAWN or not n.arranged:
+            continue
+        el, font = elements.get(id(n), (None, FONT_SIZE))
+        if el is None:
+            continue
+        out: list = []
+        v = ElementValues(r, el)
+        _element(r, v, n, el, font, n.ink[0], n.ink[1], out)
+        if out:
+            opacity = v.get("Opacity", V.parse_double, 1.0)
+            n.drawing = DrawingGroup(children=tuple(out), opacity=opacity, clip=_layout_clip(n))
