@@ -5,7 +5,8 @@
   and every property of those types.
 - The ```python blocks of docs/api.md run, in order, in one namespace, with the repository root
   as the working directory (so ``samples/...`` paths work) and a temporary directory in ``tmp``
-  for anything they write.
+  for anything they write. A block fenced ```python no-run (one that would start a cluster) is
+  only compiled.
 - Every relative link and image in docs/*.md points at an existing file.
 """
 
@@ -94,6 +95,16 @@ def test_xaml3d_render_stays_callable_after_importing_the_renderer():
     import xaml3d.render.api  # noqa: F401
 
     assert callable(xaml3d.render), "xaml3d.render was shadowed by the xaml3d.render subpackage"
+
+
+_NOT_RUN = re.compile(r"^```python no-run\n(.*?)^```", re.S | re.M)
+
+
+def test_api_blocks_not_run_compile():
+    blocks = _NOT_RUN.findall((DOCS / "api.md").read_text(encoding="utf-8"))
+    assert blocks, "docs/api.md has no block marked no-run"
+    for i, block in enumerate(blocks):
+        compile(block, f"docs/api.md no-run block {i + 1}", "exec")
 
 
 def test_api_has_examples():

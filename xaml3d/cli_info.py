@@ -97,7 +97,8 @@ def animation_info(scene: Scene) -> dict:
             rb = a.repeat_behavior
             anims.append({
                 "type": a.type,
-                "target": f"{a.target_name}.{a.target_property}",
+                # no TargetName: the element whose trigger begins it is the target, as in WPF
+                "target": f"{a.target_name or sb.owner}.{a.target_property}",
                 "resolves": tl is not None and tl.targets.get(id(a)) is not None,
                 "begin": a.begin_time,
                 "period": _seconds(period) if not math.isinf(period) else "Forever",

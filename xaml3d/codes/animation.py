@@ -24,7 +24,11 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         ERROR,
         "the path goes through an object made from a string (frozen: WPF cannot animate it)",
     ),  # fmt: skip
-    "ANIM005": (ERROR, "animation without Storyboard.TargetName or Storyboard.TargetProperty"),
+    "ANIM005": (
+        ERROR,
+        "animation without Storyboard.TargetProperty, or without Storyboard.TargetName in a "
+        "storyboard no trigger begins (nothing for the path to start from)",
+    ),  # fmt: skip
     "ANIM006": (WARNING, "a time without a colon is a number of DAYS ('5' = five days)"),
     "ANIM007": (
         WARNING,

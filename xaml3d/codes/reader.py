@@ -84,7 +84,8 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "BRU006": (WARNING, "unsupported brush or brush transform: ignored"),
     "ANI001": (
         WARNING,
-        "animation not evaluated (MatrixAnimationUsingPath, a path without Figures)",
+        "animation not evaluated (MatrixAnimationUsingPath, a path without Figures, a "
+        "Storyboard.Target xaml3d cannot follow)",
     ),
     "ANI002": (INFO, "storyboard control action (Pause/Stop/Seek...) ignored"),
     "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),

@@ -451,6 +451,9 @@ class Storyboard:
     column: int | None = None
     # the Storyboard's own x:Name (or x:Key) when ``name`` is its BeginStoryboard's
     other_names: tuple[str, ...] = ()
+    # the element whose trigger begins it (its x:Name, else its type: "Viewport3D"), which
+    # WPF animates when an animation names no Storyboard.TargetName; None: no trigger
+    owner: str | None = None
 
     @property
     def names(self) -> tuple[str, ...]:

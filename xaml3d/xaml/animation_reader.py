@@ -24,7 +24,7 @@ from dataclasses import replace
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
 from xaml3d.xaml import values as V
-from xaml3d.xaml.context import a_an, element_name, qname, x_attr
+from xaml3d.xaml.context import a_an, element_name, qname, split_markup, x_attr
 from xaml3d.xaml.models_reader import rotation, rotation_as_quaternion
 from xaml3d.xaml.path_data import parse_path_figures
 
@@ -136,12 +136,26 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
     """One timeline element -> TimelineGroup | Animation | None (not a timeline)."""
     p = r.props(el)
     t = p.type
-    own = p.attached_keys.get("Storyboard.TargetName")
+    # an inherited Storyboard.Target (an object) wins over a TargetName below it, as in WPF's
+    # clock tree walk; a Target of this timeline wins over its own TargetName
+    key = p.attached_keys.get("Storyboard.TargetName")  # as written (maybe without "Storyboard.")
+    own = key is not None and not inherited.get("object")
     target = {
-        "name": p.attached.get("Storyboard.TargetName", inherited.get("name")),
+        "name": p.attached.get("Storyboard.TargetName") if own else inherited.get("name"),
         "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
-        "name_at": r.ctx.locate(el, own) if own else inherited.get("name_at"),
+        "name_at": r.ctx.locate(el, key) if own else inherited.get("name_at"),
+        "object": inherited.get("object", False),
+        "unread": inherited.get("unread", False),
     }
+    if "Storyboard.Target" in p.attached:
+        raw = p.attached["Storyboard.Target"]
+        named = _reference_name(raw)
+        at = r.ctx.locate(el, p.attached_keys.get("Storyboard.Target"))
+        target.update(name=named, object=True, unread=named is None, name_at=at)
+        if named is None:
+            msg = (f"Storyboard.Target={raw!r}: only {{x:Reference name}} and {{Binding "
+                   "ElementName=name}} are followed: its animations are not evaluated")  # fmt: skip
+            r.ctx.diag("ANI001", msg, el)
     if t in _GROUPS:
         if t == "Storyboard" and not top:
             r.ctx.diag("ANI004", "Storyboard nested in a timeline: read as a group", el)
@@ -197,12 +211,35 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
         path=path,
         path_source=source,
         value_type=vtype,
-        evaluated=p.etype.supported and (path is not None or not t.endswith("UsingPath")),
+        evaluated=p.etype.supported
+        and (path is not None or not t.endswith("UsingPath"))
+        and not target["unread"],
         target_name_at=target["name_at"],
         **r.ctx.position(el),
     )
     out.append(anim)
     return anim
+
+
+def _reference_name(raw: str) -> str | None:
+    """The element a Storyboard.Target names: ``{x:Reference cam}``, ``{x:Reference
+    Name=cam}`` or ``{Binding ElementName=cam}``; None for any other value."""
+    m = split_markup(raw)
+    if m is None:
+        return None
+    kind, args = m
+    if kind == "Reference":
+        key, eq, value = args.partition("=")
+        name = value if eq and key.strip() == "Name" else args if not eq else ""
+        name = name.strip().strip("'\"")
+        return name if name.isidentifier() else None
+    if kind == "Binding":
+        fields = dict(part.partition("=")[::2] for part in args.split(","))
+        fields = {k.strip(): v.strip().strip("'\"") for k, v in fields.items()}
+        name = fields.get("ElementName", "")
+        # a Path would animate a property of the element, not the element itself
+        return name if name.isidentifier() and set(fields) == {"ElementName"} else None
+    return None
 
 
 def _path(r, p) -> tuple[tuple | None, str]:
@@ -250,11 +287,17 @@ def _key_frame(r, el, vtype: str) -> KeyFrame | None:
     )
 
 
-def read_trigger(r, trigger_el, out: list, begun: set) -> None:
-    """An EventTrigger: each BeginStoryboard in its actions becomes a Storyboard."""
+def read_trigger(r, trigger_el, out: list, begun: set, hosts: dict | None = None) -> None:
+    """An EventTrigger: each BeginStoryboard in its actions becomes a Storyboard, whose
+    ``owner`` is the element holding the trigger (``<X.Triggers>``'s X: WPF's BeginStoryboard
+    begins it with that element as the target of animations that name none; ``hosts`` gets
+    id(storyboard) -> that element)."""
     p = r.props(trigger_el)
     if p.type != "EventTrigger":
         return  # property/data triggers (styles) are not animation starts
+    holder = trigger_el.getparent()
+    host = holder.getparent() if holder is not None else None
+    owner = None if host is None else element_name(host) or qname(host.tag)[1]
     event = p.string("RoutedEvent")
     for action in p.items("Actions"):
         ap = r.props(action)
@@ -278,8 +321,10 @@ def read_trigger(r, trigger_el, out: list, begun: set) -> None:
             own = element_name(sb) or x_attr(sb, "Key")
             story = read_storyboard(r, sb, ev, nm or own)
             other = (own,) if nm and own and own != nm else ()
-            return replace(story, handoff=hb, other_names=other)
+            return replace(story, handoff=hb, other_names=other, owner=owner)
 
         sb = ap.obj("Storyboard", build, None)
         if sb is not None:
             out.append(sb)
+            if hosts is not None and host is not None:
+                hosts[id(sb)] = host

@@ -2,8 +2,11 @@
 element, property), once per load (wpf3d.md section 8).
 
 TargetName is an x:Name / Name anywhere in the document (resources included: WPF's name scope
-of a window reaches them). TargetProperty is a property path: a simple name (``Angle``), an
-owner-qualified chain such as
+of a window reaches them); without one, the path starts at the element whose
+``<X.Triggers>`` begins the storyboard (WPF's containing object, e.g. the Viewport3D:
+``(Viewport3D.Camera).(PerspectiveCamera.FieldOfView)``; a framework container's content
+children are its Content, Child or Children). TargetProperty is a property path: a simple
+name (``Angle``), an owner-qualified chain such as
 ``(ModelVisual3D.Transform).(RotateTransform3D.Rotation).(AxisAngleRotation3D.Angle)``,
 dotted names (``Transform.Rotation.Angle``), indexers into collections
 (``(Transform3DGroup.Children)[1]``, ``Children[0]``). Each step but the last must lead to an
@@ -129,8 +132,25 @@ def _string_brush(el, prop: str, rest: list, vtype: str) -> Target | None:
     return Target(el, prop, kind, field)
 
 
+# WPF's content property of the framework containers a trigger's path may start from (the
+# vocabulary keeps these types open, without a content property): their child elements are
+# that property's value ("(Window.Content).(Grid.Children)[0]...")
+_FRAMEWORK_CONTENT = {
+    **dict.fromkeys(
+        "Window Page UserControl ContentControl Button ToggleButton RepeatButton Label "
+        "ScrollViewer GroupBox Expander TabItem HeaderedContentControl Frame ToolTip "
+        "NavigationWindow ContentPresenter".split(),
+        "Content",
+    ),
+    **dict.fromkeys("Border Viewbox Decorator AdornerDecorator".split(), "Child"),
+    **dict.fromkeys("Grid Canvas StackPanel DockPanel WrapPanel UniformGrid".split(), "Children"),
+}
+
+
 def _step_objects(r, el, prop: str) -> list:
     p = r.props(el)
+    if prop not in p.elems and prop not in p.attrs and _FRAMEWORK_CONTENT.get(p.type) == prop:
+        return [_follow(r, k) for k in p.content]
     if prop in p.attrs:
         m = split_markup(p.attrs[prop])
         if m is not None and m[0] in ("StaticResource", "DynamicResource"):
@@ -144,12 +164,22 @@ def _step_objects(r, el, prop: str) -> list:
     return [_follow(r, k) for k in p.items(prop)]
 
 
-def resolve(r, names: dict, target_name: str | None, path: str | None, vtype: str) -> Target:
-    """Resolve one animation's target (raises TargetError)."""
-    if not target_name or not path:
-        missing = "TargetName" if not target_name else "TargetProperty"
-        raise TargetError("ANIM005", f"no Storyboard.{missing}")
-    el = names.get(target_name)
+def resolve(
+    r, names: dict, target_name: str | None, path: str | None, vtype: str, host=None
+) -> Target:
+    """Resolve one animation's target (raises TargetError). Without a TargetName the path
+    starts at ``host``, the element whose trigger begins the storyboard (WPF's Storyboard
+    takes its containing object then); with no host either (a storyboard no trigger begins,
+    which code would begin) there is nothing to start from."""
+    if not path:
+        raise TargetError("ANIM005", "no Storyboard.TargetProperty")
+    if not target_name and host is None:
+        raise TargetError(
+            "ANIM005",
+            "no Storyboard.TargetName, and no trigger begins its storyboard (the element that "
+            "code would begin it on is unknown)",
+        )
+    el = names.get(target_name) if target_name else host
     if el is None:
         raise TargetError("ANIM001", f"Storyboard.TargetName {target_name!r} names no object")
     steps = parse_path(path)

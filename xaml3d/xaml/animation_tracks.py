@@ -106,23 +106,35 @@ class Resolution:
         self.file = file
         self.diagnostics: list[Diagnostic] = []
         self.slots = Slots()
+        # id(animation) -> what its target is called when it names none (its storyboard's owner)
+        self.owners: dict[int, str] = {}
+
+    def label(self, a: Animation) -> str:
+        """``name.Property``: the animation's TargetName, else its storyboard's owner."""
+        return f"{a.target_name or self.owners.get(id(a))}.{a.target_property}"
 
     def diag(self, code: str, message: str, where) -> None:
         sev = ANIM_CODES[code][0]
         self.diagnostics.append(Diagnostic(code, sev, message, self.file, where.line, where.column))
 
 
-def resolve_targets(r, root, storyboards: list[Storyboard], file) -> Resolution:
+def resolve_targets(
+    r, root, storyboards: list[Storyboard], file, hosts: dict | None = None
+) -> Resolution:
     """Resolve every animation's target with the reader ``r`` (a reader of its own: what its
-    lookups report is reported again, or was already, by the build)."""
+    lookups report is reported again, or was already, by the build). ``hosts``: id(storyboard)
+    -> the element whose trigger begins it, the target of animations that name none."""
     res = Resolution(file)
     names = name_map(root)
     ctx = r.ctx
     with ctx.muted():  # lookups repeat what the build reports
         for sb in storyboards:
             _check_start(res, sb)
+            host = (hosts or {}).get(id(sb))
             for a in sb.animations:
-                target = _resolve(res, r, names, a)
+                if sb.owner is not None and not a.target_name:
+                    res.owners[id(a)] = sb.owner
+                target = _resolve(res, r, names, a, host)
                 if target is not None:
                     res.slots.add(target, a)
                 if a.begin_time is None:
@@ -139,13 +151,13 @@ def _check_start(res: Resolution, sb: Storyboard) -> None:
         res.diag("ANIM007", f"{label} has BeginTime {{x:Null}}: it never starts", sb)
 
 
-def _resolve(res: Resolution, r, names, a: Animation) -> Target | None:
+def _resolve(res: Resolution, r, names, a: Animation, host) -> Target | None:
     if not a.evaluated:
         return None
     try:
-        return resolve(r, names, a.target_name, a.target_property, a.value_type)
+        return resolve(r, names, a.target_name, a.target_property, a.value_type, host)
     except TargetError as exc:
-        what = f"{a.type} -> {a.target_name}.{a.target_property}"
+        what = f"{a.type} -> {res.label(a)}"
         where = a
         if exc.code == "ANIM001" and a.target_name_at is not None:
             where = _At(*a.target_name_at)  # the Storyboard.TargetName attribute
@@ -201,7 +213,7 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...]) -> Tracks:
     out = []
     for k, (target, anims) in enumerate(zip(slots.targets, slots.animations, strict=True)):
         first = anims[0]
-        label = f"{first.target_name}.{first.target_property}"
+        label = res.label(first)
         if k in slots.read and k not in slots.placed:
             for a in anims:
                 res.diag("ANIM014", f"{a.type} -> {label}: {target.prop} is laid out (or "

@@ -425,15 +425,16 @@ def build_scene(
     # the storyboards first: the viewports' build notes where what they animate lands
     storyboards: list = []
     begun: set[int] = set()
+    hosts: dict[int, object] = {}  # id(storyboard) -> the element whose trigger begins it
     for t in walk.triggers:
-        read_trigger(r, t, storyboards, begun)
+        read_trigger(r, t, storyboards, begun, hosts)
     d = resources.dictionary_of(doc.root)
     for key, entry in d.entries.items() if d else ():
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
     resolution = None
     if storyboards:
-        resolution = resolve_targets(Reader(ctx, resources), doc.root, storyboards, doc.file)
+        resolution = resolve_targets(Reader(ctx, resources), doc.root, storyboards, doc.file, hosts)
         r.slots = resolution.slots
 
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)

@@ -144,6 +144,7 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
     depth = 0
     count = 0
     root = None
+    failure = None
     try:
         for event, el in events:
             if event == "start":
@@ -180,9 +181,14 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
         col = _error_column(data, line, col, msg)
         msg = re.sub(r", line \d+, column \d+$", "", msg)  # the diagnostic gives the place
         code = "XML002" if ("entity" in msg.lower() or "doctype" in msg.lower()) else "XML001"
-        raise XamlSyntaxError(
+        failure = XamlSyntaxError(
             f"not well-formed XML: {msg}", code=code, file=file, line=line, column=col
-        ) from None
+        )
+    if failure is not None:
+        # raised outside the handler so that lxml's exception is not its context: that one
+        # holds lxml's error log, which does not pickle, and a worker (a process pool, a Dask
+        # cluster, which sends the whole chain) must send this error back to its caller
+        raise failure
     if root is None:
         raise XamlSyntaxError("empty document", code="XML001", file=file, line=1, column=1)
     docinfo = root.getroottree().docinfo
