@@ -401,3 +401,43 @@ def test_a_window_background_drawing_brush_tiles_at_one_texel_a_pixel(tmp_path):
     line = (235, 235, 255, 255)  # 40% of #CCCCFF over white
     assert tuple(rgba[0, 5]) == line and tuple(rgba[5, 10]) == line and tuple(rgba[37, 40]) == line
     assert tuple(rgba[5, 5]) == (255, 255, 255, 255) and tuple(rgba[15, 13]) == (255, 255, 255, 255)
+
+
+def _wrapped(inner_attrs: str, outer: str = "Grid") -> str:
+    """The aliased-edges case's Viewport3D (its own EdgeMode removed) inside ``outer``."""
+    text = (PICTURE / "aliased-edges.xaml").read_text()
+    text = text.replace(' RenderOptions.EdgeMode="Aliased"', "")
+    start = text.index("<Viewport3D")
+    head = text[start:].split(">", 1)[0]
+    ns = ' xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+    body = text[start:].replace(ns, "", 1)
+    return f"<{outer}{ns} {inner_attrs}>{body}</{outer}>" if ns in head else ""
+
+
+def test_edge_mode_set_around_the_viewport_is_inherited(tmp_path):
+    # RenderOptions.EdgeMode is an inherited attached property: a panel's reaches the viewport
+    path = tmp_path / "s.xaml"
+    path.write_text(_wrapped('RenderOptions.EdgeMode="Aliased"'))
+    scene = xaml3d.load(path)
+    assert scene.viewports[0].picture.edge_mode == "Aliased"
+    reference = xaml3d.render_arrays(xaml3d.load(PICTURE / "aliased-edges.xaml")).rgba
+    assert np.array_equal(xaml3d.render_arrays(scene).rgba, reference)
+    assert not [d for d in scene.diagnostics if d.code == "DRW006"]
+
+
+def test_picture_properties_around_the_viewport_are_said(tmp_path):
+    path = tmp_path / "s.xaml"
+    path.write_text(
+        _wrapped('Opacity="0.5"', "Border")
+        .replace("<Viewport3D", "<Grid><Grid.Effect><BlurEffect/></Grid.Effect><Viewport3D", 1)
+        .replace("</Viewport3D>", "</Viewport3D></Grid>")
+    )
+    scene = xaml3d.load(path)
+    found = [(d.code, d.severity, d.line) for d in scene.diagnostics if d.code == "DRW006"]
+    assert [f[:2] for f in found] == [("DRW006", "warning")] * 2
+    messages = sorted(d.message for d in scene.diagnostics if d.code == "DRW006")
+    assert messages[0].startswith("Border around the viewport sets Opacity:")
+    assert messages[1].startswith("Grid around the viewport sets Effect:")
+    # an Opacity of 1 changes nothing: not reported
+    path.write_text(_wrapped('Opacity="1"', "Border"))
+    assert not [d for d in xaml3d.load(path).diagnostics if d.code == "DRW006"]

@@ -17,6 +17,11 @@ DRAWING_CODES: dict[str, tuple[str, str]] = {
     ),  # fmt: skip
     "DRW003": (INFO, "a 2D effect, mask or property of the viewport's picture not applied"),
     "DRW004": (WARNING, "VisualBrush without a Visual: it draws nothing"),
+    "DRW006": (
+        WARNING,
+        "an element around the viewport sets Opacity, OpacityMask, Clip, RenderTransform or an "
+        "effect: WPF applies it to the viewport's picture, xaml3d does not",
+    ),  # fmt: skip
     "DRW005": (
         WARNING,
         "a Viewport2DVisual3D with no material marked IsVisualHostMaterial: "

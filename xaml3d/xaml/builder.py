@@ -301,9 +301,10 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     acc = _Acc()
     for k in p.items("Children"):
         r.build_node(k, lambda e: walk_visual3d(r, e, T.identity(), acc))
-    from xaml3d.xaml.picture_reader import viewport_picture
+    from xaml3d.xaml.picture_reader import report_ancestors, viewport_picture
 
     picture = viewport_picture(r, p, w, h)
+    report_ancestors(r, el)
     return Viewport(
         index=index,
         name=element_name(el),

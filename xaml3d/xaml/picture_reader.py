@@ -112,7 +112,8 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
             "(WPF's default)"
         )
         r.ctx.diag("DRW003", msg, p.el, attr="RenderOptions.BitmapScalingMode")
-    edge = p.attached.get("RenderOptions.EdgeMode", "Unspecified").strip()
+    # RenderOptions.EdgeMode is inherited: a Window's or a panel's reaches the viewport
+    edge = p.attached.get("RenderOptions.EdgeMode", _inherited_edge_mode(r, p.el)).strip()
     if edge not in ("Aliased", "Unspecified"):
         r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
         edge = "Unspecified"
@@ -123,3 +124,42 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
         opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform,
         effect=effect, edge_mode=edge,
     )  # fmt: skip
+
+
+def _framework_ancestors(r, el):
+    """The elements around ``el`` (property elements such as ``<Grid.Children>`` skipped),
+    nearest first, with their properties."""
+    anc = el.getparent()
+    while anc is not None:
+        if isinstance(anc.tag, str):
+            ns, local = qname(anc.tag)
+            if is_presentation(ns) and "." not in local:
+                yield anc, r.props(anc)
+        anc = anc.getparent()
+
+
+def _inherited_edge_mode(r, el) -> str:
+    for _, ap in _framework_ancestors(r, el):
+        if "RenderOptions.EdgeMode" in ap.attached:
+            return ap.attached["RenderOptions.EdgeMode"]
+    return "Unspecified"
+
+
+_AROUND = ("OpacityMask", "Clip", "RenderTransform", "Effect", "BitmapEffect")
+
+
+def report_ancestors(r, el) -> None:
+    """DRW006: what an element around the viewport sets that changes WPF's picture of it
+    (Opacity, OpacityMask, Clip, RenderTransform, Effect, BitmapEffect) and xaml3d does not
+    apply: the viewport is drawn without it, and this says so."""
+    for anc, ap in _framework_ancestors(r, el):
+        found = [prop for prop in _AROUND if ap.has(prop)]
+        if ap.has("Opacity") and ap.value("Opacity", _D, 1.0) != 1.0:
+            found.insert(0, "Opacity")
+        if found:
+            what = ", ".join(found)
+            msg = (
+                f"{ap.type} around the viewport sets {what}: WPF applies it to everything "
+                "inside, xaml3d draws the viewport without it"
+            )
+            r.ctx.diag("DRW006", msg, anc, once=("DRW006", id(anc)))
