@@ -137,3 +137,31 @@ def test_bilinear_texture_sampling_matches_numpy_exactly(monkeypatch):
     b = bilinear(img, px, py)
     assert np.array_equal(a, b)
     assert np.array_equal(a[-4], img[0, 0]) and np.array_equal(a[-2], img[4, 6])
+
+
+@pytest.mark.parametrize("s", [1, 2, 3, 4])
+def test_resolve_kernel_matches_numpy(s, monkeypatch):
+    """The fused box filter and straight-alpha conversion: every kind of premultiplied sample
+    (empty, opaque, translucent, luminous with colour above alpha, out of range) and depth."""
+    from xaml3d.render.frame import Framebuffer
+
+    rng = np.random.default_rng(s)
+    h, w = 7 * s, 9 * s
+    color = rng.uniform(0, 1, size=(h * w, 4)).astype(np.float32)
+    color[::5] = 0.0  # empty samples
+    color[1::7, 3] = 1.0  # opaque
+    color[2::11, :3] += 0.8  # luminous: colour above alpha, some above 1
+    color[3::13, 3] = 0.0  # light added over transparency
+    zbuf = np.where(rng.uniform(size=h * w) < 0.3, 0.0, rng.uniform(-2, -1, size=h * w))
+    out = []
+    for kern in ("numpy", "numba"):
+        monkeypatch.setenv(accel.ENV, kern)
+        if kern == "numba":
+            accel.for_work(accel.FRAGMENTS_WORTH, 0)  # loads the kernels
+            assert accel.active() is not None
+        fb = Framebuffer(w, h)
+        fb.color[:] = color
+        fb.zbuf[:] = zbuf
+        out.append(fb.resolve(s))
+    assert np.array_equal(out[0][0], out[1][0])
+    assert np.array_equal(out[0][1], out[1][1])

@@ -1,8 +1,10 @@
 """Whether the compiled kernels (``xaml3d.render.kernels``, numba) are used, and loading them.
 
 numba costs about 0.3 s per process (import, loading the cached machine code, shutdown): more
-than a whole small render. So the kernels are loaded only when a rasterization's estimated work
-pays for it (``for_work``), once per process; from then on blending uses them too (``active``).
+than a whole small render. So the kernels are loaded only when the estimated work pays for it
+(``for_work``), once per process; from then on blending uses them too (``active``). The work
+weighed is the frame's times the frames this process is about to draw (``expect_frames``: an
+animation's worker draws hundreds of small frames, which together pay where one would not).
 Both paths give identical pictures, so mixing them within one frame is harmless.
 
 ``XAML3D_KERNELS`` chooses: ``auto`` (default, as above), ``numba`` (always; an error when numba
@@ -35,6 +37,7 @@ TRIANGLES_WORTH = 2_000_000
 _kernels = None
 _failed = False
 _frame_work = 0.0  # estimated work of the frame being drawn so far (see ``begin_frame``)
+_frames = 1  # frames this process expects to draw like the current one (``expect_frames``)
 
 
 def mode() -> str:
@@ -57,17 +60,26 @@ def begin_frame() -> None:
     _frame_work = 0.0
 
 
+def expect_frames(count: int) -> None:
+    """This process is about to draw ``count`` frames of similar work (an animation's frames, or
+    its share of them in a worker): ``for_work`` weighs the frame's work times ``count``."""
+    global _frames
+    _frames = max(1, int(count))
+
+
 def for_work(fragments: float, triangles: int):
     """The kernels module when the work of the frame so far (estimated fragments, added up over
-    the calls since ``begin_frame``; or the triangles of this call) pays for loading it, or when
-    it is already loaded; else None (the numpy path)."""
+    the calls since ``begin_frame``; or the triangles of this call), times the frames expected
+    (``expect_frames``), pays for loading it, or when it is already loaded; else None (the
+    numpy path)."""
     global _frame_work
     m = mode()
     if m == "numpy":
         return None
     _frame_work += fragments
     if _kernels is None:
-        if m == "auto" and _frame_work < FRAGMENTS_WORTH and triangles < TRIANGLES_WORTH:
+        work = _frame_work * _frames
+        if m == "auto" and work < FRAGMENTS_WORTH and triangles * _frames < TRIANGLES_WORTH:
             return None
         _load(required=m == "numba")
     return _kernels

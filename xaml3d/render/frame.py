@@ -202,6 +202,12 @@ class Framebuffer:
         that gives the depth."""
         s = int(ssaa)
         h, w = self.height // s, self.width // s
+        kernels = accel.active()
+        if kernels is not None and not nearest:  # the same numbers in one pass, no temporaries
+            rgba = np.empty((h, w, 4), dtype=np.uint8)
+            z = np.empty((h, w))
+            kernels.resolve(self.color, self.zbuf, s, rgba, z)
+            return rgba, np.where(z < 0.0, z + DEPTH_OFFSET, np.inf)
         # s * s strided slices: about 5x faster here than a float32 sum over the two sample
         # axes of a 5-D reshape (numpy reduces non-adjacent axes slowly).
         c5 = self.color.reshape(h, s, w, s, 4)

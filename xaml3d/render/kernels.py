@@ -225,3 +225,53 @@ def bilinear(img, px, py):
             bottom = img[yi1, xi0, c] * (1.0 - fx) + img[yi1, xi1, c] * fx
             out[f, c] = top * (1.0 - fy) + bottom * fy
     return out
+
+
+@numba.njit(cache=True, nogil=True)
+def resolve(color, zbuf, s, out_rgba, out_z):
+    """``Framebuffer.resolve`` (box filter) and ``frame.straight_uint8`` in one pass: the
+    premultiplied float32 samples of each s x s block summed in the numpy path's order, scaled
+    by 1 / (s * s) in float32, made straight-alpha uint8 with the same float32 expressions;
+    the block's nearest stored depth to ``out_z`` (still d - 2; 0 where empty)."""
+    h = out_rgba.shape[0]
+    w = out_rgba.shape[1]
+    sw = w * s
+    inv = np.float32(1.0 / (s * s))
+    zero = np.float32(0.0)
+    one = np.float32(1.0)
+    c255 = np.float32(255.0)
+    half = np.float32(0.5)
+    acc = np.zeros(4, dtype=np.float32)
+    for y in range(h):
+        for x in range(w):
+            base = (y * s) * sw + x * s
+            z = zbuf[base]
+            for c in range(4):
+                acc[c] = color[base, c]
+            for a in range(s):
+                for b in range(s):
+                    if a == 0 and b == 0:
+                        continue
+                    k = base + a * sw + b
+                    for c in range(4):
+                        acc[c] = acc[c] + color[k, c]
+                    if zbuf[k] < z:
+                        z = zbuf[k]
+            if s > 1:
+                for c in range(4):
+                    acc[c] = acc[c] * inv
+            out_z[y, x] = z
+            al = max(max(acc[0], acc[1]), max(acc[2], acc[3]))
+            if al < zero:
+                al = zero
+            elif al > one:
+                al = one
+            scale = c255 / al if al > zero else zero
+            for c in range(4):
+                v = acc[c] * scale if c < 3 else al * c255
+                if v < zero:
+                    v = zero
+                elif v > c255:
+                    v = c255
+                out_rgba[y, x, c] = np.uint8(v + half)
+    return 0
