@@ -165,3 +165,17 @@ def test_resolve_kernel_matches_numpy(s, monkeypatch):
         out.append(fb.resolve(s))
     assert np.array_equal(out[0][0], out[1][0])
     assert np.array_equal(out[0][1], out[1][1])
+
+
+def test_an_animation_pays_for_the_kernels_where_one_frame_would_not(monkeypatch):
+    monkeypatch.setenv(accel.ENV, "auto")
+    monkeypatch.setattr(accel, "_kernels", None)
+    small = accel.FRAGMENTS_WORTH / 100
+    accel.begin_frame()
+    assert accel.for_work(small, 10) is None  # one small frame: numpy
+    accel.expect_frames(200)  # this process draws 200 such frames: together they pay
+    try:
+        accel.begin_frame()
+        assert accel.for_work(small, 10) is not None and accel.active() is not None
+    finally:
+        accel.expect_frames(1)
