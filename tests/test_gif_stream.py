@@ -127,3 +127,25 @@ def test_the_command_line_writes_the_gif_the_api_writes(tmp_path):
     save_animation(frames, tmp_path / "api.gif", 0.5)
     assert out.read_bytes() == (tmp_path / "api.gif").read_bytes()
     assert len(decoded(out)) == 5
+
+
+def test_streamed_apng_decodes_as_pillows_apng(tmp_path):
+    from xaml3d.output.animation import frame_durations, write_apng
+
+    rng = np.random.default_rng(2)
+    a, b, c = (rng.integers(0, 256, (20, 30, 4), dtype=np.uint8) for _ in range(3))
+    frames = [a, a, b, c, c, c]
+    write_apng(iter(frames), tmp_path / "s.png", 0.6, len(frames), loop=3)  # a one-shot iterator
+    images = [Image.fromarray(f, mode="RGBA") for f in frames]
+    images[0].save(tmp_path / "p.png", save_all=True, append_images=images[1:], loop=3,
+                   duration=frame_durations(6, 0.6, 0.001), default_image=False)  # fmt: skip
+    shown = []
+    for name in ("s.png", "p.png"):
+        with Image.open(tmp_path / name) as im:
+            got = []
+            for i in range(im.n_frames):
+                im.seek(i)
+                got.append((np.array(im.convert("RGBA")).tobytes(), im.info["duration"]))
+            shown.append((got, im.info.get("loop")))
+    assert shown[0] == shown[1]
+    assert [d for _, d in shown[0][0]] == [200.0, 100.0, 300.0]  # identical frames merged

@@ -58,7 +58,13 @@ from xaml3d.codes.animation import ANIM_CODES
 from xaml3d.errors import ERROR, CameraError, Diagnostic, XamlError
 from xaml3d.findings import begun_by_name, has_errors, scene_findings
 from xaml3d.findings import lenient as lenient_findings
-from xaml3d.output.animation import frame_names, gif_frame, save_animation, write_gif
+from xaml3d.output.animation import (
+    frame_names,
+    gif_frame,
+    save_animation,
+    write_apng,
+    write_gif,
+)
 from xaml3d.render import frames as frames_module
 from xaml3d.render.settings import RenderSettings
 from xaml3d.render.workers import default_jobs
@@ -196,6 +202,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
                 yield _keep(r, diags, file)
 
         gif = Path(output).suffix.lower() == ".gif" and not to_dir
+        apng = Path(output).suffix.lower() in (".png", ".apng") and not to_dir
         if gif:
             # Streamed: each frame is quantized by the worker that drew it and written as it
             # comes; only palette images are held (``output.animation.write_gif``).
@@ -205,7 +212,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         elif sequence is not None:  # to disk frame by frame
             for rgba in drawn(_lean):
                 sequence.add(rgba)
-        else:  # APNG and WebP: Pillow's writers take every frame at once
+        elif apng:  # streamed too, one frame held
+            write_apng(drawn(_lean), output, end - start, len(times), loop=loop)
+        else:  # WebP: Pillow's writer takes every frame at once
             frames = list(drawn(_lean))
         empty = [d for d in diags if d.code == "RND002"]
         if len(empty) < len(times):  # an empty frame is part of an animation: no warning
@@ -215,7 +224,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         elif gif:
             if flattened:
                 diags.append(_note(file, _flattened_message(bg), "ANIM013"))
-        else:
+        elif not apng:
             save_animation(frames, output, end - start, loop=loop)
         if stale and clean:
             stale = remove_stale(stale, inputs)  # only after the new sequence is complete

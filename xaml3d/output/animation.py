@@ -10,13 +10,17 @@ renamed, so a failure leaves no partial file and an existing one untouched.
 drawn, e.g. in a worker process) and only their palette images are held, a quarter of the
 RGBA's bytes; the matte and the transparent index are decided from the frames as they come
 (``GifPlan``), and the frames are asked for again from the first should a later frame show the
-decision wrong. APNG and WebP take every frame at once (Pillow's writers hold them all).
+decision wrong. ``write_apng`` streams APNG likewise (one frame held). WebP takes every frame
+at once (Pillow's writer holds them all).
 """
 
 from __future__ import annotations
 
 import functools
+import io
 import re
+import struct
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -172,6 +176,74 @@ def _write_gif(fh, *, source, plan: GifPlan, made: GifPlan, durations: list[int]
                optimize=False, **extra)  # fmt: skip
 
 
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def _chunk(kind: bytes, data: bytes) -> bytes:
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+def _png_data(rgba: np.ndarray) -> tuple[bytes, bytes]:
+    """(IHDR data, the image's compressed data) of ``rgba`` as Pillow encodes a PNG."""
+    buf = io.BytesIO()
+    Image.fromarray(np.ascontiguousarray(rgba), mode="RGBA").save(buf, format="PNG")
+    raw, pos, ihdr, idat = buf.getvalue(), len(PNG_SIGNATURE), b"", []
+    while pos < len(raw):
+        (n,) = struct.unpack(">I", raw[pos : pos + 4])
+        kind, data = raw[pos + 4 : pos + 8], raw[pos + 8 : pos + 8 + n]
+        if kind == b"IHDR":
+            ihdr = data
+        elif kind == b"IDAT":
+            idat.append(data)
+        pos += 12 + n
+    return ihdr, b"".join(idat)
+
+
+def write_apng(frames, path, total: float, count: int, *, loop: int = 0) -> None:
+    """Write ``count`` RGBA frames (any iterable, taken one by one) lasting ``total`` seconds
+    as an APNG at ``path``, atomically, frame by frame: one frame is held (to merge a frame
+    identical to the one before into it, its display time added, as Pillow's writer does).
+    Every frame is a whole picture (no cropping to what changed): the decoded frames are
+    those Pillow's writer gives."""
+    durations = frame_durations(count, total, 0.001)
+
+    def write(fh) -> None:
+        it = iter(frames)
+        first = np.ascontiguousarray(next(it))
+        ihdr, data = _png_data(first)
+        fh.write(PNG_SIGNATURE + _chunk(b"IHDR", ihdr))
+        actl = fh.tell()
+        fh.write(_chunk(b"acTL", struct.pack(">II", 0, loop)))  # the count is set at the end
+        seq, written = 0, 0
+        held, held_data, held_ms = first, data, durations[0]
+
+        def put(data: bytes, ms: int) -> None:
+            nonlocal seq, written
+            h, w = first.shape[:2]
+            fh.write(_chunk(b"fcTL", struct.pack(">IIIIIHHBB", seq, w, h, 0, 0, ms, 1000, 0, 0)))
+            seq += 1
+            if written == 0:
+                fh.write(_chunk(b"IDAT", data))
+            else:
+                fh.write(_chunk(b"fdAT", struct.pack(">I", seq) + data))
+                seq += 1
+            written += 1
+
+        for ms, f in zip(durations[1:], it, strict=True):
+            if np.array_equal(f, held):
+                held_ms += ms
+                continue
+            put(held_data, held_ms)
+            held = np.ascontiguousarray(f)
+            held_data, held_ms = _png_data(held)[1], ms
+        put(held_data, held_ms)
+        fh.write(_chunk(b"IEND", b""))
+        fh.seek(actl)
+        fh.write(_chunk(b"acTL", struct.pack(">II", written, loop)))
+
+    write_atomically(path, write)
+
+
 def save_animation(
     frames: list[np.ndarray],
     path,
@@ -207,9 +279,12 @@ def save_animation(
         write_gif(lambda plan: frames, path, total, len(frames), loop=loop, matte=matte,
                   flatten=flat)  # fmt: skip
         return [path]
+    if fmt == "PNG":
+        write_apng(frames, path, total, len(frames), loop=loop)
+        return [path]
     images = [Image.fromarray(f, mode="RGBA") for f in frames]
     durations = frame_durations(len(frames), total, 0.001)
-    opts = {"lossless": False, "quality": 90} if fmt == "WEBP" else {"default_image": False}
+    opts = {"lossless": False, "quality": 90}
 
     def write(fh):
         images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
