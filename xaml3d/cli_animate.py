@@ -2,9 +2,11 @@
 
 Thin layer over ``xaml3d.render.frames`` and ``xaml3d.output.animation``: picks the times
 (``--fps``, ``--start``, ``--end``/``--duration``, by default one full cycle of what runs at
-load), renders each frame as ``render`` would (in worker processes, in order; a frame
-directory is written frame by frame), reports progress (a bar on a terminal, a line every few
-seconds elsewhere), and writes the file atomically. Bad input is one
+load), renders each frame as ``render`` would (in worker processes, in order), streams the
+frames to the output as they come (a frame directory and an APNG frame by frame; a GIF's frames
+quantized in the workers, only palette images held; WebP alone takes every frame at once),
+reports progress (a bar on a terminal, a line every few seconds elsewhere), and writes the file
+atomically. Bad input is one
 ``file:line:col: error CODE message`` line and exit status 1.
 """
 
