@@ -149,3 +149,25 @@ def test_streamed_apng_decodes_as_pillows_apng(tmp_path):
             shown.append((got, im.info.get("loop")))
     assert shown[0] == shown[1]
     assert [d for _, d in shown[0][0]] == [200.0, 100.0, 300.0]  # identical frames merged
+
+
+def test_a_frame_of_few_colours_keeps_them_exactly_as_the_median_cut_does():
+    from xaml3d.output.animation import _gif_frame
+
+    rng = np.random.default_rng(7)
+    colours = rng.integers(0, 256, (40, 3), dtype=np.uint8)
+    f = np.zeros((30, 40, 4), np.uint8)
+    f[..., :3] = colours[rng.integers(0, 40, (30, 40))]
+    f[..., 3] = 255
+    f[:5] = 0  # empty rows: transparent
+    image, transparent = _gif_frame(f)
+    idx = np.array(image)
+    assert transparent == 255 and (idx[:5] == 255).all() and (idx[5:] < 255).all()
+    shown = np.array(image.convert("RGB"))
+    assert np.array_equal(shown[5:], f[5:, :, :3])
+    rgb = Image.fromarray(np.ascontiguousarray(f[..., :3]))
+    cut = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    assert np.array_equal(np.array(cut.convert("RGB"))[5:], shown[5:])  # the same pixels
+    full = f.copy()
+    full[..., 3] = 255  # no empty pixel: 256 colours allowed, no transparent index
+    assert _gif_frame(full)[1] is None

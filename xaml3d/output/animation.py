@@ -59,7 +59,15 @@ def _gif_frame(rgba: np.ndarray, reserve: bool = False):
     alpha = rgba[..., 3]
     rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     clear = alpha == 0
-    if not clear.any() and not reserve:
+    opaque = not clear.any() and not reserve
+    exact = _exact_palette(rgba, rgb, 256 if opaque else 255)
+    if exact is not None:
+        idx, pal = exact
+        idx[clear] = 255
+        out = Image.fromarray(idx, mode="P")
+        out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
+        return out, (None if opaque else 255)
+    if opaque:
         return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
     # the colours of visible pixels only choose the palette
     q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
@@ -69,6 +77,21 @@ def _gif_frame(rgba: np.ndarray, reserve: bool = False):
     pal = q.getpalette()[: 255 * 3]
     out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
     return out, 255
+
+
+def _exact_palette(rgba: np.ndarray, rgb: Image.Image, limit: int):
+    """(indices, palette) of a frame with at most ``limit`` distinct colours, else None. The
+    median cut gives such a frame its exact colours too (every colour a box of its own), at
+    several times the cost; here the palette is the colours in ascending order, so the file's
+    bytes differ from the median cut's while every decoded pixel is the same."""
+    found = rgb.getcolors(limit)
+    if found is None:
+        return None
+    colours = sorted(c for _, c in found)
+    keys = np.array([(r << 16) | (g << 8) | b for r, g, b in colours], dtype=np.uint32)
+    px = rgba[..., :3].astype(np.uint32)
+    idx = np.searchsorted(keys, (px[..., 0] << 16) | (px[..., 1] << 8) | px[..., 2])
+    return idx.astype(np.uint8), [v for c in colours for v in c]
 
 
 @dataclass
