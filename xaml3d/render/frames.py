@@ -59,12 +59,22 @@ def render_frames(
         items = [(scene, t, storyboard, chosen, prepare) for t in times]
         yield from ordered(executor, render_frame, items)
         return
-    if jobs > 1 and len(times) > 1:
-        workers = min(int(jobs), len(times))
+    times = list(times)
+    if jobs > 1 and len(times) > 2:
+        workers = min(int(jobs), len(times) - 1)
         share = -(-len(times) // workers)
+        # The first frame is drawn here, before the workers are forked: they start with what
+        # it loaded (the compiled kernels, when the animation pays for them) instead of each
+        # loading numba again (about a second of CPU each), and with its warmed-up memory.
+        accel.expect_frames(share)
+        try:
+            first = render_frame(scene, times[0], storyboard, chosen, prepare)
+        finally:
+            accel.expect_frames(1)
+        yield first
         kept = (scene, storyboard, chosen, share, prepare)  # sent once per worker
         with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
-            yield from ordered(pool, _kept_frame, [(t,) for t in times])
+            yield from ordered(pool, _kept_frame, [(t,) for t in times[1:]])
         return
     accel.expect_frames(len(times))
     try:
