@@ -1,7 +1,16 @@
-"""Frames per second of an animation: a 10k-triangle spinning model at 640x480.
+"""Frames per second of an animation, and whole ``animate`` processes against ``render``.
 
     python benchmarks/bench_animate.py [--frames 30] [--runs 5] [--triangles 10000] [--ssaa 2]
+    python benchmarks/bench_animate.py --whole [--runs 3] [FILE ...]
 
+``--whole``: for each FILE (default: the shared corpus's 005 spinning cubes, 543 frames at
+600x600; ``samples/spinning-cube.xaml``; the corpus's textured 001), whole processes of
+``python -m xaml3d animate FILE -o x.gif`` (its defaults) and ``python -m xaml3d render FILE -o
+x.png``, run by run interleaved; printed: the animate/render ratio of each run (median, min..max),
+both wall times, and animate's peak RSS (``os.wait4``: on Linux the largest of the process
+and of its worker processes). Targets: 005 within 12x one render, under 500 MB.
+
+Without ``--whole``:
 The scene is a UV sphere of about 10k triangles (a DiffuseMaterial, a DirectionalLight), turned
 by a Loaded-trigger DoubleAnimation on an AxisAngleRotation3D (one turn in 4 s, for ever),
 viewed by a PerspectiveCamera. Each run renders ``--frames`` consecutive frames at 30 fps
@@ -15,8 +24,11 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import statistics
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -64,13 +76,63 @@ def sphere_xaml(triangles: int) -> str:
 </Viewport3D>"""
 
 
+ROOT = Path(__file__).resolve().parent.parent
+CORPUS = ROOT.parent / "shared" / "corpus"
+WHOLE = [CORPUS / "005_wpfsamples-spinningcube.xaml", ROOT / "samples" / "spinning-cube.xaml",
+         CORPUS / "001_wpfsamples-cubeanimation.xaml"]  # fmt: skip
+
+
+def process(cmd: list[str]) -> tuple[float, float]:
+    """Wall seconds and peak RSS (MiB: the process, or the largest of its workers) of one run."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
+    err = proc.stderr.read()
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    proc.stderr.close()
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise SystemExit(f"failed: {' '.join(cmd)}\n{err.decode()}")
+    # Linux's wait4 reports the child with its reaped children (the workers) included
+    return wall, usage.ru_maxrss / 1024.0
+
+
+def whole(files: list[Path], runs: int) -> int:
+    xaml3d_cmd = [sys.executable, "-m", "xaml3d"]
+    with tempfile.TemporaryDirectory() as tmp:
+        for f in files:
+            if not f.is_file():
+                print(f"{f.name}: not found (the shared corpus is absent)")
+                continue
+            anim, rend, ratio, peak = [], [], [], 0.0
+            process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])  # caches warm
+            for _ in range(runs):
+                r, _ = process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])
+                a, m = process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"])
+                anim.append(a)
+                rend.append(r)
+                ratio.append(a / r)
+                peak = max(peak, m)
+            print(f"{f.name}: animate / render {_span(ratio, 'x')}; animate {_span(anim, 's')}, "
+                  f"render {_span(rend, 's')}; animate peak RSS {peak:.0f} MiB")  # fmt: skip
+    return 0
+
+
+def _span(xs: list[float], unit: str) -> str:
+    return f"median {statistics.median(xs):.3g} {unit} ({min(xs):.3g}..{max(xs):.3g})"
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--frames", type=int, default=30)
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--triangles", type=int, default=10000)
     ap.add_argument("--ssaa", type=int, default=None, help="supersampling (default: msaa 2)")
+    ap.add_argument("--whole", action="store_true", help="whole animate vs render processes")
+    ap.add_argument("files", nargs="*", type=Path, help="with --whole (default: see above)")
     args = ap.parse_args(argv)
+    if args.whole:
+        return whole(args.files or WHOLE, args.runs)
     scene = xaml3d.load(sphere_xaml(args.triangles), text=True)
     tris = scene.viewports[0].triangle_count
     times = xaml3d.frame_times(0.0, args.frames / 30.0, 30.0)

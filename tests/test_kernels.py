@@ -294,3 +294,45 @@ def test_compiled_resolve_matches_numpy(s, nearest, monkeypatch):
     b = fb.resolve(s, nearest=nearest)
     assert np.array_equal(a[0], b[0])
     assert np.array_equal(a[1], b[1])
+
+
+@pytest.mark.parametrize("s", [1, 2, 3, 4])
+def test_resolve_kernel_matches_numpy(s, monkeypatch):
+    """The fused box filter and straight-alpha conversion: every kind of premultiplied sample
+    (empty, opaque, translucent, luminous with colour above alpha, out of range) and depth."""
+    from xaml3d.render.frame import Framebuffer
+
+    rng = np.random.default_rng(s)
+    h, w = 7 * s, 9 * s
+    color = rng.uniform(0, 1, size=(h * w, 4)).astype(np.float32)
+    color[::5] = 0.0  # empty samples
+    color[1::7, 3] = 1.0  # opaque
+    color[2::11, :3] += 0.8  # luminous: colour above alpha, some above 1
+    color[3::13, 3] = 0.0  # light added over transparency
+    zbuf = np.where(rng.uniform(size=h * w) < 0.3, 0.0, rng.uniform(-2, -1, size=h * w))
+    out = []
+    for kern in ("numpy", "numba"):
+        monkeypatch.setenv(accel.ENV, kern)
+        if kern == "numba":
+            accel.for_work(accel.FRAGMENTS_WORTH, 0)  # loads the kernels
+            assert accel.active() is not None
+        fb = Framebuffer(w, h)
+        fb.color[:] = color
+        fb.zbuf[:] = zbuf
+        out.append(fb.resolve(s))
+    assert np.array_equal(out[0][0], out[1][0])
+    assert np.array_equal(out[0][1], out[1][1])
+
+
+def test_an_animation_pays_for_the_kernels_where_one_frame_would_not(monkeypatch):
+    monkeypatch.setenv(accel.ENV, "auto")
+    monkeypatch.setattr(accel, "_kernels", None)
+    small = accel.FRAGMENTS_WORTH / 100
+    accel.begin_frame()
+    assert accel.for_work(small, 10) is None  # one small frame: numpy
+    accel.expect_frames(200)  # this process draws 200 such frames: together they pay
+    try:
+        accel.begin_frame()
+        assert accel.for_work(small, 10) is not None and accel.active() is not None
+    finally:
+        accel.expect_frames(1)

@@ -2,14 +2,17 @@
 
 Thin layer over ``xaml3d.render.frames`` and ``xaml3d.output.animation``: picks the times
 (``--fps``, ``--start``, ``--end``/``--duration``, by default one full cycle of what runs at
-load), renders each frame as ``render`` would (in worker processes, in order; a frame
-directory is written frame by frame), reports progress (a bar on a terminal, a line every few
-seconds elsewhere), and writes the file atomically. Bad input is one
+load), renders each frame as ``render`` would (in worker processes, in order), streams the
+frames to the output as they come (a frame directory and an APNG frame by frame; a GIF's frames
+quantized in the workers, only palette images held; WebP alone takes every frame at once),
+reports progress (a bar on a terminal, a line every few seconds elsewhere), and writes the file
+atomically. Bad input is one
 ``file:line:col: error CODE message`` line and exit status 1.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from pathlib import Path
 
@@ -57,8 +60,13 @@ from xaml3d.codes.animation import ANIM_CODES
 from xaml3d.errors import ERROR, CameraError, Diagnostic, XamlError
 from xaml3d.findings import begun_by_name, has_errors, scene_findings
 from xaml3d.findings import lenient as lenient_findings
-from xaml3d.output.animation import frame_names, save_animation
-from xaml3d.output.gif_matte import frames_for_gif
+from xaml3d.output.animation import (
+    frame_names,
+    gif_frame,
+    save_animation,
+    write_apng,
+    write_gif,
+)
 from xaml3d.render import frames as frames_module
 from xaml3d.render.settings import RenderSettings
 from xaml3d.render.workers import default_jobs
@@ -178,35 +186,47 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             ctx.exit(1)
         stale = stale_frames(Path(output), names) if to_dir else []
         sequence = FrameSequence(Path(output), names) if to_dir else None
-        frames = []
         jobs = default_jobs() if jobs is None else jobs
         folder = str(Path(output) if to_dir else Path(output).parent)
         if not quiet and (verbose or len(times) >= LONG_RUN):
             click.echo(_plan_line(name, sc, storyboard, len(times), fps, end - start), err=True)
-        it = frames_module.render_frames(  # looked up at call time: it may be wrapped
-            sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder]
-        )
-        # A sequence goes to disk frame by frame; an animated file needs every frame at once.
-        keep = frames.append if sequence is None else sequence.add
-        if stderr_is_terminal() and not quiet:
-            with click.progressbar(it, length=len(times), label="animating",
-                                   file=click.get_text_stream("stderr")) as bar:  # fmt: skip
-                for _, r in bar:
-                    keep(_keep(r, diags, file))
-        else:
-            report = ProgressLines(f"{name}: animating", len(times)) if not quiet else None
-            for i, (_, r) in enumerate(it, 1):
-                keep(_keep(r, diags, file))
-                if report is not None:
-                    report(i)
+
+        def drawn(prepare):
+            """The frames in time order, each ``prepare``d in the process that drew it, with
+            the progress shown and the render's diagnostics kept (counted again from zero when
+            the GIF writer asks for the frames again)."""
+            diags[:] = [d for d in diags if d.code != "RND002"]
+            it = frames_module.render_frames(  # looked up at call time: it may be wrapped
+                sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder],
+                prepare=prepare,
+            )  # fmt: skip
+            for r in _progress(it, len(times), name, quiet):
+                yield _keep(r, diags, file)
+
+        gif = Path(output).suffix.lower() == ".gif" and not to_dir
+        apng = Path(output).suffix.lower() in (".png", ".apng") and not to_dir
+        if gif:
+            # Streamed: each frame is quantized by the worker that drew it and written as it
+            # comes; only palette images are held (``output.animation.write_gif``).
+            matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
+            source = lambda plan: drawn(functools.partial(_gif_ready, plan=plan))  # noqa: E731
+            flattened = write_gif(source, output, end - start, len(times), loop=loop, matte=matte)
+        elif sequence is not None:  # to disk frame by frame
+            for rgba in drawn(_lean):
+                sequence.add(rgba)
+        elif apng:  # streamed too, one frame held
+            write_apng(drawn(_lean), output, end - start, len(times), loop=loop)
+        else:  # WebP: Pillow's writer takes every frame at once
+            frames = list(drawn(_lean))
         empty = [d for d in diags if d.code == "RND002"]
         if len(empty) < len(times):  # an empty frame is part of an animation: no warning
             diags = [d for d in diags if d.code != "RND002"]
         if sequence is not None:
             sequence.commit()
-        else:
-            if Path(output).suffix.lower() == ".gif":
-                frames = _gif_frames(frames, bg, diags, file)
+        elif gif:
+            if flattened:
+                diags.append(_note(file, _flattened_message(bg), "ANIM013"))
+        elif not apng:
             save_animation(frames, output, end - start, loop=loop)
         if stale and clean:
             stale = remove_stale(stale, inputs)  # only after the new sequence is complete
@@ -279,18 +299,43 @@ def _refused(name: str, outputs: list[Path], inputs: list[Path]) -> bool:
     return hit is not None
 
 
-def _gif_frames(frames: list, bg, diags: list, file: str) -> list:
-    """The frames as GIF holds them: flattened onto the --background colour made opaque (white
-    without it) when GIF's 1-bit transparency would lose their translucency (ANIM013)."""
-    matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
-    frames, flattened = frames_for_gif(frames, matte)
-    if flattened:
-        onto = "white" if bg is None else "the --background colour, made opaque"
-        msg = (f"GIF keeps only 1-bit transparency: frames flattened onto {onto} to show their "
-               "partly transparent pixels (translucent materials, or the blur of --aperture); "
-               "use .png (APNG) or .webp to keep alpha")  # fmt: skip
-        diags.append(_note(file, msg, "ANIM013"))
-    return frames
+def _flattened_message(bg) -> str:
+    """ANIM013: the GIF's frames were flattened onto the --background colour made opaque (white
+    without it), as GIF's 1-bit transparency would lose their translucency."""
+    onto = "white" if bg is None else "the --background colour, made opaque"
+    return (f"GIF keeps only 1-bit transparency: frames flattened onto {onto} to show their "
+            "partly transparent pixels (translucent materials, or the blur of --aperture); "
+            "use .png (APNG) or .webp to keep alpha")  # fmt: skip
+
+
+def _lean(r):
+    """A frame's Rendering without its depth buffers (not written by ``animate``): less to send
+    back from a worker process."""
+    r.depth = r.distance = r.ids = None
+    return r
+
+
+def _gif_ready(r, plan):
+    """A frame's Rendering with its picture made ready for the GIF writer under ``plan``
+    (quantized where it was drawn: in parallel, and a quarter of the bytes to send back)."""
+    r = _lean(r)
+    r.rgba = gif_frame(r.rgba, plan)
+    return r
+
+
+def _progress(it, total: int, name: str, quiet: bool):
+    """The items of ``it``, with a progress bar on a terminal, else a line every few seconds."""
+    if stderr_is_terminal() and not quiet:
+        with click.progressbar(it, length=total, label="animating",
+                               file=click.get_text_stream("stderr")) as bar:  # fmt: skip
+            for _, r in bar:
+                yield r
+        return
+    report = ProgressLines(f"{name}: animating", total) if not quiet else None
+    for i, (_, r) in enumerate(it, 1):
+        yield r
+        if report is not None:
+            report(i)
 
 
 def _keep(result, diags: list, file: str):

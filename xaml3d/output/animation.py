@@ -5,11 +5,23 @@ transparency, any other pixel is opaque; frames with translucent surfaces are fl
 ``xaml3d.output.gif_matte``), APNG (.png), WebP, or numbered PNGs in a directory
 (``frame_names``), atomically: a temporary file in the target's folder is written, fsynced and
 renamed, so a failure leaves no partial file and an existing one untouched.
+
+``write_gif`` streams: the frames come one by one (``gif_frame`` quantizes each where it was
+drawn, e.g. in a worker process) and only their palette images are held, a quarter of the
+RGBA's bytes; the matte and the transparent index are decided from the frames as they come
+(``GifPlan``), and the frames are asked for again from the first should a later frame show the
+decision wrong. ``write_apng`` streams APNG likewise (one frame held). WebP takes every frame
+at once (Pillow's writer holds them all).
 """
 
 from __future__ import annotations
 
+import functools
+import io
 import re
+import struct
+import zlib
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -17,7 +29,7 @@ from PIL import Image
 
 from xaml3d.errors import RenderError
 from xaml3d.output.atomic import write_atomically
-from xaml3d.output.gif_matte import frames_for_gif
+from xaml3d.output.gif_matte import MatteWatch, flatten, frame_marks, needs_matte
 from xaml3d.output.images import save_image
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
@@ -38,14 +50,24 @@ def frame_names(count: int) -> list[str]:
     return [f"frame_{i:0{digits}d}.png" for i in range(count)]
 
 
-def _gif_frame(rgba: np.ndarray):
+def _gif_frame(rgba: np.ndarray, reserve: bool = False):
     """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
     has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
-    so translucent surfaces stay visible; only empty pixels become transparent."""
+    so translucent surfaces stay visible; only empty pixels become transparent. A frame without
+    empty pixels gets 256 colours, unless ``reserve``: index 255 is then kept free (the file's
+    transparent index) all the same."""
     alpha = rgba[..., 3]
     rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     clear = alpha == 0
-    if not clear.any():
+    opaque = not clear.any() and not reserve
+    exact = _exact_palette(rgba, rgb, 256 if opaque else 255)
+    if exact is not None:
+        idx, pal = exact
+        idx[clear] = 255
+        out = Image.fromarray(idx, mode="P")
+        out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
+        return out, (None if opaque else 255)
+    if opaque:
         return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
     # the colours of visible pixels only choose the palette
     q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
@@ -55,6 +77,194 @@ def _gif_frame(rgba: np.ndarray):
     pal = q.getpalette()[: 255 * 3]
     out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
     return out, 255
+
+
+def _exact_palette(rgba: np.ndarray, rgb: Image.Image, limit: int):
+    """(indices, palette) of a frame with at most ``limit`` distinct colours, else None. The
+    median cut gives such a frame its exact colours too (every colour a box of its own), at
+    several times the cost; here the palette is the colours in ascending order, so the file's
+    bytes differ from the median cut's while every decoded pixel is the same."""
+    found = rgb.getcolors(limit)
+    if found is None:
+        return None
+    colours = sorted(c for _, c in found)
+    keys = np.array([(r << 16) | (g << 8) | b for r, g, b in colours], dtype=np.uint32)
+    px = rgba[..., :3].astype(np.uint32)
+    idx = np.searchsorted(keys, (px[..., 0] << 16) | (px[..., 1] << 8) | px[..., 2])
+    return idx.astype(np.uint8), [v for c in colours for v in c]
+
+
+@dataclass
+class GifFrame:
+    """One frame made ready for the GIF writer where it was drawn (``gif_frame``): its palette
+    image (about a quarter of the RGBA's bytes), whether it has empty (transparent) pixels, and
+    its ``gif_matte.frame_marks``. ``flattened``/``reserve``: how it was made."""
+
+    image: Image.Image
+    clear: bool
+    marks: tuple
+    flattened: bool
+    reserve: bool
+
+
+@dataclass
+class GifPlan:
+    """How every frame of one GIF is made: flattened onto ``matte`` or not, index 255 kept for
+    transparency in every frame or not (None: as the frame needs). The writer decides it from
+    the frames and starts again with a new plan when a later frame shows the one in use wrong
+    (``GifRestart``)."""
+
+    matte: tuple[int, int, int] = (255, 255, 255)
+    flatten: bool = False
+    reserve: bool | None = None
+
+
+class GifRestart(Exception):
+    """The frames written so far were made under a plan a later frame showed wrong."""
+
+
+def gif_frame(rgba: np.ndarray, plan: GifPlan | None = None) -> GifFrame:
+    """``rgba`` (H, W, 4 uint8) as the GIF writer takes it under ``plan`` (default: not
+    flattened, index 255 reserved only when the frame has empty pixels)."""
+    plan = GifPlan() if plan is None else plan
+    marks = frame_marks(rgba)
+    clear = bool((rgba[..., 3] == 0).any())
+    if plan.flatten:
+        rgba = flatten([rgba], plan.matte)[0]
+    image, _ = _gif_frame(rgba, reserve=bool(plan.reserve) and not plan.flatten)
+    return GifFrame(image, clear and not plan.flatten, marks, plan.flatten, bool(plan.reserve))
+
+
+def write_gif(
+    source,
+    path,
+    total: float,
+    count: int,
+    *,
+    loop: int = 0,
+    matte: tuple[int, int, int] = (255, 255, 255),
+    flatten: bool = False,
+) -> bool:
+    """Write ``count`` frames lasting ``total`` seconds as a GIF at ``path``, atomically, frame
+    by frame: ``source(plan)`` gives the frames (RGBA arrays, or ``GifFrame``s made under
+    ``plan`` by ``gif_frame``) in order, and is called again, from the first frame, when a
+    frame shows the plan wrong (a translucent frame after opaque ones: the whole animation is
+    flattened onto ``matte``; a frame without empty pixels among ones with: index 255 kept in
+    every frame). Only palette images are held (Pillow's writer keeps each distinct frame until
+    the end: width x height bytes a frame). ``flatten``: flatten from the first frame (the
+    caller knows already). Returns whether the frames were flattened."""
+    plan = GifPlan(matte=tuple(matte), flatten=bool(flatten))
+    durations = [10 * d for d in frame_durations(count, total, 0.01)]
+    while True:
+        made = GifPlan(plan.matte, plan.flatten, plan.reserve)  # the frames' plan: never changed
+        try:
+            write = functools.partial(_write_gif, source=source, plan=plan, made=made,
+                                      durations=durations, loop=loop)  # fmt: skip
+            write_atomically(path, write)
+            return plan.flatten
+        except GifRestart:
+            continue
+
+
+def _write_gif(fh, *, source, plan: GifPlan, made: GifPlan, durations: list[int], loop: int):
+    """Write the GIF of ``source(made)``'s frames; ``plan`` is updated from them, and
+    GifRestart raised when the frames show ``made`` wrong."""
+    watch = MatteWatch()
+    frames = iter(source(made))
+
+    def checked(f) -> Image.Image:
+        g = f if isinstance(f, GifFrame) else gif_frame(f, made)
+        if g.flattened != made.flatten or g.reserve != bool(made.reserve):
+            raise ValueError("a GIF frame made under another plan")
+        if not plan.flatten and watch.add(g.marks):
+            plan.flatten, plan.reserve = True, None
+            raise GifRestart
+        if plan.reserve is None:
+            plan.reserve = g.clear  # the first frame decides...
+        elif (g.clear and not plan.reserve) or (plan.reserve and not g.clear and not g.reserve):
+            plan.reserve = True  # ...unless frames disagree: every frame keeps index 255
+            raise GifRestart
+        return g.image
+
+    try:
+        first = checked(next(frames))
+    except StopIteration:
+        raise ValueError("no frames to write") from None
+    extra = {"transparency": 255, "disposal": 2} if plan.reserve else {}
+    # GIF's loop count is the number of REPEATS (0: for ever); no count plays once
+    if loop != 1:
+        extra["loop"] = 0 if loop == 0 else loop - 1
+    rest = (checked(f) for f in frames)  # Pillow takes them one by one, as they come
+    first.save(fh, format="GIF", save_all=True, append_images=rest, duration=durations,
+               optimize=False, **extra)  # fmt: skip
+
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def _chunk(kind: bytes, data: bytes) -> bytes:
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+def _png_data(rgba: np.ndarray) -> tuple[bytes, bytes]:
+    """(IHDR data, the image's compressed data) of ``rgba`` as Pillow encodes a PNG."""
+    buf = io.BytesIO()
+    Image.fromarray(np.ascontiguousarray(rgba), mode="RGBA").save(buf, format="PNG")
+    raw, pos, ihdr, idat = buf.getvalue(), len(PNG_SIGNATURE), b"", []
+    while pos < len(raw):
+        (n,) = struct.unpack(">I", raw[pos : pos + 4])
+        kind, data = raw[pos + 4 : pos + 8], raw[pos + 8 : pos + 8 + n]
+        if kind == b"IHDR":
+            ihdr = data
+        elif kind == b"IDAT":
+            idat.append(data)
+        pos += 12 + n
+    return ihdr, b"".join(idat)
+
+
+def write_apng(frames, path, total: float, count: int, *, loop: int = 0) -> None:
+    """Write ``count`` RGBA frames (any iterable, taken one by one) lasting ``total`` seconds
+    as an APNG at ``path``, atomically, frame by frame: one frame is held (to merge a frame
+    identical to the one before into it, its display time added, as Pillow's writer does).
+    Every frame is a whole picture (no cropping to what changed): the decoded frames are
+    those Pillow's writer gives."""
+    durations = frame_durations(count, total, 0.001)
+
+    def write(fh) -> None:
+        it = iter(frames)
+        first = np.ascontiguousarray(next(it))
+        ihdr, data = _png_data(first)
+        fh.write(PNG_SIGNATURE + _chunk(b"IHDR", ihdr))
+        actl = fh.tell()
+        fh.write(_chunk(b"acTL", struct.pack(">II", 0, loop)))  # the count is set at the end
+        seq, written = 0, 0
+        held, held_data, held_ms = first, data, durations[0]
+
+        def put(data: bytes, ms: int) -> None:
+            nonlocal seq, written
+            h, w = first.shape[:2]
+            fh.write(_chunk(b"fcTL", struct.pack(">IIIIIHHBB", seq, w, h, 0, 0, ms, 1000, 0, 0)))
+            seq += 1
+            if written == 0:
+                fh.write(_chunk(b"IDAT", data))
+            else:
+                fh.write(_chunk(b"fdAT", struct.pack(">I", seq) + data))
+                seq += 1
+            written += 1
+
+        for ms, f in zip(durations[1:], it, strict=True):
+            if np.array_equal(f, held):
+                held_ms += ms
+                continue
+            put(held_data, held_ms)
+            held = np.ascontiguousarray(f)
+            held_data, held_ms = _png_data(held)[1], ms
+        put(held_data, held_ms)
+        fh.write(_chunk(b"IEND", b""))
+        fh.seek(actl)
+        fh.write(_chunk(b"acTL", struct.pack(">II", written, loop)))
+
+    write_atomically(path, write)
 
 
 def save_animation(
@@ -88,27 +298,20 @@ def save_animation(
             code="RND006",
         )
     if fmt == "GIF":
-        frames, _ = frames_for_gif(frames, matte)
-        pairs = [_gif_frame(f) for f in frames]
-        images = [p[0] for p in pairs]
-        durations = [10 * d for d in frame_durations(len(frames), total, 0.01)]
-        transparent = any(p[1] is not None for p in pairs)
-        extra = {"transparency": 255, "disposal": 2} if transparent else {}
-        # GIF's loop count is the number of REPEATS (0: for ever); no count plays once
-        if loop != 1:
-            extra["loop"] = 0 if loop == 0 else loop - 1
+        flat = needs_matte(frames)
+        write_gif(lambda plan: frames, path, total, len(frames), loop=loop, matte=matte,
+                  flatten=flat)  # fmt: skip
+        return [path]
+    if fmt == "PNG":
+        write_apng(frames, path, total, len(frames), loop=loop)
+        return [path]
+    images = [Image.fromarray(f, mode="RGBA") for f in frames]
+    durations = frame_durations(len(frames), total, 0.001)
+    opts = {"lossless": False, "quality": 90}
 
-        def write(fh):
-            images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
-                           duration=durations, optimize=False, **extra)  # fmt: skip
-    else:
-        images = [Image.fromarray(f, mode="RGBA") for f in frames]
-        durations = frame_durations(len(frames), total, 0.001)
-        opts = {"lossless": False, "quality": 90} if fmt == "WEBP" else {"default_image": False}
-
-        def write(fh):
-            images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
-                           duration=durations, loop=loop, **opts)  # fmt: skip
+    def write(fh):
+        images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
+                       duration=durations, loop=loop, **opts)  # fmt: skip
 
     write_atomically(path, write)
     return [path]

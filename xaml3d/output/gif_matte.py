@@ -8,10 +8,15 @@ animation would vanish: its frames differ only in alpha, so they become identica
 (which Pillow then merges into one). ``frames_for_gif`` detects such frames and flattens the
 whole animation onto an opaque matte colour (alpha composited, as a viewer would show it over
 that colour), so the translucency and its animation stay visible.
+
+A streaming writer decides the same thing frame by frame: ``frame_marks`` sums a frame up
+(computed where the frame was drawn) and ``MatteWatch`` turns the marks, in order, into the
+answer ``needs_matte`` gives for the frames so far.
 """
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Sequence
 
 import numpy as np
@@ -87,3 +92,45 @@ def frames_for_gif(
     if needs_matte(frames):
         return flatten(frames, matte), True
     return list(frames), False
+
+
+def frame_marks(rgba: np.ndarray) -> tuple[bool, bool, bytes, bytes]:
+    """What the matte decision needs of one frame, small enough to send between processes:
+    (has partial alpha, is translucent, digest of what GIF draws of it, digest of the whole
+    frame). Two frames differ only in alpha (``_same_as_gif``, not equal) exactly when their
+    GIF digests match and their whole digests do not (BLAKE2b, 16 bytes: no collision in
+    practice)."""
+    alpha = rgba[..., 3]
+    partial = bool(((alpha > 0) & (alpha < 255)).any())
+    translucent = partial and _translucent(alpha)
+    # What GIF draws, one 32-bit word a pixel: 0 where empty, else the colour with alpha 255
+    # (the byte order does not matter: only equality of the words counts).
+    rgba = np.ascontiguousarray(rgba)
+    words = rgba.view(np.uint32).reshape(alpha.shape)
+    opaque = np.frombuffer(np.array([0, 0, 0, 255], dtype=np.uint8).tobytes(), np.uint32)[0]
+    drawn = np.where(alpha > 0, words | opaque, np.uint32(0))
+    seen = hashlib.blake2b(drawn.tobytes(), digest_size=16).digest()
+    whole = hashlib.blake2b(rgba.tobytes(), digest_size=16).digest()
+    return partial, translucent, seen, whole
+
+
+class MatteWatch:
+    """``needs_matte`` decided frame by frame, from each frame's ``frame_marks`` in order:
+    ``add`` returns True from the first frame on which the frames so far need the matte (the
+    answer never goes back to False), so a writer streaming the frames knows as early as the
+    frames allow."""
+
+    def __init__(self) -> None:
+        self.partial = False  # some frame has partial alpha
+        self.lost = False  # some frame is translucent, or two successive differ only in alpha
+        self.previous: tuple[bytes, bytes] | None = None
+
+    def add(self, marks: tuple[bool, bool, bytes, bytes]) -> bool:
+        partial, translucent, seen, whole = marks
+        self.partial |= partial
+        self.lost |= translucent
+        prev = self.previous
+        if prev is not None and prev[0] == seen and prev[1] != whole:
+            self.lost = True
+        self.previous = (seen, whole)
+        return self.partial and self.lost

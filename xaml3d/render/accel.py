@@ -1,12 +1,14 @@
 """Whether the compiled kernels (``xaml3d.render.kernels``, numba) are used, and loading them.
 
 numba costs about 0.3 s per process (import, loading the cached machine code, shutdown): more
-than a whole small render. So the kernels are loaded only when the frame's estimated work pays
-for it: before drawing, from the whole frame's estimate (``plan``), or when a rasterization's
-own estimate adds up to it (``for_work``); once per process; from then on blending and the
-material passes use them too (``active``). When numba is already imported (the reader's number
-scanner, for a big file), the bar is much lower. Both paths give identical pictures, so mixing
-them within one frame is harmless.
+than a whole small render. So the kernels are loaded only when the estimated work pays for it:
+before drawing, from the whole frame's estimate (``plan``), or when a rasterization's own
+estimate adds up to it (``for_work``); once per process; from then on blending and the material
+passes use them too (``active``). The work weighed is the frame's times the frames this process
+is about to draw (``expect_frames``: an animation's worker draws hundreds of small frames, which
+together pay where one would not). When numba is already imported (the reader's number scanner,
+for a big file), the bar is much lower. Both paths give identical pictures, so mixing them
+within one frame is harmless.
 
 ``XAML3D_KERNELS`` chooses (``xaml3d.numba_env``): ``auto`` (default, as above), ``numba``
 (always; an error when numba cannot be imported) or ``numpy`` (never). Without numba installed,
@@ -39,6 +41,7 @@ IMPORTED_WORTH = 500_000
 _kernels = None
 _failed = False
 _frame_work = 0.0  # estimated work of the frame being drawn so far (see ``begin_frame``)
+_frames = 1  # frames this process expects to draw like the current one (``expect_frames``)
 
 
 def active():
@@ -54,17 +57,26 @@ def begin_frame() -> None:
     _frame_work = 0.0
 
 
+def expect_frames(count: int) -> None:
+    """This process is about to draw ``count`` frames of similar work (an animation's frames, or
+    its share of them in a worker): ``for_work`` weighs the frame's work times ``count``."""
+    global _frames
+    _frames = max(1, int(count))
+
+
 def for_work(fragments: float, triangles: int):
     """The kernels module when the work of the frame so far (estimated fragments, added up over
-    the calls since ``begin_frame``; or the triangles of this call) pays for loading it, or when
-    it is already loaded; else None (the numpy path)."""
+    the calls since ``begin_frame``; or the triangles of this call), times the frames expected
+    (``expect_frames``), pays for loading it, or when it is already loaded; else None (the
+    numpy path)."""
     global _frame_work
     m = mode()
     if m == "numpy":
         return None
     _frame_work += fragments
     if _kernels is None:
-        if m == "auto" and _frame_work < _worth() and triangles < TRIANGLES_WORTH:
+        work = _frame_work * _frames
+        if m == "auto" and work < _worth() and triangles * _frames < TRIANGLES_WORTH:
             return None
         _load(required=m == "numba")
     return _kernels
@@ -78,7 +90,8 @@ def plan(fragments: float, triangles: int) -> None:
     half the bar."""
     m = mode()
     if _kernels is None and m != "numpy":
-        if m == "numba" or 2.0 * fragments >= _worth() or triangles >= TRIANGLES_WORTH:
+        work, tris = 2.0 * fragments * _frames, triangles * _frames
+        if m == "numba" or work >= _worth() or tris >= TRIANGLES_WORTH:
             _load(required=m == "numba")
 
 

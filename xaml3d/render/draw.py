@@ -390,7 +390,9 @@ class PassShader:
             # Multisampling: shade each (triangle, pixel) row once, spread to its samples (in
             # float32, what blending takes: converting before the gather moves half the bytes).
             rows = Fragments(frag.wtri, frag.wtri, frag.wtri, frag.weights)
-            return np.asarray(self(rows), dtype=np.float32)[frag.inverse]
+            c = np.ascontiguousarray(self(rows), dtype=np.float32)  # (rows, 4): 16 bytes a row
+            # gathered as one complex128 element a row: several times faster than (F, 4) rows
+            return c.view(np.complex128).reshape(-1)[frag.inverse].view(np.float32).reshape(-1, 4)
         if self.flat:
             col = self.colors[frag.tri]
         else:

@@ -13,6 +13,7 @@ from collections.abc import Iterator
 
 from xaml3d.animation.moment import scene_at
 from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
+from xaml3d.render import accel
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.settings import settings_of
 from xaml3d.render.workers import ordered, worker_pool
@@ -33,6 +34,7 @@ def render_frames(
     executor=None,
     settings=None,
     folders=(),
+    prepare=None,
     **options,
 ) -> Iterator:
     """(time, Rendering) for each time, in time order: the render of ``scene_at(scene, t)``
@@ -45,33 +47,58 @@ def render_frames(
     independent render, so the results are the same). Frames are yielded as they come, in
     order, with a bounded number in flight: an animation is never all held in memory here.
     ``folders``: where the caller writes files meanwhile (should it be killed, the workers
-    remove its temporaries there)."""
+    remove its temporaries there). ``prepare``: a module-level function applied to each
+    Rendering where it was drawn (in the worker), whose result is yielded instead (e.g. the
+    frame already encoded, so that less crosses between processes and the encoding runs in
+    parallel too).
+
+    The compiled kernels (``xaml3d.render.accel``) are chosen for the work of all the frames a
+    process draws, not for one frame's."""
     chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
     if executor is not None:
-        items = [(scene, t, storyboard, chosen) for t in times]
+        items = [(scene, t, storyboard, chosen, prepare) for t in times]
         yield from ordered(executor, render_frame, items)
         return
-    if jobs > 1 and len(times) > 1:
-        workers = min(int(jobs), len(times))
-        kept = (scene, storyboard, chosen)  # sent once per worker, not with every frame
+    times = list(times)
+    if jobs > 1 and len(times) > 2:
+        workers = min(int(jobs), len(times) - 1)
+        share = -(-len(times) // workers)
+        # The first frame is drawn here, before the workers are forked: they start with what
+        # it loaded (the compiled kernels, when the animation pays for them) instead of each
+        # loading numba again (about a second of CPU each), and with its warmed-up memory.
+        accel.expect_frames(share)
+        try:
+            first = render_frame(scene, times[0], storyboard, chosen, prepare)
+        finally:
+            accel.expect_frames(1)
+        yield first
+        kept = (scene, storyboard, chosen, share, prepare)  # sent once per worker
         with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
-            yield from ordered(pool, _kept_frame, [(t,) for t in times])
+            yield from ordered(pool, _kept_frame, [(t,) for t in times[1:]])
         return
-    for t in times:
-        yield render_frame(scene, t, storyboard, chosen)
+    accel.expect_frames(len(times))
+    try:
+        for t in times:
+            yield render_frame(scene, t, storyboard, chosen, prepare)
+    finally:
+        accel.expect_frames(1)
 
 
-def render_frame(scene, t: float, storyboard, settings) -> tuple:
-    """(t, the Rendering of ``scene_at(scene, t, storyboard)`` with ``settings``)."""
-    return t, render_scene(scene_at(scene, t, storyboard), settings)
+def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
+    """(t, the Rendering of ``scene_at(scene, t, storyboard)`` with ``settings``), the Rendering
+    passed through ``prepare`` when given."""
+    r = render_scene(scene_at(scene, t, storyboard), settings)
+    return t, (r if prepare is None else prepare(r))
 
 
 _KEPT: dict = {}  # a pool worker's scene, storyboard and settings (sent once, not per frame)
 
 
-def _keep_scene(scene, storyboard, settings) -> None:
-    _KEPT.update(scene=scene, storyboard=storyboard, settings=settings)
+def _keep_scene(scene, storyboard, settings, share: int = 1, prepare=None) -> None:
+    _KEPT.update(scene=scene, storyboard=storyboard, settings=settings, prepare=prepare)
+    accel.expect_frames(share)  # about this many frames each: they pay for the kernels together
 
 
 def _kept_frame(t: float) -> tuple:
-    return render_frame(_KEPT["scene"], t, _KEPT["storyboard"], _KEPT["settings"])
+    k = _KEPT
+    return render_frame(k["scene"], t, k["storyboard"], k["settings"], k["prepare"])

@@ -350,16 +350,14 @@ def _compiled(kernels, tris, X, Y, z_t, q_t, area_t, A, B, C, box, width, height
     inv = np.empty(size if mode == kernels.PER_PIXEL else 1, dtype=np.int64)
     wtri = np.empty_like(inv)
     n_img = (width // msaa) * (height // msaa) if mode == kernels.PER_PIXEL else 1
-    owner = np.full(n_img, -1, dtype=np.int64)
-    rowidx = np.empty(n_img, dtype=np.int64)
-    t, j, chunk = 0, -1, 0
+    owner, rowidx = _pixel_scratch(n_img)
+    t, j = 0, -1
     while t < tris.size:
-        stamp = chunk * (tris.size + 1)
+        stamp = _next_stamp(tris.size + 1)
         n, nrows, t, j = kernels.raster_chunk(
             A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, mode, msaa,
             int(width), t, j, cap, stamp, pix, dep, tri, w, inv, wtri, owner, rowidx,
         )  # fmt: skip
-        chunk += 1
         if n == 0:
             continue
         if mode == kernels.PER_PIXEL:
@@ -368,3 +366,25 @@ def _compiled(kernels, tris, X, Y, z_t, q_t, area_t, A, B, C, box, width, height
         else:
             lam = w[:n].copy() if mode == kernels.PER_FRAGMENT else None
             yield Fragments(pix[:n].copy(), dep[:n].copy(), tris[tri[:n]], lam)
+
+
+# ``raster_chunk``'s per-image-pixel scratch (``owner``: the stamp of the weight row last made
+# for the pixel; ``rowidx``: that row), kept from call to call: filling a fresh ``owner`` for
+# every call cost more than the rasterizing itself for a small model drawn in many calls (an
+# animation's frames). Stamps only grow, so an old entry never matches a new stamp.
+_SCRATCH: dict = {}
+_STAMP = [0]
+
+
+def _pixel_scratch(n_img: int) -> tuple[np.ndarray, np.ndarray]:
+    if _SCRATCH.get("size") != n_img:
+        _SCRATCH.update(size=n_img, owner=np.full(n_img, -1, dtype=np.int64),
+                        rowidx=np.empty(n_img, dtype=np.int64))  # fmt: skip
+    return _SCRATCH["owner"], _SCRATCH["rowidx"]
+
+
+def _next_stamp(span: int) -> int:
+    """A stamp above every stamp given before (a chunk uses stamp .. stamp + span - 1)."""
+    stamp = _STAMP[0]
+    _STAMP[0] += span
+    return stamp

@@ -1,0 +1,173 @@
+"""GIF written frame by frame (``xaml3d.output.animation.write_gif``): the matte and the
+transparent index decided from the frames as they come, the same file as from a list."""
+
+from __future__ import annotations
+
+import itertools
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+
+import xaml3d
+from xaml3d.output.animation import GifPlan, gif_frame, save_animation, write_gif
+from xaml3d.output.gif_matte import MatteWatch, frame_marks, needs_matte
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def square(colour=(0, 200, 30, 255), size=24) -> np.ndarray:
+    f = np.zeros((size, size, 4), np.uint8)
+    f[4:16, 4:16] = colour
+    f[4:16, 3] = (*colour[:3], 128)  # an antialiased edge: partial alpha, not translucency
+    return f
+
+
+def frames_of_every_kind() -> list[np.ndarray]:
+    base = square()
+    glass = base.copy()
+    glass[6:14, 6:14, 3] = 100  # a translucent surface
+    moved = np.roll(base, 3, axis=1)
+    tiny = np.zeros((60, 60, 4), np.uint8)
+    tiny[:30] = (0, 0, 255, 255)
+    tiny[40:42, 40:42] = (255, 0, 0, 200)
+    tiny_faded = tiny.copy()
+    tiny_faded[40:42, 40:42, 3] = 90  # differs from ``tiny`` only in alpha
+    under = base.copy()
+    under[0, 0] = (9, 0, 0, 0)  # a colour under an empty pixel: not what GIF draws
+    return [base, glass, moved, under, tiny, tiny_faded]
+
+
+def test_the_watch_decides_as_needs_matte_on_every_prefix():
+    frames = frames_of_every_kind()
+    small, big = frames[:4], frames[4:]
+    for group in (small, big):
+        for seq in itertools.permutations(group + group[:1], 3):
+            watch = MatteWatch()
+            for n, f in enumerate(seq, 1):
+                assert watch.add(frame_marks(f)) == needs_matte(list(seq[:n]))
+
+
+def gif_bytes(path: Path) -> bytes:
+    return path.read_bytes()
+
+
+def decoded(path: Path) -> list[np.ndarray]:
+    with Image.open(path) as im:
+        out = []
+        for i in range(im.n_frames):
+            im.seek(i)
+            out.append(np.array(im.convert("RGBA")))
+    return out
+
+
+def test_a_late_translucent_frame_restarts_the_stream_flattened(tmp_path):
+    opaque = [np.roll(square(), k, axis=1) for k in range(4)]
+    glass = opaque[3].copy()
+    glass[6:14, 6:14, 3] = 100
+    frames = [*opaque, glass, opaque[0]]
+    calls = []
+
+    def source(plan):
+        calls.append((plan.flatten, plan.reserve))
+        return (gif_frame(f, plan) for f in frames)  # as workers make them
+
+    assert write_gif(source, tmp_path / "s.gif", 0.6, len(frames), matte=(10, 20, 30))
+    assert calls == [(False, None), (True, None)]  # asked again from the first frame
+    save_animation(frames, tmp_path / "l.gif", 0.6, matte=(10, 20, 30))
+    assert gif_bytes(tmp_path / "s.gif") == gif_bytes(tmp_path / "l.gif")
+    first = decoded(tmp_path / "s.gif")[0]
+    assert tuple(first[0, 0]) == (10, 20, 30, 255)  # flattened from the first frame on
+    assert [p.name for p in tmp_path.iterdir()].count("s.gif") == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["l.gif", "s.gif"]  # no temporary
+
+
+def test_frames_without_empty_pixels_among_frames_with_keep_index_255(tmp_path):
+    rng = np.random.default_rng(5)
+    full = np.concatenate([rng.integers(0, 256, (32, 32, 3), dtype=np.uint8),
+                           np.full((32, 32, 1), 255, np.uint8)], axis=2)  # fmt: skip
+    frames = [square(size=32), full]  # 1024 colours: every palette index in use
+    calls = []
+
+    def source(plan):
+        calls.append(plan.reserve)
+        return (gif_frame(f, plan) for f in frames)
+
+    assert not write_gif(source, tmp_path / "a.gif", 0.2, 2)
+    assert calls == [None, True]
+    shown = decoded(tmp_path / "a.gif")
+    assert (shown[1][..., 3] == 255).all()  # no colour of the full frame shown transparent
+    assert shown[0][0, 0, 3] == 0  # the first frame's empty background stays transparent
+
+
+def test_frames_made_under_another_plan_are_refused(tmp_path):
+    f = square()
+    made = gif_frame(f, GifPlan(flatten=True))
+    try:
+        write_gif(lambda plan: [made], tmp_path / "x.gif", 0.1, 1)
+    except ValueError as exc:
+        assert "another plan" in str(exc)
+    else:
+        raise AssertionError("accepted")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_command_line_writes_the_gif_the_api_writes(tmp_path):
+    sample = ROOT / "samples" / "spinning-cube.xaml"
+    out = tmp_path / "cli.gif"
+    p = subprocess.run([sys.executable, "-m", "xaml3d", "animate", str(sample), "-o", str(out),
+                        "-W", "64", "--duration", "0.5", "--fps", "10", "-j", "2"],
+                       capture_output=True)  # fmt: skip
+    assert p.returncode == 0, p.stderr
+    scene = xaml3d.load(sample)
+    times = xaml3d.frame_times(0.0, 0.5, 10)
+    frames = [r.rgba for _, r in xaml3d.render_frames(scene, times, width=64, time=None)]
+    save_animation(frames, tmp_path / "api.gif", 0.5)
+    assert out.read_bytes() == (tmp_path / "api.gif").read_bytes()
+    assert len(decoded(out)) == 5
+
+
+def test_streamed_apng_decodes_as_pillows_apng(tmp_path):
+    from xaml3d.output.animation import frame_durations, write_apng
+
+    rng = np.random.default_rng(2)
+    a, b, c = (rng.integers(0, 256, (20, 30, 4), dtype=np.uint8) for _ in range(3))
+    frames = [a, a, b, c, c, c]
+    write_apng(iter(frames), tmp_path / "s.png", 0.6, len(frames), loop=3)  # a one-shot iterator
+    images = [Image.fromarray(f, mode="RGBA") for f in frames]
+    images[0].save(tmp_path / "p.png", save_all=True, append_images=images[1:], loop=3,
+                   duration=frame_durations(6, 0.6, 0.001), default_image=False)  # fmt: skip
+    shown = []
+    for name in ("s.png", "p.png"):
+        with Image.open(tmp_path / name) as im:
+            got = []
+            for i in range(im.n_frames):
+                im.seek(i)
+                got.append((np.array(im.convert("RGBA")).tobytes(), im.info["duration"]))
+            shown.append((got, im.info.get("loop")))
+    assert shown[0] == shown[1]
+    assert [d for _, d in shown[0][0]] == [200.0, 100.0, 300.0]  # identical frames merged
+
+
+def test_a_frame_of_few_colours_keeps_them_exactly_as_the_median_cut_does():
+    from xaml3d.output.animation import _gif_frame
+
+    rng = np.random.default_rng(7)
+    colours = rng.integers(0, 256, (40, 3), dtype=np.uint8)
+    f = np.zeros((30, 40, 4), np.uint8)
+    f[..., :3] = colours[rng.integers(0, 40, (30, 40))]
+    f[..., 3] = 255
+    f[:5] = 0  # empty rows: transparent
+    image, transparent = _gif_frame(f)
+    idx = np.array(image)
+    assert transparent == 255 and (idx[:5] == 255).all() and (idx[5:] < 255).all()
+    shown = np.array(image.convert("RGB"))
+    assert np.array_equal(shown[5:], f[5:, :, :3])
+    rgb = Image.fromarray(np.ascontiguousarray(f[..., :3]))
+    cut = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    assert np.array_equal(np.array(cut.convert("RGB"))[5:], shown[5:])  # the same pixels
+    full = f.copy()
+    full[..., 3] = 255  # no empty pixel: 256 colours allowed, no transparent index
+    assert _gif_frame(full)[1] is None
