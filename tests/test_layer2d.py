@@ -441,3 +441,39 @@ def test_picture_properties_around_the_viewport_are_said(tmp_path):
     # an Opacity of 1 changes nothing: not reported
     path.write_text(_wrapped('Opacity="1"', "Border"))
     assert not [d for d in xaml3d.load(path).diagnostics if d.code == "DRW006"]
+
+
+def _glyphs(drawing) -> int:
+    """GeometryDrawings in Aero2's option-mark glyph colour (#FF212121) in a drawing tree."""
+    if isinstance(drawing, DrawingGroup):
+        return sum(_glyphs(k) for k in drawing.children)
+    brush = getattr(drawing, "brush", None)
+    return int(isinstance(drawing, GeometryDrawing) and brush is not None
+               and brush.color == (0x21 / 255, 0x21 / 255, 0x21 / 255, 1.0))  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "control, checked, glyphs",
+    [("CheckBox", "True", 1), ("CheckBox", "False", 0), ("CheckBox", "{x:Null}", 0),
+     ("RadioButton", "True", 1), ("RadioButton", "False", 0)],
+)  # fmt: skip
+def test_checked_option_controls_draw_their_mark(tmp_path, control, checked, glyphs):
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(
+        f'<VisualBrush><VisualBrush.Visual><{control} Content="x" IsChecked="{checked}"/>'
+        "</VisualBrush.Visual></VisualBrush>"
+    ))  # fmt: skip
+    brush = xaml3d.load(path).viewports[0].models[0].material[0].brush
+    assert _glyphs(brush.drawing) == glyphs
+
+
+def test_window_controls_not_drawn_are_said(tmp_path):
+    path = tmp_path / "w.xaml"
+    path.write_text(
+        '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" Width="300"'
+        ' Height="200"><DockPanel><ListBox DockPanel.Dock="Left" Width="80"/>'
+        '<CheckBox DockPanel.Dock="Top" Content="Wire"/><Viewport3D/></DockPanel></Window>'
+    )
+    found = [d for d in xaml3d.load(path).diagnostics if d.code == "DRW007"]
+    assert [(d.severity, d.line, d.column) for d in found] == [("info", 1, 111)]
+    assert found[0].message.startswith("ListBox is not drawn by --window")

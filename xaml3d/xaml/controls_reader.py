@@ -22,6 +22,7 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import qname
+from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.visual_text import (
     _box_drawing,
@@ -43,6 +44,12 @@ AERO2 = {
     "RadioButton": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
 }
 _OPTION_MARK = 13.0  # the Aero2 check box / radio button mark's size (px)
+# Aero2's check mark (CheckBox optionMark Path, Stretch None) and its OptionMark.Static.Glyph
+_CHECK_GLYPH = (
+    "F1 M 9.97498,1.22334L 4.6983,9.09834L 4.52164,9.09834L 0,5.19331L 1.27664,3.52165"
+    "L 4.255,6.08833L 8.33331,1.52588e-005L 9.97498,1.22334 Z"
+)
+_GLYPH = _rgb("212121")
 _TEXT_BOX_INSET = 2.0  # TextBox text sits 2 px inside its padding (the text view's margin)
 
 
@@ -67,8 +74,14 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
     pad = v.get("Padding", parse_thickness, look["padding"])
     if local in ("CheckBox", "RadioButton"):
         top = (h - _OPTION_MARK) / 2
+        checked = v.get("IsChecked", _checked, False)
         if local == "CheckBox":
             box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
+            if checked:  # Aero2's optionMark Path, Margin 1 inside the 1 px border
+                glyph = path_from_string(_CHECK_GLYPH)
+                at = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])
+                mark = GeometryDrawing(glyph, brush=_GLYPH)
+                box = (*box, DrawingGroup(children=(mark,), transform=at))
             shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
             out.append(DrawingGroup(children=tuple(box), transform=shift))
         else:
@@ -76,6 +89,9 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
                 EllipseGeometry((6.5, top + 6.5), 6.0, 6.0), brush=background,
                 pen=Pen(brush=border, thickness=1.0),
             ))  # fmt: skip
+            if checked:  # Aero2's optionMark Ellipse fills the mark grid (Margin 2) inside
+                dot = EllipseGeometry((6.5, top + 6.5), 3.5, 3.5)
+                out.append(GeometryDrawing(dot, brush=_GLYPH))
         t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - line_height(font)) / 2 - 0.5, w)
         if t is not None:
             out.append(t)
@@ -94,6 +110,13 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
         box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
         out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
+
+
+def _checked(text: str) -> bool:
+    """IsChecked: True, False, or {x:Null} (indeterminate: drawn unchecked, as its mark is the
+    small square only when IsThreeState)."""
+    t = text.strip()
+    return False if t == "{x:Null}" else V.parse_bool(t)
 
 
 def _progress_bar(r, v, w: float, h: float, out: list) -> None:
@@ -129,7 +152,6 @@ def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
     selected item's text (SelectedIndex, an item's IsSelected, or Text) at Padding 6,3,5,3,
     and the #FF606060 arrow centred in the 17 px button column."""
     from xaml3d.scene.types import GradientStop, LinearGradientBrush
-    from xaml3d.xaml.geometry_reader import path_from_string
 
     face = LinearGradientBrush(
         stops=(GradientStop((0xF0 / 255,) * 3 + (1.0,), 0.0),

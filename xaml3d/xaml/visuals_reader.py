@@ -308,10 +308,16 @@ _WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
     """``render --window``: each laid-out 2D control that the 2D layer draws gets its drawing
-    (``Node.drawing``, in its own box). The others stay undrawn, as before (LAY003 already
-    says they are estimated)."""
+    (``Node.drawing``, in its own box). The others stay undrawn, and DRW007 says so (their
+    space is kept: LAY003 says it is estimated)."""
     for n in root.walk():
-        if n.kind != L.CONTROL or n.type not in _WINDOW_DRAWN or not n.arranged:
+        if n.kind != L.CONTROL or not n.arranged:
+            continue
+        if n.type not in _WINDOW_DRAWN:
+            el = elements.get(id(n), (None,))[0]
+            if el is not None and n.visibility == "Visible":
+                msg = f"{n.type} is not drawn by --window: its laid-out box is left empty"
+                r.ctx.diag("DRW007", msg, el, once=("DRW007", id(el)))
             continue
         el, font = elements.get(id(n), (None, FONT_SIZE))
         if el is None:
