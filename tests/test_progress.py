@@ -31,6 +31,12 @@ def test_progress_lines_every_few_seconds_with_an_estimate(capsys):
     long(1)
     assert capsys.readouterr().err == "rendering: 1/400 scenes, 1 min 30 s elapsed, about 598 " \
         "min 30 s left\n"  # fmt: skip
+    long.finish()
+    assert capsys.readouterr().err == "rendering: all 400 scenes in 1 min 30 s\n"
+    quick = ProgressLines("rendering", 3, clock=lambda: now[0])
+    quick(1)
+    quick.finish()  # work that printed no progress prints no closing line either
+    assert capsys.readouterr().err == ""
 
 
 def test_animate_reports_progress_in_a_log(tmp_path, monkeypatch):
@@ -50,6 +56,7 @@ def test_animate_reports_progress_in_a_log(tmp_path, monkeypatch):
         "spin.xaml: animating: 1/4 frames",
         "spin.xaml: animating: 2/4 frames",
         "spin.xaml: animating: 3/4 frames",
+        "spin.xaml: animating: all 4 frames in 0 s; finishing the file",  # never an estimate last
     ]
     r = CliRunner().invoke(cli_animate.animate_command, [*args[1:], "-q"])
     assert r.exit_code == 0 and r.stderr == ""  # -q: errors only

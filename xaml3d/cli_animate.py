@@ -336,6 +336,8 @@ def _progress(it, total: int, name: str, quiet: bool):
         yield r
         if report is not None:
             report(i)
+    if report is not None:
+        report.finish("; finishing the file")
 
 
 def _keep(result, diags: list, file: str):

@@ -290,6 +290,14 @@ class ProgressLines:
                  clock=time.monotonic) -> None:  # fmt: skip
         self.label, self.total, self.unit, self.every, self.clock = label, total, unit, every, clock
         self.start = self.last = clock()
+        self.printed = False
+
+    def finish(self, what: str = "") -> None:
+        """The closing line of work that printed progress (``what``: what follows, e.g. the
+        file being finished), so a log never ends on an estimate."""
+        if self.printed:
+            elapsed = _seconds(self.clock() - self.start)
+            click.echo(f"{self.label}: all {self.total} {self.unit} in {elapsed}{what}", err=True)
 
     def __call__(self, done: int) -> None:
         now = self.clock()
@@ -301,6 +309,7 @@ class ProgressLines:
         estimate = f"about {_seconds(left)} left" if math.isfinite(left) else "estimating"
         click.echo(f"{self.label}: {done}/{self.total} {self.unit}, {_seconds(elapsed)} elapsed, "
                    f"{estimate}", err=True)  # fmt: skip
+        self.printed = True
 
 
 def _seconds(t: float) -> str:
