@@ -82,6 +82,8 @@ def parse_commands(s: str, fail: Fail, arcs: bool = True) -> tuple[tuple, str]:
         elif cmd is None:
             raise fail("a path starts with a command (M)")
         up = cmd.upper()
+        if up == "Z":  # only a number can follow Z without a command of its own
+            raise fail(f"{cmd} takes no numbers")
         n = _ARGS[up]
         args = toks[i : i + n]
         if len(args) < n or any(isinstance(a, str) for a in args):
