@@ -28,6 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from xaml3d.render import accel
+from xaml3d.render.tiles import place_tile
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     Brush,
@@ -209,7 +210,6 @@ def _sample_gradient(brush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
 
 # --------------------------------------------------------------------------- images
 
-_ALIGN = {"Left": 0.0, "Top": 0.0, "Center": 0.5, "Right": 1.0, "Bottom": 1.0}
 _EPS = 1e-9  # tolerance of the TileMode None edge test (inverse-mapped coordinates round)
 
 
@@ -291,26 +291,10 @@ def image_layout(brush: ImageBrush, bounds: Bounds) -> np.ndarray | None:
     if brush.image is None or brush.image.size == 0:
         return None
     h, w = brush.image.shape[:2]
-    vbx, vby, vbw, vbh = (float(v) for v in brush.viewbox)
-    if brush.viewbox_units != "Absolute":
-        vbx, vbw, vby, vbh = vbx * w, vbw * w, vby * h, vbh * h
-    vpx, vpy, vpw, vph = (float(v) for v in brush.viewport)
-    if brush.viewport_units != "Absolute":
-        lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
-        size = hi - lo
-        vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
-        vpy, vph = lo[1] + vpy * size[1], vph * size[1]
-    if min(vbw, vbh, vpw, vph) <= 0.0:
+    tile = place_tile(brush, bounds, (0.0, 0.0, float(w), float(h)))
+    if tile is None:
         return None  # an empty viewbox or viewport draws nothing
-    sx, sy = vpw / vbw, vph / vbh
-    if brush.stretch == "Uniform":
-        sx = sy = min(sx, sy)
-    elif brush.stretch == "UniformToFill":
-        sx = sy = max(sx, sy)
-    elif brush.stretch == "None":
-        sx = sy = 1.0
-    ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
-    oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
+    (vpx, vpy, vpw, vph), (vbx, vby), (sx, sy), (ox, oy) = tile
     matrix = brush_to_texture_matrix(brush, bounds, False)
     det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
     if not np.isfinite(det) or abs(det) < 1e-300:
