@@ -204,7 +204,7 @@ def interpolate(planes, indices, tri, w):
 @numba.njit(cache=True, nogil=True)
 def bilinear(img, px, py):
     """Bilinear samples of a premultiplied (H, W, C) image at pixel coordinates (texel centres at
-    half-integers), neighbours beyond the edge clamped to it (``brushes.bilinear``)."""
+    half-integers), neighbours beyond the edge clamped to it (``tiles.bilinear``)."""
     h = img.shape[0]
     w = img.shape[1]
     k = img.shape[2]
@@ -244,7 +244,7 @@ TILE_EPS = 1e-9  # brushes._EPS
 # raising, and the loops carry no zero-divisor checks.
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
 def _tile(local, code, flip):
-    """``brushes._tile_fraction`` for one coordinate: (position in the tile, drawn)."""
+    """``tiles.tile_fraction`` for one coordinate: (position in the tile, drawn)."""
     if code == 0:
         return local, (local >= -TILE_EPS) and (local <= 1.0 + TILE_EPS)
     index = np.floor(local)

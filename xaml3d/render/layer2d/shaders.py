@@ -2,7 +2,7 @@
 
 SolidColorBrush, LinearGradientBrush and RadialGradientBrush (stops interpolated in straight
 alpha as WPF does; SpreadMethod Pad / Reflect / Repeat; MappingMode and the brush transforms
-through the same matrices as the 3D brushes, ``render.brushes.brush_to_texture_matrix``), and the
+through the same matrices as the 3D brushes, ``render.tiles.brush_to_texture_matrix``), and the
 tile brushes ImageBrush and DrawingBrush (TileBrush layout: the Viewbox of the content stretched
 into the Viewport by Stretch and the alignments; the tile recorded as a skia Picture and
 repeated by a picture shader: TileMode None / Tile / FlipX / FlipY / FlipXY). Relative brush
@@ -14,9 +14,8 @@ from __future__ import annotations
 import numpy as np
 import skia
 
-from xaml3d.render.brushes import brush_to_texture_matrix
 from xaml3d.render.layer2d.paths import matrix
-from xaml3d.render.tiles import place_tile
+from xaml3d.render.tiles import brush_to_texture_matrix, place_tile
 from xaml3d.scene.drawing import (
     DrawingBrush,
 )
