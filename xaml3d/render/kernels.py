@@ -137,51 +137,6 @@ def raster_chunk(
 
 
 @numba.njit(cache=True, nogil=True)
-def blend_over(zbuf, color, pix, z, src):
-    """Diffuse blending one fragment after the other: depth test <=, src over dst, depth
-    written (``Framebuffer.over``). Returns how many fragments passed."""
-    n = 0
-    one = np.float32(1.0)
-    for f in range(pix.shape[0]):
-        p = pix[f]
-        if z[f] <= zbuf[p]:
-            a = src[f, 3]
-            if a >= one:
-                for c in range(4):
-                    color[p, c] = src[f, c]
-            else:
-                k = one - a
-                for c in range(4):
-                    color[p, c] = src[f, c] + k * color[p, c]
-            zbuf[p] = z[f]
-            n += 1
-    return n
-
-
-@numba.njit(cache=True, nogil=True)
-def blend_add(zbuf, color, pix, z, src):
-    """Specular / emissive blending (``Framebuffer.add``): depth test <=, dst + src in draw
-    order, no depth write, then every touched sample clamped at 1."""
-    n = 0
-    one = np.float32(1.0)
-    passed = np.zeros(pix.shape[0], dtype=np.bool_)
-    for f in range(pix.shape[0]):
-        p = pix[f]
-        if z[f] <= zbuf[p]:
-            passed[f] = True
-            for c in range(4):
-                color[p, c] += src[f, c]
-            n += 1
-    for f in range(pix.shape[0]):
-        if passed[f]:
-            p = pix[f]
-            for c in range(4):
-                if color[p, c] > one:
-                    color[p, c] = one
-    return n
-
-
-@numba.njit(cache=True, nogil=True)
 def interpolate(planes, indices, tri, w):
     """Vertex attributes at the fragments: out[f, c] = w0 a[i0] + w1 a[i1] + w2 a[i2] with
     a = planes[c] and (i0, i1, i2) the vertices of triangle tri[f] (``draw.interpolate``)."""
@@ -369,7 +324,9 @@ def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
 @numba.njit(cache=True, nogil=True)
 def blend_rows(zbuf, color, pix, z, inverse, rows, additive):
     """Blend fragment f with colour ``rows[inverse[f]]`` (``inverse`` empty: ``rows[f]``),
-    one fragment after the other: ``blend_over``, or ``blend_add`` when ``additive``.
+    one fragment after the other. Diffuse (``Framebuffer.over``): depth test <=, src over dst,
+    depth written. ``additive``, specular / emissive (``Framebuffer.add``): depth test <=,
+    dst + src in draw order, no depth write, then every touched sample clamped at 1.
     Returns how many fragments passed the depth test."""
     nf = pix.shape[0]
     spread = inverse.shape[0] > 0
