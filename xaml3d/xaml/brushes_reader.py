@@ -51,6 +51,20 @@ def _enum(allowed):
     return lambda s: V.parse_enum(s, allowed)
 
 
+def tile_properties(r, p) -> dict:
+    """TileBrush's properties (ImageBrush, DrawingBrush, VisualBrush), WPF's defaults."""
+    return dict(
+        viewport=p.value("Viewport", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
+        viewport_units=p.value("ViewportUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
+        viewbox=p.value("Viewbox", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
+        viewbox_units=p.value("ViewboxUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
+        stretch=p.value("Stretch", _enum(_STRETCH), "Fill"),
+        tile_mode=p.value("TileMode", _enum(_TILE), "None"),
+        alignment_x=p.value("AlignmentX", _enum(_ALIGN_X), "Center"),
+        alignment_y=p.value("AlignmentY", _enum(_ALIGN_Y), "Center"),
+    )
+
+
 def brush_from_string(s: str) -> SolidColorBrush:
     """A colour string where a Brush is expected means a SolidColorBrush."""
     return SolidColorBrush(color=V.parse_color(s))
@@ -195,14 +209,7 @@ def _image_brush(r, p, nodes: list) -> ImageBrush:
         path=path,
         image=image,
         is_placeholder=is_placeholder,
-        viewport=p.value("Viewport", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
-        viewport_units=p.value("ViewportUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
-        viewbox=p.value("Viewbox", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
-        viewbox_units=p.value("ViewboxUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
-        stretch=p.value("Stretch", _enum(_STRETCH), "Fill"),
-        tile_mode=p.value("TileMode", _enum(_TILE), "None"),
-        alignment_x=p.value("AlignmentX", _enum(_ALIGN_X), "Center"),
-        alignment_y=p.value("AlignmentY", _enum(_ALIGN_Y), "Center"),
+        **tile_properties(r, p),
         **_common(r, p, nodes),
     )
 
