@@ -125,6 +125,13 @@ def tile_layout(brush, bounds, content: tuple[float, float, float, float]):
     return None if tile is None else (tile.viewport, tile.matrix())
 
 
+def brush_tile(brush, bounds):
+    """``tile_layout`` of a tile brush over its own content (``content_bounds``); None when
+    there is no content or the tile is empty."""
+    content = content_bounds(brush)
+    return None if content is None else tile_layout(brush, bounds, content)
+
+
 def content_bounds(brush) -> tuple[float, float, float, float] | None:
     """The box relative Viewbox units refer to: an ImageBrush's picture (one pixel per DIP),
     a drawing's bounds, or the bounds the reader gave (a Viewport2DVisual3D's visual)."""
@@ -156,10 +163,7 @@ def draw_content(canvas: skia.Canvas, brush) -> None:
 
 
 def _tile_shader(brush, bounds) -> skia.Shader | None:
-    content = content_bounds(brush)
-    if content is None:
-        return None
-    found = tile_layout(brush, bounds, content)
+    found = brush_tile(brush, bounds)
     if found is None:
         return None
     (vpx, vpy, vpw, vph), m = found

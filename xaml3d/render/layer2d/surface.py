@@ -19,7 +19,7 @@ import numpy as np
 import skia
 
 from xaml3d.render.layer2d.paths import matrix
-from xaml3d.render.layer2d.shaders import content_bounds, draw_content, tile_layout
+from xaml3d.render.layer2d.shaders import brush_tile, draw_content
 from xaml3d.render.tiles import bilinear, brush_to_texture_matrix, inverse_map, tile_fraction
 from xaml3d.scene.drawing import DrawingBrush
 
@@ -63,10 +63,7 @@ def _tile(brush: DrawingBrush, bounds, density: float | None):
 
 
 def _make_tile(brush: DrawingBrush, bounds, density: float | None):
-    content = content_bounds(brush)
-    if content is None:
-        return None
-    found = tile_layout(brush, bounds, content)
+    found = brush_tile(brush, bounds)
     if found is None:
         return None
     viewport, m = found
