@@ -156,6 +156,21 @@ def interpolate(planes, indices, tri, w):
     return out
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _corners(px, py, w, h):
+    """The four texels of a bilinear sample at pixel coordinates (px, py) of a (h, w) image,
+    clamped to its edge, and the weights (fx, fy) towards the second of each pair."""
+    x = px - 0.5
+    y = py - 0.5
+    x0 = np.floor(x)
+    y0 = np.floor(y)
+    xi0 = int(min(max(x0, 0.0), w - 1.0))
+    xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
+    yi0 = int(min(max(y0, 0.0), h - 1.0))
+    yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+    return xi0, xi1, yi0, yi1, x - x0, y - y0
+
+
 @numba.njit(cache=True, nogil=True)
 def bilinear(img, px, py):
     """Bilinear samples of a premultiplied (H, W, C) image at pixel coordinates (texel centres at
@@ -166,16 +181,7 @@ def bilinear(img, px, py):
     n = px.shape[0]
     out = np.empty((n, k))
     for f in range(n):
-        x = px[f] - 0.5
-        y = py[f] - 0.5
-        x0 = np.floor(x)
-        y0 = np.floor(y)
-        fx = x - x0
-        fy = y - y0
-        xi0 = int(min(max(x0, 0.0), w - 1.0))
-        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
-        yi0 = int(min(max(y0, 0.0), h - 1.0))
-        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        xi0, xi1, yi0, yi1, fx, fy = _corners(px[f], py[f], w, h)
         for c in range(k):
             top = img[yi0, xi0, c] * (1.0 - fx) + img[yi0, xi1, c] * fx
             bottom = img[yi1, xi0, c] * (1.0 - fx) + img[yi1, xi1, c] * fx
@@ -192,7 +198,7 @@ COLOR_PER_TRIANGLE = 1
 BRUSH_UNIFORM = 0
 BRUSH_IMAGE = 1
 BRUSH_GIVEN = 2
-TILE_EPS = 1e-9  # brushes._EPS
+TILE_EPS = 1e-9  # tiles.EDGE_EPS
 
 
 # error_model="numpy": a float division by zero gives inf/nan as in the numpy path instead of
@@ -235,16 +241,7 @@ def _image_sample(u, v, lay, img):
         in_x and in_y and px >= -TILE_EPS and px <= w + TILE_EPS
         and py >= -TILE_EPS and py <= h + TILE_EPS
     ):  # fmt: skip
-        x = px - 0.5
-        y = py - 0.5
-        x0 = np.floor(x)
-        y0 = np.floor(y)
-        fx = x - x0
-        fy = y - y0
-        xi0 = int(min(max(x0, 0.0), w - 1.0))
-        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
-        yi0 = int(min(max(y0, 0.0), h - 1.0))
-        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        xi0, xi1, yi0, yi1, fx, fy = _corners(px, py, w, h)
         gx = 1.0 - fx
         gy = 1.0 - fy
         s0 = (img[yi0, xi0, 0] * gx + img[yi0, xi1, 0] * fx) * gy + (
