@@ -27,7 +27,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.render import accel
+from xaml3d.render.tiles import (
+    EDGE_EPS,
+    Bounds,
+    bilinear,
+    brush_to_texture_matrix,
+    inverse_map,
+    place_tile,
+    tile_fraction,
+)
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     Brush,
@@ -37,8 +45,6 @@ from xaml3d.scene.types import (
     RadialGradientBrush,
     SolidColorBrush,
 )
-
-Bounds = tuple[np.ndarray, np.ndarray]
 
 
 def brush_bounds(texcoords: np.ndarray) -> Bounds:
@@ -56,41 +62,6 @@ def brush_bounds(texcoords: np.ndarray) -> Bounds:
     hi = tc.max(axis=0)
     hi = np.where(hi - lo > 0.0, hi, lo + 1.0)
     return lo, hi
-
-
-def bounds_matrix(bounds: Bounds) -> np.ndarray:
-    """B: the unit box (0,0)-(1,1) onto the bounding box, 3x3 column form."""
-    lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
-    size = hi - lo
-    return np.array([[size[0], 0.0, lo[0]], [0.0, size[1], lo[1]], [0.0, 0.0, 1.0]])
-
-
-def brush_to_texture_matrix(brush, bounds: Bounds, relative_content: bool) -> np.ndarray:
-    """T @ (B R B^-1) @ [B if the brush's own geometry is in relative units]."""
-    b = bounds_matrix(bounds)
-    m = np.eye(3)
-    if relative_content:
-        m = b
-    if brush.relative_transform is not None:
-        r = np.asarray(brush.relative_transform, dtype=np.float64)
-        m = b @ r @ np.linalg.inv(b) @ m
-    if brush.transform is not None:
-        m = np.asarray(brush.transform, dtype=np.float64) @ m
-    return m
-
-
-def inverse_map(matrix: np.ndarray, uv: np.ndarray) -> np.ndarray | None:
-    """Texture coordinates (M, 2) back into brush space, or None for a singular matrix."""
-    det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
-    if not np.isfinite(det) or abs(det) < 1e-300:
-        return None
-    inv = np.linalg.inv(matrix)
-    # Written out rather than a matrix product (which BLAS may compute with fused multiply-adds):
-    # the compiled shading kernel computes the very same roundings.
-    q = np.empty_like(uv)
-    q[:, 0] = uv[:, 0] * inv[0, 0] + uv[:, 1] * inv[0, 1] + inv[0, 2]
-    q[:, 1] = uv[:, 0] * inv[1, 0] + uv[:, 1] * inv[1, 1] + inv[1, 2]
-    return q
 
 
 # --------------------------------------------------------------------------- gradients
@@ -209,9 +180,6 @@ def _sample_gradient(brush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
 
 # --------------------------------------------------------------------------- images
 
-_ALIGN = {"Left": 0.0, "Top": 0.0, "Center": 0.5, "Right": 1.0, "Bottom": 1.0}
-_EPS = 1e-9  # tolerance of the TileMode None edge test (inverse-mapped coordinates round)
-
 
 _PREMULTIPLIED: list[tuple[np.ndarray, np.ndarray]] = []  # (image, premultiplied), newest last
 
@@ -232,48 +200,6 @@ def premultiplied_image(image: np.ndarray) -> np.ndarray:
     return img
 
 
-def bilinear(img: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
-    """Bilinear sample of a premultiplied (H, W, 4) image at pixel coordinates (texel centres at
-    half-integers); neighbours beyond the edge are clamped to the edge texel."""
-    kernels = accel.active()
-    if kernels is not None:
-        return kernels.bilinear(
-            np.ascontiguousarray(img, dtype=np.float64),
-            np.ascontiguousarray(px, dtype=np.float64),
-            np.ascontiguousarray(py, dtype=np.float64),
-        )
-    h, w = img.shape[:2]
-    x = px - 0.5
-    y = py - 0.5
-    x0 = np.floor(x)
-    y0 = np.floor(y)
-    fx = (x - x0)[:, None]
-    fy = (y - y0)[:, None]
-    xi0 = np.clip(x0, 0, w - 1).astype(np.intp)
-    xi1 = np.clip(x0 + 1, 0, w - 1).astype(np.intp)
-    yi0 = np.clip(y0, 0, h - 1).astype(np.intp)
-    yi1 = np.clip(y0 + 1, 0, h - 1).astype(np.intp)
-    flat = img.reshape(-1, img.shape[-1])
-
-    def texel(yi, xi):
-        return np.take(flat, yi * w + xi, axis=0)
-
-    top = texel(yi0, xi0) * (1.0 - fx) + texel(yi0, xi1) * fx
-    bottom = texel(yi1, xi0) * (1.0 - fx) + texel(yi1, xi1) * fx
-    return top * (1.0 - fy) + bottom * fy
-
-
-def _tile_fraction(local: np.ndarray, mode: str, flip: bool) -> tuple[np.ndarray, np.ndarray]:
-    """Position inside the tile (0..1) and whether the point is drawn at all."""
-    if mode == "None":
-        return local, (local >= -_EPS) & (local <= 1.0 + _EPS)
-    index = np.floor(local)
-    frac = local - index
-    if flip:
-        frac = np.where(np.mod(index, 2.0) == 1.0, 1.0 - frac, frac)
-    return frac, np.ones(local.shape, dtype=bool)
-
-
 # TileMode codes of ``image_layout`` (and of the compiled kernel, ``kernels.shade_rows``).
 TILE_CODES = {"None": 0, "Tile": 1, "FlipX": 2, "FlipY": 3, "FlipXY": 4}
 # Layout vector of ``image_layout``: the inverse brush map (a, b, c; d, e, f), the viewport
@@ -291,26 +217,10 @@ def image_layout(brush: ImageBrush, bounds: Bounds) -> np.ndarray | None:
     if brush.image is None or brush.image.size == 0:
         return None
     h, w = brush.image.shape[:2]
-    vbx, vby, vbw, vbh = (float(v) for v in brush.viewbox)
-    if brush.viewbox_units != "Absolute":
-        vbx, vbw, vby, vbh = vbx * w, vbw * w, vby * h, vbh * h
-    vpx, vpy, vpw, vph = (float(v) for v in brush.viewport)
-    if brush.viewport_units != "Absolute":
-        lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
-        size = hi - lo
-        vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
-        vpy, vph = lo[1] + vpy * size[1], vph * size[1]
-    if min(vbw, vbh, vpw, vph) <= 0.0:
+    tile = place_tile(brush, bounds, (0.0, 0.0, float(w), float(h)))
+    if tile is None:
         return None  # an empty viewbox or viewport draws nothing
-    sx, sy = vpw / vbw, vph / vbh
-    if brush.stretch == "Uniform":
-        sx = sy = min(sx, sy)
-    elif brush.stretch == "UniformToFill":
-        sx = sy = max(sx, sy)
-    elif brush.stretch == "None":
-        sx = sy = 1.0
-    ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
-    oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
+    (vpx, vpy, vpw, vph), (vbx, vby), (sx, sy), (ox, oy) = tile
     matrix = brush_to_texture_matrix(brush, bounds, False)
     det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
     if not np.isfinite(det) or abs(det) < 1e-300:
@@ -336,11 +246,18 @@ def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarr
     qx = uv[:, 0] * a + uv[:, 1] * b + c
     qy = uv[:, 0] * d + uv[:, 1] * e + f
     mode = brush.tile_mode
-    fx, in_x = _tile_fraction((qx - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
-    fy, in_y = _tile_fraction((qy - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+    fx, in_x = tile_fraction((qx - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+    fy, in_y = tile_fraction((qy - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     px = vbx + (vpx + fx * vpw - ox) / sx
     py = vby + (vpy + fy * vph - oy) / sy
-    keep = in_x & in_y & (px >= -_EPS) & (px <= w + _EPS) & (py >= -_EPS) & (py <= h + _EPS)
+    keep = (
+        in_x
+        & in_y
+        & (px >= -EDGE_EPS)
+        & (px <= w + EDGE_EPS)
+        & (py >= -EDGE_EPS)
+        & (py <= h + EDGE_EPS)
+    )
     if keep.any():
         out[keep] = bilinear(premultiplied_image(brush.image), px[keep], py[keep])
     return out

@@ -39,6 +39,8 @@ import numpy as np
 from xaml3d.render import accel
 
 DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = empty
+# kernels.blend_rows with no index: fragment f takes row f of its colours
+_EVERY_ROW = np.zeros(0, dtype=np.int64)
 
 
 class Framebuffer:
@@ -84,7 +86,9 @@ class Framebuffer:
         if kernels is not None:  # the same result, one fragment after the other
             src = np.ascontiguousarray(src)
             pix = np.ascontiguousarray(pix, dtype=np.int64)
-            self.fragments_drawn += kernels.blend_over(self.zbuf, self.color, pix, z, src)
+            self.fragments_drawn += kernels.blend_rows(
+                self.zbuf, self.color, pix, z, _EVERY_ROW, src, False
+            )
             return
         if bool((src[:, 3] >= 1.0).all()):
             self._over_opaque(pix, z, src)
@@ -162,7 +166,9 @@ class Framebuffer:
             z = np.asarray(d, dtype=np.float64) - DEPTH_OFFSET
             s = np.ascontiguousarray(src, dtype=np.float32)
             pix = np.ascontiguousarray(pix, dtype=np.int64)
-            self.fragments_drawn += kernels.blend_add(self.zbuf, self.color, pix, z, s)
+            self.fragments_drawn += kernels.blend_rows(
+                self.zbuf, self.color, pix, z, _EVERY_ROW, s, True
+            )
             return
         ok = np.asarray(d, dtype=np.float64) - DEPTH_OFFSET <= self.zbuf[pix]
         p = pix[ok]

@@ -137,51 +137,6 @@ def raster_chunk(
 
 
 @numba.njit(cache=True, nogil=True)
-def blend_over(zbuf, color, pix, z, src):
-    """Diffuse blending one fragment after the other: depth test <=, src over dst, depth
-    written (``Framebuffer.over``). Returns how many fragments passed."""
-    n = 0
-    one = np.float32(1.0)
-    for f in range(pix.shape[0]):
-        p = pix[f]
-        if z[f] <= zbuf[p]:
-            a = src[f, 3]
-            if a >= one:
-                for c in range(4):
-                    color[p, c] = src[f, c]
-            else:
-                k = one - a
-                for c in range(4):
-                    color[p, c] = src[f, c] + k * color[p, c]
-            zbuf[p] = z[f]
-            n += 1
-    return n
-
-
-@numba.njit(cache=True, nogil=True)
-def blend_add(zbuf, color, pix, z, src):
-    """Specular / emissive blending (``Framebuffer.add``): depth test <=, dst + src in draw
-    order, no depth write, then every touched sample clamped at 1."""
-    n = 0
-    one = np.float32(1.0)
-    passed = np.zeros(pix.shape[0], dtype=np.bool_)
-    for f in range(pix.shape[0]):
-        p = pix[f]
-        if z[f] <= zbuf[p]:
-            passed[f] = True
-            for c in range(4):
-                color[p, c] += src[f, c]
-            n += 1
-    for f in range(pix.shape[0]):
-        if passed[f]:
-            p = pix[f]
-            for c in range(4):
-                if color[p, c] > one:
-                    color[p, c] = one
-    return n
-
-
-@numba.njit(cache=True, nogil=True)
 def interpolate(planes, indices, tri, w):
     """Vertex attributes at the fragments: out[f, c] = w0 a[i0] + w1 a[i1] + w2 a[i2] with
     a = planes[c] and (i0, i1, i2) the vertices of triangle tri[f] (``draw.interpolate``)."""
@@ -201,26 +156,32 @@ def interpolate(planes, indices, tri, w):
     return out
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _corners(px, py, w, h):
+    """The four texels of a bilinear sample at pixel coordinates (px, py) of a (h, w) image,
+    clamped to its edge, and the weights (fx, fy) towards the second of each pair."""
+    x = px - 0.5
+    y = py - 0.5
+    x0 = np.floor(x)
+    y0 = np.floor(y)
+    xi0 = int(min(max(x0, 0.0), w - 1.0))
+    xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
+    yi0 = int(min(max(y0, 0.0), h - 1.0))
+    yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+    return xi0, xi1, yi0, yi1, x - x0, y - y0
+
+
 @numba.njit(cache=True, nogil=True)
 def bilinear(img, px, py):
     """Bilinear samples of a premultiplied (H, W, C) image at pixel coordinates (texel centres at
-    half-integers), neighbours beyond the edge clamped to it (``brushes.bilinear``)."""
+    half-integers), neighbours beyond the edge clamped to it (``tiles.bilinear``)."""
     h = img.shape[0]
     w = img.shape[1]
     k = img.shape[2]
     n = px.shape[0]
     out = np.empty((n, k))
     for f in range(n):
-        x = px[f] - 0.5
-        y = py[f] - 0.5
-        x0 = np.floor(x)
-        y0 = np.floor(y)
-        fx = x - x0
-        fy = y - y0
-        xi0 = int(min(max(x0, 0.0), w - 1.0))
-        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
-        yi0 = int(min(max(y0, 0.0), h - 1.0))
-        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        xi0, xi1, yi0, yi1, fx, fy = _corners(px[f], py[f], w, h)
         for c in range(k):
             top = img[yi0, xi0, c] * (1.0 - fx) + img[yi0, xi1, c] * fx
             bottom = img[yi1, xi0, c] * (1.0 - fx) + img[yi1, xi1, c] * fx
@@ -237,14 +198,14 @@ COLOR_PER_TRIANGLE = 1
 BRUSH_UNIFORM = 0
 BRUSH_IMAGE = 1
 BRUSH_GIVEN = 2
-TILE_EPS = 1e-9  # brushes._EPS
+TILE_EPS = 1e-9  # tiles.EDGE_EPS
 
 
 # error_model="numpy": a float division by zero gives inf/nan as in the numpy path instead of
 # raising, and the loops carry no zero-divisor checks.
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
 def _tile(local, code, flip):
-    """``brushes._tile_fraction`` for one coordinate: (position in the tile, drawn)."""
+    """``tiles.tile_fraction`` for one coordinate: (position in the tile, drawn)."""
     if code == 0:
         return local, (local >= -TILE_EPS) and (local <= 1.0 + TILE_EPS)
     index = np.floor(local)
@@ -280,16 +241,7 @@ def _image_sample(u, v, lay, img):
         in_x and in_y and px >= -TILE_EPS and px <= w + TILE_EPS
         and py >= -TILE_EPS and py <= h + TILE_EPS
     ):  # fmt: skip
-        x = px - 0.5
-        y = py - 0.5
-        x0 = np.floor(x)
-        y0 = np.floor(y)
-        fx = x - x0
-        fy = y - y0
-        xi0 = int(min(max(x0, 0.0), w - 1.0))
-        xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
-        yi0 = int(min(max(y0, 0.0), h - 1.0))
-        yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+        xi0, xi1, yi0, yi1, fx, fy = _corners(px, py, w, h)
         gx = 1.0 - fx
         gy = 1.0 - fy
         s0 = (img[yi0, xi0, 0] * gx + img[yi0, xi1, 0] * fx) * gy + (
@@ -369,7 +321,9 @@ def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
 @numba.njit(cache=True, nogil=True)
 def blend_rows(zbuf, color, pix, z, inverse, rows, additive):
     """Blend fragment f with colour ``rows[inverse[f]]`` (``inverse`` empty: ``rows[f]``),
-    one fragment after the other: ``blend_over``, or ``blend_add`` when ``additive``.
+    one fragment after the other. Diffuse (``Framebuffer.over``): depth test <=, src over dst,
+    depth written. ``additive``, specular / emissive (``Framebuffer.add``): depth test <=,
+    dst + src in draw order, no depth write, then every touched sample clamped at 1.
     Returns how many fragments passed the depth test."""
     nf = pix.shape[0]
     spread = inverse.shape[0] > 0

@@ -96,6 +96,20 @@ def node_of(r, el, cls, values: dict, *, place: bool = True, **parts):
     return cls(**{**{f: v for f, (_, v) in values.items()}, **parts}, slots=slots)
 
 
+def group_of(r, p, read, cls, compose):
+    """A transform group (Transform3DGroup, TransformGroup): its children read by ``read``
+    (each a (matrix, node) pair; unreadable ones left out), the matrix ``compose`` makes of
+    theirs, and its typed node ``cls`` when a child animates (else None)."""
+    parts = [
+        r.build_node(k, lambda e: read(r, e), None) or (None, None) for k in p.items("Children")
+    ]
+    kept = [(m, n) for m, n in parts if m is not None]
+    node = None
+    if any(n is not None for _, n in kept):
+        node = cls(tuple(m if n is None else n for m, n in kept))
+    return compose(*[m for m, _ in kept]), node
+
+
 # --------------------------------------------------------------------------- resolution
 
 

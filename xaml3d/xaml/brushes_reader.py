@@ -34,7 +34,7 @@ from xaml3d.scene.types import (
     placeholder_image,
 )
 from xaml3d.xaml import values as V
-from xaml3d.xaml.animation_tracks import built, node_of
+from xaml3d.xaml.animation_tracks import built, group_of, node_of
 from xaml3d.xaml.context import as_written
 from xaml3d.xaml.resources import reduce_uri
 
@@ -49,6 +49,20 @@ _ALIGN_Y = ("Top", "Center", "Bottom")
 
 def _enum(allowed):
     return lambda s: V.parse_enum(s, allowed)
+
+
+def tile_properties(r, p) -> dict:
+    """TileBrush's properties (ImageBrush, DrawingBrush, VisualBrush), WPF's defaults."""
+    return dict(
+        viewport=p.value("Viewport", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
+        viewport_units=p.value("ViewportUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
+        viewbox=p.value("Viewbox", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
+        viewbox_units=p.value("ViewboxUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
+        stretch=p.value("Stretch", _enum(_STRETCH), "Fill"),
+        tile_mode=p.value("TileMode", _enum(_TILE), "None"),
+        alignment_x=p.value("AlignmentX", _enum(_ALIGN_X), "Center"),
+        alignment_y=p.value("AlignmentY", _enum(_ALIGN_Y), "Center"),
+    )
 
 
 def brush_from_string(s: str) -> SolidColorBrush:
@@ -195,14 +209,7 @@ def _image_brush(r, p, nodes: list) -> ImageBrush:
         path=path,
         image=image,
         is_placeholder=is_placeholder,
-        viewport=p.value("Viewport", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
-        viewport_units=p.value("ViewportUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
-        viewbox=p.value("Viewbox", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
-        viewbox_units=p.value("ViewboxUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
-        stretch=p.value("Stretch", _enum(_STRETCH), "Fill"),
-        tile_mode=p.value("TileMode", _enum(_TILE), "None"),
-        alignment_x=p.value("AlignmentX", _enum(_ALIGN_X), "Center"),
-        alignment_y=p.value("AlignmentY", _enum(_ALIGN_Y), "Center"),
+        **tile_properties(r, p),
         **_common(r, p, nodes),
     )
 
@@ -392,14 +399,6 @@ def transform2d_parts(r, el) -> tuple[np.ndarray | None, object]:
     if t == "MatrixTransform":
         return frozen_array(p.value("Matrix", _matrix2d, np.eye(3))), None
     if t == "TransformGroup":
-        parts = [
-            r.build_node(k, lambda e: transform2d_parts(r, e), None) or (None, None)
-            for k in p.items("Children")
-        ]
-        kept = [(m, n) for m, n in parts if m is not None]
-        group = None
-        if any(n is not None for _, n in kept):
-            group = K.TransformGroup2D(tuple(m if n is None else n for m, n in kept))
-        return T.compose_2d(*[m for m, _ in kept]), group
+        return group_of(r, p, transform2d_parts, K.TransformGroup2D, T.compose_2d)
     r.ctx.diag("BRU006", f"{t} is not a 2D Transform: ignored", el)
     return None, None

@@ -14,6 +14,7 @@ from __future__ import annotations
 from xaml3d.scene.drawing import DrawingBrush, DrawingGroup, GeometryDrawing, ImageDrawing, Pen
 from xaml3d.scene.types import placeholder_image
 from xaml3d.xaml import values as V
+from xaml3d.xaml.brushes_reader import tile_properties
 from xaml3d.xaml.geometry_reader import geometry_property
 
 _CAPS = ("Flat", "Square", "Round", "Triangle")
@@ -22,9 +23,6 @@ _DASH_STYLES = {  # System.Windows.Media.DashStyles
     "Solid": (), "Dash": (2.0, 2.0), "Dot": (0.0, 2.0), "DashDot": (2.0, 2.0, 0.0, 2.0),
     "DashDotDot": (2.0, 2.0, 0.0, 2.0, 0.0, 2.0),
 }  # fmt: skip
-_STRETCH = ("None", "Fill", "Uniform", "UniformToFill")
-_TILE = ("None", "Tile", "FlipX", "FlipY", "FlipXY")
-_MAPPING = ("RelativeToBoundingBox", "Absolute")
 
 
 def _enum(allowed):
@@ -115,20 +113,6 @@ def drawing(r, el):
         return p.obj("Drawing", lambda e: drawing(r, e), None)
     r.ctx.diag("DRW002", f"{t} is not drawn by xaml3d: skipped", el)
     return None
-
-
-def tile_properties(r, p) -> dict:
-    """TileBrush's properties (shared with ImageBrush), WPF's defaults."""
-    return dict(
-        viewport=p.value("Viewport", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
-        viewport_units=p.value("ViewportUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
-        viewbox=p.value("Viewbox", V.parse_rect, (0.0, 0.0, 1.0, 1.0)),
-        viewbox_units=p.value("ViewboxUnits", _enum(_MAPPING), "RelativeToBoundingBox"),
-        stretch=p.value("Stretch", _enum(_STRETCH), "Fill"),
-        tile_mode=p.value("TileMode", _enum(_TILE), "None"),
-        alignment_x=p.value("AlignmentX", _enum(("Left", "Center", "Right")), "Center"),
-        alignment_y=p.value("AlignmentY", _enum(("Top", "Center", "Bottom")), "Center"),
-    )
 
 
 def drawing_brush(r, p, common: dict) -> DrawingBrush:

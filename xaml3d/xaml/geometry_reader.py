@@ -13,8 +13,6 @@ Geometry1, Geometry2) and every geometry's Transform.
 
 from __future__ import annotations
 
-import numpy as np
-
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.drawing import (
     CombinedGeometry,
@@ -26,9 +24,8 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import transform2d, transform2d_text
-from xaml3d.xaml.path_data import _tokens
+from xaml3d.xaml.path_syntax import parse_commands
 
-_ARGS = {"M": 2, "L": 2, "H": 1, "V": 1, "C": 6, "S": 4, "Q": 4, "T": 2, "A": 7, "Z": 0}
 _FILL = ("EvenOdd", "Nonzero")
 _COMBINE = ("Union", "Intersect", "Xor", "Exclude")
 
@@ -39,89 +36,7 @@ def _fail(msg: str) -> ValueSyntaxError:
 
 def parse_path_data(s: str) -> tuple[tuple, str]:
     """Path mini-language -> (absolute commands, fill rule). See ``scene.drawing.PathCommand``."""
-    toks = _tokens(s)
-    fill = "EvenOdd"
-    if toks and toks[0] in ("F", "f"):
-        if len(toks) < 2 or toks[1] not in (0.0, 1.0):
-            raise _fail("the fill rule must be F0 or F1")
-        fill = "Nonzero" if toks[1] == 1.0 else "EvenOdd"
-        toks = toks[2:]
-    out: list[tuple] = []
-    cur = np.zeros(2)
-    start = np.zeros(2)
-    last_ctrl = None
-    last = None
-    cmd = None
-    i = 0
-    while i < len(toks):
-        if isinstance(toks[i], str):
-            cmd = toks[i]
-            i += 1
-            if cmd in "Ff":
-                raise _fail("the fill rule (F0/F1) comes first")
-            if not out and cmd not in "Mm":
-                raise _fail(f"a path starts with a move (M), not {cmd}")
-            if cmd in "Zz":
-                out.append(("Z",))
-                cur = start.copy()
-                last, last_ctrl = "Z", None
-                continue
-        elif cmd is None:
-            raise _fail("a path starts with a command (M)")
-        up = cmd.upper()
-        n = _ARGS[up]
-        args = toks[i : i + n]
-        if len(args) < n or any(isinstance(a, str) for a in args):
-            raise _fail(f"{cmd} needs {n} numbers")
-        i += n
-        base = cur if cmd.islower() else np.zeros(2)
-        if up == "M":
-            cur = start = np.array(args, dtype=float) + base
-            out.append(("M", *cur))
-            cmd = "l" if cmd.islower() else "L"  # further pairs are lines
-            last, last_ctrl = "M", None
-            continue
-        if not out:
-            out.append(("M", *cur))
-        if up == "H":
-            cur = np.array([args[0] + base[0], cur[1]])
-            out.append(("L", *cur))
-            ctrl = None
-        elif up == "V":
-            cur = np.array([cur[0], args[0] + base[1]])
-            out.append(("L", *cur))
-            ctrl = None
-        elif up == "L":
-            cur = np.array(args, dtype=float) + base
-            out.append(("L", *cur))
-            ctrl = None
-        elif up == "A":
-            rx, ry, rot, large, sweep = args[:5]
-            cur = np.array(args[5:7], dtype=float) + base
-            out.append(("A", abs(rx), abs(ry), rot, bool(large), bool(sweep), *cur))
-            ctrl = None
-        else:
-            pts = [np.array(args[k : k + 2], dtype=float) + base for k in range(0, n, 2)]
-            if up == "C":
-                c1, c2, end = pts
-            elif up == "S":
-                c1 = 2 * cur - last_ctrl if last in ("C", "S") else cur
-                c2, end = pts
-            elif up == "Q":
-                c1, end = pts
-            else:  # T
-                c1 = 2 * cur - last_ctrl if last in ("Q", "T") else cur
-                (end,) = pts
-            if up in ("C", "S"):
-                out.append(("C", *c1, *c2, *end))
-                ctrl = c2
-            else:
-                out.append(("Q", *c1, *end))
-                ctrl = c1
-            cur = end
-        last, last_ctrl = up, ctrl
-    return tuple(tuple(float(x) if not isinstance(x, (str, bool)) else x for x in c)
-                 for c in out), fill  # fmt: skip
+    return parse_commands(s, _fail)
 
 
 def path_from_string(s: str) -> PathGeometry:

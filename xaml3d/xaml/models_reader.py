@@ -31,7 +31,7 @@ from xaml3d.scene.types import (
     frozen_array,
 )
 from xaml3d.xaml import values as V
-from xaml3d.xaml.animation_tracks import built, node_of
+from xaml3d.xaml.animation_tracks import built, group_of, node_of
 from xaml3d.xaml.context import element_name
 
 WHITE = (1.0, 1.0, 1.0, 1.0)
@@ -81,15 +81,7 @@ def transform_parts(r, el) -> tuple[np.ndarray | None, object]:
         if t == "MatrixTransform3D":
             return T.from_wpf(p.value("Matrix", V.parse_matrix3d, np.eye(4))), None
         if t == "Transform3DGroup":
-            parts = [
-                r.build_node(k, lambda e: transform_parts(r, e), None) or (None, None)
-                for k in p.items("Children")
-            ]
-            kept = [(m, n) for m, n in parts if m is not None]
-            node = None
-            if any(n is not None for _, n in kept):
-                node = K.TransformGroup(tuple(m if n is None else n for m, n in kept))
-            return T.compose(*[m for m, _ in kept]), node
+            return group_of(r, p, transform_parts, K.TransformGroup, T.compose)
     except GeometryError as exc:
         # WPF loads a degenerate transform (it draws nothing or garbage): a warning, not the
         # GEO error the same problem is when a user asks for the transformation directly.

@@ -2,7 +2,7 @@
 
 SolidColorBrush, LinearGradientBrush and RadialGradientBrush (stops interpolated in straight
 alpha as WPF does; SpreadMethod Pad / Reflect / Repeat; MappingMode and the brush transforms
-through the same matrices as the 3D brushes, ``render.brushes.brush_to_texture_matrix``), and the
+through the same matrices as the 3D brushes, ``render.tiles.brush_to_texture_matrix``), and the
 tile brushes ImageBrush and DrawingBrush (TileBrush layout: the Viewbox of the content stretched
 into the Viewport by Stretch and the alignments; the tile recorded as a skia Picture and
 repeated by a picture shader: TileMode None / Tile / FlipX / FlipY / FlipXY). Relative brush
@@ -11,13 +11,11 @@ units refer to the box of what is filled.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import skia
 
-from xaml3d.render.brushes import brush_to_texture_matrix
 from xaml3d.render.layer2d.paths import matrix
+from xaml3d.render.tiles import brush_to_texture_matrix, place_tile
 from xaml3d.scene.drawing import (
     DrawingBrush,
 )
@@ -34,7 +32,6 @@ _SPREAD = {
     "Reflect": skia.TileMode.kMirror,
     "Repeat": skia.TileMode.kRepeat,
 }
-_ALIGN = {"Left": 0.0, "Top": 0.0, "Center": 0.5, "Right": 1.0, "Bottom": 1.0}
 
 
 def _color4f(rgba, opacity: float = 1.0) -> skia.Color4f:
@@ -120,33 +117,19 @@ def paint_of(brush, box: skia.Rect, opacity: float = 1.0) -> skia.Paint | None:
 
 
 def tile_layout(brush, bounds, content: tuple[float, float, float, float]):
-    """TileBrush layout (wpf3d.md section 7, as ``render.brushes`` does for images): the
+    """TileBrush layout (``render.tiles``, as ``render.brushes`` places images): the
     viewport (x, y, w, h) in brush space and the 3x3 matrix taking content coordinates into
     brush space (Viewbox stretched into the Viewport by Stretch and the alignments); None when
-    the viewbox or viewport is empty."""
-    cx, cy, cw, ch = content
-    vbx, vby, vbw, vbh = (float(v) for v in brush.viewbox)
-    if brush.viewbox_units != "Absolute":
-        vbx, vbw, vby, vbh = cx + vbx * cw, vbw * cw, cy + vby * ch, vbh * ch
-    vpx, vpy, vpw, vph = (float(v) for v in brush.viewport)
-    if brush.viewport_units != "Absolute":
-        lo, hi = bounds
-        size = hi - lo
-        vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
-        vpy, vph = lo[1] + vpy * size[1], vph * size[1]
-    if min(vbw, vbh, vpw, vph) <= 0.0 or not all(map(math.isfinite, (vbw, vbh, vpw, vph))):
-        return None
-    sx, sy = vpw / vbw, vph / vbh
-    if brush.stretch == "Uniform":
-        sx = sy = min(sx, sy)
-    elif brush.stretch == "UniformToFill":
-        sx = sy = max(sx, sy)
-    elif brush.stretch == "None":
-        sx = sy = 1.0
-    ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
-    oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
-    m = np.array([[sx, 0.0, ox - vbx * sx], [0.0, sy, oy - vby * sy], [0.0, 0.0, 1.0]])
-    return (vpx, vpy, vpw, vph), m
+    the viewbox or viewport is empty or not finite."""
+    tile = place_tile(brush, bounds, content)
+    return None if tile is None else (tile.viewport, tile.matrix())
+
+
+def brush_tile(brush, bounds):
+    """``tile_layout`` of a tile brush over its own content (``content_bounds``); None when
+    there is no content or the tile is empty."""
+    content = content_bounds(brush)
+    return None if content is None else tile_layout(brush, bounds, content)
 
 
 def content_bounds(brush) -> tuple[float, float, float, float] | None:
@@ -180,10 +163,7 @@ def draw_content(canvas: skia.Canvas, brush) -> None:
 
 
 def _tile_shader(brush, bounds) -> skia.Shader | None:
-    content = content_bounds(brush)
-    if content is None:
-        return None
-    found = tile_layout(brush, bounds, content)
+    found = brush_tile(brush, bounds)
     if found is None:
         return None
     (vpx, vpy, vpw, vph), m = found

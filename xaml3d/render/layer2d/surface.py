@@ -18,9 +18,9 @@ import math
 import numpy as np
 import skia
 
-from xaml3d.render.brushes import _tile_fraction, bilinear, brush_to_texture_matrix, inverse_map
 from xaml3d.render.layer2d.paths import matrix
-from xaml3d.render.layer2d.shaders import content_bounds, draw_content, tile_layout
+from xaml3d.render.layer2d.shaders import brush_tile, draw_content
+from xaml3d.render.tiles import bilinear, brush_to_texture_matrix, inverse_map, tile_fraction
 from xaml3d.scene.drawing import DrawingBrush
 
 MAX_TILE = 4096  # texels per side of a rasterized tile
@@ -63,10 +63,7 @@ def _tile(brush: DrawingBrush, bounds, density: float | None):
 
 
 def _make_tile(brush: DrawingBrush, bounds, density: float | None):
-    content = content_bounds(brush)
-    if content is None:
-        return None
-    found = tile_layout(brush, bounds, content)
+    found = brush_tile(brush, bounds)
     if found is None:
         return None
     viewport, m = found
@@ -96,8 +93,8 @@ def sample_drawing_brush(brush: DrawingBrush, uv: np.ndarray, bounds, density=No
     if q is None:
         return out
     mode = brush.tile_mode
-    fx, in_x = _tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
-    fy, in_y = _tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+    fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+    fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     keep = in_x & in_y
     if keep.any():
         h, w = tile.shape[:2]
