@@ -316,3 +316,10 @@ def test_cli_export_refuses_bad_input_without_writing(tmp_path):
     p = run("export", "a.xaml", "-o", "a.xaml", "--format", "glb", cwd=tmp_path)
     assert p.returncode == 1 and b"IO002" in p.stderr
     assert (tmp_path / "a.xaml").read_text() == square_scene()
+
+
+def test_the_page_keeps_the_ambient_light_so_exp007_is_not_said(tmp_path):
+    # the .glb has no ambient light (EXP007); the .html page lights its extras.ambientLight
+    scene = xaml3d.load(str(ROOT / "samples" / "cube.xaml"))
+    assert [d.code for d in xaml3d.export(scene, tmp_path / "c.glb")] == ["EXP007"]
+    assert "EXP007" not in [d.code for d in xaml3d.export(scene, tmp_path / "c.html")]

@@ -66,7 +66,10 @@ def export_bytes(
         if fmt == "gltf":
             return {"": doc.gltf_text()}, diagnostics
 
-        return {"": page(start, vp, doc.glb(), exporter)}, diagnostics
+        # the page lights the glTF's extras.ambientLight with a three.js AmbientLight: nothing of
+        # WPF's ambient light is lost there, so EXP007 does not apply
+        kept = [d for d in diagnostics if d.code != "EXP007"]
+        return {"": page(start, vp, doc.glb(), exporter)}, kept
     if fmt == "obj":
         return obj_files(start, vp, diagnostics, animated=clip is not None, stem=stem), diagnostics
     if fmt == "stl":
