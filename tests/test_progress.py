@@ -97,3 +97,21 @@ def test_lens_samples_report_progress_in_a_log(monkeypatch, capsys):
     lines = capsys.readouterr().err.splitlines()
     assert lines[0] == "s.xaml: lens samples: 11/48 renders, 5 s elapsed, about 17 s left"
     assert len(lines) == 4  # 11, 21, 31, 41 done; the last render says nothing
+
+
+def test_export_reports_sampling_progress_in_a_log(tmp_path, monkeypatch):
+    from xaml3d import cli_export
+
+    class Often(ProgressLines):  # a line after every sample instead of every 5 s
+        def __init__(self, *args, **kwargs):
+            super().__init__(*args, every=0.0, **kwargs)
+
+    monkeypatch.setattr(cli_export, "ProgressLines", Often)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "spin.xaml").write_bytes(SPIN.read_bytes())
+    r = CliRunner().invoke(cli_export.export_command, ["spin.xaml", "-o", "spin.glb"])
+    assert r.exit_code == 0, r.output
+    lines = [s for s in r.stderr.splitlines() if "sampling the animation:" in s]
+    assert lines and lines[-1].startswith("spin.xaml: sampling the animation: all ")
+    r = CliRunner().invoke(cli_export.export_command, ["spin.xaml", "-o", "q.glb", "-q"])
+    assert r.exit_code == 0 and "sampling" not in r.stderr  # -q: errors only

@@ -5,7 +5,8 @@ The format comes from the output's suffix (or ``--format`` for a batch). The sce
 are those of ``validate`` and ``render`` (xaml3d.findings): a scene with errors is not exported
 (exit 1) unless ``--lenient``. What the format cannot carry is reported as EXPxxx diagnostics.
 Files are written atomically; an output that would replace a file the scene reads is refused
-(IO002). A progress bar is shown on a terminal for a batch and while an animation is sampled.
+(IO002). A progress bar is shown on a terminal for a batch and while an animation is sampled
+(elsewhere a line every few seconds and a closing line).
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from pathlib import Path
 import click
 
 from xaml3d.cli_common import (
+    ProgressLines,
     echo_diagnostics,
     exit_on_input_error,
     io_error,
@@ -59,13 +61,19 @@ def _plan(scenes, output: str, fmt: str | None) -> list[tuple[str, Path]]:
 
 
 class _Progress:
-    """A click progress bar on stderr for the animation's samples (terminal only)."""
+    """Progress of the animation's samples on stderr: a bar on a terminal, else a line every few
+    seconds (``ProgressLines``) and a closing line."""
 
     def __init__(self, label: str, enabled: bool) -> None:
-        self.label, self.enabled, self.bar = label, enabled, None
+        self.label, self.enabled, self.bar, self.lines = label, enabled, None, None
 
     def __call__(self, done: int, total: int) -> None:
         if not self.enabled or total < 30:
+            return
+        if not stderr_is_terminal():
+            if self.lines is None:
+                self.lines = ProgressLines(self.label, total, "samples")
+            self.lines(done)
             return
         if self.bar is None:
             self.bar = click.progressbar(length=total, label=self.label, file=sys.stderr)
@@ -75,6 +83,8 @@ class _Progress:
     def close(self) -> None:
         if self.bar is not None:
             self.bar.__exit__(None, None, None)
+        if self.lines is not None:
+            self.lines.finish()
 
 
 def _export_one(source: str, target: Path, opts: dict) -> bool:
@@ -173,7 +183,7 @@ def export_command(scenes, output, fmt, viewport, storyboard, lenient, quiet, ve
     single = len(plan) == 1
     opts = dict(resources=resources, window_size=window_size, discover_app=not no_app,
                 storyboard=storyboard, lenient=lenient, quiet=quiet, verbose=verbose,
-                viewport=viewport, fmt=fmt, progress=single and stderr_is_terminal())  # fmt: skip
+                viewport=viewport, fmt=fmt, progress=single and not quiet)  # fmt: skip
     ok = True
     steps = plan
     bar = None
