@@ -322,3 +322,11 @@ def test_a_scene_with_errors_is_not_animated_unless_lenient(tmp_path):
     assert p.returncode == 0 and b"warning VAL004" in p.stderr
     assert b"[an error, rendered anyway: --lenient]" in p.stderr
     assert (tmp_path / "a.gif").exists()
+
+
+def test_animating_a_still_scene_warns_without_verbose(tmp_path):
+    still = scene().split("  <Viewport3D.Triggers>")[0] + "</Viewport3D>"
+    (tmp_path / "s.xaml").write_text(still)
+    p = xaml3d("animate", "s.xaml", "-o", "s.gif", "-W", "16", "-H", "16", cwd=tmp_path)
+    assert p.returncode == 0 and (tmp_path / "s.gif").exists()
+    assert b"s.xaml: warning ANIM015 nothing animates at load: 1 s of one still picture" in p.stderr

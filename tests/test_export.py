@@ -323,3 +323,12 @@ def test_the_page_keeps_the_ambient_light_so_exp007_is_not_said(tmp_path):
     scene = xaml3d.load(str(ROOT / "samples" / "cube.xaml"))
     assert [d.code for d in xaml3d.export(scene, tmp_path / "c.glb")] == ["EXP007"]
     assert "EXP007" not in [d.code for d in xaml3d.export(scene, tmp_path / "c.html")]
+
+
+@pytest.mark.parametrize("suffix, lost", [(".obj", b"OBJ cannot carry lights, the camera"),
+                                           (".stl", b"STL holds the triangles alone")])  # fmt: skip
+def test_cli_says_what_obj_and_stl_lose_without_verbose(tmp_path, suffix, lost):
+    (tmp_path / "a.xaml").write_text(square_scene())
+    p = run("export", "a.xaml", "-o", "a" + suffix, cwd=tmp_path)
+    assert p.returncode == 0 and (tmp_path / ("a" + suffix)).exists()
+    assert b"warning EXP016 " + lost in p.stderr

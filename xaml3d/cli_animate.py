@@ -160,9 +160,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         start = start or 0.0
         if end is None:
             if duration is None:
-                duration, note = _default_length(sc, storyboard)
+                duration, note, code = _default_length(sc, storyboard)
                 if note:
-                    diags.append(_note(file, note))
+                    diags.append(_note(file, note, code))
             end = start + duration
         if end <= start:
             raise click.BadParameter(f"--end ({end:g} s) must come after --start ({start:g} s)")
@@ -348,19 +348,22 @@ def _keep(result, diags: list, file: str):
     return result.rgba
 
 
-def _default_length(sc, storyboard) -> tuple[float, str | None]:
-    """One full cycle of what runs (a Forever repeat: one iteration), with a note when the
-    drawn length is not the whole animation."""
+def _default_length(sc, storyboard) -> tuple[float, str | None, str]:
+    """One full cycle of what runs (a Forever repeat: one iteration), with a note and its code
+    when the drawn length is not the whole animation: a warning (ANIM015) when there is no
+    cycle at all, since the frames then show nothing moving or an arbitrary stretch."""
     tl = sc.timeline
     if tl is None or not tl.running(storyboard):
-        return DEFAULT_LENGTH, "nothing animates at load: a still of 1 s is written"
+        still = f"nothing animates at load: {DEFAULT_LENGTH:g} s of one still picture is written"
+        return DEFAULT_LENGTH, still, "ANIM015"
     whole, once = tl.cycle(storyboard), tl.one_cycle(storyboard)
     if math.isinf(once) or once <= 0:
         why = "a Duration is Forever" if math.isinf(once) else "the animations take no time"
-        return DEFAULT_LENGTH, f"{why}: {DEFAULT_LENGTH:g} s drawn (use --duration)"
+        return DEFAULT_LENGTH, f"{why}: {DEFAULT_LENGTH:g} s drawn (use --duration)", "ANIM015"
     if math.isinf(whole):
-        return once, f"the animation repeats for ever: one iteration ({once:g} s) drawn"
-    return whole, None
+        once_note = f"the animation repeats for ever: one iteration ({once:g} s) drawn"
+        return once, once_note, "ANIM011"
+    return whole, None, "ANIM011"
 
 
 def _note(file: str, message: str, code: str = "ANIM011"):

@@ -45,6 +45,11 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         "a LayoutTransform): its value at load is drawn in every frame",
     ),  # fmt: skip
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
+    "ANIM015": (
+        WARNING,
+        "animate: there is no cycle to draw (nothing animates at load, a Duration is Forever, "
+        "or the animations take no time): a fixed length is drawn",
+    ),
     "ANIM012": (
         WARNING,
         "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",

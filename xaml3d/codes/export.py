@@ -50,7 +50,7 @@ EXPORT_CODES: dict[str, tuple[str, str]] = {
     "EXP014": (INFO, "the document has several viewports: one is exported (--viewport)"),
     "EXP015": (WARNING, "the camera cannot be exported (WPF draws nothing with it)"),
     "EXP016": (
-        INFO,
+        WARNING,
         "the format cannot carry part of the scene (OBJ: lights, camera, "
         "animation, specular; STL: everything but the triangles)",
     ),
