@@ -29,7 +29,7 @@ from PIL import Image
 
 from xaml3d.errors import RenderError
 from xaml3d.output.atomic import write_atomically
-from xaml3d.output.gif_matte import MatteWatch, flatten, frame_marks, needs_matte
+from xaml3d.output.gif_matte import MatteWatch, _compiled, flatten, frame_marks, needs_matte
 from xaml3d.output.images import save_image
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
@@ -50,40 +50,53 @@ def frame_names(count: int) -> list[str]:
     return [f"frame_{i:0{digits}d}.png" for i in range(count)]
 
 
-def _gif_frame(rgba: np.ndarray, reserve: bool = False):
+def _gif_frame(rgba: np.ndarray, reserve: bool = False, clear: bool | None = None):
     """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
     has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
     so translucent surfaces stay visible; only empty pixels become transparent. A frame without
     empty pixels gets 256 colours, unless ``reserve``: index 255 is then kept free (the file's
-    transparent index) all the same."""
+    transparent index) all the same. ``clear``: whether the frame has empty pixels, when the
+    caller knows already."""
     alpha = rgba[..., 3]
-    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
-    clear = alpha == 0
-    opaque = not clear.any() and not reserve
-    exact = _exact_palette(rgba, rgb, 256 if opaque else 255)
+    if clear is None:
+        clear = bool((alpha == 0).any())
+    opaque = not clear and not reserve
+    exact = _exact_palette(rgba, 256 if opaque else 255)
     if exact is not None:
         idx, pal = exact
-        idx[clear] = 255
         out = Image.fromarray(idx, mode="P")
         out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
         return out, (None if opaque else 255)
+    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     if opaque:
         return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
     # the colours of visible pixels only choose the palette
     q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
     idx = np.array(q, dtype=np.uint8)
-    idx[clear] = 255
+    idx[alpha == 0] = 255
     out = Image.fromarray(idx, mode="P")
     pal = q.getpalette()[: 255 * 3]
     out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
     return out, 255
 
 
-def _exact_palette(rgba: np.ndarray, rgb: Image.Image, limit: int):
-    """(indices, palette) of a frame with at most ``limit`` distinct colours, else None. The
-    median cut gives such a frame its exact colours too (every colour a box of its own), at
-    several times the cost; here the palette is the colours in ascending order, so the file's
-    bytes differ from the median cut's while every decoded pixel is the same."""
+def _exact_palette(rgba: np.ndarray, limit: int):
+    """(indices, palette) of a frame with at most ``limit`` distinct colours (empty pixels at
+    index 255), else None. The median cut gives such a frame its exact colours too (every
+    colour a box of its own), at several times the cost; here the palette is the colours in
+    ascending order, so the file's bytes differ from the median cut's while every decoded pixel
+    is the same. With numba loaded, ``gif_pass.exact_palette`` gives the same indices and
+    palette in two compiled passes."""
+    if _compiled():
+        from xaml3d.output import gif_pass
+
+        idx = np.empty(rgba.shape[:2], dtype=np.uint8)
+        keys = np.empty(256, dtype=np.int64)
+        n = gif_pass.exact_palette(np.ascontiguousarray(rgba), limit, idx, keys)
+        if n < 0:
+            return None
+        return idx, [int(k >> s) & 255 for k in keys[:n] for s in (16, 8, 0)]
+    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     found = rgb.getcolors(limit)
     if found is None:
         return None
@@ -91,7 +104,9 @@ def _exact_palette(rgba: np.ndarray, rgb: Image.Image, limit: int):
     keys = np.array([(r << 16) | (g << 8) | b for r, g, b in colours], dtype=np.uint32)
     px = rgba[..., :3].astype(np.uint32)
     idx = np.searchsorted(keys, (px[..., 0] << 16) | (px[..., 1] << 8) | px[..., 2])
-    return idx.astype(np.uint8), [v for c in colours for v in c]
+    idx = idx.astype(np.uint8)
+    idx[rgba[..., 3] == 0] = 255
+    return idx, [v for c in colours for v in c]
 
 
 @dataclass
@@ -130,8 +145,10 @@ def gif_frame(rgba: np.ndarray, plan: GifPlan | None = None) -> GifFrame:
     marks = frame_marks(rgba)
     clear = bool((rgba[..., 3] == 0).any())
     if plan.flatten:
-        rgba = flatten([rgba], plan.matte)[0]
-    image, _ = _gif_frame(rgba, reserve=bool(plan.reserve) and not plan.flatten)
+        rgba, clear_now = flatten([rgba], plan.matte)[0], False
+    else:
+        clear_now = clear
+    image, _ = _gif_frame(rgba, reserve=bool(plan.reserve) and not plan.flatten, clear=clear_now)
     return GifFrame(image, clear and not plan.flatten, marks, plan.flatten, bool(plan.reserve))
 
 
