@@ -198,7 +198,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             diags[:] = [d for d in diags if d.code != "RND002"]
             it = frames_module.render_frames(  # looked up at call time: it may be wrapped
                 sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder],
-                prepare=prepare,
+                prepare=prepare, depth=False,
             )  # fmt: skip
             for r in _progress(it, len(times), name, quiet):
                 yield _keep(r, diags, file)

@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from xaml3d.animation.moment import scene_at
 from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
 from xaml3d.render import accel
+from xaml3d.render.frame import FrameStore
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.settings import settings_of
 from xaml3d.render.workers import ordered, worker_pool
@@ -35,6 +36,7 @@ def render_frames(
     settings=None,
     folders=(),
     prepare=None,
+    depth: bool = True,
     **options,
 ) -> Iterator:
     """(time, Rendering) for each time, in time order: the render of ``scene_at(scene, t)``
@@ -43,15 +45,18 @@ def render_frames(
 
     ``executor``: any ``concurrent.futures.Executor`` to render the frames in (a process pool,
     a cluster's executor...); the scene and settings are sent with each frame. Else ``jobs`` > 1
-    renders them in that many worker processes of ``xaml3d.render.workers`` (each frame is an
-    independent render, so the results are the same). Frames are yielded as they come, in
-    order, with a bounded number in flight: an animation is never all held in memory here.
-    ``folders``: where the caller writes files meanwhile (should it be killed, the workers
-    remove its temporaries there). ``prepare``: a module-level function applied to each
+    renders them in that many worker processes of ``xaml3d.render.workers``, started once, each
+    given runs of consecutive frames (``CHUNK`` at most) rather than one frame per task (each
+    frame is an independent render, so the results are the same). Frames are yielded as they
+    come, in order, with a bounded number in flight: an animation is never all held in memory
+    here. ``folders``: where the caller writes files meanwhile (should it be killed, the
+    workers remove its temporaries there). ``prepare``: a module-level function applied to each
     Rendering where it was drawn (in the worker), whose result is yielded instead (e.g. the
     frame already encoded, so that less crosses between processes and the encoding runs in
-    parallel too).
+    parallel too). ``depth=False``: the caller uses the pictures alone (the Renderings' depth
+    and distance are None, not computed).
 
+    A process drawing many frames keeps a ``FrameSession``: one framebuffer for all its frames.
     The compiled kernels (``xaml3d.render.accel``) are chosen for the work of all the frames a
     process draws, not for one frame's."""
     chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
@@ -60,6 +65,7 @@ def render_frames(
         yield from ordered(executor, render_frame, items)
         return
     times = list(times)
+    session = FrameSession(scene, storyboard, chosen, prepare, depth)
     if jobs > 1 and len(times) > 2:
         workers = min(int(jobs), len(times) - 1)
         share = -(-len(times) // workers)
@@ -68,20 +74,47 @@ def render_frames(
         # loading numba again (about a second of CPU each), and with its warmed-up memory.
         accel.expect_frames(share)
         try:
-            first = render_frame(scene, times[0], storyboard, chosen, prepare)
+            first = session.frame(times[0])
         finally:
             accel.expect_frames(1)
         yield first
-        kept = (scene, storyboard, chosen, share, prepare)  # sent once per worker
+        del session  # its buffers are not needed here any more (the workers have their own)
+        rest = times[1:]
+        # A few runs per worker: enough to balance the workers, few enough tasks that their
+        # hand-off costs nothing; runs of consecutive frames keep the output streaming.
+        size = max(1, min(CHUNK, -(-len(rest) // (4 * workers))))
+        runs = [(tuple(rest[i : i + size]),) for i in range(0, len(rest), size)]
+        kept = (scene, storyboard, chosen, share, prepare, depth)  # sent once per worker
         with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
-            yield from ordered(pool, _kept_frame, [(t,) for t in times[1:]])
+            for run in ordered(pool, _kept_frames, runs):
+                yield from run
         return
     accel.expect_frames(len(times))
     try:
         for t in times:
-            yield render_frame(scene, t, storyboard, chosen, prepare)
+            yield session.frame(t)
     finally:
         accel.expect_frames(1)
+
+
+CHUNK = 8  # frames per task of a worker process at most (a few MB of RGBA each in flight)
+
+
+class FrameSession:
+    """What one process keeps while it draws frames of one animation: the scene, storyboard,
+    settings and ``prepare`` of ``render_frames``, and a ``frame.FrameStore`` (one framebuffer
+    for all the frames, cleared by the resolve: no allocation or fill per frame)."""
+
+    def __init__(self, scene, storyboard, settings, prepare=None, depth: bool = True) -> None:
+        self.scene, self.storyboard, self.settings = scene, storyboard, settings
+        self.prepare, self.depth = prepare, depth
+        self.store = FrameStore()
+
+    def frame(self, t: float) -> tuple:
+        """(t, the Rendering of the scene at ``t``), passed through ``prepare`` when given."""
+        frame = scene_at(self.scene, t, self.storyboard)
+        r = render_scene(frame, self.settings, store=self.store, depth=self.depth)
+        return t, (r if self.prepare is None else self.prepare(r))
 
 
 def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
@@ -91,14 +124,14 @@ def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
     return t, (r if prepare is None else prepare(r))
 
 
-_KEPT: dict = {}  # a pool worker's scene, storyboard and settings (sent once, not per frame)
+_KEPT: dict = {}  # a pool worker's FrameSession (sent once, not per frame)
 
 
-def _keep_scene(scene, storyboard, settings, share: int = 1, prepare=None) -> None:
-    _KEPT.update(scene=scene, storyboard=storyboard, settings=settings, prepare=prepare)
+def _keep_scene(scene, storyboard, settings, share: int = 1, prepare=None, depth=True) -> None:
+    _KEPT["session"] = FrameSession(scene, storyboard, settings, prepare, depth)
     accel.expect_frames(share)  # about this many frames each: they pay for the kernels together
 
 
-def _kept_frame(t: float) -> tuple:
-    k = _KEPT
-    return render_frame(k["scene"], t, k["storyboard"], k["settings"], k["prepare"])
+def _kept_frames(times) -> list:
+    session = _KEPT["session"]
+    return [session.frame(t) for t in times]
