@@ -10,8 +10,8 @@ renamed, so a failure leaves no partial file and an existing one untouched.
 drawn, e.g. in a worker process) and only their palette images are held, a quarter of the
 RGBA's bytes; the matte and the transparent index are decided from the frames as they come
 (``GifPlan``), and the frames are asked for again from the first should a later frame show the
-decision wrong. ``write_apng`` streams APNG likewise (one frame held). WebP takes every frame
-at once (Pillow's writer holds them all).
+decision wrong. ``write_apng`` streams APNG likewise (one frame held), and ``write_webp`` WebP
+(one RGBA frame held; libwebp's encoder keeps the encoded frames).
 """
 
 from __future__ import annotations
@@ -322,13 +322,55 @@ def save_animation(
     if fmt == "PNG":
         write_apng(frames, path, total, len(frames), loop=loop)
         return [path]
-    images = [Image.fromarray(f, mode="RGBA") for f in frames]
-    durations = frame_durations(len(frames), total, 0.001)
-    opts = {"lossless": False, "quality": 90}
+    write_webp(frames, path, total, len(frames), loop=loop)
+    return [path]
 
-    def write(fh):
-        images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
-                       duration=durations, loop=loop, **opts)  # fmt: skip
+
+WEBP_OPTIONS = {"lossless": False, "quality": 90}
+
+
+def write_webp(frames, path, total: float, count: int, *, loop: int = 0) -> None:
+    """Write ``count`` RGBA frames (any iterable, taken one by one) lasting ``total`` seconds
+    as an animated WebP at ``path``, atomically. Pillow's writer makes a list of the images it
+    is given, but reads a multi-frame image frame by frame (``seek``): the frames after the
+    first are given as one such image (``_FrameStream``) that makes each frame's image when
+    the writer seeks to it, so one RGBA frame is held at a time (the encoder keeps the frames
+    it has encoded, compressed)."""
+    durations = frame_durations(count, total, 0.001)
+
+    def write(fh) -> None:
+        it = iter(frames)
+        first = Image.fromarray(np.ascontiguousarray(next(it)), mode="RGBA")
+        rest = [_FrameStream(it, count - 1)] if count > 1 else []
+        first.save(fh, format="WEBP", save_all=True, append_images=rest, duration=durations,
+                   loop=loop, **WEBP_OPTIONS)  # fmt: skip
 
     write_atomically(path, write)
-    return [path]
+
+
+class _FrameStream:
+    """RGBA frames as one multi-frame image for Pillow's writers: ``n_frames``, ``seek`` (only
+    forwards: the frames are made as they come; seeking back is ignored, as the WebP writer
+    seeks back to where it began once it is done) and, for everything else, the current
+    frame's image."""
+
+    def __init__(self, frames, count: int) -> None:
+        self.n_frames = count
+        self._frames = frames
+        self._at = -1
+        self._image: Image.Image | None = None
+
+    def seek(self, index: int) -> None:
+        while self._at < index:
+            self._image = None  # the frame before is dropped first
+            rgba = next(self._frames)
+            self._image = Image.fromarray(np.ascontiguousarray(rgba), mode="RGBA")
+            self._at += 1
+
+    def tell(self) -> int:
+        return max(self._at, 0)
+
+    def __getattr__(self, name: str):
+        if self._image is None:
+            self.seek(0)
+        return getattr(self._image, name)
