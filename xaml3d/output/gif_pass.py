@@ -16,14 +16,14 @@ import sys
 import numba
 import numpy as np
 
+from xaml3d.numba_env import mode
+
 EMPTY = -1  # a free slot of the colour table
 TABLE = 1024  # slots of the colour table: at most 256 colours, so at most a quarter full
 
 
 def available() -> bool:
     """Whether the compiled passes may be used without paying numba's start-up here."""
-    from xaml3d.numba_env import mode
-
     return "numba" in sys.modules and mode() != "numpy"
 
 
