@@ -128,3 +128,63 @@ def test_a_picture_of_one_colour_is_reported_from_kept_buffers(kernels, monkeypa
         assert [d.code for d in r.diagnostics] == ["RND009"]
     _, r = FrameSession(load(GLOW), None, RenderSettings()).frame(1.0)
     assert "RND009" not in [d.code for d in r.diagnostics]
+
+
+BOUNCE = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="32" Height="24">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,5" LookDirection="0,0,-1"
+      FieldOfView="50"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#606060"/><DirectionalLight Color="White" Direction="-1,-1,-2"/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+          TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Orange"/></GeometryModel3D.Material>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="turn" Axis="0,1,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+    <Storyboard><DoubleAnimation Storyboard.TargetName="turn" Storyboard.TargetProperty="Angle"
+        From="0" To="60" Duration="0:0:1" AutoReverse="True"/></Storyboard>
+  </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+</Viewport3D>"""
+
+
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+def test_a_frame_whose_values_were_seen_is_not_drawn_again(kernels, monkeypatch):
+    if kernels == "numba":
+        pytest.importorskip("numba")
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
+    scene = load(BOUNCE)
+    settings = RenderSettings()
+    # 0.25 and 1.75 mirror each other (AutoReverse): 15 and 15 degrees, exactly; from 2 s on
+    # the animation holds its end value (0 degrees, as at 0 s); 0.5 and 1.5 give 30 degrees.
+    times = [0.0, 0.25, 0.5, 1.0, 1.5, 1.75, 2.0, 2.5, 3.0]
+    session = FrameSession(scene, None, settings)
+    got = [session.frame(t)[1] for t in times]
+    assert session.drawn == 4 and session.repeated == 5  # 0, 15, 30 and 60 degrees
+    for t, r in zip(times, got, strict=True):
+        fresh = render_scene(scene_at(scene, t), settings)
+        assert np.array_equal(r.rgba, fresh.rgba), t
+        assert np.array_equal(r.depth, fresh.depth) and r.diagnostics == fresh.diagnostics
+    assert got[1] is not got[5] and got[1].rgba is got[5].rgba  # a copy sharing the arrays
+    assert not np.array_equal(got[1].rgba, got[2].rgba)
+    # the key is the values, never the time: a different time, the same values
+    assert session.frame(7.0)[1].rgba is got[0].rgba
+
+
+def test_a_still_is_drawn_once_and_the_memo_is_bounded(monkeypatch):
+    from xaml3d.render import frames
+
+    still = load(FILLED)
+    session = FrameSession(still, None, RenderSettings())
+    for t in (0.0, 0.1, 0.2):
+        session.frame(t)
+    assert (session.drawn, session.repeated) == (1, 2)
+    monkeypatch.setattr(frames, "MEMO_BYTES", 2 * 32 * 24 * 4 + 100)  # two pictures, no depth
+    session = FrameSession(load(BOUNCE), None, RenderSettings(), depth=False)
+    for t in (0.0, 0.25, 0.5, 0.0):  # the first picture was pushed out by the third
+        session.frame(t)
+    assert (session.drawn, session.repeated) == (4, 0) and len(session.memo) == 2

@@ -9,9 +9,13 @@ knows nothing of animation). The files are written by ``xaml3d.output.animation`
 
 from __future__ import annotations
 
+import copy
+from collections import OrderedDict
 from collections.abc import Iterator
 
-from xaml3d.animation.moment import scene_at
+import numpy as np
+
+from xaml3d.animation.moment import scene_and_values_at, scene_at
 from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
 from xaml3d.render import accel
 from xaml3d.render.frame import FrameStore
@@ -102,19 +106,57 @@ CHUNK = 8  # frames per task of a worker process at most (a few MB of RGBA each 
 
 class FrameSession:
     """What one process keeps while it draws frames of one animation: the scene, storyboard,
-    settings and ``prepare`` of ``render_frames``, and a ``frame.FrameStore`` (one framebuffer
-    for all the frames, cleared by the resolve: no allocation or fill per frame)."""
+    settings and ``prepare`` of ``render_frames``, a ``frame.FrameStore`` (one framebuffer for
+    all the frames, cleared by the resolve: no allocation or fill per frame), and the frames
+    it drew, by the exact animated values that made them (``scene_and_values_at``), within
+    ``MEMO_BYTES``: a frame whose values were seen before (a hold, an AutoReverse coming back,
+    a repeated cycle, a still) is not drawn again; a copy of the earlier result (sharing its
+    arrays) is given. The renderer is deterministic, so the pictures are the same bits."""
 
     def __init__(self, scene, storyboard, settings, prepare=None, depth: bool = True) -> None:
         self.scene, self.storyboard, self.settings = scene, storyboard, settings
         self.prepare, self.depth = prepare, depth
         self.store = FrameStore()
+        self.memo: OrderedDict = OrderedDict()  # animated values -> (result, its bytes)
+        self.memo_bytes = 0
+        self.drawn = self.repeated = 0
 
     def frame(self, t: float) -> tuple:
         """(t, the Rendering of the scene at ``t``), passed through ``prepare`` when given."""
-        frame = scene_at(self.scene, t, self.storyboard)
+        frame, values = scene_and_values_at(self.scene, t, self.storyboard)
+        kept = self.memo.get(values)
+        if kept is not None:
+            self.memo.move_to_end(values)
+            self.repeated += 1
+            return t, copy.copy(kept[0])
         r = render_scene(frame, self.settings, store=self.store, depth=self.depth)
-        return t, (r if self.prepare is None else self.prepare(r))
+        result = r if self.prepare is None else self.prepare(r)
+        self.drawn += 1
+        size = _nbytes(result)
+        if size <= MEMO_BYTES:
+            self.memo[values] = (result, size)
+            self.memo_bytes += size
+            while self.memo_bytes > MEMO_BYTES:
+                self.memo_bytes -= self.memo.popitem(last=False)[1][1]
+        return t, copy.copy(result)
+
+
+MEMO_BYTES = 32 << 20  # frames a session keeps for repeats (about 90 GIF frames at 600x600)
+
+
+def _nbytes(result) -> int:
+    """The bytes a frame's result holds: its arrays, or a prepared frame's image."""
+    total = 0
+    for name in ("rgba", "depth", "distance", "ids"):
+        a = getattr(result, name, None)
+        image = getattr(a, "image", None)  # a prepared frame (``output.animation.GifFrame``)
+        if isinstance(a, np.ndarray):
+            total += a.nbytes
+        elif image is not None:
+            total += image.width * image.height
+        elif a is not None:
+            total += MEMO_BYTES  # unknown: not kept
+    return total
 
 
 def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
