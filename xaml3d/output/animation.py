@@ -29,7 +29,7 @@ from PIL import Image
 
 from xaml3d.errors import RenderError
 from xaml3d.output.atomic import write_atomically
-from xaml3d.output.gif_matte import MatteWatch, _compiled, flatten, frame_marks, needs_matte
+from xaml3d.output.gif_matte import MatteWatch, _compiled, flatten, marks_and_clear, needs_matte
 from xaml3d.output.images import save_image
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
@@ -142,8 +142,7 @@ def gif_frame(rgba: np.ndarray, plan: GifPlan | None = None) -> GifFrame:
     """``rgba`` (H, W, 4 uint8) as the GIF writer takes it under ``plan`` (default: not
     flattened, index 255 reserved only when the frame has empty pixels)."""
     plan = GifPlan() if plan is None else plan
-    marks = frame_marks(rgba)
-    clear = bool((rgba[..., 3] == 0).any())
+    marks, clear = marks_and_clear(rgba)
     if plan.flatten:
         rgba, clear_now = flatten([rgba], plan.matte)[0], False
     else:

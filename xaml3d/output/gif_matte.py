@@ -102,6 +102,11 @@ def frame_marks(rgba: np.ndarray) -> tuple[bool, bool, bytes, bytes]:
     GIF digests match and their whole digests do not (SHA-1, 20 bytes: no collision in
     practice, and several times faster here than BLAKE2b). With numba loaded (an animation's
     frames: ``gif_pass.available``) one compiled pass gives the same marks."""
+    return marks_and_clear(rgba)[0]
+
+
+def marks_and_clear(rgba: np.ndarray) -> tuple[tuple[bool, bool, bytes, bytes], bool]:
+    """(``frame_marks(rgba)``, whether the frame has empty pixels), from the same pass."""
     rgba = np.ascontiguousarray(rgba)
     alpha = rgba[..., 3]
     # What GIF draws, one 32-bit word a pixel: 0 where empty, else the colour with alpha 255
@@ -112,16 +117,20 @@ def frame_marks(rgba: np.ndarray) -> tuple[bool, bool, bytes, bytes]:
         from xaml3d.output import gif_pass
 
         drawn = np.empty(alpha.size, dtype=np.uint32)
-        n_partial, inside, covered, _ = gif_pass.marks(rgba, words.reshape(-1), drawn, opaque)
+        found = gif_pass.marks(rgba, words.reshape(-1), drawn, opaque)
+        n_partial, inside, covered, clear = found
         partial = n_partial > 0
         translucent = inside > 0 and inside >= TRANSLUCENT_SHARE * covered
+        clear = clear > 0
     else:
         partial = bool(((alpha > 0) & (alpha < 255)).any())
         translucent = partial and _translucent(alpha)
         drawn = np.where(alpha > 0, words | opaque, np.uint32(0))
-    seen = hashlib.sha1(drawn.tobytes(), usedforsecurity=False).digest()
-    whole = hashlib.sha1(rgba.tobytes(), usedforsecurity=False).digest()
-    return partial, translucent, seen, whole
+        clear = bool((alpha == 0).any())
+    # hashed in place (the buffer protocol): no copy of the frame's bytes
+    seen = hashlib.sha1(drawn, usedforsecurity=False).digest()
+    whole = hashlib.sha1(rgba, usedforsecurity=False).digest()
+    return (partial, translucent, seen, whole), clear
 
 
 def _compiled() -> bool:

@@ -141,7 +141,7 @@ class FrameSession:
         return t, copy.copy(result)
 
 
-MEMO_BYTES = 32 << 20  # frames a session keeps for repeats (about 90 GIF frames at 600x600)
+MEMO_BYTES = 16 << 20  # frames a session keeps for repeats (about 45 GIF frames at 600x600)
 
 
 def _nbytes(result) -> int:
