@@ -8,7 +8,9 @@
 ``python -m xaml3d animate FILE -o x.gif`` (its defaults) and ``python -m xaml3d render FILE -o
 x.png``, run by run interleaved; printed: the animate/render ratio of each run (median, min..max),
 both wall times, and animate's peak RSS (``os.wait4``: on Linux the largest of the process
-and of its worker processes). Targets: 005 within 12x one render, under 500 MB.
+and of its worker processes); then the same ratio of CPU seconds (user + system, the workers
+included), which the other jobs of a shared machine disturb far less than wall times, and the
+load average at the end. Targets: 005 within 12x one render, under 500 MB.
 
 Without ``--whole``:
 The scene is a UV sphere of about 10k triangles (a DiffuseMaterial, a DirectionalLight), turned
@@ -82,8 +84,9 @@ WHOLE = [CORPUS / "005_wpfsamples-spinningcube.xaml", ROOT / "samples" / "spinni
          CORPUS / "001_wpfsamples-cubeanimation.xaml"]  # fmt: skip
 
 
-def process(cmd: list[str]) -> tuple[float, float]:
-    """Wall seconds and peak RSS (MiB: the process, or the largest of its workers) of one run."""
+def process(cmd: list[str]) -> tuple[float, float, float]:
+    """Wall seconds, peak RSS (MiB: the process, or the largest of its workers) and CPU
+    seconds (user + system, the workers included) of one run."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     t0 = time.perf_counter()
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
@@ -94,7 +97,7 @@ def process(cmd: list[str]) -> tuple[float, float]:
     if os.waitstatus_to_exitcode(status) != 0:
         raise SystemExit(f"failed: {' '.join(cmd)}\n{err.decode()}")
     # Linux's wait4 reports the child with its reaped children (the workers) included
-    return wall, usage.ru_maxrss / 1024.0
+    return wall, usage.ru_maxrss / 1024.0, usage.ru_utime + usage.ru_stime
 
 
 def whole(files: list[Path], runs: int) -> int:
@@ -105,16 +108,23 @@ def whole(files: list[Path], runs: int) -> int:
                 print(f"{f.name}: not found (the shared corpus is absent)")
                 continue
             anim, rend, ratio, peak = [], [], [], 0.0
+            anim_cpu, rend_cpu, cpu_ratio = [], [], []
             process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])  # caches warm
             for _ in range(runs):
-                r, _ = process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])
-                a, m = process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"])
+                r, _, rc = process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])
+                a, m, ac = process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"])
                 anim.append(a)
                 rend.append(r)
                 ratio.append(a / r)
+                anim_cpu.append(ac)
+                rend_cpu.append(rc)
+                cpu_ratio.append(ac / rc)
                 peak = max(peak, m)
             print(f"{f.name}: animate / render {_span(ratio, 'x')}; animate {_span(anim, 's')}, "
                   f"render {_span(rend, 's')}; animate peak RSS {peak:.0f} MiB")  # fmt: skip
+            print(f"{f.name}: CPU (user + system, workers included): animate / render "
+                  f"{_span(cpu_ratio, 'x')}; animate {_span(anim_cpu, 's')}, "
+                  f"render {_span(rend_cpu, 's')}; load {os.getloadavg()[0]:.1f}")  # fmt: skip
     return 0
 
 

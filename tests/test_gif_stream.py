@@ -171,3 +171,36 @@ def test_a_frame_of_few_colours_keeps_them_exactly_as_the_median_cut_does():
     full = f.copy()
     full[..., 3] = 255  # no empty pixel: 256 colours allowed, no transparent index
     assert _gif_frame(full)[1] is None
+
+
+def test_webp_is_streamed_and_is_the_file_pillow_writes_from_a_list(tmp_path):
+    import gc
+    import io
+    import weakref
+
+    from xaml3d.output.animation import WEBP_OPTIONS, frame_durations, write_webp
+
+    rng = np.random.default_rng(5)
+    frames = [rng.integers(0, 256, (20, 28, 4), dtype=np.uint8) for _ in range(7)]
+    frames[3] = frames[2].copy()  # a repeated frame too
+    alive_at_most = []
+
+    def made():
+        refs = []
+        for f in frames:
+            gc.collect()
+            alive_at_most.append(sum(r() is not None for r in refs))
+            g = f.copy()  # a frame only this stream holds
+            refs.append(weakref.ref(g))
+            yield g
+
+    write_webp(made(), tmp_path / "s.webp", 0.7, len(frames), loop=2)
+    # the first frame (the writer's first image) and the one before the current at most
+    assert max(alive_at_most) <= 2
+    buf = io.BytesIO()
+    images = [Image.fromarray(f, mode="RGBA") for f in frames]
+    images[0].save(buf, format="WEBP", save_all=True, append_images=images[1:],
+                   duration=frame_durations(7, 0.7, 0.001), loop=2, **WEBP_OPTIONS)  # fmt: skip
+    assert (tmp_path / "s.webp").read_bytes() == buf.getvalue()
+    with Image.open(tmp_path / "s.webp") as im:
+        assert im.n_frames == 6  # the encoder merges the repeated frame into the one before

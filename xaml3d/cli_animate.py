@@ -3,8 +3,8 @@
 Thin layer over ``xaml3d.render.frames`` and ``xaml3d.output.animation``: picks the times
 (``--fps``, ``--start``, ``--end``/``--duration``, by default one full cycle of what runs at
 load), renders each frame as ``render`` would (in worker processes, in order), streams the
-frames to the output as they come (a frame directory and an APNG frame by frame; a GIF's frames
-quantized in the workers, only palette images held; WebP alone takes every frame at once),
+frames to the output as they come (a frame directory, an APNG and a WebP frame by frame; a GIF's
+frames quantized in the workers, only palette images held),
 reports progress (a bar on a terminal, a line every few seconds elsewhere), and writes the file
 atomically. Bad input is one
 ``file:line:col: error CODE message`` line and exit status 1.
@@ -63,9 +63,9 @@ from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.animation import (
     frame_names,
     gif_frame,
-    save_animation,
     write_apng,
     write_gif,
+    write_webp,
 )
 from xaml3d.render import frames as frames_module
 from xaml3d.render.settings import RenderSettings
@@ -198,7 +198,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             diags[:] = [d for d in diags if d.code != "RND002"]
             it = frames_module.render_frames(  # looked up at call time: it may be wrapped
                 sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder],
-                prepare=prepare,
+                prepare=prepare, depth=False,
             )  # fmt: skip
             for r in _progress(it, len(times), name, quiet):
                 yield _keep(r, diags, file)
@@ -216,8 +216,8 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
                 sequence.add(rgba)
         elif apng:  # streamed too, one frame held
             write_apng(drawn(_lean), output, end - start, len(times), loop=loop)
-        else:  # WebP: Pillow's writer takes every frame at once
-            frames = list(drawn(_lean))
+        else:  # WebP: streamed too, one RGBA frame held
+            write_webp(drawn(_lean), output, end - start, len(times), loop=loop)
         empty = [d for d in diags if d.code == "RND002"]
         if len(empty) < len(times):  # an empty frame is part of an animation: no warning
             diags = [d for d in diags if d.code != "RND002"]
@@ -226,8 +226,6 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         elif gif:
             if flattened:
                 diags.append(_note(file, _flattened_message(bg), "ANIM013"))
-        elif not apng:
-            save_animation(frames, output, end - start, loop=loop)
         if stale and clean:
             stale = remove_stale(stale, inputs)  # only after the new sequence is complete
         if stale:

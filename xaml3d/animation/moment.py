@@ -7,6 +7,7 @@ animation is an ordinary render of the Scene this returns.
 
 from __future__ import annotations
 
+from xaml3d.animation.timeline import scene_and_values_at as scene_and_values_at_
 from xaml3d.animation.timeline import scene_at as frame_at
 from xaml3d.errors import SceneError
 from xaml3d.scene.types import Scene
@@ -23,3 +24,16 @@ def scene_at(scene: Scene, time: float | None = 0.0, storyboard: str | None = No
                              code="ANIM010", file=scene.file)  # fmt: skip
         return scene
     return frame_at(scene, float(time), storyboard)
+
+
+def scene_and_values_at(
+    scene: Scene, time: float | None = 0.0, storyboard: str | None = None
+) -> tuple:
+    """(``scene_at(scene, time, storyboard)``, the exact animated values that made it: equal
+    values, equal Scenes; ``timeline.scene_and_values_at``). A scene without storyboards, or
+    ``time`` None: (the scene, ())."""
+    if time is None:
+        return scene, ()
+    if scene.tracks is None:
+        return scene_at(scene, time, storyboard), ()
+    return scene_and_values_at_(scene, float(time), storyboard)

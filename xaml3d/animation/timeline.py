@@ -107,8 +107,9 @@ class _Track:
 
     def __call__(self, base):
         if isinstance(base, np.ndarray):
-            return _value(self.chain, self.value_type, base)
-        key = repr(base)  # not ==: 0.0 and -0.0, 1 and 1.0 stay apart (bit for bit)
+            key = ("array", base.shape, base.dtype.str, base.tobytes())
+        else:
+            key = repr(base)  # not ==: 0.0 and -0.0, 1 and 1.0 stay apart (bit for bit)
         v = self.seen.get(key, self)
         if v is self:
             v = self.seen[key] = _value(self.chain, self.value_type, base)
@@ -196,12 +197,40 @@ def scene_at(scene: Scene, t: float, storyboard: str | None = None) -> Scene:
     """The scene ``t`` seconds after load: ``scene`` itself when nothing that runs resolves,
     else a frame (``tracks`` None: a finished moment, never evaluated again). SceneError
     ANIM010 when ``storyboard`` names no storyboard; ValueError for a time not finite."""
+    return scene_and_values_at(scene, t, storyboard)[0]
+
+
+def scene_and_values_at(scene: Scene, t: float, storyboard: str | None = None) -> tuple:
+    """(``scene_at(scene, t, storyboard)``, its animated values): a hashable summary of every
+    value the running tracks gave, exactly (per track, each base value it was applied to, by
+    its repr or bytes, with the value it gave, likewise; None for a track no clock drives at
+    t). Two moments with equal values are the same Scene, whatever their times: a hold, an
+    AutoReverse coming back, a repeated cycle. Never the times themselves."""
     if not math.isfinite(t):
         raise ValueError(f"time {t!r} is not a finite number of seconds")
-    values = values_at(scene, t, storyboard)
-    if not values:
-        return scene
-    values = {k: f for k, f in values.items() if f is not None}
+    every = values_at(scene, t, storyboard)
+    if not every:
+        return scene, ()
+    frame = _frame(scene, {k: f for k, f in every.items() if f is not None})
+    # the bases come in the same order at every moment (the same walk over the same scene)
+    summary = tuple(
+        (k, None if f is None else tuple((b, _exact(v)) for b, v in f.seen.items()))
+        for k, f in sorted(every.items())
+    )  # fmt: skip
+    return frame, summary
+
+
+def _exact(value):
+    """``value`` as a hashable of its exact bits (arrays by their bytes, floats by repr)."""
+    if isinstance(value, np.ndarray):
+        return ("array", value.shape, value.dtype.str, value.tobytes())
+    if isinstance(value, (tuple, list)):
+        return (type(value).__name__, *(_exact(v) for v in value))
+    return repr(value)
+
+
+def _frame(scene: Scene, values: dict) -> Scene:
+    """The scene with the tracks ``values`` (index -> value function) applied."""
     tracks = scene.tracks
     changes: dict[int, list] = {}
     for k, fn in values.items():

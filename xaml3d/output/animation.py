@@ -10,8 +10,8 @@ renamed, so a failure leaves no partial file and an existing one untouched.
 drawn, e.g. in a worker process) and only their palette images are held, a quarter of the
 RGBA's bytes; the matte and the transparent index are decided from the frames as they come
 (``GifPlan``), and the frames are asked for again from the first should a later frame show the
-decision wrong. ``write_apng`` streams APNG likewise (one frame held). WebP takes every frame
-at once (Pillow's writer holds them all).
+decision wrong. ``write_apng`` streams APNG likewise (one frame held), and ``write_webp`` WebP
+(one RGBA frame held; libwebp's encoder keeps the encoded frames).
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from PIL import Image
 
 from xaml3d.errors import RenderError
 from xaml3d.output.atomic import write_atomically
-from xaml3d.output.gif_matte import MatteWatch, flatten, frame_marks, needs_matte
+from xaml3d.output.gif_matte import MatteWatch, _compiled, flatten, marks_and_clear, needs_matte
 from xaml3d.output.images import save_image
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
@@ -50,40 +50,53 @@ def frame_names(count: int) -> list[str]:
     return [f"frame_{i:0{digits}d}.png" for i in range(count)]
 
 
-def _gif_frame(rgba: np.ndarray, reserve: bool = False):
+def _gif_frame(rgba: np.ndarray, reserve: bool = False, clear: bool | None = None):
     """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
     has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
     so translucent surfaces stay visible; only empty pixels become transparent. A frame without
     empty pixels gets 256 colours, unless ``reserve``: index 255 is then kept free (the file's
-    transparent index) all the same."""
+    transparent index) all the same. ``clear``: whether the frame has empty pixels, when the
+    caller knows already."""
     alpha = rgba[..., 3]
-    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
-    clear = alpha == 0
-    opaque = not clear.any() and not reserve
-    exact = _exact_palette(rgba, rgb, 256 if opaque else 255)
+    if clear is None:
+        clear = bool((alpha == 0).any())
+    opaque = not clear and not reserve
+    exact = _exact_palette(rgba, 256 if opaque else 255)
     if exact is not None:
         idx, pal = exact
-        idx[clear] = 255
         out = Image.fromarray(idx, mode="P")
         out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
         return out, (None if opaque else 255)
+    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     if opaque:
         return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
     # the colours of visible pixels only choose the palette
     q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
     idx = np.array(q, dtype=np.uint8)
-    idx[clear] = 255
+    idx[alpha == 0] = 255
     out = Image.fromarray(idx, mode="P")
     pal = q.getpalette()[: 255 * 3]
     out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
     return out, 255
 
 
-def _exact_palette(rgba: np.ndarray, rgb: Image.Image, limit: int):
-    """(indices, palette) of a frame with at most ``limit`` distinct colours, else None. The
-    median cut gives such a frame its exact colours too (every colour a box of its own), at
-    several times the cost; here the palette is the colours in ascending order, so the file's
-    bytes differ from the median cut's while every decoded pixel is the same."""
+def _exact_palette(rgba: np.ndarray, limit: int):
+    """(indices, palette) of a frame with at most ``limit`` distinct colours (empty pixels at
+    index 255), else None. The median cut gives such a frame its exact colours too (every
+    colour a box of its own), at several times the cost; here the palette is the colours in
+    ascending order, so the file's bytes differ from the median cut's while every decoded pixel
+    is the same. With numba loaded, ``gif_pass.exact_palette`` gives the same indices and
+    palette in two compiled passes."""
+    if _compiled():
+        from xaml3d.output import gif_pass
+
+        idx = np.empty(rgba.shape[:2], dtype=np.uint8)
+        keys = np.empty(256, dtype=np.int64)
+        n = gif_pass.exact_palette(np.ascontiguousarray(rgba), limit, idx, keys)
+        if n < 0:
+            return None
+        return idx, [int(k >> s) & 255 for k in keys[:n] for s in (16, 8, 0)]
+    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     found = rgb.getcolors(limit)
     if found is None:
         return None
@@ -91,7 +104,9 @@ def _exact_palette(rgba: np.ndarray, rgb: Image.Image, limit: int):
     keys = np.array([(r << 16) | (g << 8) | b for r, g, b in colours], dtype=np.uint32)
     px = rgba[..., :3].astype(np.uint32)
     idx = np.searchsorted(keys, (px[..., 0] << 16) | (px[..., 1] << 8) | px[..., 2])
-    return idx.astype(np.uint8), [v for c in colours for v in c]
+    idx = idx.astype(np.uint8)
+    idx[rgba[..., 3] == 0] = 255
+    return idx, [v for c in colours for v in c]
 
 
 @dataclass
@@ -127,11 +142,12 @@ def gif_frame(rgba: np.ndarray, plan: GifPlan | None = None) -> GifFrame:
     """``rgba`` (H, W, 4 uint8) as the GIF writer takes it under ``plan`` (default: not
     flattened, index 255 reserved only when the frame has empty pixels)."""
     plan = GifPlan() if plan is None else plan
-    marks = frame_marks(rgba)
-    clear = bool((rgba[..., 3] == 0).any())
+    marks, clear = marks_and_clear(rgba)
     if plan.flatten:
-        rgba = flatten([rgba], plan.matte)[0]
-    image, _ = _gif_frame(rgba, reserve=bool(plan.reserve) and not plan.flatten)
+        rgba, clear_now = flatten([rgba], plan.matte)[0], False
+    else:
+        clear_now = clear
+    image, _ = _gif_frame(rgba, reserve=bool(plan.reserve) and not plan.flatten, clear=clear_now)
     return GifFrame(image, clear and not plan.flatten, marks, plan.flatten, bool(plan.reserve))
 
 
@@ -305,13 +321,55 @@ def save_animation(
     if fmt == "PNG":
         write_apng(frames, path, total, len(frames), loop=loop)
         return [path]
-    images = [Image.fromarray(f, mode="RGBA") for f in frames]
-    durations = frame_durations(len(frames), total, 0.001)
-    opts = {"lossless": False, "quality": 90}
+    write_webp(frames, path, total, len(frames), loop=loop)
+    return [path]
 
-    def write(fh):
-        images[0].save(fh, format=fmt, save_all=True, append_images=images[1:],
-                       duration=durations, loop=loop, **opts)  # fmt: skip
+
+WEBP_OPTIONS = {"lossless": False, "quality": 90}
+
+
+def write_webp(frames, path, total: float, count: int, *, loop: int = 0) -> None:
+    """Write ``count`` RGBA frames (any iterable, taken one by one) lasting ``total`` seconds
+    as an animated WebP at ``path``, atomically. Pillow's writer makes a list of the images it
+    is given, but reads a multi-frame image frame by frame (``seek``): the frames after the
+    first are given as one such image (``_FrameStream``) that makes each frame's image when
+    the writer seeks to it, so one RGBA frame is held at a time (the encoder keeps the frames
+    it has encoded, compressed)."""
+    durations = frame_durations(count, total, 0.001)
+
+    def write(fh) -> None:
+        it = iter(frames)
+        first = Image.fromarray(np.ascontiguousarray(next(it)), mode="RGBA")
+        rest = [_FrameStream(it, count - 1)] if count > 1 else []
+        first.save(fh, format="WEBP", save_all=True, append_images=rest, duration=durations,
+                   loop=loop, **WEBP_OPTIONS)  # fmt: skip
 
     write_atomically(path, write)
-    return [path]
+
+
+class _FrameStream:
+    """RGBA frames as one multi-frame image for Pillow's writers: ``n_frames``, ``seek`` (only
+    forwards: the frames are made as they come; seeking back is ignored, as the WebP writer
+    seeks back to where it began once it is done) and, for everything else, the current
+    frame's image."""
+
+    def __init__(self, frames, count: int) -> None:
+        self.n_frames = count
+        self._frames = frames
+        self._at = -1
+        self._image: Image.Image | None = None
+
+    def seek(self, index: int) -> None:
+        while self._at < index:
+            self._image = None  # the frame before is dropped first
+            rgba = next(self._frames)
+            self._image = Image.fromarray(np.ascontiguousarray(rgba), mode="RGBA")
+            self._at += 1
+
+    def tell(self) -> int:
+        return max(self._at, 0)
+
+    def __getattr__(self, name: str):
+        if self._image is None:
+            self.seek(0)
+        return getattr(self._image, name)

@@ -264,3 +264,49 @@ def straight_uint8(premul: np.ndarray) -> np.ndarray:
     np.clip(v, 0.0, 255.0, out=v)
     v += 0.5
     return v.astype(np.uint8)
+
+
+class FrameStore:
+    """A framebuffer kept from one frame to the next: the frames of an animation drawn in one
+    process all have one size, and allocating their sample buffers afresh (tens of MB at the
+    default multisampling: the first touch of every page is slow) and clearing them cost about
+    as much as drawing a small scene. ``take`` gives a clean framebuffer, ``finish`` resolves it
+    and leaves it clean for the next ``take``: with the compiled kernels in the resolve's own
+    pass (``frame_kernels.resolve_clear``), which also says whether the picture is one colour,
+    else by filling the buffers. Only the ordinary resolve (not ``nearest``) is offered."""
+
+    def __init__(self) -> None:
+        self._fb: Framebuffer | None = None
+        self._background: tuple | None = None
+
+    def take(self, width: int, height: int, background) -> Framebuffer:
+        """A clean ``width`` x ``height`` framebuffer of ``background`` (straight RGBA)."""
+        bg = tuple(float(c) for c in np.asarray(background, dtype=np.float64).reshape(4))
+        fb = self._fb
+        if fb is None or (fb.width, fb.height) != (width, height) or self._background != bg:
+            fb = Framebuffer(width, height, bg)
+            self._background = bg
+        self._fb = None  # taken: a failure while drawing leaves no half-drawn buffer kept
+        fb.fragments_drawn = 0
+        return fb
+
+    def finish(self, fb: Framebuffer, ssaa: int, depth: bool = True):
+        """(rgba, depth or None, whether rgba is one colour or None when not decided) of
+        ``fb`` resolved as ``Framebuffer.resolve`` does; ``fb`` is then clean and kept."""
+        bg = np.asarray(self._background, dtype=np.float64)
+        premul = np.array([bg[0] * bg[3], bg[1] * bg[3], bg[2] * bg[3], bg[3]], dtype=np.float32)
+        s = int(ssaa)
+        h, w = fb.height // s, fb.width // s
+        if accel.active() is not None:
+            from xaml3d.render.frame_kernels import resolve_clear  # numba is loaded already
+
+            rgba = np.empty((h, w, 4), dtype=np.uint8)
+            z = np.empty((h, w) if depth else (0, 0))
+            uniform = resolve_clear(fb.color, fb.zbuf, fb.width, s, rgba, z, depth, premul)
+            self._fb = fb
+            return rgba, (z if depth else None), bool(uniform)
+        rgba, z = fb.resolve(s)
+        fb.color[:] = premul
+        fb.zbuf.fill(0.0)
+        self._fb = fb
+        return rgba, (z if depth else None), None

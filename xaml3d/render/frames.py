@@ -9,11 +9,16 @@ knows nothing of animation). The files are written by ``xaml3d.output.animation`
 
 from __future__ import annotations
 
+import copy
+from collections import OrderedDict
 from collections.abc import Iterator
 
-from xaml3d.animation.moment import scene_at
+import numpy as np
+
+from xaml3d.animation.moment import scene_and_values_at, scene_at
 from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
 from xaml3d.render import accel
+from xaml3d.render.frame import FrameStore
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.settings import settings_of
 from xaml3d.render.workers import ordered, worker_pool
@@ -35,6 +40,7 @@ def render_frames(
     settings=None,
     folders=(),
     prepare=None,
+    depth: bool = True,
     **options,
 ) -> Iterator:
     """(time, Rendering) for each time, in time order: the render of ``scene_at(scene, t)``
@@ -43,15 +49,18 @@ def render_frames(
 
     ``executor``: any ``concurrent.futures.Executor`` to render the frames in (a process pool,
     a cluster's executor...); the scene and settings are sent with each frame. Else ``jobs`` > 1
-    renders them in that many worker processes of ``xaml3d.render.workers`` (each frame is an
-    independent render, so the results are the same). Frames are yielded as they come, in
-    order, with a bounded number in flight: an animation is never all held in memory here.
-    ``folders``: where the caller writes files meanwhile (should it be killed, the workers
-    remove its temporaries there). ``prepare``: a module-level function applied to each
+    renders them in that many worker processes of ``xaml3d.render.workers``, started once, each
+    given runs of consecutive frames (``CHUNK`` at most) rather than one frame per task (each
+    frame is an independent render, so the results are the same). Frames are yielded as they
+    come, in order, with a bounded number in flight: an animation is never all held in memory
+    here. ``folders``: where the caller writes files meanwhile (should it be killed, the
+    workers remove its temporaries there). ``prepare``: a module-level function applied to each
     Rendering where it was drawn (in the worker), whose result is yielded instead (e.g. the
     frame already encoded, so that less crosses between processes and the encoding runs in
-    parallel too).
+    parallel too). ``depth=False``: the caller uses the pictures alone (the Renderings' depth
+    and distance are None, not computed).
 
+    A process drawing many frames keeps a ``FrameSession``: one framebuffer for all its frames.
     The compiled kernels (``xaml3d.render.accel``) are chosen for the work of all the frames a
     process draws, not for one frame's."""
     chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
@@ -60,6 +69,7 @@ def render_frames(
         yield from ordered(executor, render_frame, items)
         return
     times = list(times)
+    session = FrameSession(scene, storyboard, chosen, prepare, depth)
     if jobs > 1 and len(times) > 2:
         workers = min(int(jobs), len(times) - 1)
         share = -(-len(times) // workers)
@@ -68,20 +78,85 @@ def render_frames(
         # loading numba again (about a second of CPU each), and with its warmed-up memory.
         accel.expect_frames(share)
         try:
-            first = render_frame(scene, times[0], storyboard, chosen, prepare)
+            first = session.frame(times[0])
         finally:
             accel.expect_frames(1)
         yield first
-        kept = (scene, storyboard, chosen, share, prepare)  # sent once per worker
+        del session  # its buffers are not needed here any more (the workers have their own)
+        rest = times[1:]
+        # A few runs per worker: enough to balance the workers, few enough tasks that their
+        # hand-off costs nothing; runs of consecutive frames keep the output streaming.
+        size = max(1, min(CHUNK, -(-len(rest) // (4 * workers))))
+        runs = [(tuple(rest[i : i + size]),) for i in range(0, len(rest), size)]
+        kept = (scene, storyboard, chosen, share, prepare, depth)  # sent once per worker
         with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
-            yield from ordered(pool, _kept_frame, [(t,) for t in times[1:]])
+            for run in ordered(pool, _kept_frames, runs):
+                yield from run
         return
     accel.expect_frames(len(times))
     try:
         for t in times:
-            yield render_frame(scene, t, storyboard, chosen, prepare)
+            yield session.frame(t)
     finally:
         accel.expect_frames(1)
+
+
+CHUNK = 8  # frames per task of a worker process at most (a few MB of RGBA each in flight)
+
+
+class FrameSession:
+    """What one process keeps while it draws frames of one animation: the scene, storyboard,
+    settings and ``prepare`` of ``render_frames``, a ``frame.FrameStore`` (one framebuffer for
+    all the frames, cleared by the resolve: no allocation or fill per frame), and the frames
+    it drew, by the exact animated values that made them (``scene_and_values_at``), within
+    ``MEMO_BYTES``: a frame whose values were seen before (a hold, an AutoReverse coming back,
+    a repeated cycle, a still) is not drawn again; a copy of the earlier result (sharing its
+    arrays) is given. The renderer is deterministic, so the pictures are the same bits."""
+
+    def __init__(self, scene, storyboard, settings, prepare=None, depth: bool = True) -> None:
+        self.scene, self.storyboard, self.settings = scene, storyboard, settings
+        self.prepare, self.depth = prepare, depth
+        self.store = FrameStore()
+        self.memo: OrderedDict = OrderedDict()  # animated values -> (result, its bytes)
+        self.memo_bytes = 0
+        self.drawn = self.repeated = 0
+
+    def frame(self, t: float) -> tuple:
+        """(t, the Rendering of the scene at ``t``), passed through ``prepare`` when given."""
+        frame, values = scene_and_values_at(self.scene, t, self.storyboard)
+        kept = self.memo.get(values)
+        if kept is not None:
+            self.memo.move_to_end(values)
+            self.repeated += 1
+            return t, copy.copy(kept[0])
+        r = render_scene(frame, self.settings, store=self.store, depth=self.depth)
+        result = r if self.prepare is None else self.prepare(r)
+        self.drawn += 1
+        size = _nbytes(result)
+        if size <= MEMO_BYTES:
+            self.memo[values] = (result, size)
+            self.memo_bytes += size
+            while self.memo_bytes > MEMO_BYTES:
+                self.memo_bytes -= self.memo.popitem(last=False)[1][1]
+        return t, copy.copy(result)
+
+
+MEMO_BYTES = 16 << 20  # frames a session keeps for repeats (about 45 GIF frames at 600x600)
+
+
+def _nbytes(result) -> int:
+    """The bytes a frame's result holds: its arrays, or a prepared frame's image."""
+    total = 0
+    for name in ("rgba", "depth", "distance", "ids"):
+        a = getattr(result, name, None)
+        image = getattr(a, "image", None)  # a prepared frame (``output.animation.GifFrame``)
+        if isinstance(a, np.ndarray):
+            total += a.nbytes
+        elif image is not None:
+            total += image.width * image.height
+        elif a is not None:
+            total += MEMO_BYTES  # unknown: not kept
+    return total
 
 
 def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
@@ -91,14 +166,14 @@ def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
     return t, (r if prepare is None else prepare(r))
 
 
-_KEPT: dict = {}  # a pool worker's scene, storyboard and settings (sent once, not per frame)
+_KEPT: dict = {}  # a pool worker's FrameSession (sent once, not per frame)
 
 
-def _keep_scene(scene, storyboard, settings, share: int = 1, prepare=None) -> None:
-    _KEPT.update(scene=scene, storyboard=storyboard, settings=settings, prepare=prepare)
+def _keep_scene(scene, storyboard, settings, share: int = 1, prepare=None, depth=True) -> None:
+    _KEPT["session"] = FrameSession(scene, storyboard, settings, prepare, depth)
     accel.expect_frames(share)  # about this many frames each: they pay for the kernels together
 
 
-def _kept_frame(t: float) -> tuple:
-    k = _KEPT
-    return render_frame(k["scene"], t, k["storyboard"], k["settings"], k["prepare"])
+def _kept_frames(times) -> list:
+    session = _KEPT["session"]
+    return [session.frame(t) for t in times]

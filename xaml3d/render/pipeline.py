@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from xaml3d.animation.moment import scene_at
 from xaml3d.errors import XamlError
+from xaml3d.render.frame import FrameStore
 from xaml3d.render.ids import surfaces
 from xaml3d.render.lens import render_through_lens
 from xaml3d.render.rendering import Rendering, draw_viewport
@@ -24,11 +25,16 @@ def render_scene(
     *,
     size: FrameSize | None = None,
     progress=None,
+    store: FrameStore | None = None,
+    depth: bool = True,
 ) -> Rendering:
     """Render the viewport ``settings.viewport`` of ``scene`` at ``settings.time`` (see
     ``RenderSettings``). ``size``: the picture's size when the caller already computed it with
     ``frame_size`` (the command line does, once per viewport); ``progress(done, total)``: called
-    after each lens sample render. Raises RenderError (RND001 size limits, RND005, RND008,
+    after each lens sample render. ``store``: a ``frame.FrameStore`` to draw in (the frames
+    of an animation: its framebuffer is reused; lens renders do not use it); ``depth=False``:
+    the picture alone is wanted (depth and distance None, unless ids are asked for). Raises
+    RenderError (RND001 size limits, RND005, RND008,
     LNS001 lens or stereo without a PerspectiveCamera), CameraError CAM010 (an empty viewport
     without a size) and SceneError."""
     settings = RenderSettings() if settings is None else settings
@@ -48,7 +54,8 @@ def render_scene(
                 return _with_ids(r, scene, eye_vp, size, settings) if want_ids else r
 
             return render_through_lens(vp, size, settings, draw, progress=progress)
-        r = draw_viewport(scene, vp, size, settings)
+        depth = depth or settings.ids
+        r = draw_viewport(scene, vp, size, settings, store=store, depth=depth)
         return _with_ids(r, scene, vp, size, settings) if settings.ids else r
     except XamlError as exc:  # a setting refused for this scene: name its file
         exc.with_location(file=scene.file)

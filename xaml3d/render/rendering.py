@@ -21,7 +21,7 @@ from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic
 from xaml3d.render import accel
 from xaml3d.render.distance import eye_depth
 from xaml3d.render.draw import draw_viewport_models, make_context
-from xaml3d.render.frame import Framebuffer
+from xaml3d.render.frame import Framebuffer, FrameStore
 from xaml3d.render.settings import FrameSize, RenderSettings
 from xaml3d.render.wireframe import draw_wireframe
 from xaml3d.scene.camera_math import camera_pipeline
@@ -35,10 +35,11 @@ class Rendering:
     ``distance``: (H, W) float32 linear eye-space depth (distance from the eye plane along the
     look direction, NaN where empty; ``xaml3d.render.distance``); ``ids``: (H, W) int32 index
     of the model drawn at each pixel, -1 where none (only when asked for with ``ids=True``).
-    With a stereo pair, depth, distance and ids are the pinhole (centre) camera's."""
+    With a stereo pair, depth, distance and ids are the pinhole (centre) camera's. depth and
+    distance are None when the render was asked for the picture alone (``depth=False``)."""
 
     rgba: np.ndarray
-    depth: np.ndarray
+    depth: np.ndarray | None
     width: int
     height: int
     diagnostics: list[Diagnostic] = field(default_factory=list)
@@ -59,12 +60,16 @@ def draw_viewport(
     shading=None,
     bounds=False,
     nearest: bool = False,
+    store: FrameStore | None = None,
+    depth: bool = True,
 ) -> Rendering:
     """One render of the viewport ``vp`` (its camera may be a lens sample's) at ``size``.
     ``shading``: a ``draw.Shading`` cache of lit colours to fill or reuse (the lens lights once
     for all its samples); ``bounds``: ``vp.bounds()`` when the caller already has it;
     ``nearest``: each pixel takes its nearest sample's colour instead of the average (the
-    model-id render)."""
+    model-id render); ``store``: a ``FrameStore`` whose framebuffer is drawn into and kept
+    (the frames of an animation); ``depth=False``: the Rendering's depth and distance are None
+    (not computed: a caller that writes only the picture)."""
     w, h, grid = size.width, size.height, settings.grid
     diags: list[Diagnostic] = []
     sw, sh = w * grid, h * grid
@@ -72,7 +77,9 @@ def draw_viewport(
     picture = vp.picture if vp.picture is not None and vp.picture.changes_picture else None
     bg = settings.fill
     # the viewport's own Opacity, Clip, Effect... act on its picture alone, not the background
-    fb = Framebuffer(sw, sh, bg if picture is None or nearest else (0.0, 0.0, 0.0, 0.0))
+    fill = bg if picture is None or nearest else (0.0, 0.0, 0.0, 0.0)
+    store = None if nearest else store
+    fb = Framebuffer(sw, sh, fill) if store is None else store.take(sw, sh, fill)
     ctx = make_context(sw, sh, settings.effective_msaa)
     try:
         if bounds is False:
@@ -98,8 +105,16 @@ def draw_viewport(
         else:
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
-    rgba, depth = fb.resolve(grid, nearest=nearest)
-    if fb.fragments_drawn and w * h > 1 and bool((rgba == rgba[0, 0]).all()):
+    uniform = None
+    if store is None:
+        rgba, zbuf = fb.resolve(grid, nearest=nearest)
+    else:
+        rgba, zbuf, uniform = store.finish(fb, grid, depth)
+    if (
+        fb.fragments_drawn
+        and w * h > 1
+        and (uniform if uniform is not None else bool((rgba == rgba[0, 0]).all()))
+    ):
         # something was drawn, yet the image is one colour: a surface fills the view (the
         # camera inside a model), or the models draw in the background's colour
         hexa = "#" + "".join(f"{int(c):02X}" for c in rgba[0, 0][[3, 0, 1, 2]])
@@ -114,9 +129,10 @@ def draw_viewport(
 
         scale = (w / vp.width if vp.width > 0 else 1.0, h / vp.height if vp.height > 0 else 1.0)
         rgba = _over(apply_picture(rgba, picture, scale), bg)
-    result = Rendering(rgba=rgba, depth=depth, width=w, height=h, diagnostics=diags)
-    if pipeline is not None:
-        result.distance = eye_depth(depth, pipeline)
+    zbuf = zbuf if depth else None
+    result = Rendering(rgba=rgba, depth=zbuf, width=w, height=h, diagnostics=diags)
+    if pipeline is not None and zbuf is not None:
+        result.distance = eye_depth(zbuf, pipeline)
     return result
 
 

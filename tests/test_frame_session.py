@@ -1,0 +1,190 @@
+"""Frames drawn into one kept framebuffer (``render.frames.FrameSession``, ``frame.FrameStore``):
+the same pictures and diagnostics as fresh renders, frame after frame, on both renderer paths,
+and the buffers left clean for the next frame."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import ROOT
+
+import xaml3d
+from xaml3d.animation.moment import scene_at
+from xaml3d.render.frame import FrameStore
+from xaml3d.render.frames import FrameSession
+from xaml3d.render.pipeline import render_scene
+from xaml3d.render.settings import RenderSettings
+
+SPIN = ROOT / "samples" / "spinning-cube.xaml"
+TIMES = [0.0, 0.4, 0.4, 1.3, 2.9]
+
+GLOW = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="40" Height="30">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,4" LookDirection="0,0,-1"
+      FieldOfView="60"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#808080"/><DirectionalLight Color="White" Direction="-1,-1,-2"/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+          TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><MaterialGroup>
+        <DiffuseMaterial Brush="#8000C0FF"/>
+        <SpecularMaterial Brush="White" SpecularPower="20"/>
+        <EmissiveMaterial Brush="#402000"/>
+      </MaterialGroup></GeometryModel3D.Material>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="turn" Axis="0,1,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+    <Storyboard><DoubleAnimation Storyboard.TargetName="turn" Storyboard.TargetProperty="Angle"
+        From="-80" To="80" Duration="0:0:3"/></Storyboard>
+  </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+</Viewport3D>"""
+
+FILLED = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    Width="20" Height="16">
+  <Viewport3D.Camera><OrthographicCamera Position="0,0,4" LookDirection="0,0,-1"
+      Width="2"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="White"/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-9,-9,0 9,-9,0 9,9,0 -9,9,0"
+          TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Red"/></GeometryModel3D.Material>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>"""
+
+CASES = {
+    "spin msaa": (SPIN, {"width": 48, "height": 36}),
+    "spin background ssaa": (
+        SPIN,
+        {"width": 40, "height": 30, "ssaa": 2, "background": (0.2, 0.4, 0.6, 0.5)},
+    ),  # fmt: skip
+    "spin wireframe": (SPIN, {"width": 40, "height": 30, "mode": "wireframe"}),
+    "spin flat no aa": (SPIN, {"width": 40, "height": 30, "mode": "flat", "msaa": 1}),
+    "translucent, added light": (GLOW, {"width": 40, "height": 30}),
+    "translucent on white": (GLOW, {"width": 40, "height": 30, "background": (1, 1, 1, 1)}),
+}
+
+
+def load(source):
+    return xaml3d.load(source) if not isinstance(source, str) else xaml3d.load(source, text=True)
+
+
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_kept_buffers_give_the_fresh_renders(case, kernels, monkeypatch):
+    if kernels == "numba":
+        pytest.importorskip("numba")
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
+    source, options = CASES[case]
+    scene = load(source)
+    settings = RenderSettings(**options)
+    session = FrameSession(scene, None, settings)
+    pictures = []
+    for t in TIMES:
+        fresh = render_scene(scene_at(scene, t), settings)
+        _, kept = session.frame(t)
+        assert np.array_equal(kept.rgba, fresh.rgba), t
+        assert np.array_equal(kept.depth, fresh.depth)
+        assert np.array_equal(kept.distance, fresh.distance, equal_nan=True)
+        assert kept.diagnostics == fresh.diagnostics
+        pictures.append(kept.rgba)
+    assert not np.array_equal(pictures[0], pictures[-1])  # the frames differ: a real test
+
+
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+def test_the_buffers_are_left_clean_and_depth_can_be_left_out(kernels, monkeypatch):
+    if kernels == "numba":
+        pytest.importorskip("numba")
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
+    scene = load(GLOW)
+    settings = RenderSettings(width=40, height=30, background=(1.0, 0.5, 0.0, 0.5))
+    session = FrameSession(scene, None, settings, depth=False)
+    _, r = session.frame(1.5)
+    assert r.depth is None and r.distance is None
+    assert np.array_equal(r.rgba, render_scene(scene_at(scene, 1.5), settings).rgba)
+    fb = session.store.take(80, 60, (1.0, 0.5, 0.0, 0.5))  # the kept one: 2x2 samples
+    assert fb.fragments_drawn == 0
+    assert (fb.zbuf == 0.0).all()
+    assert (fb.color == np.array([0.5, 0.25, 0.0, 0.5], np.float32)).all()
+    store = FrameStore()
+    assert store.take(8, 6, (0, 0, 0, 0)) is not store.take(8, 6, (0, 0, 0, 0))  # none kept
+
+
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+def test_a_picture_of_one_colour_is_reported_from_kept_buffers(kernels, monkeypatch):
+    if kernels == "numba":
+        pytest.importorskip("numba")
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
+    scene = load(FILLED)
+    session = FrameSession(scene, None, RenderSettings())
+    for _ in range(2):
+        _, r = session.frame(0.0)
+        assert (r.rgba == (255, 0, 0, 255)).all()
+        assert [d.code for d in r.diagnostics] == ["RND009"]
+    _, r = FrameSession(load(GLOW), None, RenderSettings()).frame(1.0)
+    assert "RND009" not in [d.code for d in r.diagnostics]
+
+
+BOUNCE = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="32" Height="24">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,5" LookDirection="0,0,-1"
+      FieldOfView="50"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#606060"/><DirectionalLight Color="White" Direction="-1,-1,-2"/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+          TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Orange"/></GeometryModel3D.Material>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="turn" Axis="0,1,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+    <Storyboard><DoubleAnimation Storyboard.TargetName="turn" Storyboard.TargetProperty="Angle"
+        From="0" To="60" Duration="0:0:1" AutoReverse="True"/></Storyboard>
+  </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+</Viewport3D>"""
+
+
+@pytest.mark.parametrize("kernels", ["numpy", "numba"])
+def test_a_frame_whose_values_were_seen_is_not_drawn_again(kernels, monkeypatch):
+    if kernels == "numba":
+        pytest.importorskip("numba")
+    monkeypatch.setenv("XAML3D_KERNELS", kernels)
+    scene = load(BOUNCE)
+    settings = RenderSettings()
+    # 0.25 and 1.75 mirror each other (AutoReverse): 15 and 15 degrees, exactly; from 2 s on
+    # the animation holds its end value (0 degrees, as at 0 s); 0.5 and 1.5 give 30 degrees.
+    times = [0.0, 0.25, 0.5, 1.0, 1.5, 1.75, 2.0, 2.5, 3.0]
+    session = FrameSession(scene, None, settings)
+    got = [session.frame(t)[1] for t in times]
+    assert session.drawn == 4 and session.repeated == 5  # 0, 15, 30 and 60 degrees
+    for t, r in zip(times, got, strict=True):
+        fresh = render_scene(scene_at(scene, t), settings)
+        assert np.array_equal(r.rgba, fresh.rgba), t
+        assert np.array_equal(r.depth, fresh.depth) and r.diagnostics == fresh.diagnostics
+    assert got[1] is not got[5] and got[1].rgba is got[5].rgba  # a copy sharing the arrays
+    assert not np.array_equal(got[1].rgba, got[2].rgba)
+    # the key is the values, never the time: a different time, the same values
+    assert session.frame(7.0)[1].rgba is got[0].rgba
+
+
+def test_a_still_is_drawn_once_and_the_memo_is_bounded(monkeypatch):
+    from xaml3d.render import frames
+
+    still = load(FILLED)
+    session = FrameSession(still, None, RenderSettings())
+    for t in (0.0, 0.1, 0.2):
+        session.frame(t)
+    assert (session.drawn, session.repeated) == (1, 2)
+    monkeypatch.setattr(frames, "MEMO_BYTES", 2 * 32 * 24 * 4 + 100)  # two pictures, no depth
+    session = FrameSession(load(BOUNCE), None, RenderSettings(), depth=False)
+    for t in (0.0, 0.25, 0.5, 0.0):  # the first picture was pushed out by the third
+        session.frame(t)
+    assert (session.drawn, session.repeated) == (4, 0) and len(session.memo) == 2

@@ -1,0 +1,119 @@
+"""Compiled passes (numba) over one GIF frame: what ``gif_matte.frame_marks`` and the exact
+palette of ``animation._gif_frame`` compute, in one or two passes over the pixels instead of a
+dozen numpy passes and temporaries.
+
+Importing this module imports numba: ``available`` says whether that may be done, which is
+only when numba is already loaded (the renderer's kernels of an animation's frames: numba's
+start-up is then paid already) and not refused by ``XAML3D_KERNELS=numpy``. Every function
+returns exactly what the numpy code returns (tests compare both), so a GIF's bytes do not
+depend on which path made its frames.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import numba
+import numpy as np
+
+from xaml3d.numba_env import mode
+
+EMPTY = -1  # a free slot of the colour table
+TABLE = 1024  # slots of the colour table: at most 256 colours, so at most a quarter full
+
+
+def available() -> bool:
+    """Whether the compiled passes may be used without paying numba's start-up here."""
+    return "numba" in sys.modules and mode() != "numpy"
+
+
+@numba.njit(cache=True, nogil=True)
+def marks(rgba, words, drawn, opaque):
+    """One pass over ``rgba`` (H, W, 4 uint8; ``words``: its pixels as H*W uint32): (pixels
+    with partial alpha, those of them inside covered areas (3x3 neighbourhood all covered,
+    outside the image empty), covered pixels, empty pixels), and ``drawn`` (H*W uint32) filled
+    with what GIF draws: 0 where empty, else the pixel's word with alpha 255 (``opaque``: that
+    alpha as a word)."""
+    h = rgba.shape[0]
+    w = rgba.shape[1]
+    partial = 0
+    inside = 0
+    covered = 0
+    clear = 0
+    for y in range(h):
+        for x in range(w):
+            i = y * w + x
+            a = rgba[y, x, 3]
+            if a == 0:
+                clear += 1
+                drawn[i] = 0
+                continue
+            covered += 1
+            drawn[i] = words[i] | opaque
+            if a == 255:
+                continue
+            partial += 1
+            if y == 0 or x == 0 or y == h - 1 or x == w - 1:
+                continue  # a neighbour lies outside the image: empty
+            ok = True
+            for dy in range(-1, 2):
+                for dx in range(-1, 2):
+                    if rgba[y + dy, x + dx, 3] == 0:
+                        ok = False
+            if ok:
+                inside += 1
+    return partial, inside, covered, clear
+
+
+@numba.njit(cache=True, nogil=True)
+def _slot(table, key):
+    """The slot of ``key`` in the open-addressing ``table`` (its own, or the free one where it
+    would go)."""
+    mask = table.shape[0] - 1
+    s = (key * 2654435761) & mask
+    while table[s] != EMPTY and table[s] != key:
+        s = (s + 1) & mask
+    return s
+
+
+@numba.njit(cache=True, nogil=True)
+def exact_palette(rgba, limit, idx, keys):
+    """The distinct RGB colours of every pixel (empty ones included, as ``Image.getcolors`` of
+    the RGB image counts them) in ascending order of (r << 16 | g << 8 | b) into ``keys``, and
+    each pixel's rank among them into ``idx`` (H, W uint8), 255 where alpha is 0. Returns the
+    number of colours, or -1 (``idx`` unspecified) when there are more than ``limit``."""
+    h = rgba.shape[0]
+    w = rgba.shape[1]
+    table = np.full(TABLE, EMPTY, dtype=np.int64)
+    n = 0
+    last = EMPTY
+    for y in range(h):
+        for x in range(w):
+            key = (np.int64(rgba[y, x, 0]) << 16) | (np.int64(rgba[y, x, 1]) << 8) | rgba[y, x, 2]
+            if key == last:
+                continue
+            last = key
+            s = _slot(table, key)
+            if table[s] == EMPTY:
+                if n == limit:
+                    return -1
+                table[s] = key
+                keys[n] = key
+                n += 1
+    keys[:n] = np.sort(keys[:n])
+    rank = np.zeros(TABLE, dtype=np.uint8)
+    for r in range(n):
+        rank[_slot(table, keys[r])] = r
+    last = EMPTY
+    code = 0
+    for y in range(h):
+        for x in range(w):
+            if rgba[y, x, 3] == 0:
+                idx[y, x] = 255
+                continue
+            key = (np.int64(rgba[y, x, 0]) << 16) | (np.int64(rgba[y, x, 1]) << 8) | rgba[y, x, 2]
+            if key != last:
+                last = key
+                code = rank[_slot(table, key)]
+            idx[y, x] = code
+    return n
