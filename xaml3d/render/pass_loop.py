@@ -1,0 +1,73 @@
+"""A material side drawn by one compiled loop per pass (wpf3d.md sections 5-7: Gouraud colour,
+ImageBrush sampling, opacity, blending; camera-pipeline.md section 6, steps 6-7).
+
+With the compiled kernels loaded, a side whose triangles need no clipping and whose passes are
+solid colours or image brushes is drawn by ``kernels.draw_pass``: the triangles are set up once
+(``raster.set_up``, the rasterizer's own snapping, edge functions and depth planes) and every
+pass is then ONE loop that finds each sample, tests its depth, shades it and blends it, so a
+sample is touched once per pass and no fragment arrays are written and read back. The picture
+is exactly the one the fragment path (``draw.side_fragments``, ``PassShader.draw``) gives: the
+same expressions in the same order, the same clamping points of additive passes.
+
+Other sides (near-plane or guard-band clipping, gradient and drawn brushes, flat solid colours
+per triangle) take the fragment path.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.render.frame import Framebuffer
+from xaml3d.render.raster import DEFAULT_BUDGET, set_up
+
+# Per image pixel: the stamp of the (triangle, pixel) whose colour ``_CACHE`` holds; kept from
+# call to call (allocating and filling them per pass costs more than a small model's drawing).
+# Stamps only grow, so an old entry never matches a new stamp.
+_SCRATCH: dict = {}
+_STAMP = [0]
+
+
+def _scratch(n_img: int, width: int):
+    if _SCRATCH.get("size") != (n_img, width):
+        _SCRATCH.update(
+            size=(n_img, width),
+            owner=np.full(n_img, -1, dtype=np.int64),
+            cache=np.empty((n_img, 4), dtype=np.float32),
+            touched=np.empty(DEFAULT_BUDGET + width, dtype=np.int64),
+        )  # fmt: skip
+    return _SCRATCH["owner"], _SCRATCH["cache"], _SCRATCH["touched"]
+
+
+class SideLoop:
+    """A side's triangles set up once for the compiled loop of each of its passes."""
+
+    def __init__(self, fb: Framebuffer, xy, d, q, tris, indices, msaa: int) -> None:
+        """``tris``: the side's mesh triangle indices; ``xy`` (T, 3, 2) their screen
+        coordinates, ``d`` and ``q`` (T, 3) depth and 1/w; ``indices``: the mesh's (read-only,
+        int64)."""
+        self.fb = fb
+        self.s = set_up(xy, d, fb.width, fb.height, q)
+        if self.s is not None:
+            self.mtri = np.ascontiguousarray(tris[self.s.tris], dtype=np.int64)
+        self.indices = indices
+        self.msaa = max(int(msaa), 1)
+
+    def draw(self, kernels, args) -> None:
+        """One pass with its loop arguments (``PassShader.loop_args``)."""
+        s, fb = self.s, self.fb
+        if s is None:
+            return
+        msaa = self.msaa
+        n_img = (fb.width // msaa) * (fb.height // msaa) if msaa > 1 else 1
+        owner, cache, touched = _scratch(n_img, fb.width)
+        source, colors, brush, uvp, lay, img, additive = args
+        stamp = _STAMP[0]
+        _STAMP[0] += self.mtri.size + 1
+        A, B, C = s.edges
+        i0, i1, j0, j1 = s.box
+        gx, gy, zr, xr, yr = s.plane
+        fb.fragments_drawn += kernels.draw_pass(
+            A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, s.inv_area, s.q, s.persp, msaa,
+            fb.width, self.mtri, self.indices, source, colors, brush, uvp, lay, img, additive,
+            fb.zbuf, fb.color, owner, cache, stamp, DEFAULT_BUDGET, touched,
+        )  # fmt: skip
