@@ -98,8 +98,8 @@ class Counting(frame.Framebuffer):
     def __init__(self, *a, **k):
         super().__init__(*a, **k)
         made.append(self)
-from xaml3d.render import api
-api.Framebuffer = Counting
+from xaml3d.render import api, rendering
+rendering.Framebuffer = Counting
 from xaml3d.xaml.loader import load
 scene = load(sys.argv[1])
 opts = json.loads(sys.argv[2])

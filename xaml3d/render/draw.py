@@ -438,6 +438,12 @@ class PassShader:
         return np.ascontiguousarray(self.colors, dtype=np.float64)
 
     def __call__(self, frag: Fragments) -> np.ndarray:
+        # colours below float32's range (faint specular highlights) flush to zero or subnormals
+        # as the compiled passes' conversions do: not an error
+        with np.errstate(under="ignore"):
+            return self._colors(frag)
+
+    def _colors(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
             return self._c16[frag.tri].view(np.float32).reshape(-1, 4)
         if frag.inverse is not None:
