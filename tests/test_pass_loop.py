@@ -172,15 +172,16 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
 
     got = Framebuffer(w, h)
     s = set_up(xy, depth, w, h, q)
-    owner = np.full((w // msaa) * (h // msaa), -1, dtype=np.int64)
+    owner = np.full(w, -1, dtype=np.int64)
     cache = np.empty((owner.size, 4), np.float32)
     touched = np.empty(cap + w, dtype=np.int64)
-    got.fragments_drawn = kernels.draw_pass(
+    got.fragments_drawn, tag = kernels.draw_pass(
         *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w, s.tris.astype(np.int64),
         indices, kernels.COLOR_PLANES, planes, kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img,
         additive, got.zbuf, got.color, owner, cache, 0, cap, touched,
     )  # fmt: skip
     assert got.fragments_drawn == want.fragments_drawn > 1000
+    assert tag > 0
     assert np.array_equal(got.color, want.color)
     assert np.array_equal(got.zbuf, want.zbuf)
     if additive:  # the chunks' clamps mattered: some samples end above 1's clamp of a sum

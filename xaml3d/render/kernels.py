@@ -463,22 +463,30 @@ def draw_pass(
     """A whole material pass over set-up triangles (``raster.set_up``) in ONE loop: each
     sample is found (``raster_chunk``'s spans and depth), dropped beyond the far plane
     (``draw.side_fragments``), depth-tested, shaded (``shade_rows``; with ``msaa`` > 1 once per
-    (triangle, image pixel), at the pixel's centre, cached in ``cache`` under ``owner`` =
-    ``stamp`` + triangle) and blended (``blend_rows``), with no fragment arrays in between.
+    (triangle, image pixel), at the pixel's centre) and blended (``blend_rows``), with no
+    fragment arrays in between.
+
+    Multisampling: the ``msaa`` sample rows of one image row of a triangle come one after the
+    other, so the colour of (triangle, image pixel) is kept in ``cache[column]`` (one image
+    row, small enough to stay in the processor's cache) under ``owner[column]``, a tag unique
+    to (pass, triangle, image row): tags start above ``stamp`` and the next free one is
+    returned.
 
     ``mtri``: each set-up triangle's index in the mesh (``indices``, per-triangle ``colors``).
     Additive passes clamp at 1 at the end of each of the rasterizer's chunks (``cap``
     fragments, whole rows), where ``blend_rows`` clamps: the same picture even for the rare
     negative colour (weights extrapolated at an edge). ``touched`` (scratch of ``cap`` +
     ``width`` entries) lists the samples of the chunk that went above 1 after an addition.
-    Returns how many samples passed the depth test."""
+    Returns (how many samples passed the depth test, the next free tag)."""
     tcount = A.shape[1]
-    img_w = width // msaa
     one = np.float32(1.0)
     per_pixel = msaa > 1
     n = 0  # fragments of the rasterizer's current chunk
     nt = 0  # samples an additive pass touched in that chunk
     drawn = 0
+    tag = stamp
+    tag_t = -1
+    tag_row = -1
     for t in range(tcount):
         ia = inv_area[t]
         mt = mtri[t]
@@ -527,14 +535,16 @@ def draw_pass(
             # per-fragment weights (no multisampling): affine in k along the row
             s0 = s1 = s2 = g0 = g1 = g2 = 0.0
             pcy = 0
-            prow = 0  # the image row's first pixel, the image column and the sample within
-            cpix = 0
+            cpix = 0  # the image column and the sample within it, counted along the row
             sub = 0
             last = -1  # the image pixel whose colour r0..r3 hold (this row)
             r0 = r1 = r2 = r3 = np.float32(0.0)
             if per_pixel:
                 pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
-                prow = (j // msaa) * img_w
+                if j // msaa != tag_row or t != tag_t:
+                    tag += 1
+                    tag_row = j // msaa
+                    tag_t = t
                 cpix = lo // msaa
                 sub = lo - cpix * msaa
             else:
@@ -565,11 +575,11 @@ def draw_pass(
                 p = base + k
                 if not z <= zbuf[p]:
                     continue
-                if per_pixel and prow + pc != last:
-                    pp = prow + pc
+                if per_pixel and pc != last:
+                    pp = pc
                     last = pp
-                    if owner[pp] != stamp + t:
-                        owner[pp] = stamp + t
+                    if owner[pp] != tag:
+                        owner[pp] = tag
                         cx = pc * (msaa * SUBPIXEL) + msaa * HALF
                         e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
                         e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
@@ -643,4 +653,4 @@ def draw_pass(
             for c in range(4):
                 if color[p, c] > one:
                     color[p, c] = one
-    return drawn
+    return drawn, tag + 1

@@ -20,19 +20,19 @@ import numpy as np
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.raster import DEFAULT_BUDGET, set_up
 
-# Per image pixel: the stamp of the (triangle, pixel) whose colour ``_CACHE`` holds; kept from
-# call to call (allocating and filling them per pass costs more than a small model's drawing).
-# Stamps only grow, so an old entry never matches a new stamp.
+# ``kernels.draw_pass``'s scratch, kept from call to call (allocating and filling it per pass
+# costs more than a small model's drawing): per image column the tag of the (pass, triangle,
+# image row) whose colour the cache holds. Tags only grow, so an old entry never matches.
 _SCRATCH: dict = {}
-_STAMP = [0]
+_TAG = [0]
 
 
-def _scratch(n_img: int, width: int):
-    if _SCRATCH.get("size") != (n_img, width):
+def _scratch(width: int):
+    if _SCRATCH.get("width") != width:
         _SCRATCH.update(
-            size=(n_img, width),
-            owner=np.full(n_img, -1, dtype=np.int64),
-            cache=np.empty((n_img, 4), dtype=np.float32),
+            width=width,
+            owner=np.full(width, -1, dtype=np.int64),
+            cache=np.empty((width, 4), dtype=np.float32),
             touched=np.empty(DEFAULT_BUDGET + width, dtype=np.int64),
         )  # fmt: skip
     return _SCRATCH["owner"], _SCRATCH["cache"], _SCRATCH["touched"]
@@ -57,17 +57,14 @@ class SideLoop:
         s, fb = self.s, self.fb
         if s is None:
             return
-        msaa = self.msaa
-        n_img = (fb.width // msaa) * (fb.height // msaa) if msaa > 1 else 1
-        owner, cache, touched = _scratch(n_img, fb.width)
+        owner, cache, touched = _scratch(fb.width)
         source, colors, brush, uvp, lay, img, additive = args
-        stamp = _STAMP[0]
-        _STAMP[0] += self.mtri.size + 1
         A, B, C = s.edges
         i0, i1, j0, j1 = s.box
         gx, gy, zr, xr, yr = s.plane
-        fb.fragments_drawn += kernels.draw_pass(
-            A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, s.inv_area, s.q, s.persp, msaa,
+        drawn, _TAG[0] = kernels.draw_pass(
+            A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, s.inv_area, s.q, s.persp, self.msaa,
             fb.width, self.mtri, self.indices, source, colors, brush, uvp, lay, img, additive,
-            fb.zbuf, fb.color, owner, cache, stamp, DEFAULT_BUDGET, touched,
+            fb.zbuf, fb.color, owner, cache, _TAG[0], DEFAULT_BUDGET, touched,
         )  # fmt: skip
+        fb.fragments_drawn += drawn
