@@ -186,3 +186,18 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
     assert np.array_equal(got.zbuf, want.zbuf)
     if additive:  # the chunks' clamps mattered: some samples end above 1's clamp of a sum
         assert (got.color == 1.0).any() and (got.color < 0.0).any()
+
+
+def test_pass_loops_in_threads_draw_what_one_thread_draws(tmp_path, monkeypatch):
+    """The loops release the GIL and keep per-thread scratch: renders in a thread pool give the
+    pictures of renders one after the other."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    monkeypatch.setenv(accel.ENV, "numba")
+    scene = _scene(tmp_path, "Tile", "outside")
+    sizes = [{"width": 240 + 16 * k} for k in range(6)]
+    alone = [render_arrays(scene, **opts).rgba for opts in sizes]
+    with ThreadPoolExecutor(3) as pool:
+        together = list(pool.map(lambda opts: render_arrays(scene, **opts).rgba, sizes))
+    for a, b in zip(alone, together, strict=True):
+        assert np.array_equal(a, b)

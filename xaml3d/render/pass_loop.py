@@ -15,6 +15,8 @@ per triangle) take the fragment path.
 
 from __future__ import annotations
 
+import threading
+
 import numpy as np
 
 from xaml3d.render.frame import Framebuffer
@@ -22,20 +24,20 @@ from xaml3d.render.raster import DEFAULT_BUDGET, set_up
 
 # ``kernels.draw_pass``'s scratch, kept from call to call (allocating and filling it per pass
 # costs more than a small model's drawing): per image column the tag of the (pass, triangle,
-# image row) whose colour the cache holds. Tags only grow, so an old entry never matches.
-_SCRATCH: dict = {}
-_TAG = [0]
+# image row) whose colour the cache holds. Tags only grow, so an old entry never matches. One
+# per thread: the kernels release the GIL, and renders may run in a thread pool.
+_LOCAL = threading.local()
 
 
 def _scratch(width: int):
-    if _SCRATCH.get("width") != width:
-        _SCRATCH.update(
-            width=width,
-            owner=np.full(width, -1, dtype=np.int64),
-            cache=np.empty((width, 4), dtype=np.float32),
-            touched=np.empty(DEFAULT_BUDGET + width, dtype=np.int64),
-        )  # fmt: skip
-    return _SCRATCH["owner"], _SCRATCH["cache"], _SCRATCH["touched"]
+    local = _LOCAL
+    if getattr(local, "width", None) != width:
+        local.width = width
+        local.owner = np.full(width, -1, dtype=np.int64)
+        local.cache = np.empty((width, 4), dtype=np.float32)
+        local.touched = np.empty(DEFAULT_BUDGET + width, dtype=np.int64)
+        local.tag = 0
+    return local
 
 
 class SideLoop:
@@ -57,14 +59,15 @@ class SideLoop:
         s, fb = self.s, self.fb
         if s is None:
             return
-        owner, cache, touched = _scratch(fb.width)
+        scratch = _scratch(fb.width)
         source, colors, brush, uvp, lay, img, additive = args
         A, B, C = s.edges
         i0, i1, j0, j1 = s.box
         gx, gy, zr, xr, yr = s.plane
-        drawn, _TAG[0] = kernels.draw_pass(
+        drawn, scratch.tag = kernels.draw_pass(
             A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, s.inv_area, s.q, s.persp, self.msaa,
             fb.width, self.mtri, self.indices, source, colors, brush, uvp, lay, img, additive,
-            fb.zbuf, fb.color, owner, cache, _TAG[0], DEFAULT_BUDGET, touched,
+            fb.zbuf, fb.color, scratch.owner, scratch.cache, scratch.tag, DEFAULT_BUDGET,
+            scratch.touched,
         )  # fmt: skip
         fb.fragments_drawn += drawn
