@@ -10,6 +10,9 @@ multiply-adds), fragments in the same order, blending one fragment after the oth
 numpy path reproduces with its scatter tricks. Pictures are therefore identical; the
 reference-image suite runs on both paths to keep it so.
 
+``draw_pass`` fuses ``raster_chunk``, ``shade_rows`` and ``blend_rows`` into one loop per
+material pass (``render/pass_loop.py``): the same expressions again, so the same pictures.
+
 Array arguments are normalised by the callers (int64 / float64 / float32, C-contiguous) so that
 the on-disk cache holds one compiled version of each kernel.
 """
