@@ -138,9 +138,11 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
     chunks: the one loop against ``raster_chunk`` + ``shade_rows`` + ``blend_rows`` chunk by
     chunk (an additive pass clamps at 1 at the end of each chunk, not after each addition)."""
     monkeypatch.setenv(accel.ENV, "numba")
-    from xaml3d.render import kernels
     from xaml3d.render.frame import Framebuffer
     from xaml3d.render.raster import rasterize, set_up
+
+    accel.plan(0.0, 0)  # loads the kernels (numba's cache folder set first)
+    kernels = accel.active()
 
     rng = np.random.default_rng(11)
     t, w, h, cap = 300, 64, 48, 97
