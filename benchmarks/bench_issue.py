@@ -10,7 +10,9 @@ peak resident memory of the case's process (``os.wait4``'s ru_maxrss, largest of
 the median CPU seconds (user + system) of the case and of the floor with their ratio: on a
 machine shared with other work, CPU time moves less than wall time.
 A last table gives shaded samples per second (samples written by the material passes divided by
-the time of the ``render_arrays`` call, one core) for the lit scenes, textured and not.
+the time of the ``render_arrays`` call, one core) for the lit scenes, textured and not: by wall
+time and by the process's CPU time in the call (which a loaded machine moves less), and with
+``--base`` the same for the other tree, run by run in turn.
 
     python benchmarks/bench_issue.py                 # everything, about 3 minutes
     python benchmarks/bench_issue.py --only sphere1m-flat cube --repeat 3
@@ -98,31 +100,34 @@ class Counting(frame.Framebuffer):
     def __init__(self, *a, **k):
         super().__init__(*a, **k)
         made.append(self)
-from xaml3d.render import api
-api.Framebuffer = Counting
+from xaml3d.render import api, rendering
+rendering.Framebuffer = Counting
 from xaml3d.xaml.loader import load
 scene = load(sys.argv[1])
 opts = json.loads(sys.argv[2])
 api.render_arrays(scene, **opts)  # warm: imports, caches
 made.clear()
-t0 = time.perf_counter()
+t0, c0 = time.perf_counter(), time.process_time()
 api.render_arrays(scene, **opts)
-dt = time.perf_counter() - t0
-print(json.dumps({"samples": sum(f.fragments_drawn for f in made), "seconds": dt}))
+dt, dc = time.perf_counter() - t0, time.process_time() - c0
+print(json.dumps({"samples": sum(f.fragments_drawn for f in made), "seconds": dt, "cpu": dc}))
 """
 
 
-def shaded_rate(path: Path, opts: dict) -> tuple[int, list[float]]:
-    rates, samples = [], 0
+def shaded_rate(path: Path, opts: dict, tree: str | None = None):
+    """(samples, wall M/s per run, CPU M/s per run) of 3 runs (``tree``: another source tree)."""
+    rates, cpus, samples = [], [], 0
+    env = dict(os.environ, PYTHONPATH=tree) if tree else None
     for _ in range(3):
         out = subprocess.run(
             [sys.executable, "-c", SAMPLES_CHILD, str(path), json.dumps(opts)],
-            capture_output=True, text=True, check=True,
+            capture_output=True, text=True, check=True, env=env, cwd=tree,
         )  # fmt: skip
         r = json.loads(out.stdout.strip().splitlines()[-1])
         samples = r["samples"]
         rates.append(r["samples"] / r["seconds"] / 1e6)
-    return samples, rates
+        cpus.append(r["samples"] / r["cpu"] / 1e6)
+    return samples, rates, cpus
 
 
 def main() -> None:
@@ -193,15 +198,23 @@ def main() -> None:
                          f"{bpeak:>6.0f}")  # fmt: skip
             print(line, flush=True)
         if not args.only or "samples" in args.only:
-            print(f"\n{'shaded samples/s (1 core)':40}{'samples':>11}  M/s median (min..max)")
+            print(f"\n{'shaded samples/s (1 core)':40}{'samples':>11}  M/s median (min..max)"
+                  "  CPU M/s" + ("  | base M/s, CPU M/s" if base else ""))  # fmt: skip
             for label, path, opts in (
                 ("textured+lit+translucent, default AA", files["textured"], {}),
                 ("textured+lit+translucent, ssaa 1", files["textured"], {"ssaa": 1}),
                 ("lit sphere 200k shaded, default AA", files["sphere200k"], {}),
             ):
-                samples, rates = shaded_rate(path, opts)
-                print(f"{label:40}{samples:>11}  {statistics.median(rates):.1f} "
-                      f"({min(rates):.1f}..{max(rates):.1f})", flush=True)  # fmt: skip
+                samples, rates, cpus = shaded_rate(path, opts)
+                line = (f"{label:40}{samples:>11}  {statistics.median(rates):.1f} "
+                        f"({min(rates):.1f}..{max(rates):.1f})"
+                        f"  {statistics.median(cpus):.1f}")  # fmt: skip
+                if base:
+                    _, brates, bcpus = shaded_rate(path, opts, base)
+                    line += (f"  | {statistics.median(brates):.1f} "
+                             f"({min(brates):.1f}..{max(brates):.1f}), "
+                             f"{statistics.median(bcpus):.1f}")  # fmt: skip
+                print(line, flush=True)
                 rate = (statistics.median(rates), min(rates), max(rates), float("nan"))
                 results["rate:" + label] = rate
         print_targets(results)

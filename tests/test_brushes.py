@@ -304,3 +304,24 @@ def test_pad_start_colour_is_first_stop_at_zero():
     stops = (GradientStop(RED, 0.0), GradientStop(BLUE, 0.0), GradientStop(WHITE, 1.0))
     out = sample_brush(horizontal(stops=stops), uv((-0.5, 0), (0.0, 0), (0.5, 0)), UNIT)
     np.testing.assert_allclose(out, [RED, BLUE, [0.5, 0.5, 1.0, 1.0]], atol=1e-12)
+
+
+def test_equal_read_only_images_share_one_premultiplied_copy():
+    """Brushes of one image file on many models (decoded once per brush element): one float
+    conversion; a different image, or a writable one, gets its own."""
+    from xaml3d.render.brushes import premultiplied_image
+
+    rng = np.random.default_rng(5)
+    a = rng.integers(0, 256, size=(9, 7, 4), dtype=np.uint8)
+    b, c = a.copy(), a.copy()
+    c[4, 3, 1] ^= 1
+    for img in (a, b, c):
+        img.setflags(write=False)
+    pa = premultiplied_image(a)
+    assert premultiplied_image(b) is pa
+    pc = premultiplied_image(c)
+    assert pc is not pa and not np.array_equal(pc, pa)
+    want = a / 255.0
+    want[..., :3] *= want[..., 3:4]
+    assert np.array_equal(pa, want)
+    assert premultiplied_image(a.copy()) is not pa  # writable: may change, never shared

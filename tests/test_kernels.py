@@ -240,8 +240,9 @@ def _wavy_sheet(n: int = 24) -> dict[str, str]:
 
 @pytest.mark.parametrize("tile", ["None", "Tile", "FlipXY"])
 def test_compiled_passes_match_numpy_on_textured_translucent_specular(tile, tmp_path, monkeypatch):
-    """Lit, textured, translucent and additive passes, front and back: the compiled pass
-    (``kernels.shade_rows`` then ``blend_rows``) against the numpy path."""
+    """Lit, textured, translucent and additive passes, front and back: the compiled passes
+    (one loop per pass, ``kernels.draw_pass``; the gradient pass sampled outside and drawn by
+    ``kernels.shade_rows`` then ``blend_rows``) against the numpy path."""
     import shutil
 
     from xaml3d.render import kernels
@@ -251,22 +252,28 @@ def test_compiled_passes_match_numpy_on_textured_translucent_specular(tile, tmp_
     path.write_text(_PASS_SCENE.format(tile=tile, **_wavy_sheet()), encoding="utf-8")
     scene = load(path)
     calls = []
-    shade_rows = kernels.shade_rows
+    shade_rows, draw_pass = kernels.shade_rows, kernels.draw_pass
 
-    def counting(*args):
-        calls.append(args[6])  # the brush kind
+    def counting_rows(*args):
+        calls.append(("rows", args[6]))  # the brush kind
         return shade_rows(*args)
 
-    monkeypatch.setattr(kernels, "shade_rows", counting)
+    def counting_loop(*args):
+        calls.append(("loop", args[21]))
+        return draw_pass(*args)
+
+    monkeypatch.setattr(kernels, "shade_rows", counting_rows)
+    monkeypatch.setattr(kernels, "draw_pass", counting_loop)
     for opts in OPTIONS + [{"mode": "flat", "ssaa": 1}]:
         monkeypatch.setenv(accel.ENV, "numpy")
         a = render_arrays(scene, **opts)
         monkeypatch.setenv(accel.ENV, "numba")
         calls.clear()
         b = render_arrays(scene, **opts)
-        want = {kernels.BRUSH_IMAGE, kernels.BRUSH_GIVEN}
-        if opts.get("mode") != "flat":  # flat solid colours: blended from a per-triangle table
-            want.add(kernels.BRUSH_UNIFORM)
+        # the front's image and specular passes in one loop each, its gradient in rows; the
+        # back's solid colour in a loop (shaded) or from the per-triangle table (flat)
+        want = {("loop", kernels.BRUSH_IMAGE), ("loop", kernels.BRUSH_UNIFORM),
+                ("rows", kernels.BRUSH_GIVEN)}  # fmt: skip
         assert set(calls) == want, opts
         assert np.array_equal(a.rgba, b.rgba), opts
         assert np.array_equal(a.depth, b.depth), opts

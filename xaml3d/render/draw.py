@@ -176,6 +176,54 @@ def _unit_rows(v: np.ndarray) -> np.ndarray:
     return np.where(ok, v / np.where(ok, length, 1.0), 0.0)
 
 
+def _vertex_screen(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext):
+    """The vertex indices of the triangles ``tris``, which of them lie inside every clip plane
+    (``tin``, per triangle), and per-vertex screen x, y, depth and 1/w (valid for the vertices
+    inside)."""
+    clip = pm.clip
+    idx = pm.model.mesh.indices[tris]
+    planes = np.stack(ctx.clip_planes)
+    vin = clip[:, 3] > 0.0
+    for dist in (clip @ planes.T).T:  # one plane at a time: faster than all(axis=1)
+        vin &= dist <= 0.0
+    tv = vin[idx]
+    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
+    # Per-vertex screen coordinates of the vertices that need no clipping.
+    wv = np.where(vin, clip[:, 3], 1.0)
+    qv = 1.0 / wv
+    sx = (clip[:, 0] * qv + 1.0) * (ctx.width / 2.0)
+    sy = (1.0 - clip[:, 1] * qv) * (ctx.height / 2.0)
+    dv = -clip[:, 2] * qv
+    return idx, tin, sx, sy, dv, qv
+
+
+def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) -> bool:
+    """Draw a side with one compiled loop per pass (``pass_loop``) when the kernels are loaded
+    and the side allows it (no triangle to clip, weights to interpolate); passes whose brush is
+    sampled outside the kernels (gradients, drawn tiles) take the fragment path in their turn.
+    False when the side does not allow it, and nothing was drawn."""
+    kernels = accel.active()
+    if kernels is None or (shaders[0].flat and all(sh.uniform for sh in shaders)):
+        return False
+    passes = [sh.loop_args(kernels) for sh in shaders]
+    if all(p is None for p in passes):
+        return False
+    idx, tin, sx, sy, dv, qv = _vertex_screen(pm, tris, ctx)
+    if not tin.all():
+        return False
+    from xaml3d.render.pass_loop import SideLoop  # with the kernels only
+
+    xy = np.stack([sx[idx], sy[idx]], axis=-1)
+    side = SideLoop(fb, xy, dv[idx], qv[idx], tris, _read_only(shaders[0].indices), ctx.msaa)
+    for shader, args in zip(shaders, passes, strict=True):
+        if args is not None:
+            side.draw(kernels, args)
+        else:
+            for frag in side_fragments(pm, tris, ctx, passes=len(shaders)):
+                shader.draw(fb, frag)
+    return True
+
+
 def side_fragments(
     pm: PreparedModel,
     tris: np.ndarray,
@@ -194,19 +242,7 @@ def side_fragments(
     if tris.size == 0:
         return
     clip = pm.clip
-    idx = pm.model.mesh.indices[tris]
-    planes = np.stack(ctx.clip_planes)
-    vin = clip[:, 3] > 0.0
-    for dist in (clip @ planes.T).T:  # one plane at a time: faster than all(axis=1)
-        vin &= dist <= 0.0
-    tv = vin[idx]
-    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
-    # Per-vertex screen coordinates of the vertices that need no clipping.
-    wv = np.where(vin, clip[:, 3], 1.0)
-    qv = 1.0 / wv
-    sx = (clip[:, 0] * qv + 1.0) * (ctx.width / 2.0)
-    sy = (1.0 - clip[:, 1] * qv) * (ctx.height / 2.0)
-    dv = -clip[:, 2] * qv
+    idx, tin, sx, sy, dv, qv = _vertex_screen(pm, tris, ctx)
     if tin.all():
         src = tris
         ii = idx
@@ -379,11 +415,35 @@ class PassShader:
             fb.zbuf, fb.color, ro(pix), ro(z), ro(inverse), ro(rows), additive
         )
 
+    def loop_args(self, kernels):
+        """This pass's arguments of ``kernels.draw_pass`` (colour source and table, brush,
+        texture coordinates, image layout, image, additive), or None when its brush is sampled
+        outside the kernels (gradients, drawn tiles)."""
+        if self.uniform:
+            brush, lay, uvp = kernels.BRUSH_UNIFORM, _NO_LAYOUT, _NO_PLANES
+        elif self._layout is not None:
+            brush, lay, uvp = kernels.BRUSH_IMAGE, self._layout, self._uv_planes
+        else:
+            return None
+        if self.flat:
+            source, colors = kernels.COLOR_PER_TRIANGLE, self._tri_colors
+        else:
+            source, colors = kernels.COLOR_PLANES, self._planes
+        additive = not (self.standin or isinstance(self.mat, DiffuseMaterial))
+        ro = _read_only
+        return source, ro(colors), brush, ro(uvp), ro(lay), ro(self._image), additive
+
     @property
     def _tri_colors(self) -> np.ndarray:
         return np.ascontiguousarray(self.colors, dtype=np.float64)
 
     def __call__(self, frag: Fragments) -> np.ndarray:
+        # colours below float32's range (faint specular highlights) flush to zero or subnormals
+        # as the compiled passes' conversions do: not an error
+        with np.errstate(under="ignore"):
+            return self._colors(frag)
+
+    def _colors(self, frag: Fragments) -> np.ndarray:
         if self.flat and self.uniform:
             return self._c16[frag.tri].view(np.float32).reshape(-1, 4)
         if frag.inverse is not None:
@@ -490,6 +550,8 @@ def draw_model(
             if shading is not None:
                 shading.shaders[(key, sign, mode)] = shaders
                 shading.lightings += 1
+        if _draw_side_compiled(fb, pm, tris, ctx, shaders):
+            continue
         # Flat colours with uniform brushes are per triangle: no weights to interpolate.
         need_weights = not (flat and all(sh.uniform for sh in shaders))
         frags = side_fragments(pm, tris, ctx, weights=need_weights, passes=len(shaders))

@@ -153,7 +153,10 @@ class Framebuffer:
             # alpha >= 1 replaces (as the opaque path does), whatever else the call holds: the
             # result of a fragment never depends on how fragments are grouped into calls.
             a = s[:, 3:4]
-            self._put(p, np.where(a >= 1.0, s, s + (1.0 - a) * self._get(p)))
+            # a product below float32's range is flushed as the compiled blend flushes it, not
+            # an error (a faint translucent layer over a faint colour)
+            with np.errstate(under="ignore"):
+                self._put(p, np.where(a >= 1.0, s, s + (1.0 - a) * self._get(p)))
             self.zbuf[p] = z[idx]
             self.fragments_drawn += int(idx.size)
 

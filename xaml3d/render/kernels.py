@@ -10,6 +10,9 @@ multiply-adds), fragments in the same order, blending one fragment after the oth
 numpy path reproduces with its scatter tricks. Pictures are therefore identical; the
 reference-image suite runs on both paths to keep it so.
 
+``draw_pass`` fuses ``raster_chunk``, ``shade_rows`` and ``blend_rows`` into one loop per
+material pass (``render/pass_loop.py``): the same expressions again, so the same pictures.
+
 Array arguments are normalised by the callers (int64 / float64 / float32, C-contiguous) so that
 the on-disk cache holds one compiled version of each kernel.
 """
@@ -265,6 +268,14 @@ def _image_sample(u, v, lay, img):
     return s0, s1, s2, s3
 
 
+# The same function inlined into ``draw_pass``'s loop (numba's IR inlining: called there once a
+# sample, a call per sample cost more than the sampling). Not cached itself: it exists only
+# inside the cached caller.
+_image_sample_inline = numba.njit(nogil=True, inline="always", error_model="numpy")(
+    _image_sample.py_func
+)
+
+
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
     """The float32 colour (R, 4) of every row (a fragment, or a multisampled (triangle,
@@ -417,3 +428,232 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
                 rgba[y, x, k] = np.uint8(v)
             v = _min32(_max32(al * c255, zero), c255) + half
             rgba[y, x, 3] = np.uint8(v)
+
+
+DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _shade(w0, w1, w2, i0, i1, i2, mt, source, colors, brush, uvp, lay, img):
+    """One row's float32 colour, ``shade_rows``'s arithmetic for one row."""
+    if source == COLOR_PLANES:
+        c0 = w0 * colors[0, i0] + w1 * colors[0, i1] + w2 * colors[0, i2]
+        c1 = w0 * colors[1, i0] + w1 * colors[1, i1] + w2 * colors[1, i2]
+        c2 = w0 * colors[2, i0] + w1 * colors[2, i1] + w2 * colors[2, i2]
+        c3 = w0 * colors[3, i0] + w1 * colors[3, i1] + w2 * colors[3, i2]
+    else:
+        c0 = colors[mt, 0]
+        c1 = colors[mt, 1]
+        c2 = colors[mt, 2]
+        c3 = colors[mt, 3]
+    if brush == BRUSH_IMAGE:
+        u = w0 * uvp[0, i0] + w1 * uvp[0, i1] + w2 * uvp[0, i2]
+        v = w0 * uvp[1, i0] + w1 * uvp[1, i1] + w2 * uvp[1, i2]
+        s0, s1, s2, s3 = _image_sample_inline(u, v, lay, img)
+        c0 = c0 * s0
+        c1 = c1 * s1
+        c2 = c2 * s2
+        c3 = c3 * s3
+    return np.float32(c0), np.float32(c1), np.float32(c2), np.float32(c3)
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def draw_pass(
+    A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, msaa, width,
+    mtri, indices, source, colors, brush, uvp, lay, img, additive,
+    zbuf, color, owner, cache, stamp, cap, touched,
+):  # fmt: skip
+    """A whole material pass over set-up triangles (``raster.set_up``) in ONE loop: each
+    sample is found (``raster_chunk``'s spans and depth), dropped beyond the far plane
+    (``draw.side_fragments``), depth-tested, shaded (``shade_rows``; with ``msaa`` > 1 once per
+    (triangle, image pixel), at the pixel's centre) and blended (``blend_rows``), with no
+    fragment arrays in between.
+
+    Multisampling: the ``msaa`` sample rows of one image row of a triangle come one after the
+    other, so the colour of (triangle, image pixel) is kept in ``cache[column]`` (one image
+    row, small enough to stay in the processor's cache) under ``owner[column]``, a tag unique
+    to (pass, triangle, image row): tags start above ``stamp`` and the next free one is
+    returned.
+
+    ``mtri``: each set-up triangle's index in the mesh (``indices``, per-triangle ``colors``).
+    Additive passes clamp at 1 at the end of each of the rasterizer's chunks (``cap``
+    fragments, whole rows), where ``blend_rows`` clamps: the same picture even for the rare
+    negative colour (weights extrapolated at an edge). ``touched`` (scratch of ``cap`` +
+    ``width`` entries) lists the samples of the chunk that went above 1 after an addition.
+    Returns (how many samples passed the depth test, the next free tag)."""
+    tcount = A.shape[1]
+    one = np.float32(1.0)
+    per_pixel = msaa > 1
+    n = 0  # fragments of the rasterizer's current chunk
+    nt = 0  # samples an additive pass touched in that chunk
+    drawn = 0
+    tag = stamp
+    tag_t = -1
+    tag_row = -1
+    for t in range(tcount):
+        ia = inv_area[t]
+        mt = mtri[t]
+        vi0 = indices[mt, 0]
+        vi1 = indices[mt, 1]
+        vi2 = indices[mt, 2]
+        tl0 = 1 if (A[0, t] > 0 or (A[0, t] == 0 and B[0, t] > 0)) else 0
+        tl1 = 1 if (A[1, t] > 0 or (A[1, t] == 0 and B[1, t] > 0)) else 0
+        tl2 = 1 if (A[2, t] > 0 or (A[2, t] == 0 and B[2, t] > 0)) else 0
+        for j in range(j0[t], j1[t] + 1):
+            py = j * SUBPIXEL + HALF
+            lo = i0[t]
+            hi = i1[t]
+            for e in range(3):
+                a = A[e, t]
+                kk = B[e, t] * py + C[e, t]
+                if a > 0:
+                    lim = (kk - 1) // a
+                    v = -((lim + HALF) // SUBPIXEL)
+                    if v > lo:
+                        lo = v
+                elif a < 0:
+                    lim = (kk - 1) // (-a)
+                    v = (lim - HALF) // SUBPIXEL
+                    if v < hi:
+                        hi = v
+                elif kk <= 0:
+                    hi = -1
+            span = hi - lo + 1
+            if span <= 0:
+                continue
+            if n + span > cap and n > 0:  # where raster_chunk ends a chunk
+                if additive:
+                    for m in range(nt):
+                        p = touched[m]
+                        for c in range(4):
+                            if color[p, c] > one:
+                                color[p, c] = one
+                nt = 0
+                n = 0
+            n += span
+            px0 = lo * SUBPIXEL + HALF
+            d_s = zr[t] + gy[t] * (py - yr[t]) + gx[t] * (px0 - xr[t])
+            d_g = gx[t] * SUBPIXEL
+            base = j * width + lo
+            # per-fragment weights (no multisampling): affine in k along the row
+            s0 = s1 = s2 = g0 = g1 = g2 = 0.0
+            pcy = 0
+            cpix = 0  # the image column and the sample within it, counted along the row
+            sub = 0
+            last = -1  # the image pixel whose colour r0..r3 hold (this row)
+            r0 = r1 = r2 = r3 = np.float32(0.0)
+            if per_pixel:
+                pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
+                if j // msaa != tag_row or t != tag_t:
+                    tag += 1
+                    tag_row = j // msaa
+                    tag_t = t
+                cpix = lo // msaa
+                sub = lo - cpix * msaa
+            else:
+                s2 = (A[0, t] * px0 + B[0, t] * py + (C[0, t] - tl0)) * ia
+                g2 = (A[0, t] * SUBPIXEL) * ia
+                s0 = (A[1, t] * px0 + B[1, t] * py + (C[1, t] - tl1)) * ia
+                g0 = (A[1, t] * SUBPIXEL) * ia
+                s1 = (A[2, t] * px0 + B[2, t] * py + (C[2, t] - tl2)) * ia
+                g1 = (A[2, t] * SUBPIXEL) * ia
+                if persp:
+                    s0 *= q[t, 0]
+                    g0 *= q[t, 0]
+                    s1 *= q[t, 1]
+                    g1 *= q[t, 1]
+                    s2 *= q[t, 2]
+                    g2 *= q[t, 2]
+            for k in range(span):
+                # the image column of sample lo + k, counted along (no division per sample)
+                pc = cpix
+                sub += 1
+                if sub == msaa:
+                    sub = 0
+                    cpix += 1
+                d = d_s + d_g * k
+                if not d <= 1.0:
+                    continue
+                z = d - DEPTH_OFFSET
+                p = base + k
+                if not z <= zbuf[p]:
+                    continue
+                if per_pixel and pc != last:
+                    pp = pc
+                    last = pp
+                    if owner[pp] != tag:
+                        owner[pp] = tag
+                        cx = pc * (msaa * SUBPIXEL) + msaa * HALF
+                        e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
+                        e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
+                        e1 = A[2, t] * cx + (B[2, t] * pcy + (C[2, t] - tl2))
+                        if persp:
+                            w0 = e0 * (q[t, 0] * ia)
+                            w1 = e1 * (q[t, 1] * ia)
+                            w2 = e2 * (q[t, 2] * ia)
+                            tot = w0 + w1 + w2
+                            w0 = w0 / tot
+                            w1 = w1 / tot
+                            w2 = w2 / tot
+                        else:
+                            w0 = e0 * ia
+                            w1 = e1 * ia
+                            w2 = e2 * ia
+                        r0, r1, r2, r3 = _shade(
+                            w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img
+                        )
+                        cache[pp, 0] = r0
+                        cache[pp, 1] = r1
+                        cache[pp, 2] = r2
+                        cache[pp, 3] = r3
+                    else:
+                        r0 = cache[pp, 0]
+                        r1 = cache[pp, 1]
+                        r2 = cache[pp, 2]
+                        r3 = cache[pp, 3]
+                elif not per_pixel:
+                    w0 = s0 + g0 * k
+                    w1 = s1 + g1 * k
+                    w2 = s2 + g2 * k
+                    if persp:
+                        tot = w0 + w1 + w2
+                        w0 = w0 / tot
+                        w1 = w1 / tot
+                        w2 = w2 / tot
+                    r0, r1, r2, r3 = _shade(
+                        w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img
+                    )
+                drawn += 1
+                if additive:
+                    color[p, 0] += r0
+                    color[p, 1] += r1
+                    color[p, 2] += r2
+                    color[p, 3] += r3
+                    if (
+                        color[p, 0] > one or color[p, 1] > one or color[p, 2] > one
+                        or color[p, 3] > one
+                    ):  # fmt: skip
+                        # only these can need the clamp: a sample's value at the chunk's end
+                        # is the one after its last addition
+                        touched[nt] = p
+                        nt += 1
+                elif r3 >= one:
+                    color[p, 0] = r0
+                    color[p, 1] = r1
+                    color[p, 2] = r2
+                    color[p, 3] = r3
+                    zbuf[p] = z
+                else:
+                    a = one - r3
+                    color[p, 0] = r0 + a * color[p, 0]
+                    color[p, 1] = r1 + a * color[p, 1]
+                    color[p, 2] = r2 + a * color[p, 2]
+                    color[p, 3] = r3 + a * color[p, 3]
+                    zbuf[p] = z
+    if additive:
+        for m in range(nt):
+            p = touched[m]
+            for c in range(4):
+                if color[p, c] > one:
+                    color[p, c] = one
+    return drawn, tag + 1

@@ -103,6 +103,107 @@ def _depth_planes(X: np.ndarray, Y: np.ndarray, z: np.ndarray):
     return gx, gy, zs[:, 0], Xs[:, 0], Ys[:, 0]
 
 
+def _snap(xy: np.ndarray, width: int, height: int):
+    """Snapped vertices (X, Y) in sub-pixels, the signed doubled areas and each triangle's
+    candidate pixel box (i0, i1, j0, j1), and ``tris``: the triangles that may cover a pixel
+    centre (finite, non-degenerate, box on screen). None when there are none."""
+    xy = np.asarray(xy, dtype=np.float64)
+    t_count = xy.shape[0]
+    if t_count == 0:
+        return None
+    # NaN fails <= too, so this is also the finiteness test. Columns are and-ed one by one:
+    # numpy reduces a 3- or 6-long axis of millions of rows many times slower.
+    inside = (np.abs(xy) <= MAX_COORD).reshape(t_count, 6)
+    ok = inside[:, 0] & inside[:, 1] & inside[:, 2] & inside[:, 3] & inside[:, 4] & inside[:, 5]
+    if not ok.all():
+        xy = np.where(ok[:, None, None], xy, 0.0)
+    X = np.rint(xy[..., 0] * SUBPIXEL).astype(np.int64)
+    Y = np.rint(xy[..., 1] * SUBPIXEL).astype(np.int64)
+    area = (X[:, 1] - X[:, 0]) * (Y[:, 2] - Y[:, 0]) - (X[:, 2] - X[:, 0]) * (Y[:, 1] - Y[:, 0])
+    ok &= area != 0
+
+    # Candidate pixel centres: i * 256 + 128 within [Xmin, Xmax].
+    i0 = np.maximum(_ceil_div(_min3(X) - HALF, SUBPIXEL), 0)
+    i1 = np.minimum((_max3(X) - HALF) // SUBPIXEL, width - 1)
+    j0 = np.maximum(_ceil_div(_min3(Y) - HALF, SUBPIXEL), 0)
+    j1 = np.minimum((_max3(Y) - HALF) // SUBPIXEL, height - 1)
+    ok &= (i1 >= i0) & (j1 >= j0)
+    tris = np.flatnonzero(ok)
+    if tris.size == 0:
+        return None
+    return X, Y, area, i0, i1, j0, j1, tris
+
+
+def _edges(X: np.ndarray, Y: np.ndarray, area: np.ndarray):
+    """|area| as float64 and the edge functions (A, B, C), each (3, T) int64, of snapped
+    triangles of signed doubled ``area``."""
+    # Negatively oriented triangles get all edge functions negated (vertex order is kept, so the
+    # weights stay in input order); the fill rule then sees every edge in positive orientation.
+    sgn = np.where(area < 0, -1, 1)
+    area_t = np.abs(area).astype(np.float64)
+    # Edge e goes from vertex e to vertex e+1; E(p) = A px + B py + C; the barycentric weight of
+    # the vertex opposite edge e is E_e / area. Top edge: horizontal, pointing +x; left edge:
+    # pointing up (dy < 0) for a positively oriented triangle in y-down coordinates. Such edges
+    # own the centres lying on them: the test is E + tl > 0 on integers.
+    # Stored edge-major (3, T) so that one edge's coefficients are contiguous; C already holds
+    # the top-left bias (C + tl), which is all the span solver needs.
+    A = np.empty((3, X.shape[0]), dtype=np.int64)
+    B = np.empty_like(A)
+    C = np.empty_like(A)
+    for e in range(3):
+        a, b = e, (e + 1) % 3
+        dx = (X[:, b] - X[:, a]) * sgn
+        dy = (Y[:, b] - Y[:, a]) * sgn
+        A[e] = -dy
+        B[e] = dx
+        C[e] = dy * X[:, a] - dx * Y[:, a] + ((dy < 0) | ((dy == 0) & (dx > 0)))
+    return area_t, A, B, C
+
+
+@dataclass
+class SetUp:
+    """Triangles set up for a compiled loop that rasterizes them itself (``kernels.draw_pass``):
+    the arrays ``kernels.raster_chunk`` takes, each C-contiguous in its one dtype, and ``tris``,
+    the input triangles they are (in order). ``estimate``: half the boxes' samples."""
+
+    tris: np.ndarray
+    edges: tuple  # A, B, C
+    box: tuple  # i0, i1, j0, j1
+    plane: tuple  # gx, gy, zr, xr, yr (depth, ``_depth_planes``)
+    inv_area: np.ndarray
+    q: np.ndarray  # (T, 3) 1/w, or (1, 3) zeros when affine
+    persp: bool
+    estimate: float
+
+
+def set_up(xy, depth, width: int, height: int, inv_w=None) -> SetUp | None:
+    """``rasterize``'s set-up of triangles ``xy`` (T, 3, 2), without rasterizing them: the same
+    snapping, boxes, edge functions and depth planes, so a loop over them finds exactly the
+    fragments ``rasterize`` yields, in the same order. None when no triangle can cover a pixel."""
+    snapped = _snap(xy, width, height)
+    if snapped is None:
+        return None
+    X, Y, area, i0, i1, j0, j1, tris = snapped
+    X, Y = X[tris], Y[tris]
+    area_t, A, B, C = _edges(X, Y, area[tris])
+    z_t = np.asarray(depth, dtype=np.float64)[tris]
+    persp = inv_w is not None
+    q = np.asarray(inv_w, dtype=np.float64)[tris] if persp else np.zeros((1, 3))
+    rows = (j1 - j0 + 1)[tris]
+    estimate = 0.5 * float(np.dot(rows.astype(np.float64), (i1 - i0 + 1)[tris]))
+    c64 = np.ascontiguousarray
+    return SetUp(
+        tris,
+        tuple(c64(e, dtype=np.int64) for e in (A, B, C)),
+        tuple(c64(b[tris], dtype=np.int64) for b in (i0, i1, j0, j1)),
+        tuple(c64(a, dtype=np.float64) for a in _depth_planes(X, Y, z_t)),
+        c64(1.0 / area_t, dtype=np.float64),
+        c64(q, dtype=np.float64),
+        persp,
+        estimate,
+    )
+
+
 def rasterize(
     xy: np.ndarray,
     depth: np.ndarray,
@@ -132,29 +233,10 @@ def rasterize(
     edge pixel the centre may lie outside the triangle and the weights extrapolate, as there).
     """
     xy = np.asarray(xy, dtype=np.float64)
-    t_count = xy.shape[0]
-    if t_count == 0:
+    bounds = _snap(xy, width, height)
+    if bounds is None:
         return
-    # NaN fails <= too, so this is also the finiteness test. Columns are and-ed one by one:
-    # numpy reduces a 3- or 6-long axis of millions of rows many times slower.
-    inside = (np.abs(xy) <= MAX_COORD).reshape(t_count, 6)
-    ok = inside[:, 0] & inside[:, 1] & inside[:, 2] & inside[:, 3] & inside[:, 4] & inside[:, 5]
-    if not ok.all():
-        xy = np.where(ok[:, None, None], xy, 0.0)
-    X = np.rint(xy[..., 0] * SUBPIXEL).astype(np.int64)
-    Y = np.rint(xy[..., 1] * SUBPIXEL).astype(np.int64)
-    area = (X[:, 1] - X[:, 0]) * (Y[:, 2] - Y[:, 0]) - (X[:, 2] - X[:, 0]) * (Y[:, 1] - Y[:, 0])
-    ok &= area != 0
-
-    # Candidate pixel centres: i * 256 + 128 within [Xmin, Xmax].
-    i0 = np.maximum(_ceil_div(_min3(X) - HALF, SUBPIXEL), 0)
-    i1 = np.minimum((_max3(X) - HALF) // SUBPIXEL, width - 1)
-    j0 = np.maximum(_ceil_div(_min3(Y) - HALF, SUBPIXEL), 0)
-    j1 = np.minimum((_max3(Y) - HALF) // SUBPIXEL, height - 1)
-    ok &= (i1 >= i0) & (j1 >= j0)
-    tris = np.flatnonzero(ok)
-    if tris.size == 0:
-        return
+    X, Y, area, i0, i1, j0, j1, tris = bounds
     rows = (j1 - j0 + 1)[tris]
     # Half the bounding boxes' samples: a cheap estimate of the fragments to come.
     estimate = 0.5 * float(np.dot(rows.astype(np.float64), (i1 - i0 + 1)[tris]))
@@ -181,29 +263,9 @@ def rasterize(
                     yield frag
             return
     X, Y, i0, i1, j0, j1 = X[tris], Y[tris], i0[tris], i1[tris], j0[tris], j1[tris]
-    # Negatively oriented triangles get all edge functions negated (vertex order is kept, so the
-    # weights stay in input order); the fill rule then sees every edge in positive orientation.
-    sgn = np.where(area[tris] < 0, -1, 1)
-    area_t = np.abs(area[tris]).astype(np.float64)
+    area_t, A, B, C = _edges(X, Y, area[tris])
     z_t = np.asarray(depth, dtype=np.float64)[tris]
     q_t = None if inv_w is None else np.asarray(inv_w, dtype=np.float64)[tris]
-
-    # Edge e goes from vertex e to vertex e+1; E(p) = A px + B py + C; the barycentric weight of
-    # the vertex opposite edge e is E_e / area. Top edge: horizontal, pointing +x; left edge:
-    # pointing up (dy < 0) for a positively oriented triangle in y-down coordinates. Such edges
-    # own the centres lying on them: the test is E + tl > 0 on integers.
-    # Stored edge-major (3, T) so that one edge's coefficients are contiguous; C already holds
-    # the top-left bias (C + tl), which is all the span solver needs.
-    A = np.empty((3, tris.size), dtype=np.int64)
-    B = np.empty_like(A)
-    C = np.empty_like(A)
-    for e in range(3):
-        a, b = e, (e + 1) % 3
-        dx = (X[:, b] - X[:, a]) * sgn
-        dy = (Y[:, b] - Y[:, a]) * sgn
-        A[e] = -dy
-        B[e] = dx
-        C[e] = dy * X[:, a] - dx * Y[:, a] + ((dy < 0) | ((dy == 0) & (dx > 0)))
     if kernels is not None:
         yield from _compiled(
             kernels, tris, X, Y, z_t, q_t, area_t, A, B, C, (i0, i1, j0, j1),

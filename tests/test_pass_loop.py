@@ -1,0 +1,205 @@
+"""One compiled loop per material pass (``kernels.draw_pass``, ``render/pass_loop.py``): the
+same pictures, bit for bit, as the fragment path (compiled ``raster_chunk``, ``shade_rows``,
+``blend_rows``) and the numpy path, on lit, textured, translucent, specular, emissive and tiled
+scenes, and the additive clamp at the rasterizer's chunk boundaries."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from xaml3d.render import accel, draw
+from xaml3d.render.api import render_arrays
+from xaml3d.xaml.loader import load
+
+REFERENCE = Path(__file__).resolve().parent / "reference"
+OPTIONS = [{}, {"ssaa": 1}, {"ssaa": 2}, {"msaa": 3}, {"mode": "flat"}, {"mode": "flat", "ssaa": 1}]
+
+_SCENE = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    Width="120" Height="90">
+  <Viewport3D.Camera>
+    <PerspectiveCamera Position="{camera}" LookDirection="{look}" FieldOfView="60"
+        NearPlaneDistance="{near}" />
+  </Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#303030" />
+    <DirectionalLight Color="#B0B0B0" Direction="-1,-1,-2" />
+    <PointLight Color="#909090" Position="1,1,2" />
+    <SpotLight Color="#606060" Position="-1,0.5,2" Direction="1,-0.3,-2" />
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="{positions}" TriangleIndices="{indices}"
+            TextureCoordinates="{texcoords}" />
+      </GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><MaterialGroup>
+        <DiffuseMaterial AmbientColor="#FFC0C0C0">
+          <DiffuseMaterial.Brush>
+            <ImageBrush ImageSource="quadrants.png" TileMode="{tile}" Viewport="0,0,0.3,0.4"
+                Opacity="0.7" Viewbox="0.1,0,0.8,1" Stretch="Uniform" />
+          </DiffuseMaterial.Brush>
+        </DiffuseMaterial>
+        <SpecularMaterial SpecularPower="12" Brush="#C0FFFFFF" />
+        <EmissiveMaterial>
+          <EmissiveMaterial.Brush>
+            <ImageBrush ImageSource="quadrants.png" Opacity="0.5" TileMode="{tile}"
+                Viewport="0.2,0.1,0.5,0.5" />
+          </EmissiveMaterial.Brush>
+        </EmissiveMaterial>
+        <EmissiveMaterial Brush="#30204080" />
+      </MaterialGroup></GeometryModel3D.Material>
+      <GeometryModel3D.BackMaterial><MaterialGroup>
+        <DiffuseMaterial>
+          <DiffuseMaterial.Brush>
+            <ImageBrush ImageSource="quadrants.png" TileMode="FlipX" Viewport="0,0,0.5,0.25" />
+          </DiffuseMaterial.Brush>
+        </DiffuseMaterial>
+        <SpecularMaterial SpecularPower="40" Brush="#FFFFFFFF" />
+      </MaterialGroup></GeometryModel3D.BackMaterial>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>
+"""
+
+# (camera, look direction, near plane): from outside, and with the near plane cutting the
+# sheet (its clipped sides take the fragment path)
+VIEWS = {
+    "outside": ("2.5,0.6,-3", "-2.5,-0.6,3.2", "0.125"),
+    "near-cut": ("0.3,0.2,2.2", "-0.2,-0.1,-1", "1.2"),
+}
+
+
+def _wavy_sheet(n: int = 24) -> dict[str, str]:
+    """A folded, wavy sheet: front and back faces, overlaps, texture coordinates beyond 0..1."""
+    u, v = np.meshgrid(np.linspace(-1.2, 1.2, n), np.linspace(-1.2, 1.2, n))
+    x = np.sin(1.3 * u) * 1.1
+    z = np.cos(1.3 * u) * 0.9 + 0.2 * np.sin(3 * v)
+    pos = np.stack([x, v, z], -1).reshape(-1, 3)
+    tc = np.stack([u * 0.8 + 0.5, 0.5 - v * 0.8], -1).reshape(-1, 2)
+    k = np.arange(n * n).reshape(n, n)[:-1, :-1].ravel()
+    tri = np.stack([k, k + 1, k + n + 1, k, k + n + 1, k + n], -1).reshape(-1)
+    return {
+        "positions": " ".join(f"{a:.6g},{b:.6g},{c:.6g}" for a, b, c in pos),
+        "indices": " ".join(map(str, tri)),
+        "texcoords": " ".join(f"{a:.6g},{b:.6g}" for a, b in tc),
+    }
+
+
+def _scene(tmp_path, tile: str, view: str):
+    shutil.copy(REFERENCE / "brush" / "textures" / "quadrants.png", tmp_path)
+    camera, look, near = VIEWS[view]
+    text = _SCENE.format(tile=tile, camera=camera, look=look, near=near, **_wavy_sheet())
+    path = tmp_path / "scene.xaml"
+    path.write_text(text, encoding="utf-8")
+    return load(path)
+
+
+@pytest.mark.parametrize("view", sorted(VIEWS))
+@pytest.mark.parametrize("tile", ["None", "Tile", "FlipXY"])
+def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkeypatch):
+    from xaml3d.render import kernels
+
+    scene = _scene(tmp_path, tile, view)
+    loops = []
+    draw_pass = kernels.draw_pass
+
+    def counting(*args):
+        loops.append(args[21])  # the brush kind
+        return draw_pass(*args)
+
+    monkeypatch.setattr(kernels, "draw_pass", counting)
+    compiled = draw._draw_side_compiled
+    for opts in OPTIONS:
+        monkeypatch.setenv(accel.ENV, "numpy")
+        a = render_arrays(scene, **opts)
+        monkeypatch.setenv(accel.ENV, "numba")
+        monkeypatch.setattr(draw, "_draw_side_compiled", lambda *args: False)
+        b = render_arrays(scene, **opts)
+        monkeypatch.setattr(draw, "_draw_side_compiled", compiled)
+        loops.clear()
+        c = render_arrays(scene, **opts)
+        if view == "outside":  # every pass of both sides in its loop
+            assert sorted(set(loops)) == [kernels.BRUSH_UNIFORM, kernels.BRUSH_IMAGE], opts
+            assert len(loops) == 6, opts
+        else:  # the clipped side takes the fragment path; the other still loops
+            assert 0 < len(loops) < 6, opts
+        for x in (b, c):
+            assert np.array_equal(a.rgba, x.rgba), opts
+            assert np.array_equal(a.depth, x.depth), opts
+        assert 0 < np.count_nonzero(a.rgba[..., 3]) < a.rgba[..., 3].size  # a picture drawn
+
+
+@pytest.mark.parametrize("msaa", [1, 2])
+@pytest.mark.parametrize("additive", [False, True])
+def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
+    """Overlapping triangles, colours below 0 and above 1, depths beyond the far plane, tiny
+    chunks: the one loop against ``raster_chunk`` + ``shade_rows`` + ``blend_rows`` chunk by
+    chunk (an additive pass clamps at 1 at the end of each chunk, not after each addition)."""
+    monkeypatch.setenv(accel.ENV, "numba")
+    from xaml3d.render.frame import Framebuffer
+    from xaml3d.render.raster import rasterize, set_up
+
+    accel.plan(0.0, 0)  # loads the kernels (numba's cache folder set first)
+    kernels = accel.active()
+
+    rng = np.random.default_rng(11)
+    t, w, h, cap = 300, 64, 48, 97
+    xy = rng.uniform(-6, 70, size=(t, 3, 2))
+    depth = rng.uniform(0.1, 1.3, size=(t, 3))
+    q = rng.uniform(0.4, 2.0, size=(t, 3))
+    planes = rng.uniform(-0.6, 1.4, size=(4, 3 * t))  # Gouraud colours, per vertex
+    indices = np.arange(3 * t, dtype=np.int64).reshape(t, 3)
+    indices.flags.writeable = False
+    no_uv, no_lay, no_img = np.zeros((2, 0)), np.zeros(0), np.zeros((0, 0, 4))
+    for a in (planes, no_uv, no_lay, no_img):
+        a.flags.writeable = False
+
+    want = Framebuffer(w, h)
+    for frag in rasterize(xy, depth, w, h, q, budget=cap, msaa=msaa):
+        keep = frag.depth <= 1.0
+        frag = frag.select(keep)
+        if len(frag) == 0:
+            continue
+        rtri = frag.tri if frag.inverse is None else frag.wtri
+        inverse = np.zeros(0, np.int64) if frag.inverse is None else frag.inverse
+        rows = kernels.shade_rows(
+            rtri, np.ascontiguousarray(frag.weights), kernels.COLOR_PLANES, planes, indices,
+            no_uv, kernels.BRUSH_UNIFORM, np.zeros((0, 4)), no_lay, no_img,
+        )  # fmt: skip
+        want.fragments_drawn += kernels.blend_rows(
+            want.zbuf, want.color, frag.pixel, frag.depth - 2.0, inverse, rows, additive
+        )
+
+    got = Framebuffer(w, h)
+    s = set_up(xy, depth, w, h, q)
+    owner = np.full(w, -1, dtype=np.int64)
+    cache = np.empty((owner.size, 4), np.float32)
+    touched = np.empty(cap + w, dtype=np.int64)
+    got.fragments_drawn, tag = kernels.draw_pass(
+        *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w, s.tris.astype(np.int64),
+        indices, kernels.COLOR_PLANES, planes, kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img,
+        additive, got.zbuf, got.color, owner, cache, 0, cap, touched,
+    )  # fmt: skip
+    assert got.fragments_drawn == want.fragments_drawn > 1000
+    assert tag > 0
+    assert np.array_equal(got.color, want.color)
+    assert np.array_equal(got.zbuf, want.zbuf)
+    if additive:  # the chunks' clamps mattered: some samples end above 1's clamp of a sum
+        assert (got.color == 1.0).any() and (got.color < 0.0).any()
+
+
+def test_pass_loops_in_threads_draw_what_one_thread_draws(tmp_path, monkeypatch):
+    """The loops release the GIL and keep per-thread scratch: renders in a thread pool give the
+    pictures of renders one after the other."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    monkeypatch.setenv(accel.ENV, "numba")
+    scene = _scene(tmp_path, "Tile", "outside")
+    sizes = [{"width": 240 + 16 * k} for k in range(6)]
+    alone = [render_arrays(scene, **opts).rgba for opts in sizes]
+    with ThreadPoolExecutor(3) as pool:
+        together = list(pool.map(lambda opts: render_arrays(scene, **opts).rgba, sizes))
+    for a, b in zip(alone, together, strict=True):
+        assert np.array_equal(a, b)
