@@ -18,6 +18,17 @@ Public API::
 
 from __future__ import annotations
 
+import os as _os
+import sys as _sys
+
+# Before numpy loads its BLAS: xaml3d's matrix products are thin ((N, 3) @ (3, 3) and
+# (N, 4) @ (4, 4) over a mesh's vertices), which BLAS threads do not speed up, while on a busy
+# machine every such product waits for its threads to get a core: a 500k-vertex transform that
+# takes 2 ms on one thread was measured at 60-200 ms with OpenBLAS's default threads on a loaded
+# 2-core machine. A value the user set is kept; the CLI's own parallelism is worker processes.
+if "numpy" not in _sys.modules:
+    _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
 __version__ = "0.1.0"
 
 # The subpackage xaml3d.render and the function xaml3d.render share a name. Importing xaml3d.api

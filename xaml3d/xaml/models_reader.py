@@ -237,10 +237,10 @@ def mesh(r, el):
         p.value("TextureCoordinates", V.parse_point_collection, None),
         line=r.ctx.position(el)["line"],
         locate=_mesh_locator(r, el, p),
+        rejected=p.rejected,
     )
     if p.rejected & {"Positions", "TriangleIndices"}:
         diags = [dg for dg in diags if dg.code not in _FOLLOW_ON]
-    result = replace(result, rejected=frozenset(p.rejected))
     for dg in diags:
         r.ctx.add(dg, el)
     r.cache["mesh", id(el)] = (el, result)  # the element kept: its id stays its own
