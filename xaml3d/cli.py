@@ -9,6 +9,10 @@ could not be handled, 2 usage error.
 
 from __future__ import annotations
 
+import os
+import sys
+import threading
+
 import click
 
 from xaml3d import __version__
@@ -50,3 +54,39 @@ main.add_command(camera_command)
 main.add_command(info_command)
 main.add_command(animate_command)
 main.add_command(export_command)
+
+
+def run() -> None:
+    """The process's entry point (the ``xaml3d`` script, ``python -m xaml3d``): ``main``, then
+    the process ends at once with its exit status, its output flushed.
+
+    A normal interpreter shutdown tears down every module and object one by one: with a
+    million-triangle scene and numba loaded that took 0.2-0.45 s (measured on a loaded 2-core
+    machine) after the command had finished, longer than drawing the picture. Every file the
+    commands write is closed before they return, so nothing is lost by skipping it. When a
+    thread or a child process is still running (not the case after any command), or stdout
+    cannot be flushed (a closed pipe), the usual shutdown runs instead, as before."""
+    try:
+        main()
+    except SystemExit as exc:
+        code = exc.code
+    else:
+        code = 0
+    if code is None:
+        code = 0
+    if not isinstance(code, int) or threading.active_count() > 1 or _children():
+        sys.exit(code)
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except OSError:
+        sys.exit(code)
+    os._exit(code)
+
+
+def _children() -> bool:
+    if "multiprocessing" not in sys.modules:
+        return False
+    import multiprocessing
+
+    return bool(multiprocessing.active_children())
