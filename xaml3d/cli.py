@@ -16,12 +16,35 @@ import threading
 import click
 
 from xaml3d import __version__
-from xaml3d.cli_animate import animate_command
-from xaml3d.cli_camera import camera_command
-from xaml3d.cli_export import export_command
-from xaml3d.cli_info import info_command
-from xaml3d.cli_render import render_command
-from xaml3d.cli_validate import validate_command
+
+# Each command's module is imported when the command runs (or its help is shown): ``info`` and
+# ``validate`` never import the renderer, the exporters or the image encoders.
+_COMMANDS = {
+    "render": ("xaml3d.cli_render", "render_command"),
+    "validate": ("xaml3d.cli_validate", "validate_command"),
+    "camera": ("xaml3d.cli_camera", "camera_command"),
+    "info": ("xaml3d.cli_info", "info_command"),
+    "animate": ("xaml3d.cli_animate", "animate_command"),
+    "export": ("xaml3d.cli_export", "export_command"),
+}
+
+
+class _Commands(click.Group):
+    """A group whose commands (``_COMMANDS``) are imported when first asked for."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted({*super().list_commands(ctx), *_COMMANDS})
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        found = super().get_command(ctx, cmd_name)
+        if found is None and cmd_name in _COMMANDS:
+            import importlib
+
+            module, attr = _COMMANDS[cmd_name]
+            found = getattr(importlib.import_module(module), attr)
+            self.add_command(found, cmd_name)
+        return found
+
 
 HELP = """Render and check WPF XAML 3D scenes (Viewport3D) headless.
 
@@ -38,7 +61,7 @@ Run xaml3d COMMAND --help for each command's options.
 """
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]}, help=HELP)
+@click.group(cls=_Commands, context_settings={"help_option_names": ["-h", "--help"]}, help=HELP)
 @click.version_option(__version__, prog_name="xaml3d")
 @click.pass_context
 def main(ctx: click.Context) -> None:
@@ -46,14 +69,6 @@ def main(ctx: click.Context) -> None:
     # handles extreme values itself, so no blanket numpy errstate hides what it would warn
     # (the test suite runs every command with numpy raising on each).
     pass
-
-
-main.add_command(render_command)
-main.add_command(validate_command)
-main.add_command(camera_command)
-main.add_command(info_command)
-main.add_command(animate_command)
-main.add_command(export_command)
 
 
 def run() -> None:
