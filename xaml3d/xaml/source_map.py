@@ -148,10 +148,11 @@ class SourceMap:
 
     def position_at(self, offset: int) -> tuple[int, int]:
         """1-based (line, column) of a text offset: the line and line start at the chunk
-        holding it (counted once for the whole text), then the newlines within that chunk.
-        Each position costs at most one chunk, in whatever order they are asked (hundreds of
-        thousands of models each asking for theirs stay linear)."""
-        lines, starts = self._line_index()
+        holding it (counted once, from the start of the text up to the furthest chunk asked
+        for), then the newlines within that chunk. Each position costs at most one chunk, in
+        whatever order they are asked (hundreds of thousands of models each asking for theirs
+        stay linear), and a position near the start does not count the lines of the rest."""
+        lines, starts = self._line_index(offset)
         k = offset // _CHUNK
         base = k * _CHUNK
         line, line_start = lines[k], starts[k]
@@ -162,22 +163,25 @@ class SourceMap:
             line_start = text.rfind("\n", base, offset) + 1
         return line, offset - line_start + 1
 
-    def _line_index(self) -> tuple[list[int], list[int]]:
-        """(line, line start) at the start of every chunk of the text."""
+    def _line_index(self, offset: int) -> tuple[list[int], list[int]]:
+        """(line, line start) at the start of every chunk of the text up to the one holding
+        ``offset`` (and possibly more)."""
         if self._lines is None or self._lines[0] != len(self.text):
-            text = self.text
-            lines, starts = [1], [0]
-            line, start = 1, 0
-            for a in range(0, len(text), _CHUNK):
-                b = a + _CHUNK
-                count = text.count("\n", a, b)
-                if count:
-                    line += count
-                    start = text.rfind("\n", a, b) + 1
-                lines.append(line)
-                starts.append(start)
-            self._lines = (len(text), (lines, starts))
-        return self._lines[1]
+            self._lines = (len(self.text), ([1], [0]))
+        lines, starts = self._lines[1]
+        text = self.text
+        line, start = lines[-1], starts[-1]
+        a = (len(lines) - 1) * _CHUNK
+        while len(lines) <= offset // _CHUNK:
+            b = a + _CHUNK
+            count = text.count("\n", a, b)
+            if count:
+                line += count
+                start = text.rfind("\n", a, b) + 1
+            lines.append(line)
+            starts.append(start)
+            a = b
+        return lines, starts
 
     def locate(
         self, el: etree._Element, attr: str | None = None, index: int | None = None
@@ -241,7 +245,7 @@ class SourceMap:
                         # the text is the value (no character reference, no line break made a
                         # blank): its characters line up
                         if 0 <= index < len(value) and text[end : end + 1] == m.group(2):
-                            if text[m.end() : end] == value:
+                            if text.startswith(value, m.end()):  # (no copy of a 30 MB value)
                                 return m.end() + index
                     return m.start(1)
             close = text.find(m.group(2), m.end())
