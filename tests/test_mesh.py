@@ -219,6 +219,17 @@ def test_degenerate_faces_are_the_zero_face_normals():
     expected = ~face_normals(pos, idx).any(axis=1)
     assert expected.sum() > 60 and not expected.all()
     assert (degenerate_faces(pos, idx) == expected).all()
+    # the reader's compiled test for big meshes gives the same answer
+    pytest.importorskip("numba", reason="numba not installed")
+    from xaml3d import numba_env
+
+    numba_env.set_cache_dir()
+    from xaml3d.xaml import mesh_scan
+
+    assert (mesh_scan.degenerate_faces(pos, idx) == expected).all()
+    mesh, diags = build_mesh(pos, idx, degenerate=mesh_scan.degenerate_faces)
+    [d] = [d for d in diags if d.code == "MSH005"]
+    assert f"{int(expected.sum())} of 5000 triangles" in d.message
 
 
 def test_generated_normals_are_made_when_first_read():

@@ -231,6 +231,7 @@ def build_mesh(
     line: int | None = None,
     locate: Locate | None = None,
     rejected: Iterable[str] = (),
+    degenerate: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
 ) -> tuple[Mesh, list[Diagnostic]]:
     """The ``Mesh`` WPF draws from a MeshGeometry3D's collections, with diagnostics.
 
@@ -241,6 +242,8 @@ def build_mesh(
     fault (an index out of range, the first degenerate triangle, the first extra normal...)
     or the collection concerned. ``rejected``: the collections whose markup value WPF refused
     (``Mesh.rejected``). A read-only input array of the right type is kept, not copied.
+    ``degenerate``: a function giving the same answer as ``degenerate_faces`` (the reader's
+    compiled one for big meshes; this stage does not load numba itself).
     """
     diags: list[Diagnostic] = []
     p = _rows(positions, 3)
@@ -285,7 +288,7 @@ def build_mesh(
         msg = "MeshGeometry3D has no complete triangle to draw"
         diags.append(_diag("MSH006", msg, line, locate, at))
 
-    flat = degenerate_faces(p, tri)
+    flat = (degenerate or degenerate_faces)(p, tri)
     degenerate = int(np.count_nonzero(flat))
     if degenerate:
         k = int(tri_ids[np.argmax(flat)])  # the first degenerate triangle, as given

@@ -218,6 +218,19 @@ def _mesh_locator(r, el, p):
     return locate
 
 
+# Meshes from this many positions on use the compiled degenerate-triangle test, once numba is
+# loaded anyway (big files: values.scanner_loaded); smaller ones are quick in numpy.
+COMPILED_MESH_MIN = 50_000
+
+
+def _compiled_degenerate(positions):
+    if positions.shape[0] < COMPILED_MESH_MIN or not V.scanner_loaded():
+        return None
+    from xaml3d.xaml import mesh_scan
+
+    return mesh_scan.degenerate_faces
+
+
 def mesh(r, el):
     """MeshGeometry3D -> Mesh (None, with a diagnostic, for other geometry types). Built once
     however many models share it (nothing animates a mesh)."""
@@ -239,6 +252,7 @@ def mesh(r, el):
         line=r.ctx.position(el)["line"],
         locate=_mesh_locator(r, el, p),
         rejected=p.rejected,
+        degenerate=_compiled_degenerate(positions),
     )
     if p.rejected & {"Positions", "TriangleIndices"}:
         diags = [dg for dg in diags if dg.code not in _FOLLOW_ON]
