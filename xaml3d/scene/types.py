@@ -549,17 +549,46 @@ class Viewport:
             p = m.mesh.positions
             if p.shape[0] == 0 or m.mesh.indices.shape[0] == 0:
                 continue
-            p = p[np.isfinite(p).all(axis=1)]  # non-finite vertices draw nothing (MSH007)
-            with np.errstate(over="ignore", invalid="ignore"):  # overflowing ones: dropped here
-                w = p @ m.world[:3, :3].T + m.world[:3, 3]
-            w = w[np.isfinite(w).all(axis=1)]
-            if w.shape[0] == 0:
+            found = _shifted_bounds(p, m.world)
+            if found is None:
+                found = _world_bounds(p, m.world)
+            if found is None:
                 continue
-            a, b = w.min(axis=0), w.max(axis=0)
+            a, b = found
             lo = a if lo is None else np.minimum(lo, a)
             hi = b if hi is None else np.maximum(hi, b)
         return None if lo is None else (lo, hi)
 
+
+def _world_bounds(p: np.ndarray, world: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """(min, max) of the finite world points of the finite ``p`` (None: there are none)."""
+    if not np.isfinite(p).all():
+        p = p[np.isfinite(p).all(axis=1)]  # non-finite vertices draw nothing (MSH007)
+    with np.errstate(over="ignore", invalid="ignore"):  # overflowing ones: dropped here
+        w = p @ world[:3, :3].T + world[:3, 3]
+    if not np.isfinite(w).all():
+        w = w[np.isfinite(w).all(axis=1)]
+    if w.shape[0] == 0:
+        return None
+    return w.min(axis=0), w.max(axis=0)
+
+
+def _shifted_bounds(p: np.ndarray, world: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """``_world_bounds`` without a product when ``world`` only translates (no transform, or a
+    TranslateTransform3D: most big meshes) and every value is finite: p @ I + t is p + t
+    exactly, and adding t keeps the order, so the bounds are min(p) + t and max(p) + t. None
+    when that does not hold (then ``_world_bounds``)."""
+    if not np.array_equal(world[:3, :3], _EYE3):
+        return None
+    with np.errstate(over="ignore", invalid="ignore"):
+        lo = p.min(axis=0) + world[:3, 3]
+        hi = p.max(axis=0) + world[:3, 3]
+    if not (np.isfinite(lo).all() and np.isfinite(hi).all()):
+        return None  # non-finite or overflowing vertices: they are left out there
+    return lo, hi
+
+
+_EYE3 = np.eye(3)
 
 # What ``Scene.timeline`` returns: the evaluation of the tracks is the animation stage's, above
 # the scene, which does not import it; ``xaml3d.animation.timeline`` puts its class here when
