@@ -387,3 +387,29 @@ def test_camera_inside_check_with_models_equal_in_value():
     assert [d.message.split(" (")[0] for d in found] == [
         "the camera of viewport 0 is inside model #0"
     ]
+
+
+def test_bounds_of_translated_meshes_match_the_general_product():
+    # Viewport.bounds takes min + t / max + t for a world that only translates: the same values
+    # as the product p @ I + t, signed zeros and overflowing vertices included.
+    from xaml3d.scene.types import _shifted_bounds, _world_bounds
+
+    rng = np.random.default_rng(3)
+    p = rng.normal(size=(1000, 3)) * 10
+    p[:5] = -0.0
+    for t in ((0.0, 0.0, 0.0), (1.5, -2.25, 1e-300), (0.1, 0.2, 0.3)):
+        world = np.eye(4)
+        world[:3, 3] = t
+        got = _shifted_bounds(p, world)
+        want = _world_bounds(p, world)
+        for a, b in zip(got, want, strict=True):
+            assert a.tobytes() == b.tobytes()
+    world = np.eye(4)
+    world[:3, 3] = (1.7e308, 0.0, 0.0)
+    big = p.copy()
+    big[0, 0] = 1.7e308  # overflows when shifted: left out by the product's path
+    assert _shifted_bounds(big, world) is None
+    assert np.isfinite(_world_bounds(big, world)[1]).all()
+    turned = np.eye(4)
+    turned[:3, :3] = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+    assert _shifted_bounds(p, turned) is None

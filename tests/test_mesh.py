@@ -7,7 +7,13 @@ import math
 import numpy as np
 import pytest
 
-from xaml3d.scene.mesh import MESH_CODES, build_mesh, face_normals, vertex_normals
+from xaml3d.scene.mesh import (
+    MESH_CODES,
+    build_mesh,
+    degenerate_faces,
+    face_normals,
+    vertex_normals,
+)
 from xaml3d.xaml.values import parse_int32_collection, parse_point3d_collection
 
 R2 = 1 / math.sqrt(2)
@@ -197,3 +203,51 @@ def test_non_finite_positions_drop_their_triangles():
     [d] = [d for d in diags if d.code == "MSH007"]
     assert "2 of 9 Positions" in d.message and "#1" in d.message and "2 triangle(s)" in d.message
     assert np.isfinite(mesh.normals).all()
+
+
+def test_degenerate_faces_are_the_zero_face_normals():
+    # Random triangles plus every hard case: repeated vertices, collinear points, products that
+    # underflow or overflow, infinite and NaN results of finite coordinates.
+    rng = np.random.default_rng(7)
+    pos = rng.normal(size=(400, 3)) * rng.choice([1e-160, 1e-100, 1.0, 1e100, 1e160], (400, 1))
+    pos[:10] = [0, 0, 0]
+    pos[10:20] = np.arange(10)[:, None] * [1.0, 2.0, 3.0]  # on one line
+    pos[20:30] = rng.choice([-1.7e308, 1.7e308, 0.0], (10, 3))  # differences overflow
+    idx = rng.integers(0, 400, (5000, 3))
+    idx[:50] = rng.integers(0, 30, (50, 3))
+    idx[50:60, 1] = idx[50:60, 0]
+    expected = ~face_normals(pos, idx).any(axis=1)
+    assert expected.sum() > 60 and not expected.all()
+    assert (degenerate_faces(pos, idx) == expected).all()
+    # the reader's compiled test for big meshes gives the same answer
+    pytest.importorskip("numba", reason="numba not installed")
+    from xaml3d import numba_env
+
+    numba_env.set_cache_dir()
+    from xaml3d.xaml import mesh_scan
+
+    assert (mesh_scan.degenerate_faces(pos, idx) == expected).all()
+    mesh, diags = build_mesh(pos, idx, degenerate=mesh_scan.degenerate_faces)
+    [d] = [d for d in diags if d.code == "MSH005"]
+    assert f"{int(expected.sum())} of 5000 triangles" in d.message
+
+
+def test_generated_normals_are_made_when_first_read():
+    mesh, _ = build_mesh(HINGE, HINGE_INDICES)
+    assert "_normals" in vars(mesh) and not isinstance(vars(mesh)["_normals"], np.ndarray)
+    first = mesh.normals
+    assert first[0] == pytest.approx([R2, R2, 0]) and not first.flags.writeable
+    assert mesh.normals is first  # made once
+    given, _ = build_mesh(HINGE, HINGE_INDICES, normals=[(0, 0, 2)] * 4)
+    assert isinstance(vars(given)["_normals"], np.ndarray)  # the user's: nothing to make later
+    assert given.normals.tolist() == [[0, 0, 1]] * 4
+
+
+def test_read_only_parsed_arrays_are_kept_not_copied():
+    pos = parse_point3d_collection("-1,1,0 1,1,0 1,-1,0 -1,-1,0")
+    idx = parse_int32_collection("0 1 2 0 2 3")
+    mesh, _ = build_mesh(pos, idx, texcoords=np.zeros((4, 2)))
+    assert np.shares_memory(mesh.positions, pos) and np.shares_memory(mesh.indices, idx)
+    writable = np.array(pos)
+    copied, _ = build_mesh(writable, idx)
+    assert not np.shares_memory(copied.positions, writable) and not copied.positions.flags.writeable

@@ -374,3 +374,39 @@ def test_xml_error_of_a_mismatched_end_tag_is_at_its_start_and_within_the_line()
             parse_bytes(bad)
         lines = bad.decode().split("\n")
         assert exc.value.column <= len(lines[exc.value.line - 1]) + 1, bad
+
+
+def test_ascii_documents_are_located_on_their_bytes_as_on_their_text():
+    # An ASCII document is scanned as bytes (no decoded copy); the same document with one
+    # non-ASCII character in a comment at its end takes the decoded path: same positions,
+    # for elements, attribute names and characters inside values, written as they are or not.
+    body = (
+        f"<Viewport3D {P}\n  Width='10'>\n <ModelVisual3D>\n"
+        "  <MeshGeometry3D Positions='0,0,0 1,0,0\n 0,1,0'\n"
+        "     TriangleIndices=\"0 1 2  0 2 7\" Normals='0 0 1 &#48; 0 1' />\n"
+        "  <MeshGeometry3D.Positions>1 2 3\n 4 5 6</MeshGeometry3D.Positions>\n"
+        " </ModelVisual3D>\n</Viewport3D>"
+    )
+    found = []
+    for tail in ("", "<!-- \u00e9 -->"):
+        data = (body + tail).encode("utf-8")
+        root = parse_bytes(data)
+        sm = SourceMap(data, root.getroottree().docinfo.encoding)
+        mesh = root[0][0]
+        prop = root[0][1]
+        found.append(
+            [
+                sm.locate(mesh),
+                sm.locate(mesh, "TriangleIndices"),
+                sm.locate(mesh, "TriangleIndices", 11),  # the "7"
+                sm.locate(mesh, "Positions", 8),  # a value holding a line break: the name
+                sm.locate(mesh, "Normals", 8),  # a value holding a reference: the name
+                sm.locate_text(prop, 9),  # the "5" on the next line
+            ]
+        )
+        assert isinstance(sm.text, bytes) == (tail == "")
+    assert found[0] == found[1]
+    # <Mesh... at 4:3; line 6 is 5 blanks, TriangleIndices="0 1 2  0 2 7" (the "7" at
+    # 6 + 17 + 11 = 34), a blank, Normals (5 + 17 + 12 + 2 + 1 = 37); Positions at 4:19 (after
+    # "  <MeshGeometry3D "); line 8 is " 4 5 6": the "5" at column 4
+    assert found[0] == [(4, 3), (6, 6), (6, 34), (4, 19), (6, 37), (8, 4)]

@@ -18,26 +18,73 @@ Public API::
 
 from __future__ import annotations
 
+import os as _os
+import sys as _sys
+import types as _types
+
+# Before numpy loads its BLAS: xaml3d's matrix products are thin ((N, 3) @ (3, 3) and
+# (N, 4) @ (4, 4) over a mesh's vertices), which BLAS threads do not speed up, while on a busy
+# machine every such product waits for its threads to get a core: a 500k-vertex transform that
+# takes 2 ms on one thread was measured at 60-200 ms with OpenBLAS's default threads on a loaded
+# 2-core machine. A value the user set is kept; the CLI's own parallelism is worker processes.
+if "numpy" not in _sys.modules:
+    _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
 __version__ = "0.1.0"
 
-# The subpackage xaml3d.render and the function xaml3d.render share a name. Importing xaml3d.api
-# imports the subpackage first; binding the functions afterwards means the package attribute
-# ends up being the function, and later imports of xaml3d.render.* (already in sys.modules) do
-# not rebind it.
-from xaml3d.api import (
-    Rendering,
-    RenderSettings,
-    render,
-    render_arrays,
-    render_batch,
-    save_image,
-    scene_at,
-)
-from xaml3d.errors import Diagnostic, XamlError
-from xaml3d.export import export
-from xaml3d.output.animation import save_animation
-from xaml3d.render.frames import frame_times, render_frames
-from xaml3d.xaml.loader import load
+# The public names are imported when first used (PEP 562): a command that only reads a scene
+# (``xaml3d info``, ``validate``) does not import the renderer, the exporters and the image
+# encoders, about a third of the package's import time.
+_PUBLIC = {
+    "Rendering": "xaml3d.api",
+    "RenderSettings": "xaml3d.api",
+    "render": "xaml3d.api",
+    "render_arrays": "xaml3d.api",
+    "render_batch": "xaml3d.api",
+    "save_image": "xaml3d.api",
+    "scene_at": "xaml3d.api",
+    "Diagnostic": "xaml3d.errors",
+    "XamlError": "xaml3d.errors",
+    "export": "xaml3d.export",
+    "save_animation": "xaml3d.output.animation",
+    "frame_times": "xaml3d.render.frames",
+    "render_frames": "xaml3d.render.frames",
+    "load": "xaml3d.xaml.loader",
+}
+
+
+def __getattr__(name: str):
+    where = _PUBLIC.get(name)
+    if where is None:
+        raise AttributeError(f"module 'xaml3d' has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(where), name)
+    _types.ModuleType.__setattr__(_sys.modules[__name__], name, value)
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_PUBLIC})
+
+
+class _Package(_types.ModuleType):
+    """The package module: the subpackages ``xaml3d.render`` and ``xaml3d.export`` share their
+    names with the functions ``render`` and ``export``. Importing a subpackage binds it as an
+    attribute of its parent; here that binding is left out, so ``xaml3d.render`` and
+    ``xaml3d.export`` are always the functions (the subpackages are in ``sys.modules`` and
+    ``from xaml3d.render import ...`` works as ever)."""
+
+    def __setattr__(self, name: str, value) -> None:
+        if name in ("render", "export") and isinstance(value, _types.ModuleType):
+            return
+        super().__setattr__(name, value)
+
+
+_sys.modules[__name__].__class__ = _Package
+
+# ``Scene.timeline`` needs the animation stage's class, which it registers when imported.
+from xaml3d.animation import timeline as _timeline  # noqa: E402, F401
 
 __all__ = [
     "Diagnostic",

@@ -191,7 +191,9 @@ Examples:
 def info_command(scene, resources, no_app, window_size, as_json) -> None:
     name = display_name(scene)
     with exit_on_input_error(name):
-        sc = load_scene(scene, tuple(resources), window_size, discover_app=not no_app)
+        sc = load_scene(
+            scene, tuple(resources), window_size, discover_app=not no_app, collect=False
+        )
         findings = findings_of(sc, name)
     info = scene_info(sc, name, findings)
     if as_json:

@@ -40,7 +40,9 @@ def collect_findings(
     name = display_name(source)
     try:
         # WPF's first frame (storyboards begun at load applied), as `render` checks it
-        scene = scene_at(load_scene(source, resources, discover_app=discover_app), 0.0)
+        scene = scene_at(
+            load_scene(source, resources, discover_app=discover_app, collect=False), 0.0
+        )
     except XamlError as exc:
         exc.with_location(file=name)
         return [exc.as_diagnostic()]

@@ -224,8 +224,7 @@ def sees_nothing(clip_matrix: np.ndarray, points: np.ndarray) -> bool:
     return any(bool(np.all(o)) for o in outside)
 
 
-def _check_visibility(vp: Viewport, file: str | None) -> list[Diagnostic]:
-    points = world_vertices(vp)
+def _check_visibility(vp: Viewport, file: str | None, points: np.ndarray) -> list[Diagnostic]:
     if vp.camera is None or points.shape[0] == 0:
         return []
 
@@ -269,7 +268,7 @@ def is_closed(mesh) -> bool:
     return bool(np.all(counts == 2))
 
 
-def _check_inside(vp: Viewport, file: str | None) -> list[Diagnostic]:
+def _check_inside(vp: Viewport, file: str | None, points: np.ndarray) -> list[Diagnostic]:
     """CHK009: the eye inside the bounding box of a closed or emissive model. From inside a
     closed mesh its back faces fill the view; an emissive one adds its glow over everything
     seen through it: the picture is that model, often one colour."""
@@ -284,7 +283,6 @@ def _check_inside(vp: Viewport, file: str | None) -> list[Diagnostic]:
         return []
     with np.errstate(all="ignore"):
         eye = transform_points(cam.transform, np.asarray(cam.position, dtype=np.float64))[0]
-        points = world_vertices(vp)
         starts = np.cumsum([0] + [m.mesh.positions.shape[0] for m in models[:-1]])
         lo = np.minimum.reduceat(points, starts, axis=0)
         hi = np.maximum.reduceat(points, starts, axis=0)
@@ -317,8 +315,9 @@ def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     for i, model in enumerate(vp.models):
         out.extend(_check_model(model, i, file))
     out.extend(_check_lights(vp, file))
-    out.extend(_check_visibility(vp, file))
-    out.extend(_check_inside(vp, file))
+    points = world_vertices(vp)  # (a million vertices: made once for both checks)
+    out.extend(_check_visibility(vp, file, points))
+    out.extend(_check_inside(vp, file, points))
     return out
 
 

@@ -17,13 +17,13 @@ Everything is vectorized: a million triangles take one pass of numpy per step.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 
 from xaml3d.codes.mesh import MESH_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import Diagnostic
-from xaml3d.scene.types import Mesh
+from xaml3d.scene.types import Deferred, Mesh
 
 
 def _rows(values, width: int, dtype=np.float64) -> np.ndarray:
@@ -37,9 +37,20 @@ def _rows(values, width: int, dtype=np.float64) -> np.ndarray:
 
 
 def _frozen(arr: np.ndarray, dtype=np.float64) -> np.ndarray:
+    """``arr`` as a read-only array of ``dtype``: a read-only input of that type (the reader's
+    number lists) is kept as it is, anything else copied (a 1M-triangle mesh's positions,
+    indices and texture coordinates are 44 MB, and first writes to fresh memory are slow)."""
+    if isinstance(arr, np.ndarray) and arr.dtype == dtype and not arr.flags.writeable:
+        return arr
     out = np.array(arr, dtype=dtype, copy=True)
     out.setflags(write=False)
     return out
+
+
+def _sealed(arr: np.ndarray) -> np.ndarray:
+    """``arr``, made here and referenced nowhere else, made read-only without a copy."""
+    arr.setflags(write=False)
+    return arr
 
 
 def _normalize_rows(v: np.ndarray) -> np.ndarray:
@@ -68,6 +79,27 @@ def face_normals(positions, indices) -> np.ndarray:
     ``indices`` is (T, 3) or flat with every index valid. Right-handed: the normal points to the
     side from which the triangle is seen counter-clockwise.
     """
+    nx, ny, nz = _face_cross(positions, indices)
+    n = np.empty((nx.shape[0], 3))
+    n[:, 0], n[:, 1], n[:, 2] = nx, ny, nz
+    return _normalize_rows(n)
+
+
+def degenerate_faces(positions, indices) -> np.ndarray:
+    """(T,) bool: the triangles whose face normal (``face_normals``) is zero. That is exactly
+    where the cross product is zero or not finite (``_normalize_rows`` gives every other row a
+    non-zero direction), so no normalization is needed to know it; tested on the three
+    components as separate contiguous arrays (reductions along rows of three are slow)."""
+    nx, ny, nz = _face_cross(positions, indices)
+    drawn = (nx != 0.0) | (ny != 0.0) | (nz != 0.0)
+    drawn &= np.isfinite(nx)
+    drawn &= np.isfinite(ny)
+    drawn &= np.isfinite(nz)
+    return ~drawn
+
+
+def _face_cross(positions, indices) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The components of (v1 - v0) x (v2 - v0) per triangle, three (T,) arrays."""
     p = _rows(positions, 3)
     tri = _rows(indices, 3, np.int64)
     # Per coordinate plane: gathers of one float64 column are much faster than of (T, 3) rows,
@@ -75,15 +107,11 @@ def face_normals(positions, indices) -> np.ndarray:
     # products and differences, so the same values).
     px, py, pz = (np.ascontiguousarray(p[:, k]) for k in range(3))
     i0, i1, i2 = (np.ascontiguousarray(tri[:, k]) for k in range(3))
-    n = np.empty((tri.shape[0], 3))
-    with np.errstate(all="ignore"):  # non-finite results are zeroed by _normalize_rows
+    with np.errstate(all="ignore"):  # non-finite results: degenerate, zeroed by _normalize_rows
         x0, y0, z0 = px[i0], py[i0], pz[i0]
         ax, ay, az = px[i1] - x0, py[i1] - y0, pz[i1] - z0
         bx, by, bz = px[i2] - x0, py[i2] - y0, pz[i2] - z0
-        n[:, 0] = ay * bz - az * by
-        n[:, 1] = az * bx - ax * bz
-        n[:, 2] = ax * by - ay * bx
-    return _normalize_rows(n)
+        return ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx
 
 
 def _accumulate(fn: np.ndarray, tri: np.ndarray, n: int) -> np.ndarray:
@@ -94,6 +122,14 @@ def _accumulate(fn: np.ndarray, tri: np.ndarray, n: int) -> np.ndarray:
     for c in range(3):
         summed[:, c] = np.bincount(flat, weights=np.repeat(fn[:, c], 3), minlength=n)
     return _normalize_rows(summed)
+
+
+def _generated_normals(p: np.ndarray, tri: np.ndarray, given: np.ndarray) -> np.ndarray:
+    """The normals of a mesh whose Normals are fewer than its positions: all generated, the
+    ``given`` (normalized) override the first ones. Read-only."""
+    nrm = _accumulate(face_normals(p, tri), tri, p.shape[0])
+    nrm[: given.shape[0]] = _normalize_rows(given)
+    return _sealed(nrm)
 
 
 def vertex_normals(positions, indices) -> np.ndarray:
@@ -194,15 +230,20 @@ def build_mesh(
     texcoords=None,
     line: int | None = None,
     locate: Locate | None = None,
+    rejected: Iterable[str] = (),
+    degenerate: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
 ) -> tuple[Mesh, list[Diagnostic]]:
     """The ``Mesh`` WPF draws from a MeshGeometry3D's collections, with diagnostics.
 
     ``positions`` (N, 3) or flat, ``indices`` flat or (T, 3) ints, ``normals`` (M, 3),
     ``texcoords`` (K, 2); any may be None. The Mesh keeps all N positions, normals (N, 3)
-    and texcoords (N, 2), and only the triangles WPF draws. Arrays are read-only copies.
+    and texcoords (N, 2), and only the triangles WPF draws. Arrays are read-only.
     Diagnostics are at ``line``, or where ``locate`` (see ``Locate``) finds the number at
     fault (an index out of range, the first degenerate triangle, the first extra normal...)
-    or the collection concerned.
+    or the collection concerned. ``rejected``: the collections whose markup value WPF refused
+    (``Mesh.rejected``). A read-only input array of the right type is kept, not copied.
+    ``degenerate``: a function giving the same answer as ``degenerate_faces`` (the reader's
+    compiled one for big meshes; this stage does not load numba itself).
     """
     diags: list[Diagnostic] = []
     p = _rows(positions, 3)
@@ -216,6 +257,7 @@ def build_mesh(
             normals=_frozen(np.zeros((0, 3))),
             texcoords=_frozen(np.zeros((0, 2))),
             line=line,
+            rejected=frozenset(rejected),
         )
         return empty, diags
 
@@ -246,8 +288,7 @@ def build_mesh(
         msg = "MeshGeometry3D has no complete triangle to draw"
         diags.append(_diag("MSH006", msg, line, locate, at))
 
-    fn = face_normals(p, tri)
-    flat = ~fn.any(axis=1)
+    flat = (degenerate or degenerate_faces)(p, tri)
     degenerate = int(np.count_nonzero(flat))
     if degenerate:
         k = int(tri_ids[np.argmax(flat)])  # the first degenerate triangle, as given
@@ -270,24 +311,30 @@ def build_mesh(
             _count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line, locate, 3)
         )
     if m >= n:
-        nrm = _normalize_rows(user_n[:n])
+        nrm = _sealed(_normalize_rows(user_n[:n]))
     else:
-        nrm = _accumulate(fn, tri, n)
-        nrm[:m] = _normalize_rows(user_n)
+        # generated when first read (shaded drawing, exports): info, validate and flat
+        # shading never need them
+        nrm = Deferred(_generated_normals, _frozen(p), _frozen(tri, np.int64), _frozen(user_n))
 
     uv = _rows(texcoords, 2)
     k = uv.shape[0]
     if k and k != n:
         fewer = "the rest are (0, 0)"
         diags.append(_count_mismatch("MSH004", "TextureCoordinates", k, n, fewer, line, locate, 2))
-    tex = np.zeros((n, 2))
-    tex[: min(k, n)] = uv[:n]
+    if k == n:
+        tex = _frozen(uv)
+    else:  # zero-filled memory is mapped when first written: the missing rows cost nothing
+        tex = np.zeros((n, 2))
+        tex[: min(k, n)] = uv[:n]
+        tex = _sealed(tex)
 
     mesh = Mesh(
         positions=_frozen(p),
         indices=_frozen(tri, np.int64),
-        normals=_frozen(nrm),
-        texcoords=_frozen(tex),
+        normals=nrm,
+        texcoords=tex,
         line=line,
+        rejected=frozenset(rejected),
     )
     return mesh, diags

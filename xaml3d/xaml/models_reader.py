@@ -195,6 +195,7 @@ def _camera(r, p, transform):
 _FOLLOW_ON = {"MSH002", "MSH005", "MSH006"}
 
 _NUMBER = re.compile(r"[^\s,]+")
+_MARKUP_EXTENSION = re.compile(r"\s*\{")  # (a match, not lstrip: no copy of a 30 MB value)
 
 
 def _mesh_locator(r, el, p):
@@ -209,12 +210,25 @@ def _mesh_locator(r, el, p):
             return r.ctx.locate(p.line_of(name))
         index = None
         value = el.get(key) or ""
-        if item is not None and not value.lstrip().startswith("{"):
+        if item is not None and not _MARKUP_EXTENSION.match(value):
             m = next(itertools.islice(_NUMBER.finditer(value), item, None), None)
             index = None if m is None else m.start()
         return r.ctx.locate(el, key, index)
 
     return locate
+
+
+# Meshes from this many positions on use the compiled degenerate-triangle test, once numba is
+# loaded anyway (big files: values.scanner_loaded); smaller ones are quick in numpy.
+COMPILED_MESH_MIN = 50_000
+
+
+def _compiled_degenerate(positions):
+    if positions.shape[0] < COMPILED_MESH_MIN or not V.scanner_loaded():
+        return None
+    from xaml3d.xaml import mesh_scan
+
+    return mesh_scan.degenerate_faces
 
 
 def mesh(r, el):
@@ -237,10 +251,11 @@ def mesh(r, el):
         p.value("TextureCoordinates", V.parse_point_collection, None),
         line=r.ctx.position(el)["line"],
         locate=_mesh_locator(r, el, p),
+        rejected=p.rejected,
+        degenerate=_compiled_degenerate(positions),
     )
     if p.rejected & {"Positions", "TriangleIndices"}:
         diags = [dg for dg in diags if dg.code not in _FOLLOW_ON]
-    result = replace(result, rejected=frozenset(p.rejected))
     for dg in diags:
         r.ctx.add(dg, el)
     r.cache["mesh", id(el)] = (el, result)  # the element kept: its id stays its own

@@ -30,6 +30,15 @@ _MARKUP = re.compile(r"<([^\s/>!?]+)|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>", 
 # The next attribute of a start tag, up to its value's opening quote.
 _ATTR = re.compile(r"""\s*([^\s=/>"']+)\s*=\s*(["'])""")
 _TAG_END = re.compile(r"\s*>")  # what closes a start tag after its last attribute
+# The same patterns over bytes, for an ASCII document (``_ascii``): offsets are then columns.
+_MARKUP_B = re.compile(_MARKUP.pattern.encode(), re.S)
+_ATTR_B = re.compile(_ATTR.pattern.encode())
+_TAG_END_B = re.compile(_TAG_END.pattern.encode())
+# In an ASCII document, an attribute's text is its value exactly when it holds none of these
+# (XML turns a reference into what it names and a tab or line break into a blank).
+_NOT_AS_WRITTEN = (b"&", b"\n", b"\r", b"\t")
+# Encodings under which ASCII bytes read as the same characters.
+_ASCII_SAFE = {"utf-8", "utf8", "us-ascii", "ascii", "iso-8859-1", "latin-1", "windows-1252"}
 _XML_NS = "http://www.w3.org/XML/1998/namespace"
 _WALK_LIMIT = 4096  # steps back in document order before asking libxml2 for the index
 _CHUNK = 1 << 14  # characters between two entries of the line index
@@ -89,13 +98,25 @@ def _previous(node: etree._Element) -> etree._Element | None:
         prev = last
 
 
+def _ascii(data: bytes, declared: str | None) -> bool:
+    """Whether the document's characters are its bytes: ASCII, read as an ASCII-compatible
+    encoding (no BOM, not UTF-16; a BOM or UTF-16 holds bytes outside ASCII or NULs)."""
+    if declared is not None and declared.lower() not in _ASCII_SAFE:
+        return False
+    return b"\x00" not in data[:4] and data.isascii()
+
+
 class SourceMap:
-    """Start-tag positions of one parsed document, found lazily in one forward pass."""
+    """Start-tag positions of one parsed document, found lazily in one forward pass.
+
+    An ASCII document (nearly all: a 56 MB file of number lists is one) is scanned as its
+    bytes, whose offsets are its columns: no decoded copy of the whole text is made."""
 
     def __init__(self, data: bytes, declared_encoding: str | None = None) -> None:
         self._data: bytes | None = data
         self._declared = declared_encoding
-        self.text = ""
+        self.text: str | bytes = ""  # the document's text (its bytes when ASCII)
+        self._patterns = (_ATTR, _TAG_END)  # for the text's type
         self._scan = None  # the finditer over the text, advanced only as far as needed
         self._starts: list[int] = []  # offset of each start tag's "<", in document order
         self._names: list[str] = []  # its name as written
@@ -105,16 +126,21 @@ class SourceMap:
     def _tokens_upto(self, i: int) -> bool:
         """Scan until start tag ``i`` is known; False when the text has fewer tags."""
         if self._data is not None:
-            self.text = decode_source(self._data, self._declared)
+            if _ascii(self._data, self._declared):
+                self.text = self._data
+                self._patterns = (_ATTR_B, _TAG_END_B)
+                self._scan = _MARKUP_B.finditer(self.text)
+            else:
+                self.text = decode_source(self._data, self._declared)
+                self._scan = _MARKUP.finditer(self.text)
             self._data = None
-            self._scan = _MARKUP.finditer(self.text)
         starts, names = self._starts, self._names
         if self._scan is not None:
             for m in self._scan:
                 name = m.group(1)
                 if name is not None:
                     starts.append(m.start())
-                    names.append(name)
+                    names.append(name if isinstance(name, str) else name.decode("ascii"))
                     if len(starts) > i:
                         return True
             self._scan = None
@@ -148,36 +174,42 @@ class SourceMap:
 
     def position_at(self, offset: int) -> tuple[int, int]:
         """1-based (line, column) of a text offset: the line and line start at the chunk
-        holding it (counted once for the whole text), then the newlines within that chunk.
-        Each position costs at most one chunk, in whatever order they are asked (hundreds of
-        thousands of models each asking for theirs stay linear)."""
-        lines, starts = self._line_index()
+        holding it (counted once, from the start of the text up to the furthest chunk asked
+        for), then the newlines within that chunk. Each position costs at most one chunk, in
+        whatever order they are asked (hundreds of thousands of models each asking for theirs
+        stay linear), and a position near the start does not count the lines of the rest."""
+        lines, starts = self._line_index(offset)
         k = offset // _CHUNK
         base = k * _CHUNK
         line, line_start = lines[k], starts[k]
         text = self.text
-        newlines = text.count("\n", base, offset)
+        nl = "\n" if isinstance(text, str) else b"\n"
+        newlines = text.count(nl, base, offset)
         if newlines:
             line += newlines
-            line_start = text.rfind("\n", base, offset) + 1
+            line_start = text.rfind(nl, base, offset) + 1
         return line, offset - line_start + 1
 
-    def _line_index(self) -> tuple[list[int], list[int]]:
-        """(line, line start) at the start of every chunk of the text."""
+    def _line_index(self, offset: int) -> tuple[list[int], list[int]]:
+        """(line, line start) at the start of every chunk of the text up to the one holding
+        ``offset`` (and possibly more)."""
         if self._lines is None or self._lines[0] != len(self.text):
-            text = self.text
-            lines, starts = [1], [0]
-            line, start = 1, 0
-            for a in range(0, len(text), _CHUNK):
-                b = a + _CHUNK
-                count = text.count("\n", a, b)
-                if count:
-                    line += count
-                    start = text.rfind("\n", a, b) + 1
-                lines.append(line)
-                starts.append(start)
-            self._lines = (len(text), (lines, starts))
-        return self._lines[1]
+            self._lines = (len(self.text), ([1], [0]))
+        lines, starts = self._lines[1]
+        text = self.text
+        nl = "\n" if isinstance(text, str) else b"\n"
+        line, start = lines[-1], starts[-1]
+        a = (len(lines) - 1) * _CHUNK
+        while len(lines) <= offset // _CHUNK:
+            b = a + _CHUNK
+            count = text.count(nl, a, b)
+            if count:
+                line += count
+                start = text.rfind(nl, a, b) + 1
+            lines.append(line)
+            starts.append(start)
+            a = b
+        return lines, starts
 
     def locate(
         self, el: etree._Element, attr: str | None = None, index: int | None = None
@@ -205,14 +237,20 @@ class SourceMap:
         if i is None or not 0 <= index < len(value):
             return None
         text = self.text
+        attr_re, tag_end_re = self._patterns
         pos = self._starts[i] + 1 + len(self._names[i])
-        while (m := _ATTR.match(text, pos)) is not None:
+        while (m := attr_re.match(text, pos)) is not None:
             close = text.find(m.group(2), m.end())
             if close < 0:
                 return None
             pos = close + 1
-        end = _TAG_END.match(text, pos)
-        if end is None or text[end.end() : end.end() + len(value)] != value:
+        end = tag_end_re.match(text, pos)
+        if end is None:
+            return None
+        if isinstance(text, bytes):
+            if not (value.isascii() and text.startswith(value.encode("ascii"), end.end())):
+                return None
+        elif not text.startswith(value, end.end()):
             return None
         return self.position_at(end.end() + index)
 
@@ -221,12 +259,15 @@ class SourceMap:
         its value, see ``locate``): a scan from one attribute to the next that jumps over each
         quoted value (which may hold ">" or the other quote)."""
         text = self.text
+        attr_re = self._patterns[0]
         pos = self._starts[i] + 1 + len(self._names[i])
         while True:
-            m = _ATTR.match(text, pos)
+            m = attr_re.match(text, pos)
             if m is None:
                 return None  # reached the tag's end
             name = m.group(1)
+            if not isinstance(name, str):
+                name = name.decode("ascii")
             prefix, _, local = name.rpartition(":")
             if prefix != "xmlns" and name != "xmlns":
                 if prefix:
@@ -241,10 +282,20 @@ class SourceMap:
                         # the text is the value (no character reference, no line break made a
                         # blank): its characters line up
                         if 0 <= index < len(value) and text[end : end + 1] == m.group(2):
-                            if text[m.end() : end] == value:
+                            if _as_written(text, value, m.end(), end):
                                 return m.end() + index
                     return m.start(1)
             close = text.find(m.group(2), m.end())
             if close < 0:
                 return None
             pos = close + 1
+
+
+def _as_written(text: str | bytes, value: str, start: int, end: int) -> bool:
+    """Whether ``text[start:end]`` is the attribute value ``value`` character for character
+    (no copy of a 30 MB value is made to tell)."""
+    if isinstance(text, str):
+        return text.startswith(value, start)
+    # ASCII bytes: the raw text becomes the value by expanding references and turning tabs and
+    # line breaks into blanks, so with none of those (and the same length) it is the value
+    return all(text.find(c, start, end) < 0 for c in _NOT_AS_WRITTEN)

@@ -203,6 +203,12 @@ _scan_failed = False
 _scan_seen = 0  # characters of long number lists read in this process
 
 
+def scanner_loaded() -> bool:
+    """Whether this process has loaded numba for the compiled scanner (other compiled reader
+    passes use it then: their start-up is paid)."""
+    return _scan_module is not None
+
+
 def _scanner(length: int):
     """``xaml3d.xaml.number_scan`` when it is (or now gets) loaded for a list of ``length``
     characters, else None (the vectorized path). ``XAML3D_KERNELS`` (``xaml3d.numba_env``):
