@@ -425,7 +425,8 @@ def test_edge_mode_set_around_the_viewport_is_inherited(tmp_path):
     assert not [d for d in scene.diagnostics if d.code == "DRW006"]
 
 
-def test_picture_properties_around_the_viewport_are_said(tmp_path):
+def test_picture_properties_around_the_viewport_are_drawn(tmp_path):
+    # a Border's Opacity and a Grid's Effect around the viewport act on its picture in turn
     path = tmp_path / "s.xaml"
     path.write_text(
         _wrapped('Opacity="0.5"', "Border")
@@ -433,14 +434,54 @@ def test_picture_properties_around_the_viewport_are_said(tmp_path):
         .replace("</Viewport3D>", "</Viewport3D></Grid>")
     )
     scene = xaml3d.load(path)
-    found = [(d.code, d.severity, d.line) for d in scene.diagnostics if d.code == "DRW006"]
-    assert [f[:2] for f in found] == [("DRW006", "warning")] * 2
-    messages = sorted(d.message for d in scene.diagnostics if d.code == "DRW006")
-    assert messages[0].startswith("Border around the viewport sets Opacity:")
-    assert messages[1].startswith("Grid around the viewport sets Effect:")
-    # an Opacity of 1 changes nothing: not reported
+    assert not [d for d in scene.diagnostics if d.code == "DRW006"]
+    around = scene.viewports[0].picture.around
+    assert [a.layer.effect.kind if a.layer.effect else a.layer.opacity for a in around] == [
+        "Blur",
+        0.5,
+    ]
+    assert around[0].rect == (-288.0, -216.0, 640.0, 480.0)  # a 64 x 48 view centred in 640 x 480
+    # an Opacity of 1 changes nothing: no layer
     path.write_text(_wrapped('Opacity="1"', "Border"))
-    assert not [d for d in xaml3d.load(path).diagnostics if d.code == "DRW006"]
+    assert xaml3d.load(path).viewports[0].picture is None
+
+
+def test_properties_around_a_viewport_the_layout_does_not_reach_are_said(tmp_path):
+    # a viewport in a Button's ToolTip is not laid out: the Grid around it has no box
+    path = tmp_path / "s.xaml"
+    inner = _wrapped('Opacity="0.5"').replace(
+        ' xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"', ""
+    )
+    path.write_text(
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"><Button>'
+        f"<Button.ToolTip>{inner}</Button.ToolTip></Button></Grid>"
+    )
+    scene = xaml3d.load(path)
+    [d] = [d for d in scene.diagnostics if d.code == "DRW006"]
+    assert d.message.startswith("Grid around the viewport sets Opacity:")
+    assert "the layout did not reach it" in d.message
+
+
+@pytest.mark.parametrize(
+    ("case", "own"),
+    [("around-opacity", "opacity"), ("around-clip-offset", "clip"), ("around-blur", "blur")],
+)
+def test_a_layer_around_draws_as_the_viewports_own(case, own):
+    around = xaml3d.render_arrays(xaml3d.load(PICTURE / f"{case}.xaml")).rgba
+    assert np.array_equal(around, xaml3d.render_arrays(xaml3d.load(PICTURE / f"{own}.xaml")).rgba)
+
+
+def test_window_draws_a_panels_layer_over_its_whole_content(tmp_path):
+    from xaml3d.render.window import compose_window
+
+    scene = xaml3d.load(PICTURE.parent / "layout" / "window-around-layer.xaml")
+    [b] = [b for b in scene.layout.boxes if b.layer is not None]
+    assert b.type == "Border" and b.layer.opacity == 0.5
+    rgba, _ = compose_window(scene)
+    # the Border's red, faded over the yellow Grid; turned: 48 wide, 64 tall
+    assert np.abs(rgba[40, 26].astype(int) - (255, 128, 0, 255)).max() <= 1
+    assert tuple(rgba[4, 26]) == (255, 255, 0, 255) and tuple(rgba[40, 20]) == (255, 255, 0, 255)
+    assert np.abs(rgba[40, 56].astype(int) - (128, 255, 0, 255)).max() <= 1
 
 
 def _glyphs(drawing) -> int:

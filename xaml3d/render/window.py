@@ -11,13 +11,17 @@ laid-out rectangle with its own camera and aspect ratio (``render_scene``), comp
 what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
 CheckBox, RadioButton, ComboBox, Slider, ProgressBar, shapes, Image: ``Box.drawing``,
 docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
-outline of each control's layout box. Hidden and Collapsed elements and their content are left
+outline of each control's layout box. An element with Opacity, OpacityMask, Clip,
+RenderTransform or an Effect (``Box.layer``) is drawn with everything inside it into a layer of
+its own, which the 2D layer then transforms, clips, filters and fades over what lies beneath, as
+WPF composes a visual's subtree. Hidden and Collapsed elements and their content are left
 out. A pixel belongs to a box when its centre lies inside it.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -155,6 +159,39 @@ def _overlaps(rect, W: int, H: int) -> bool:
     return c1 > c0 and r1 > r0
 
 
+def _subtree_ends(boxes) -> list[int]:
+    """For each box, the index just past its last descendant (boxes are in paint order: a
+    subtree is a run of boxes)."""
+    ends = list(range(1, len(boxes) + 1))
+    for i in range(len(boxes) - 1, 0, -1):
+        p = boxes[i].parent
+        if p is not None:
+            ends[p] = max(ends[p], ends[i])
+    return ends
+
+
+def _close_layer(b: Box, end: int, beneath: np.ndarray, layer: np.ndarray) -> np.ndarray:
+    """The layer of ``b`` (a premultiplied float canvas of the client area) composed as WPF
+    composes the element (the 2D layer, skia) over ``beneath``; returns ``beneath``."""
+    from xaml3d.render.layer2d.picture import compose_layers
+
+    drawn = compose_layers(straight_uint8(layer), [(b.layer, b.rect)], (1.0, 1.0))
+    premul = drawn.astype(np.float32) / 255.0
+    premul[..., :3] *= premul[..., 3:4]
+    _over(beneath, 0, 0, premul)
+    return beneath
+
+
+def _without_around(scene: Scene) -> Scene:
+    vps = tuple(
+        replace(vp, picture=replace(vp.picture, around=()))
+        if vp.picture is not None and vp.picture.around
+        else vp
+        for vp in scene.viewports
+    )
+    return replace(scene, viewports=vps)
+
+
 def compose_window(
     scene: Scene,
     settings: RenderSettings | None = None,
@@ -181,9 +218,21 @@ def compose_window(
         bg[:3] *= bg[3]
         canvas[...] = bg
     diags: list[Diagnostic] = []
+    # the window draws each element's layer itself (below): a viewport's picture keeps only
+    # its own properties
+    scene = _without_around(scene)
+    ends = _subtree_ends(result.boxes)
+    open_layers: list = []  # (box, end, the canvas beneath), innermost last
     for i, b in enumerate(result.boxes):  # paint order: parents before children
+        while open_layers and open_layers[-1][1] <= i:
+            canvas = _close_layer(*open_layers.pop(), canvas)
         if not b.shown:
             continue
+        if b.layer is not None:
+            # the element and everything inside it are drawn into a layer of their own, which
+            # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
+            open_layers.append((b, ends[i], canvas))
+            canvas = np.zeros_like(canvas)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:
             brush = WINDOW_BACKGROUND
@@ -213,4 +262,6 @@ def compose_window(
             _draw_control(canvas, b)
         if b.kind == CONTROL and outline_controls:
             _outline(canvas, b.rect)
+    while open_layers:
+        canvas = _close_layer(*open_layers.pop(), canvas)
     return straight_uint8(canvas), diags

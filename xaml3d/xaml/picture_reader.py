@@ -1,4 +1,5 @@
-"""Reading what a Viewport3D's own UIElement properties do to its picture (scene Viewport2D).
+"""Reading what a Viewport3D's own UIElement properties, and those of the laid-out elements
+around it, do to its picture (scene Viewport2D, Layer2D, Around).
 
 Covers Opacity, OpacityMask (any brush the 2D layer draws), Clip (any geometry), RenderTransform
 with RenderTransformOrigin (folded into one matrix about the viewport's top-left), Effect
@@ -8,14 +9,15 @@ Softness, Opacity; OuterGlowBitmapEffect: GlowColor, GlowSize, Opacity, drawn as
 shadow) and RenderOptions.EdgeMode. Other effects (ShaderEffect and effects from other
 assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) and
 RenderOptions.BitmapScalingMode are an info diagnostic (DRW003) and the picture is drawn without
-them.
+them. An element around a viewport that the layout did not reach has no box to place its layer
+in: DRW006 says so.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.scene.drawing import Effect, Viewport2D
+from xaml3d.scene.drawing import Around, Effect, Layer2D, Viewport2D
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
 from xaml3d.xaml.context import is_presentation, qname
@@ -77,11 +79,11 @@ def _effect_property(r, p, prop: str) -> Effect | None:
 _SINGLE_MAX = float(np.finfo(np.float32).max)  # WPF's renderer is single precision
 
 
-def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
-    """The viewport's Viewport2D (None when it sets none of the properties)."""
-    set_any = False
+def element_layer(r, p, width: float, height: float) -> Layer2D | None:
+    """The Layer2D of an element's Opacity, OpacityMask, Clip, RenderTransform (about its
+    RenderTransformOrigin, for a box ``width`` x ``height``) and Effect (or BitmapEffect); None
+    when it changes nothing."""
     opacity = p.value("Opacity", _D, 1.0)
-    set_any |= opacity != 1.0
     mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
     clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
     transform = None
@@ -106,6 +108,18 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
     if p.has("BitmapEffect"):
         bitmap = _effect_property(r, p, "BitmapEffect")
         effect = effect or bitmap  # WPF applies Effect when both are set
+    layer = Layer2D(
+        opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform, effect=effect
+    )
+    return layer if layer.changes_picture else None
+
+
+def viewport_picture(
+    r, p, width: float, height: float, around: tuple[Around, ...] = ()
+) -> Viewport2D | None:
+    """The viewport's Viewport2D (None when it sets none of the properties and no element
+    around it does); ``around``: the layers of the laid-out elements around it."""
+    own = element_layer(r, p, width, height) or Layer2D()
     if "RenderOptions.BitmapScalingMode" in p.attached:
         msg = (
             "RenderOptions.BitmapScalingMode is not applied: brushes are sampled bilinearly "
@@ -117,12 +131,11 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
     if edge not in ("Aliased", "Unspecified"):
         r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
         edge = "Unspecified"
-    set_any |= any(x is not None for x in (mask, clip, transform, effect)) or edge != "Unspecified"
-    if not set_any:
+    if not own.changes_picture and not around and edge == "Unspecified":
         return None
     return Viewport2D(
-        opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform,
-        effect=effect, edge_mode=edge,
+        opacity=own.opacity, opacity_mask=own.opacity_mask, clip=own.clip,
+        render_transform=own.render_transform, effect=own.effect, edge_mode=edge, around=around,
     )  # fmt: skip
 
 
@@ -148,11 +161,14 @@ def _inherited_edge_mode(r, el) -> str:
 _AROUND = ("OpacityMask", "Clip", "RenderTransform", "Effect", "BitmapEffect")
 
 
-def report_ancestors(r, el) -> None:
-    """DRW006: what an element around the viewport sets that changes WPF's picture of it
-    (Opacity, OpacityMask, Clip, RenderTransform, Effect, BitmapEffect) and xaml3d does not
-    apply: the viewport is drawn without it, and this says so."""
+def report_ancestors(r, el, laid_out: frozenset = frozenset()) -> None:
+    """DRW006: what an element around the viewport that the layout did not reach sets that
+    changes WPF's picture of it (Opacity, OpacityMask, Clip, RenderTransform, Effect,
+    BitmapEffect): without its box the viewport is drawn without it, and this says so. The
+    laid-out elements (``laid_out``: ids of their XML elements) are applied (``Around``)."""
     for anc, ap in _framework_ancestors(r, el):
+        if id(anc) in laid_out:
+            continue
         found = [prop for prop in _AROUND if ap.has(prop)]
         if ap.has("Opacity") and ap.value("Opacity", _D, 1.0) != 1.0:
             found.insert(0, "Opacity")
@@ -160,6 +176,6 @@ def report_ancestors(r, el) -> None:
             what = ", ".join(found)
             msg = (
                 f"{ap.type} around the viewport sets {what}: WPF applies it to everything "
-                "inside, xaml3d draws the viewport without it"
+                "inside, xaml3d draws the viewport without it (the layout did not reach it)"
             )
             r.ctx.diag("DRW006", msg, anc, once=("DRW006", id(anc)))
