@@ -209,14 +209,22 @@ class Layer2D:
     clip: Geometry | None = None
     render_transform: np.ndarray | None = None  # RenderTransformOrigin already folded in
     effect: Effect | None = None
+    # LayoutTransform (3 x 3) about the box's top-left, after the render transform, its
+    # translation the one that puts its turned box's bounds at that corner: the layout placed
+    # the element's own box with it (``render --window`` draws
+    # it; a viewport's picture, rendered at its own size, is drawn without it)
+    layout_transform: np.ndarray | None = None
 
     @property
     def changes_picture(self) -> bool:
         """Whether the layer changes anything of what is drawn under it."""
         return self.opacity != 1.0 or any(
             x is not None
-            for x in (self.opacity_mask, self.clip, self.effect, self.render_transform)
-        )
+            for x in (
+                self.opacity_mask, self.clip, self.effect, self.render_transform,
+                self.layout_transform,
+            )
+        )  # fmt: skip
 
 
 @dataclass(frozen=True)

@@ -15,9 +15,10 @@ from xaml3d.errors import Diagnostic
 from xaml3d.layout import layout
 from xaml3d.layout.engine import LayoutResult
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
+from xaml3d.layout.transform import placed_by_layout
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
 from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout
-from xaml3d.scene.drawing import Around
+from xaml3d.scene.drawing import Around, Layer2D
 from xaml3d.xaml.panels_reader import ElementValues, parse_length, read_layout
 
 DEFAULT_SIZE = (640.0, 480.0)
@@ -140,10 +141,17 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             source = "default"
         elif n.parent is None and n.width == n.width and n.height == n.height:
             source = "viewport"
+        # a viewport's picture is drawn at its own size: the LayoutTransforms around it only
+        # place it in the window (render --window)
+        unplaced = {}
+        for a in n.ancestors():
+            own = replace(layers[id(a)], layout_transform=None) if id(a) in layers else None
+            if own is not None and own.changes_picture:
+                unplaced[id(a)] = own
         around = tuple(
-            Around(layers[id(a)], (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]))
+            Around(unplaced[id(a)], (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]))
             for a in n.ancestors()
-            if id(a) in layers
+            if id(a) in unplaced
         )
         reached = frozenset(
             id(el) for a in n.ancestors() if (el := elements.get(id(a), (None,))[0]) is not None
@@ -153,20 +161,24 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
 
 
 def _layers(r, root: Node, elements: dict) -> dict:
-    """The Layer2D of every laid-out element but the viewports (whose own properties are
-    their picture's), by ``id(node)``. A control's drawing holds its Opacity already."""
+    """The Layer2D of every laid-out element, by ``id(node)``: its LayoutTransform, and but
+    for a viewport (whose own are its picture's) its Opacity, OpacityMask, Clip,
+    RenderTransform and Effect. A control's drawing holds its Opacity already."""
     from xaml3d.xaml.picture_reader import element_layer
 
     out = {}
     for n in root.walk():
         el = elements.get(id(n), (None,))[0]
-        if el is None or n.kind == VIEWPORT:
+        if el is None:
             continue
-        layer = element_layer(r, r.props(el), float(n.rect[2]), float(n.rect[3]))
+        layer = None
+        if n.kind != VIEWPORT:
+            layer = element_layer(r, r.props(el), float(n.rect[2]), float(n.rect[3]))
         if layer is not None and n.kind == CONTROL and n.drawing is not None:
             layer = replace(layer, opacity=1.0)
-            layer = layer if layer.changes_picture else None
-        if layer is not None:
+        if n.layout_transform is not None:
+            layer = replace(layer or Layer2D(), layout_transform=placed_by_layout(n))
+        if layer is not None and layer.changes_picture:
             out[id(n)] = layer
     return out
 

@@ -23,6 +23,7 @@ import numpy as np
 from xaml3d.layout import layout
 from xaml3d.layout import tree as L
 from xaml3d.layout.text import line_height, text_width
+from xaml3d.layout.transform import placed_by_layout
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -184,6 +185,8 @@ def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
         own = [DrawingGroup(children=tuple(own), clip=clip)]
     px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
+    if n.layout_transform is not None:  # its own box turned about the corner the layout set
+        m = m @ placed_by_layout(n)
     out.append(DrawingGroup(children=tuple(own), opacity=opacity, transform=m))
 
 

@@ -63,6 +63,8 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.n
         # each element's coordinates start at its box's corner: the layout offsets nest
         canvas.translate(x - at[0], y - at[1])
         at = (x, y)
+        if layer.layout_transform is not None:  # placed by the layout, then render-transformed
+            canvas.concat(matrix(layer.layout_transform))
         if layer.render_transform is not None:
             canvas.concat(matrix(layer.render_transform))
         clip = path_of(layer.clip)
