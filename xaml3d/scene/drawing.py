@@ -118,6 +118,9 @@ class ImageDrawing:
 
     image: np.ndarray | None = None
     rect: Rect = (0.0, 0.0, 0.0, 0.0)
+    # RenderOptions.BitmapScalingMode in effect: "NearestNeighbor" takes the nearest pixel,
+    # "Fant"/"HighQuality" a smoothed (mip-mapped) scale, the others (WPF's default) bilinear
+    scaling: str = "Unspecified"
     line: int | None = None
     column: int | None = None
 

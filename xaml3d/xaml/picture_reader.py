@@ -6,11 +6,12 @@ with RenderTransformOrigin (folded into one matrix about the viewport's top-left
 (BlurEffect: Radius; DropShadowEffect: Color, Direction, ShadowDepth, BlurRadius, Opacity),
 BitmapEffect (BlurBitmapEffect: Radius; DropShadowBitmapEffect: Color, Direction, ShadowDepth,
 Softness, Opacity; OuterGlowBitmapEffect: GlowColor, GlowSize, Opacity, drawn as an unmoved
-shadow) and RenderOptions.EdgeMode. Other effects (ShaderEffect and effects from other
-assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) and
-RenderOptions.BitmapScalingMode are an info diagnostic (DRW003) and the picture is drawn without
-them. An element around a viewport that the layout did not reach has no box to place its layer
-in: DRW006 says so.
+shadow), RenderOptions.EdgeMode, and RenderOptions.BitmapScalingMode as the Images of visuals
+inherit it (``bitmap_scaling_mode``). Other effects (ShaderEffect and effects from other
+assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) are an info diagnostic (DRW003)
+and the picture is drawn without them; so is BitmapScalingMode on a viewport, which WPF does not
+apply to the brushes on 3D surfaces. An element around a viewport that the layout did not reach
+has no box to place its layer in: DRW006 says so.
 """
 
 from __future__ import annotations
@@ -122,8 +123,8 @@ def viewport_picture(
     own = element_layer(r, p, width, height) or Layer2D()
     if "RenderOptions.BitmapScalingMode" in p.attached:
         msg = (
-            "RenderOptions.BitmapScalingMode is not applied: brushes are sampled bilinearly "
-            "(WPF's default)"
+            "RenderOptions.BitmapScalingMode does not change how the brushes on 3D surfaces are "
+            "sampled (bilinearly, in WPF as in xaml3d); Images drawn in visuals follow it"
         )
         r.ctx.diag("DRW003", msg, p.el, attr="RenderOptions.BitmapScalingMode")
     # RenderOptions.EdgeMode is inherited: a Window's or a panel's reaches the viewport
@@ -149,6 +150,35 @@ def _framework_ancestors(r, el):
             if is_presentation(ns) and "." not in local:
                 yield anc, r.props(anc)
         anc = anc.getparent()
+
+
+_SCALING = ("Unspecified", "LowQuality", "HighQuality", "Linear", "Fant", "NearestNeighbor")
+# where RenderOptions stop flowing down: a brush is drawn apart from the elements around it
+_RENDER_OPTIONS_STOP = ("VisualBrush", "DrawingBrush", "Viewport2DVisual3D", "ResourceDictionary")
+
+
+def bitmap_scaling_mode(r, el) -> str:
+    """RenderOptions.BitmapScalingMode in effect at ``el``: its own, else that of the nearest
+    element around it inside the same visual that sets one (the render option applies to a
+    visual's subtree); "Unspecified" when none does, or for a value that is not a mode
+    (DRW003 says so)."""
+    node = el
+    while node is not None and isinstance(node.tag, str):
+        ns, local = qname(node.tag)
+        if local.endswith(".Resources") or local in _RENDER_OPTIONS_STOP:
+            break
+        if is_presentation(ns) and "." not in local:
+            p = r.props(node)
+            raw = p.attached.get("RenderOptions.BitmapScalingMode")
+            if raw is not None:
+                mode = raw.strip()
+                if mode in _SCALING:
+                    return mode
+                msg = f"RenderOptions.BitmapScalingMode {mode!r} is not a mode: Unspecified"
+                r.ctx.diag("DRW003", msg, node, once=("DRW003", id(node), "scaling"))
+                return "Unspecified"
+        node = node.getparent()
+    return "Unspecified"
 
 
 def _inherited_edge_mode(r, el) -> str:

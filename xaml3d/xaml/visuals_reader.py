@@ -55,6 +55,7 @@ from xaml3d.xaml.panels_reader import (
     PanelsReader,
     parse_thickness,
 )
+from xaml3d.xaml.picture_reader import bitmap_scaling_mode
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
@@ -240,7 +241,8 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
             if image is None:  # the diagnostic says a grey checker stands in
                 image = placeholder_image()
             if image is not None:
-                out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h)))
+                scaling = bitmap_scaling_mode(r, el)
+                out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h), scaling=scaling))
         return
     r.ctx.diag("DRW002", f"{local} is not drawn by xaml3d in a visual: skipped", el)
 

@@ -74,11 +74,18 @@ def draw(canvas: skia.Canvas, d) -> None:
         img = image_of(d.image)
         x, y, w, h = d.rect
         if img is not None and w > 0 and h > 0:
-            canvas.drawImageRect(
-                img, skia.Rect.MakeXYWH(x, y, w, h), skia.SamplingOptions(skia.FilterMode.kLinear)
-            )
+            canvas.drawImageRect(img, skia.Rect.MakeXYWH(x, y, w, h), _sampling(d.scaling))
     elif isinstance(d, DrawingGroup):
         _draw_group(canvas, d)
+
+
+def _sampling(scaling: str) -> skia.SamplingOptions:
+    """How an image is resampled under RenderOptions.BitmapScalingMode."""
+    if scaling == "NearestNeighbor":
+        return skia.SamplingOptions(skia.FilterMode.kNearest)
+    if scaling in ("Fant", "HighQuality"):  # WPF's Fant scaler averages when it shrinks
+        return skia.SamplingOptions(skia.FilterMode.kLinear, skia.MipmapMode.kLinear)
+    return skia.SamplingOptions(skia.FilterMode.kLinear)
 
 
 def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
