@@ -560,3 +560,40 @@ def test_bitmap_scaling_mode_reaches_the_images_of_a_visual_not_across_a_brush(t
     assert [i.scaling for i in _images(visual.drawing)] == ["Unspecified"]
     [d] = [d for d in scene.diagnostics if d.code == "DRW003"]
     assert d.message == "RenderOptions.BitmapScalingMode 'Fast' is not a mode: Unspecified"
+
+
+def test_an_animated_viewport_render_transform_is_a_track():
+    from test_reference import REFERENCE
+
+    from xaml3d.animation.moment import scene_at
+
+    scene = xaml3d.load(REFERENCE / "animation" / "viewport-render-transform.xaml")
+    assert not [d for d in scene.diagnostics if d.code == "ANIM014"]
+    [track] = scene.tracks.tracks
+    assert [str(p) for p in track.moves] == ["viewport 0 / picture . render_transform"]
+    loaded = scene.viewports[0].picture.render_transform
+    assert np.array_equal(scene_at(scene, 0.0).viewports[0].picture.render_transform, loaded)
+    # half a turn about the centre (32, 24), then X: 8 at t = 0.5
+    m = scene_at(scene, 0.5).viewports[0].picture.render_transform
+    assert np.allclose(m, [[-1, 0, 64 + 8], [0, -1, 48], [0, 0, 1]])
+
+
+def test_window_draws_a_viewports_render_transform_beyond_its_box(tmp_path):
+    from xaml3d.render.window import compose_window
+
+    text = (PICTURE / "opacity.xaml").read_text().replace(' Opacity="0.5"', "")
+    text = text.replace(
+        'Width="64" Height="48">',
+        'Width="64" Height="48" HorizontalAlignment="Left"><Viewport3D.RenderTransform>'
+        '<TranslateTransform X="64"/></Viewport3D.RenderTransform>',
+    )
+    start = text.index("<Viewport3D")
+    ns = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+    body = text[start:].replace(f" {ns}", "", 1)
+    path = tmp_path / "w.xaml"
+    path.write_text(f'<Grid {ns} Width="128" Height="48" Background="White">{body}</Grid>')
+    rgba, _ = compose_window(xaml3d.load(path))
+    # the quads moved 64 px right, out of the viewport's 64 x 48 box, are drawn there
+    assert tuple(rgba[12, 64 + 20]) == (0, 255, 0, 255)
+    assert tuple(rgba[30, 64 + 20]) == (0, 0, 255, 255)
+    assert tuple(rgba[12, 20]) == (255, 255, 255, 255)

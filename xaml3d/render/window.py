@@ -37,6 +37,7 @@ from xaml3d.render.settings import (
     settings_of,
 )
 from xaml3d.scene.boxes import BORDER, CONTROL, VIEWPORT, WINDOW, Box
+from xaml3d.scene.drawing import Layer2D, Viewport2D
 from xaml3d.scene.types import Scene, SolidColorBrush
 
 WINDOW_BACKGROUND = SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0))
@@ -170,26 +171,47 @@ def _subtree_ends(boxes) -> list[int]:
     return ends
 
 
-def _close_layer(b: Box, end: int, beneath: np.ndarray, layer: np.ndarray) -> np.ndarray:
-    """The layer of ``b`` (a premultiplied float canvas of the client area) composed as WPF
-    composes the element (the 2D layer, skia) over ``beneath``; returns ``beneath``."""
+def _close_layer(
+    layer2d: Layer2D, rect, end: int, beneath: np.ndarray, layer: np.ndarray
+) -> np.ndarray:
+    """What an element drew into ``layer`` (a premultiplied float canvas of the client area)
+    composed with its Layer2D about its box ``rect``, as WPF composes the element (the 2D
+    layer, skia), over ``beneath``; returns ``beneath``."""
     from xaml3d.render.layer2d.picture import compose_layers
 
-    drawn = compose_layers(straight_uint8(layer), [(b.layer, b.rect)], (1.0, 1.0))
+    drawn = compose_layers(straight_uint8(layer), [(layer2d, rect)], (1.0, 1.0))
     premul = drawn.astype(np.float32) / 255.0
     premul[..., :3] *= premul[..., 3:4]
     _over(beneath, 0, 0, premul)
     return beneath
 
 
-def _without_around(scene: Scene) -> Scene:
-    vps = tuple(
-        replace(vp, picture=replace(vp.picture, around=()))
-        if vp.picture is not None and vp.picture.around
-        else vp
-        for vp in scene.viewports
-    )
-    return replace(scene, viewports=vps)
+def _window_pictures(scene: Scene) -> tuple[Scene, dict[int, Layer2D]]:
+    """The scene with each viewport's picture reduced to how its 3D is drawn (EdgeMode), and
+    each viewport's own Opacity, OpacityMask, Clip, RenderTransform and Effect as a Layer2D by
+    viewport index: the window composes them over the whole client area, so what the viewport's
+    RenderTransform moves out of its box still shows (the elements around are boxes' layers)."""
+    own: dict[int, Layer2D] = {}
+    vps = []
+    for i, vp in enumerate(scene.viewports):
+        pic = vp.picture
+        if pic is not None:
+            layer = Layer2D(opacity=pic.opacity, opacity_mask=pic.opacity_mask, clip=pic.clip,
+                            render_transform=pic.render_transform, effect=pic.effect)  # fmt: skip
+            if layer.changes_picture:
+                own[i] = layer
+            edge = pic.edge_mode
+            vp = replace(vp, picture=Viewport2D(edge_mode=edge) if edge != "Unspecified" else None)
+        vps.append(vp)
+    return replace(scene, viewports=tuple(vps)), own
+
+
+def _layer_of(b: Box, own: dict[int, Layer2D]) -> Layer2D | None:
+    """A box's layer; a viewport's own properties join its LayoutTransform's placement."""
+    if b.kind != VIEWPORT or b.viewport not in own:
+        return b.layer
+    placed = b.layer.layout_transform if b.layer is not None else None
+    return replace(own[b.viewport], layout_transform=placed)
 
 
 def compose_window(
@@ -218,20 +240,21 @@ def compose_window(
         bg[:3] *= bg[3]
         canvas[...] = bg
     diags: list[Diagnostic] = []
-    # the window draws each element's layer itself (below): a viewport's picture keeps only
-    # its own properties
-    scene = _without_around(scene)
+    # the window composes every layer itself (below), a viewport's own ones too: its picture
+    # keeps only how its 3D is drawn
+    scene, own = _window_pictures(scene)
     ends = _subtree_ends(result.boxes)
     open_layers: list = []  # (box, end, the canvas beneath), innermost last
     for i, b in enumerate(result.boxes):  # paint order: parents before children
-        while open_layers and open_layers[-1][1] <= i:
+        while open_layers and open_layers[-1][2] <= i:
             canvas = _close_layer(*open_layers.pop(), canvas)
         if not b.shown:
             continue
-        if b.layer is not None:
+        layer = _layer_of(b, own)
+        if layer is not None:
             # the element and everything inside it are drawn into a layer of their own, which
             # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
-            open_layers.append((b, ends[i], canvas))
+            open_layers.append((layer, b.rect, ends[i], canvas))
             canvas = np.zeros_like(canvas)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:

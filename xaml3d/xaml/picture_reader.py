@@ -18,9 +18,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from xaml3d.scene import tracks as K
 from xaml3d.scene.drawing import Around, Effect, Layer2D, Viewport2D
+from xaml3d.scene.transforms import node_matrix
+from xaml3d.scene.types import frozen_array
 from xaml3d.xaml import values as V
-from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
+from xaml3d.xaml.animation_tracks import built
+from xaml3d.xaml.brushes_reader import brush_property, transform2d_parts, transform2d_text
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.geometry_reader import geometry_property
 
@@ -80,31 +84,50 @@ def _effect_property(r, p, prop: str) -> Effect | None:
 _SINGLE_MAX = float(np.finfo(np.float32).max)  # WPF's renderer is single precision
 
 
-def element_layer(r, p, width: float, height: float) -> Layer2D | None:
+def _render_transform(r, p, width: float, height: float):
+    """(RenderTransform about RenderTransformOrigin as one 3x3 matrix or None, its typed node
+    when an animation drives part of it (scene.tracks: the origin's shifts around it) or
+    None)."""
+    if not p.has("RenderTransform"):
+        return None, None
+    pair = p.obj(
+        "RenderTransform", lambda e: built(transform2d_parts(r, e)), None,
+        from_string=transform2d_text,
+    )  # fmt: skip
+    m, node = pair if isinstance(pair, tuple) else (pair, None)
+    if m is None or (node is None and np.allclose(m, np.eye(3), equal_nan=False)):
+        return None, None
+    ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
+    with np.errstate(over="ignore", invalid="ignore"):  # checked just below
+        o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
+        back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
+        if node is not None:
+            # the group a frame multiplies again (transforms.node_matrix): same bits at load
+            node = K.TransformGroup2D((frozen_array(back), node, frozen_array(o)))
+            transform = node_matrix(node)
+        else:
+            transform = o @ np.asarray(m) @ back
+    if not np.all(np.abs(transform) <= _SINGLE_MAX):
+        msg = (
+            "RenderTransform (with its RenderTransformOrigin) has values that are "
+            "infinite or beyond 3.4e38: not applied"
+        )
+        r.ctx.diag("DRW003", msg, p.el, attr=p.attr_keys.get("RenderTransform"))
+        return None, None
+    return transform, node
+
+
+def element_layer(r, p, width: float, height: float, *, node_out: list | None = None):
     """The Layer2D of an element's Opacity, OpacityMask, Clip, RenderTransform (about its
     RenderTransformOrigin, for a box ``width`` x ``height``) and Effect (or BitmapEffect); None
-    when it changes nothing."""
+    when it changes nothing. ``node_out``: receives the RenderTransform's typed node when an
+    animation drives it (the caller places it in the Scene)."""
     opacity = p.value("Opacity", _D, 1.0)
     mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
     clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
-    transform = None
-    if p.has("RenderTransform"):
-        m = p.obj(
-            "RenderTransform", lambda e: transform2d(r, e), None, from_string=transform2d_text
-        )
-        if m is not None and not np.allclose(m, np.eye(3), equal_nan=False):
-            ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
-            with np.errstate(over="ignore", invalid="ignore"):  # checked just below
-                o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
-                back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
-                transform = o @ np.asarray(m) @ back
-            if not np.all(np.abs(transform) <= _SINGLE_MAX):
-                msg = (
-                    "RenderTransform (with its RenderTransformOrigin) has values that are "
-                    "infinite or beyond 3.4e38: not applied"
-                )
-                r.ctx.diag("DRW003", msg, p.el, attr=p.attr_keys.get("RenderTransform"))
-                transform = None
+    transform, node = _render_transform(r, p, width, height)
+    if node_out is not None and node is not None:
+        node_out.append(node)
     effect = _effect_property(r, p, "Effect")
     if p.has("BitmapEffect"):
         bitmap = _effect_property(r, p, "BitmapEffect")
@@ -120,7 +143,8 @@ def viewport_picture(
 ) -> Viewport2D | None:
     """The viewport's Viewport2D (None when it sets none of the properties and no element
     around it does); ``around``: the layers of the laid-out elements around it."""
-    own = element_layer(r, p, width, height) or Layer2D()
+    nodes: list = []
+    own = element_layer(r, p, width, height, node_out=nodes) or Layer2D()
     if "RenderOptions.BitmapScalingMode" in p.attached:
         msg = (
             "RenderOptions.BitmapScalingMode does not change how the brushes on 3D surfaces are "
@@ -134,10 +158,13 @@ def viewport_picture(
         edge = "Unspecified"
     if not own.changes_picture and not around and edge == "Unspecified":
         return None
-    return Viewport2D(
+    picture = Viewport2D(
         opacity=own.opacity, opacity_mask=own.opacity_mask, clip=own.clip,
         render_transform=own.render_transform, effect=own.effect, edge_mode=edge, around=around,
     )  # fmt: skip
+    if nodes:  # an animated RenderTransform: each frame draws the picture moved at t
+        r.world(picture, "render_transform", None, (nodes[0],))
+    return picture
 
 
 def _framework_ancestors(r, el):
