@@ -148,6 +148,9 @@ class DrawingGroup:
     transform: np.ndarray | None = None
     clip: Geometry | None = None  # ClipGeometry, in the group's own coordinates
     opacity_mask: Brush | None = None
+    # an element's Effect in a visual: applied to the group's composed content (before its
+    # opacity), in the group's own coordinates
+    effect: Effect | None = None
     line: int | None = None
     column: int | None = None
 

@@ -26,7 +26,8 @@ from xaml3d.render.layer2d.shaders import image_of, paint_of
 from xaml3d.scene.drawing import Viewport2D
 
 
-def _filter(effect, scale: float):
+def effect_filter(effect):
+    """The skia image filter of a scene Effect (None: nothing to do)."""
     if effect is None:
         return None
     sigma = max(0.0, float(effect.radius)) / 3.0
@@ -72,7 +73,7 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.n
             canvas.clipPath(clip, skia.ClipOp.kIntersect, True)
         paint = skia.Paint()
         paint.setAlphaf(min(1.0, max(0.0, float(layer.opacity))))
-        f = _filter(layer.effect, sx)
+        f = effect_filter(layer.effect)
         if f is not None:
             paint.setImageFilter(f)
         canvas.saveLayer(None, paint)
