@@ -425,7 +425,8 @@ def test_edge_mode_set_around_the_viewport_is_inherited(tmp_path):
     assert not [d for d in scene.diagnostics if d.code == "DRW006"]
 
 
-def test_picture_properties_around_the_viewport_are_said(tmp_path):
+def test_picture_properties_around_the_viewport_are_drawn(tmp_path):
+    # a Border's Opacity and a Grid's Effect around the viewport act on its picture in turn
     path = tmp_path / "s.xaml"
     path.write_text(
         _wrapped('Opacity="0.5"', "Border")
@@ -433,14 +434,54 @@ def test_picture_properties_around_the_viewport_are_said(tmp_path):
         .replace("</Viewport3D>", "</Viewport3D></Grid>")
     )
     scene = xaml3d.load(path)
-    found = [(d.code, d.severity, d.line) for d in scene.diagnostics if d.code == "DRW006"]
-    assert [f[:2] for f in found] == [("DRW006", "warning")] * 2
-    messages = sorted(d.message for d in scene.diagnostics if d.code == "DRW006")
-    assert messages[0].startswith("Border around the viewport sets Opacity:")
-    assert messages[1].startswith("Grid around the viewport sets Effect:")
-    # an Opacity of 1 changes nothing: not reported
+    assert not [d for d in scene.diagnostics if d.code == "DRW006"]
+    around = scene.viewports[0].picture.around
+    assert [a.layer.effect.kind if a.layer.effect else a.layer.opacity for a in around] == [
+        "Blur",
+        0.5,
+    ]
+    assert around[0].rect == (-288.0, -216.0, 640.0, 480.0)  # a 64 x 48 view centred in 640 x 480
+    # an Opacity of 1 changes nothing: no layer
     path.write_text(_wrapped('Opacity="1"', "Border"))
-    assert not [d for d in xaml3d.load(path).diagnostics if d.code == "DRW006"]
+    assert xaml3d.load(path).viewports[0].picture is None
+
+
+def test_properties_around_a_viewport_the_layout_does_not_reach_are_said(tmp_path):
+    # a viewport in a Button's ToolTip is not laid out: the Grid around it has no box
+    path = tmp_path / "s.xaml"
+    inner = _wrapped('Opacity="0.5"').replace(
+        ' xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"', ""
+    )
+    path.write_text(
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"><Button>'
+        f"<Button.ToolTip>{inner}</Button.ToolTip></Button></Grid>"
+    )
+    scene = xaml3d.load(path)
+    [d] = [d for d in scene.diagnostics if d.code == "DRW006"]
+    assert d.message.startswith("Grid around the viewport sets Opacity:")
+    assert "the layout did not reach it" in d.message
+
+
+@pytest.mark.parametrize(
+    ("case", "own"),
+    [("around-opacity", "opacity"), ("around-clip-offset", "clip"), ("around-blur", "blur")],
+)
+def test_a_layer_around_draws_as_the_viewports_own(case, own):
+    around = xaml3d.render_arrays(xaml3d.load(PICTURE / f"{case}.xaml")).rgba
+    assert np.array_equal(around, xaml3d.render_arrays(xaml3d.load(PICTURE / f"{own}.xaml")).rgba)
+
+
+def test_window_draws_a_panels_layer_over_its_whole_content(tmp_path):
+    from xaml3d.render.window import compose_window
+
+    scene = xaml3d.load(PICTURE.parent / "layout" / "window-around-layer.xaml")
+    [b] = [b for b in scene.layout.boxes if b.layer is not None]
+    assert b.type == "Border" and b.layer.opacity == 0.5
+    rgba, _ = compose_window(scene)
+    # the Border's red, faded over the yellow Grid; turned: 48 wide, 64 tall
+    assert np.abs(rgba[40, 26].astype(int) - (255, 128, 0, 255)).max() <= 1
+    assert tuple(rgba[4, 26]) == (255, 255, 0, 255) and tuple(rgba[40, 20]) == (255, 255, 0, 255)
+    assert np.abs(rgba[40, 56].astype(int) - (128, 255, 0, 255)).max() <= 1
 
 
 def _glyphs(drawing) -> int:
@@ -477,3 +518,82 @@ def test_window_controls_not_drawn_are_said(tmp_path):
     found = [d for d in xaml3d.load(path).diagnostics if d.code == "DRW007"]
     assert [(d.severity, d.line, d.column) for d in found] == [("info", 1, 111)]
     assert found[0].message.startswith("ListBox is not drawn by --window")
+
+
+def _images(drawing) -> list:
+    if isinstance(drawing, DrawingGroup):
+        return [i for k in drawing.children for i in _images(k)]
+    return [drawing] if type(drawing).__name__ == "ImageDrawing" else []
+
+
+def test_bitmap_scaling_mode_reaches_the_images_of_a_visual_not_across_a_brush(tmp_path):
+    from test_reference import REFERENCE
+
+    case = REFERENCE / "layout" / "window-bitmap-scaling.xaml"
+    scene = xaml3d.load(case)
+    images = [i for b in scene.layout.boxes if b.drawing is not None for i in _images(b.drawing)]
+    assert [i.scaling for i in images] == ["Unspecified", "NearestNeighbor"]
+    # a Grid's mode stops at a VisualBrush drawn on a 3D surface; a wrong name is said
+    text = (PICTURE / "opacity.xaml").read_text().replace(' Opacity="0.5"', "")
+    brush = (
+        '<VisualBrush><VisualBrush.Visual><Border RenderOptions.BitmapScalingMode="Fast">'
+        f'<Image Source="{REFERENCE}/layout/textures/quad2x2.png" Width="4" Height="4"/>'
+        "</Border></VisualBrush.Visual></VisualBrush>"
+    )
+    text = text.replace(
+        '<DiffuseMaterial Brush="Lime" />',
+        f"<DiffuseMaterial><DiffuseMaterial.Brush>{brush}</DiffuseMaterial.Brush></DiffuseMaterial>",
+    )
+    grid = text.index("<Viewport3D")
+    text = (
+        text[:grid]
+        + '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        + 'RenderOptions.BitmapScalingMode="NearestNeighbor">'
+        + text[grid:]
+        + "</Grid>"
+    )
+    path = tmp_path / "s.xaml"
+    path.write_text(text)
+    scene = xaml3d.load(path)
+    brushes = [m.brush for mo in scene.viewports[0].models for m in mo.material]
+    [visual] = [b for b in brushes if getattr(b, "kind", None) == "VisualBrush"]
+    assert [i.scaling for i in _images(visual.drawing)] == ["Unspecified"]
+    [d] = [d for d in scene.diagnostics if d.code == "DRW003"]
+    assert d.message == "RenderOptions.BitmapScalingMode 'Fast' is not a mode: Unspecified"
+
+
+def test_an_animated_viewport_render_transform_is_a_track():
+    from test_reference import REFERENCE
+
+    from xaml3d.animation.moment import scene_at
+
+    scene = xaml3d.load(REFERENCE / "animation" / "viewport-render-transform.xaml")
+    assert not [d for d in scene.diagnostics if d.code == "ANIM014"]
+    [track] = scene.tracks.tracks
+    assert [str(p) for p in track.moves] == ["viewport 0 / picture . render_transform"]
+    loaded = scene.viewports[0].picture.render_transform
+    assert np.array_equal(scene_at(scene, 0.0).viewports[0].picture.render_transform, loaded)
+    # half a turn about the centre (32, 24), then X: 8 at t = 0.5
+    m = scene_at(scene, 0.5).viewports[0].picture.render_transform
+    assert np.allclose(m, [[-1, 0, 64 + 8], [0, -1, 48], [0, 0, 1]])
+
+
+def test_window_draws_a_viewports_render_transform_beyond_its_box(tmp_path):
+    from xaml3d.render.window import compose_window
+
+    text = (PICTURE / "opacity.xaml").read_text().replace(' Opacity="0.5"', "")
+    text = text.replace(
+        'Width="64" Height="48">',
+        'Width="64" Height="48" HorizontalAlignment="Left"><Viewport3D.RenderTransform>'
+        '<TranslateTransform X="64"/></Viewport3D.RenderTransform>',
+    )
+    start = text.index("<Viewport3D")
+    ns = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+    body = text[start:].replace(f" {ns}", "", 1)
+    path = tmp_path / "w.xaml"
+    path.write_text(f'<Grid {ns} Width="128" Height="48" Background="White">{body}</Grid>')
+    rgba, _ = compose_window(xaml3d.load(path))
+    # the quads moved 64 px right, out of the viewport's 64 x 48 box, are drawn there
+    assert tuple(rgba[12, 64 + 20]) == (0, 255, 0, 255)
+    assert tuple(rgba[30, 64 + 20]) == (0, 0, 255, 255)
+    assert tuple(rgba[12, 20]) == (255, 255, 255, 255)

@@ -454,7 +454,9 @@ def test_markup_out_of_range_cells_and_infinite_sizes_are_errors():
     assert [d.severity for d in s.diagnostics if d.code == "SCN012"] == ["error"]
     s = load(f"<Grid {NS}><Grid.LayoutTransform><ScaleTransform ScaleX='2'/></Grid.LayoutTransform>"
              "<Viewport3D/></Grid>", text=True)  # fmt: skip
-    assert [d.severity for d in s.diagnostics if d.code == "LAY006"] == ["info"]
+    # laid out in its own space: half the width, scaled back up by the transform
+    assert not [d for d in s.diagnostics if d.code == "LAY006"]
+    assert (s.viewports[0].width, s.viewports[0].height) == (320.0, 480.0)
 
 
 def test_markup_text_after_a_property_element_and_layout_transform():
@@ -622,3 +624,64 @@ def test_scrollviewer_auto_bar_only_when_the_content_overflows():
     assert small.rect[2] == 784
     layout(window(Node(L.SCROLL, "ScrollViewer", scroll_v="Auto", children=[tall])))
     assert tall.rect[2] == 784 - 17
+
+
+# --------------------------------------------------------------------------- LayoutTransform
+
+R90 = ((0.0, -1.0), (1.0, 0.0))  # RotateTransform 90 in column form: x' = -y, y' = x
+R45 = ((math.sqrt(0.5), -math.sqrt(0.5)), (math.sqrt(0.5), math.sqrt(0.5)))
+
+
+def test_layout_transform_bounds_and_maximal_local_size():
+    from xaml3d.layout.transform import bounds, maximal_local_size
+
+    assert bounds(R90, 64, 48) == (-48.0, 0.0, 48.0, 64.0)
+    assert bounds(((2.0, 0.0), (0.0, 1.0)), 10, 20) == (0.0, 0.0, 20.0, 20.0)
+    # a quarter turn swaps the room; a scale divides it
+    assert maximal_local_size(R90, 80, 64) == (64.0, 80.0)
+    assert maximal_local_size(((2.0, 0.0), (0.0, 0.5)), 80, 64) == (40.0, 128.0)
+    # 45 degrees in a 100 x 100 square: the largest square whose turned bounds fit
+    w, h = maximal_local_size(R45, 100, 100)
+    assert (round(w, 9), round(h, 9)) == (round(100 * math.sqrt(0.5), 9),) * 2
+    # unlimited room one way is taken as a square of the other (WPF's rule)
+    assert maximal_local_size(R45, math.inf, 100) == maximal_local_size(R45, 100, 100)
+    assert maximal_local_size(R45, math.inf, math.inf) == (math.inf, math.inf)
+    assert maximal_local_size(R90, 0, 10) == (0.0, 0.0)
+    assert maximal_local_size(((1.0, 1.0), (1.0, 1.0)), 10, 10) == (0.0, 0.0)  # singular
+    # a shear: the width line bounds both (WPF's signed formula), half the room each way
+    assert maximal_local_size(((1.0, 0.5), (0.0, 1.0)), 100, 100) == (50.0, 100.0)
+
+
+def _turned(inner: str, angle: float = 90) -> str:
+    return (
+        f"<Grid {NS} Width='96' Height='64'><Grid.ColumnDefinitions><ColumnDefinition "
+        "Width='Auto'/><ColumnDefinition/></Grid.ColumnDefinitions>"
+        f"<Border Width='32' Height='16'><Border.LayoutTransform><RotateTransform Angle='{angle}'/>"
+        f"</Border.LayoutTransform></Border>{inner}</Grid>"
+    )
+
+
+def test_layout_transform_turns_sizes_and_boxes():
+    # the turned Border takes 16 x 32 in the Auto column; the viewport, turned too, is laid
+    # out in its own space as 64 x 80 in the 80 x 64 star column
+    vp = (
+        "<Viewport3D Grid.Column='1'><Viewport3D.LayoutTransform><RotateTransform Angle='90'/>"
+        "</Viewport3D.LayoutTransform></Viewport3D>"
+    )
+    s = load(_turned(vp), text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (64.0, 80.0)
+    border, view = s.layout.boxes[1], s.layout.boxes[2]
+    assert border.rect == (0.0, 16.0, 32.0, 16.0)  # its bounds' corner at col 0, row 16
+    assert [round(v, 9) for v in view.rect] == [16.0, 0.0, 64.0, 80.0]
+    turn = border.layer.layout_transform.round(9) + 0.0  # cos 90 is 6e-17: no -0.0
+    assert turn.tolist() == [[0.0, -1.0, 16.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    # a panel scaled by 2 around a viewport: half the room, the picture scaled back up
+    s = load(
+        f"<Grid {NS} Width='96' Height='64'><Border>"
+        "<Border.LayoutTransform><ScaleTransform ScaleX='2' ScaleY='2'/></Border.LayoutTransform>"
+        "<Viewport3D/></Border></Grid>",
+        text=True,
+    )
+    assert (s.viewports[0].width, s.viewports[0].height) == (48.0, 32.0)
+    # the picture of the viewport alone is drawn at its own size, the turn left to the window
+    assert s.viewports[0].picture is None

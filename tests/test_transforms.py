@@ -261,3 +261,16 @@ def test_normal_matrix_mirroring_and_inverse():
         assert info.value.code == "GEO003"
     with pytest.raises(GeometryError):
         normal_matrix(scaling(1, 0, 1))
+
+
+def test_a_huge_rotation_axis_is_still_a_direction():
+    import numpy as np
+
+    from xaml3d.scene import transforms as T
+
+    with np.errstate(all="raise"):
+        assert np.array_equal(
+            T.rotation_axis_angle((1e308, 0, 0), 90), T.rotation_axis_angle((1, 0, 0), 90)
+        )
+        q = T.axis_angle_quaternion((0, -1e308, 0), 180)
+    assert q == pytest.approx((0.0, -1.0, 0.0, 0.0))

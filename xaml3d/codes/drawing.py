@@ -20,8 +20,8 @@ DRAWING_CODES: dict[str, tuple[str, str]] = {
     "DRW007": (INFO, "a control beside the viewports that render --window does not draw"),
     "DRW006": (
         WARNING,
-        "an element around the viewport sets Opacity, OpacityMask, Clip, RenderTransform or an "
-        "effect: WPF applies it to the viewport's picture, xaml3d does not",
+        "an element around a viewport the layout does not reach sets Opacity, OpacityMask, Clip, "
+        "RenderTransform or an effect: WPF applies it to the viewport's picture, xaml3d cannot",
     ),  # fmt: skip
     "DRW005": (
         WARNING,

@@ -15,5 +15,8 @@ LAYOUT_CODES: dict[str, tuple[str, str]] = {
         "error",
         "Grid.Row/Column below 0 or Grid.RowSpan/ColumnSpan below 1 (WPF refuses it)",
     ),
-    "LAY006": ("info", "a LayoutTransform on a panel (around a viewport or not) is not applied"),
+    "LAY006": (
+        "info",
+        "no longer reported: a LayoutTransform is applied in layout and drawn (render --window)",
+    ),
 }

@@ -18,6 +18,10 @@ Viewport3D (no content size of its own: 0 x 0 unless sized), controls
 (their estimated content size). UseLayoutRounding (inherited) rounds margins, desired sizes,
 arranged sizes and offsets to whole pixels as WPF does at 96 dpi.
 
+LayoutTransform (transform.py): an element with one is measured and arranged in its own space,
+in the largest box whose transformed bounds fit the room offered; its parent sees and aligns the
+bounds of its transformed size.
+
 ``layout(root, client)`` lays the tree out and returns a ``LayoutResult``; every element is
 measured once and arranged once, so the work is linear in the number of elements.
 """
@@ -29,6 +33,7 @@ import sys
 from dataclasses import dataclass, field
 
 from xaml3d.layout.grid import GridLayout
+from xaml3d.layout.transform import bounds, maximal_local_size
 from xaml3d.layout.tree import (
     BORDER,
     CANVAS,
@@ -53,6 +58,10 @@ from xaml3d.layout.tree import (
 
 def _is_set(v: float) -> bool:
     return v == v  # not NaN
+
+
+def _zero(v: float) -> bool:
+    return abs(v) < 1e-12
 
 
 def _round(v: float) -> float:
@@ -150,14 +159,22 @@ class Engine:
         rounding = self.rounds(n)
         _, _, mw, mh = self._margin(n)
         lo_w, hi_w, lo_h, hi_h = self._limits(n)
-        fw = max(lo_w, min(max(aw - mw, 0.0), hi_w))
-        fh = max(lo_h, min(max(ah - mh, 0.0), hi_h))
+        fw, fh = max(aw - mw, 0.0), max(ah - mh, 0.0)
+        lt = n.layout_transform
+        if lt is not None:  # the room in the element's own space
+            fw, fh = maximal_local_size(lt, fw, fh)
+        fw = max(lo_w, min(fw, hi_w))
+        fh = max(lo_h, min(fh, hi_h))
         if rounding:
             fw, fh = _round(fw), _round(fh)
         dw, dh = _MEASURE[n.kind](self, n, fw, fh)
         uw, uh = max(dw, lo_w), max(dh, lo_h)
         dw, dh = min(uw, hi_w), min(uh, hi_h)
         clipped = dw < uw or dh < uh
+        if lt is not None:  # the parent sees the transformed sizes' bounding boxes
+            n.local_desired = (uw, uh)
+            uw, uh = bounds(lt, uw, uh)[2:]
+            dw, dh = bounds(lt, dw, dh)[2:]
         cw, ch = dw + mw, dh + mh
         if cw > aw or ch > ah:
             cw, ch, clipped = min(cw, aw), min(ch, ah), True
@@ -188,6 +205,16 @@ class Engine:
             aw = uw
         if n.v_align != "Stretch":
             ah = uh
+        lt = n.layout_transform
+        if lt is not None:
+            # arranged in its own space: the largest box whose transformed bounds fit, unless
+            # that is smaller than its own desired size in a direction
+            pw, ph = maximal_local_size(lt, aw, ah)
+            aw, ah = pw, ph
+            uw, uh = n.local_desired
+            if not (_zero(pw) or _zero(ph)) and (pw < uw - 1e-9 or ph < uh - 1e-9):
+                aw, ah = uw, uh
+            aw, ah = max(aw, uw), max(ah, uh)
         lo_w, hi_w, lo_h, hi_h = self._limits(n)
         if rounding:
             hi_w, hi_h = _round(hi_w), _round(hi_h)
@@ -202,10 +229,17 @@ class Engine:
             cw, ch = _round(cw), _round(ch)
         n.size = (rw, rh)
         n.ink = (iw, ih)  # WPF clips a larger render to the element's Max/explicit size
-        ox = _align(n.h_align, cw, iw, "Right") + x + ml
-        oy = _align(n.v_align, ch, ih, "Bottom") + y + mt
+        bw, bh = iw, ih
+        if lt is not None:  # alignment places the transformed box's bounds
+            bw, bh = bounds(lt, iw, ih)[2:]
+            if rounding:
+                bw, bh = _round(bw), _round(bh)
+        ox = _align(n.h_align, cw, bw, "Right") + x + ml
+        oy = _align(n.v_align, ch, bh, "Bottom") + y + mt
         if rounding:
             ox, oy = _round(ox), _round(oy)
+        # the element's own box starts where its transformed bounds are aligned; the turn
+        # (less the bounds' corner) is drawn about that point (scene Layer2D.layout_transform)
         n.offset = (ox, oy)
 
 

@@ -82,6 +82,8 @@ class Node:
     v_align: str = "Stretch"  # Top | Center | Bottom | Stretch
     visibility: str = "Visible"  # Visible | Hidden | Collapsed
     rounding: bool | None = None  # UseLayoutRounding (None: inherited)
+    # LayoutTransform's 2 x 2 part ((a, b), (c, d)), x' = a x + b y (None: none, or no turn)
+    layout_transform: tuple[tuple[float, float], tuple[float, float]] | None = None
     # attached properties
     row: int = 0
     col: int = 0
@@ -120,9 +122,12 @@ class Node:
     parent: Node | None = field(default=None, repr=False)
     desired: tuple[float, float] = (0.0, 0.0)  # including the margin, as WPF's DesiredSize
     unclipped: tuple[float, float] = (0.0, 0.0)  # without the margin, before Max clipping
+    local_desired: tuple[float, float] = (0.0, 0.0)  # LayoutTransform: unclipped, untransformed
     size: tuple[float, float] = (0.0, 0.0)  # RenderSize
     ink: tuple[float, float] = (0.0, 0.0)  # RenderSize within Max/explicit size: what shows
-    offset: tuple[float, float] = (0.0, 0.0)  # in the parent's coordinates
+    # in the parent's coordinates; with a LayoutTransform, the corner of its transformed box's
+    # bounds (its own box is turned about that point: LayoutTransform less the bounds' corner)
+    offset: tuple[float, float] = (0.0, 0.0)
     child_scale: tuple[float, float] = (1.0, 1.0)  # Viewbox: the scale applied to its child
     rect: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # ink box in the root
     slot: str = ""  # how the parent placed it ("row 1 (Auto), column 0 (*)", "Dock=Top" ...)

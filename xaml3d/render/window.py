@@ -11,13 +11,17 @@ laid-out rectangle with its own camera and aspect ratio (``render_scene``), comp
 what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
 CheckBox, RadioButton, ComboBox, Slider, ProgressBar, shapes, Image: ``Box.drawing``,
 docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
-outline of each control's layout box. Hidden and Collapsed elements and their content are left
+outline of each control's layout box. An element with Opacity, OpacityMask, Clip,
+RenderTransform or an Effect (``Box.layer``) is drawn with everything inside it into a layer of
+its own, which the 2D layer then transforms, clips, filters and fades over what lies beneath, as
+WPF composes a visual's subtree. Hidden and Collapsed elements and their content are left
 out. A pixel belongs to a box when its centre lies inside it.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -33,6 +37,7 @@ from xaml3d.render.settings import (
     settings_of,
 )
 from xaml3d.scene.boxes import BORDER, CONTROL, VIEWPORT, WINDOW, Box
+from xaml3d.scene.drawing import Layer2D, Viewport2D
 from xaml3d.scene.types import Scene, SolidColorBrush
 
 WINDOW_BACKGROUND = SolidColorBrush(color=(1.0, 1.0, 1.0, 1.0))
@@ -155,6 +160,60 @@ def _overlaps(rect, W: int, H: int) -> bool:
     return c1 > c0 and r1 > r0
 
 
+def _subtree_ends(boxes) -> list[int]:
+    """For each box, the index just past its last descendant (boxes are in paint order: a
+    subtree is a run of boxes)."""
+    ends = list(range(1, len(boxes) + 1))
+    for i in range(len(boxes) - 1, 0, -1):
+        p = boxes[i].parent
+        if p is not None:
+            ends[p] = max(ends[p], ends[i])
+    return ends
+
+
+def _close_layer(
+    layer2d: Layer2D, rect, end: int, beneath: np.ndarray, layer: np.ndarray
+) -> np.ndarray:
+    """What an element drew into ``layer`` (a premultiplied float canvas of the client area)
+    composed with its Layer2D about its box ``rect``, as WPF composes the element (the 2D
+    layer, skia), over ``beneath``; returns ``beneath``."""
+    from xaml3d.render.layer2d.picture import compose_layers
+
+    drawn = compose_layers(straight_uint8(layer), [(layer2d, rect)], (1.0, 1.0))
+    premul = drawn.astype(np.float32) / 255.0
+    premul[..., :3] *= premul[..., 3:4]
+    _over(beneath, 0, 0, premul)
+    return beneath
+
+
+def _window_pictures(scene: Scene) -> tuple[Scene, dict[int, Layer2D]]:
+    """The scene with each viewport's picture reduced to how its 3D is drawn (EdgeMode), and
+    each viewport's own Opacity, OpacityMask, Clip, RenderTransform and Effect as a Layer2D by
+    viewport index: the window composes them over the whole client area, so what the viewport's
+    RenderTransform moves out of its box still shows (the elements around are boxes' layers)."""
+    own: dict[int, Layer2D] = {}
+    vps = []
+    for i, vp in enumerate(scene.viewports):
+        pic = vp.picture
+        if pic is not None:
+            layer = Layer2D(opacity=pic.opacity, opacity_mask=pic.opacity_mask, clip=pic.clip,
+                            render_transform=pic.render_transform, effect=pic.effect)  # fmt: skip
+            if layer.changes_picture:
+                own[i] = layer
+            edge = pic.edge_mode
+            vp = replace(vp, picture=Viewport2D(edge_mode=edge) if edge != "Unspecified" else None)
+        vps.append(vp)
+    return replace(scene, viewports=tuple(vps)), own
+
+
+def _layer_of(b: Box, own: dict[int, Layer2D]) -> Layer2D | None:
+    """A box's layer; a viewport's own properties join its LayoutTransform's placement."""
+    if b.kind != VIEWPORT or b.viewport not in own:
+        return b.layer
+    placed = b.layer.layout_transform if b.layer is not None else None
+    return replace(own[b.viewport], layout_transform=placed)
+
+
 def compose_window(
     scene: Scene,
     settings: RenderSettings | None = None,
@@ -181,9 +240,22 @@ def compose_window(
         bg[:3] *= bg[3]
         canvas[...] = bg
     diags: list[Diagnostic] = []
+    # the window composes every layer itself (below), a viewport's own ones too: its picture
+    # keeps only how its 3D is drawn
+    scene, own = _window_pictures(scene)
+    ends = _subtree_ends(result.boxes)
+    open_layers: list = []  # (box, end, the canvas beneath), innermost last
     for i, b in enumerate(result.boxes):  # paint order: parents before children
+        while open_layers and open_layers[-1][2] <= i:
+            canvas = _close_layer(*open_layers.pop(), canvas)
         if not b.shown:
             continue
+        layer = _layer_of(b, own)
+        if layer is not None:
+            # the element and everything inside it are drawn into a layer of their own, which
+            # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
+            open_layers.append((layer, b.rect, ends[i], canvas))
+            canvas = np.zeros_like(canvas)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:
             brush = WINDOW_BACKGROUND
@@ -213,4 +285,6 @@ def compose_window(
             _draw_control(canvas, b)
         if b.kind == CONTROL and outline_controls:
             _outline(canvas, b.rect)
+    while open_layers:
+        canvas = _close_layer(*open_layers.pop(), canvas)
     return straight_uint8(canvas), diags

@@ -42,6 +42,10 @@ class Box:
     # of natural size ``ink`` (scaled to ``rect``, e.g. by a Viewbox); None: not drawn
     drawing: object = None
     ink: tuple[float, float] = (0.0, 0.0)
+    # its Opacity, OpacityMask, Clip, RenderTransform and Effect (scene.drawing.Layer2D), which
+    # act on it and everything inside it as one layer; None: none set (a viewport's own are its
+    # picture's)
+    layer: object = None
     line: int | None = None
     column: int | None = None
 

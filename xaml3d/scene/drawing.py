@@ -118,6 +118,9 @@ class ImageDrawing:
 
     image: np.ndarray | None = None
     rect: Rect = (0.0, 0.0, 0.0, 0.0)
+    # RenderOptions.BitmapScalingMode in effect: "NearestNeighbor" takes the nearest pixel,
+    # "Fant"/"HighQuality" a smoothed (mip-mapped) scale, the others (WPF's default) bilinear
+    scaling: str = "Unspecified"
     line: int | None = None
     column: int | None = None
 
@@ -145,6 +148,9 @@ class DrawingGroup:
     transform: np.ndarray | None = None
     clip: Geometry | None = None  # ClipGeometry, in the group's own coordinates
     opacity_mask: Brush | None = None
+    # an element's Effect in a visual: applied to the group's composed content (before its
+    # opacity), in the group's own coordinates
+    effect: Effect | None = None
     line: int | None = None
     column: int | None = None
 
@@ -199,23 +205,56 @@ class Effect:
 
 
 @dataclass(frozen=True)
-class Viewport2D:
-    """What a Viewport3D's own UIElement properties do to its picture, in the viewport's
-    coordinates (DIPs, origin at its top-left). Held by ``Viewport.picture``; None there means
-    none of them is set."""
+class Layer2D:
+    """What a UIElement's Opacity, OpacityMask, Clip, RenderTransform and Effect do to what it
+    draws (its content and its children's, composed as one layer), in its own coordinates
+    (DIPs, origin at its top-left)."""
 
     opacity: float = 1.0
     opacity_mask: Brush | None = None
     clip: Geometry | None = None
     render_transform: np.ndarray | None = None  # RenderTransformOrigin already folded in
     effect: Effect | None = None
+    # LayoutTransform (3 x 3) about the box's top-left, after the render transform, its
+    # translation the one that puts its turned box's bounds at that corner: the layout placed
+    # the element's own box with it (``render --window`` draws
+    # it; a viewport's picture, rendered at its own size, is drawn without it)
+    layout_transform: np.ndarray | None = None
+
+    @property
+    def changes_picture(self) -> bool:
+        """Whether the layer changes anything of what is drawn under it."""
+        return self.opacity != 1.0 or any(
+            x is not None
+            for x in (
+                self.opacity_mask, self.clip, self.effect, self.render_transform,
+                self.layout_transform,
+            )
+        )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Around:
+    """An element around a viewport whose Layer2D acts on the viewport's picture: ``rect`` is
+    its laid-out box (x, y, w, h) in the viewport's coordinates (DIPs, origin at the viewport's
+    top-left)."""
+
+    layer: Layer2D
+    rect: tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class Viewport2D(Layer2D):
+    """What a Viewport3D's own UIElement properties do to its picture, in the viewport's
+    coordinates (DIPs, origin at its top-left), and ``around``: the layers of the elements
+    around it, nearest first, which WPF applies in turn to the viewport's composed picture.
+    Held by ``Viewport.picture``; None there means none of them is set."""
+
     edge_mode: str = "Unspecified"  # RenderOptions.EdgeMode: "Aliased" turns anti-aliasing off
+    around: tuple[Around, ...] = ()
 
     @property
     def changes_picture(self) -> bool:
         """Whether the 2D layer has anything to do to the picture (EdgeMode alone changes
         only how the 3D is drawn)."""
-        return self.opacity != 1.0 or any(
-            x is not None
-            for x in (self.opacity_mask, self.clip, self.effect, self.render_transform)
-        )
+        return super().changes_picture or bool(self.around)

@@ -152,12 +152,20 @@ def _cos_sin_deg(angle_deg: float) -> tuple[float, float]:
     return math.cos(r), math.sin(r)
 
 
+def _unit_scaled(a: np.ndarray) -> np.ndarray:
+    """``a`` divided by its largest magnitude when its length would overflow (WPF's
+    Vector3D.Normalize scales so first): an axis of 1e308 is still a direction. Other vectors
+    are kept as they are, so their bits do not change."""
+    big = float(np.max(np.abs(a))) if a.size else 0.0
+    return a / big if 1e150 < big < math.inf else a
+
+
 def rotation_axis_angle(
     axis: ArrayLike, angle_deg: float, center: ArrayLike = (0.0, 0.0, 0.0)
 ) -> np.ndarray:
     """RotateTransform3D with AxisAngleRotation3D: right-hand rule about the (normalized) axis,
     about ``center``. A zero axis is the identity (WPF's rule)."""
-    a = _vec(axis, 3, "axis")
+    a = _unit_scaled(_vec(axis, 3, "axis"))
     length = float(np.linalg.norm(a))
     if length == 0.0 or not math.isfinite(length):
         return _about_center(np.eye(3), center)
@@ -338,7 +346,7 @@ def compose_2d(*matrices: np.ndarray) -> np.ndarray:
 def axis_angle_quaternion(axis, angle_deg: float) -> tuple[float, float, float, float]:
     """An AxisAngleRotation3D as the unit quaternion (x, y, z, w) animations interpolate; a
     zero (or non-finite) axis is no rotation, as in WPF."""
-    a = np.asarray(axis, dtype=np.float64)
+    a = _unit_scaled(np.asarray(axis, dtype=np.float64))
     n = float(np.linalg.norm(a))
     if n == 0.0 or not math.isfinite(n):
         return (0.0, 0.0, 0.0, 1.0)

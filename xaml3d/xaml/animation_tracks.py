@@ -9,8 +9,10 @@ matrix made from an animated transform, with its chain). ``tracks`` then walks t
 viewports once and turns each tagged object into the paths where it lands.
 
 A slot read while building but held by no scene object is a property xaml3d evaluates only at
-load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once). WPF would
-show it change; ANIM014 says that xaml3d draws its value at load instead.
+load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once), an
+element's RenderTransform around a viewport. WPF would show it change; ANIM014 says that xaml3d
+draws its value at load instead. A Viewport3D's own RenderTransform is a track (its picture's
+``render_transform``).
 
 What runs (storyboard checks): ANIM007 for a storyboard no trigger begins or whose BeginTime
 is {x:Null}, ANIM008 for an animation whose BeginTime is {x:Null}.
@@ -219,6 +221,8 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...]) -> Tracks:
                         visit_brush(ps.brush, vi, (*steps, ("brush", None)))
         if vp.background is not None:
             visit_brush(vp.background, vi, (("background", None),))
+        if vp.picture is not None:  # an animated RenderTransform of the viewport
+            visit(vp.picture, vi, (("picture", None),))
 
     moves: list[list[ScenePath]] = [[] for _ in slots.targets]
     for chain in worlds:

@@ -9,14 +9,16 @@ Width/Height, else the default 640 x 480, and says so.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from xaml3d.errors import Diagnostic
 from xaml3d.layout import layout
 from xaml3d.layout.engine import LayoutResult
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
+from xaml3d.layout.transform import placed_by_layout
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
-from xaml3d.scene.boxes import Box, WindowLayout
+from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout
+from xaml3d.scene.drawing import Around, Layer2D
 from xaml3d.xaml.panels_reader import ElementValues, parse_length, read_layout
 
 DEFAULT_SIZE = (640.0, 480.0)
@@ -30,6 +32,10 @@ class ViewportLayout:
     rect: tuple[float, float, float, float] | None  # x, y, w, h in the root's client area
     source: str  # the derivation ("layout: ..."), "viewport" or "default"
     background: object = None  # the nearest laid-out ancestor's Background brush
+    # the layers (Opacity, Clip, RenderTransform, Effect...) of the elements around it, nearest
+    # first (scene.drawing.Around), and the ids of the XML elements the layout reached around it
+    around: tuple = ()
+    laid_out: frozenset = frozenset()
 
 
 def derivation(vp: Node) -> str:
@@ -58,8 +64,10 @@ def derivation(vp: Node) -> str:
     return "layout: " + " > ".join(parts)
 
 
-def window_layout(result: LayoutResult) -> WindowLayout:
-    """The layout engine's tree as the Scene keeps it: frozen boxes in paint order."""
+def window_layout(result: LayoutResult, layers: dict | None = None) -> WindowLayout:
+    """The layout engine's tree as the Scene keeps it: frozen boxes in paint order.
+    ``layers``: each node's Layer2D by ``id(node)`` (a viewport's own is its picture's)."""
+    layers = layers or {}
     boxes: list[Box] = []
     index: dict[int, int] = {}
     for n in result.root.walk():  # parents first, children in document order: paint order
@@ -85,6 +93,7 @@ def window_layout(result: LayoutResult) -> WindowLayout:
                 border=(left * sx, top * sy, right * sx, bottom * sy),
                 viewport=n.viewport,
                 drawing=n.drawing,
+                layer=layers.get(id(n)),
                 ink=(float(n.ink[0]), float(n.ink[1])),
                 line=n.line,
                 column=n.column,
@@ -112,6 +121,7 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             for n in root.walk()
             if (el := elements.get(id(n), (None,))[0]) is not None
         }
+    layers = _layers(r, root, elements) if result is not None else {}
     out: dict[int, ViewportLayout] = {}
     if result is not None:
         for note in viewport_notes(result.viewports):
@@ -131,8 +141,46 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             source = "default"
         elif n.parent is None and n.width == n.width and n.height == n.height:
             source = "viewport"
-        out[i] = ViewportLayout(w, h, n.rect, source, background)
-    return out, None if result is None else window_layout(result)
+        # a viewport's picture is drawn at its own size: the LayoutTransforms around it only
+        # place it in the window (render --window)
+        unplaced = {}
+        for a in n.ancestors():
+            own = replace(layers[id(a)], layout_transform=None) if id(a) in layers else None
+            if own is not None and own.changes_picture:
+                unplaced[id(a)] = own
+        around = tuple(
+            Around(unplaced[id(a)], (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]))
+            for a in n.ancestors()
+            if id(a) in unplaced
+        )
+        reached = frozenset(
+            id(el) for a in n.ancestors() if (el := elements.get(id(a), (None,))[0]) is not None
+        )
+        out[i] = ViewportLayout(w, h, n.rect, source, background, around, reached)
+    return out, None if result is None else window_layout(result, layers)
+
+
+def _layers(r, root: Node, elements: dict) -> dict:
+    """The Layer2D of every laid-out element, by ``id(node)``: its LayoutTransform, and but
+    for a viewport (whose own are its picture's) its Opacity, OpacityMask, Clip,
+    RenderTransform and Effect. A control's drawing holds its Opacity already."""
+    from xaml3d.xaml.picture_reader import element_layer
+
+    out = {}
+    for n in root.walk():
+        el = elements.get(id(n), (None,))[0]
+        if el is None:
+            continue
+        layer = None
+        if n.kind != VIEWPORT:
+            layer = element_layer(r, r.props(el), float(n.rect[2]), float(n.rect[3]))
+        if layer is not None and n.kind == CONTROL and n.drawing is not None:
+            layer = replace(layer, opacity=1.0)
+        if n.layout_transform is not None:
+            layer = replace(layer or Layer2D(), layout_transform=placed_by_layout(n))
+        if layer is not None and layer.changes_picture:
+            out[id(n)] = layer
+    return out
 
 
 def unreached(r, el) -> ViewportLayout:

@@ -12,7 +12,7 @@ Canvas.Left/Top/Right/Bottom and ScrollViewer.*ScrollBarVisibility, the panels' 
 and the Background/BorderBrush that ``render --window`` paints. Values go through the reader's
 converters, so a bad value is a located diagnostic and the property keeps WPF's default. A
 property the element does not set comes from its Style's Setters (keyed or implicit, BasedOn
-chains); a 2D control's LayoutTransform turns its size.
+chains); every element's LayoutTransform (its 2 x 2 part) is kept for the layout engine.
 """
 
 from __future__ import annotations
@@ -306,6 +306,10 @@ class PanelsReader:
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
+        turned = _layout_transform(self.r, v)
+        if _turns(turned):  # laid out in its own space, its box turned (xaml3d.layout)
+            (a, b), (c, d) = (tuple(float(x) for x in row) for row in turned[:2, :2])
+            n.layout_transform = ((a, b), (c, d))
         size = v.get("FontSize", parse_length, None)
         if size is None:
             size = v.attached("TextElement.FontSize", parse_length, None)
@@ -320,10 +324,6 @@ class PanelsReader:
         if kind == L.CONTROL:
             self._estimate(n, v, el, font)
             return n
-        if _turns(_layout_transform(self.r, v)):
-            where = "around a viewport" if id(el) in self.holds_viewport else "of a panel"
-            self.note("LAY006", f"the LayoutTransform of this {local} ({where}) is not applied: "
-                      "it is laid out and drawn untransformed", el)  # fmt: skip
         if kind == L.CONTAINER and (local not in _PLAIN):
             what = "custom element" if not is_presentation(ns) else local
             self.note("LAY004", f"{what} {local!r} holding a Viewport3D is laid out as a plain "
@@ -516,25 +516,9 @@ class PanelsReader:
                 w = sum(_outer(k)[0] for k in items) + cw
                 h = max(LINE_HEIGHT * scale, max(_outer(k)[1] for k in items)) + ch
         n.estimate = (max(0.0, w), max(0.0, h))
-        turned = _layout_transform(self.r, v)
-        if _turns(turned):
-            # A LayoutTransform turns the element's box before its parent places it: the
-            # parent sees the bounding box of the transformed size (margins stay outside).
-            bw = (
-                n.width if n.width == n.width else max(n.min_width, min(n.estimate[0], n.max_width))
-            )
-            bh = (
-                n.height
-                if n.height == n.height
-                else max(n.min_height, min(n.estimate[1], n.max_height))
-            )
-            (a, b), (c, d) = turned[:2, :2]  # x' = a x + b y, y' = c x + d y
-            n.width, n.height = abs(a * bw) + abs(b * bh), abs(c * bw) + abs(d * bh)
-            n.min_width = n.min_height = 0.0
-            n.max_width = n.max_height = math.inf
-            w, h = n.width, n.height
+        if n.layout_transform is not None and (n.width != n.width or n.height != n.height):
             self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
-                      f"estimated, turned by its LayoutTransform, as {w:g} x {h:g}",
+                      f"estimated as {w:g} x {h:g}, then turned by its LayoutTransform",
                       el)  # fmt: skip
         elif n.width != n.width or n.height != n.height:
             self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "

@@ -1,23 +1,30 @@
-"""Reading what a Viewport3D's own UIElement properties do to its picture (scene Viewport2D).
+"""Reading what a Viewport3D's own UIElement properties, and those of the laid-out elements
+around it, do to its picture (scene Viewport2D, Layer2D, Around).
 
 Covers Opacity, OpacityMask (any brush the 2D layer draws), Clip (any geometry), RenderTransform
 with RenderTransformOrigin (folded into one matrix about the viewport's top-left), Effect
 (BlurEffect: Radius; DropShadowEffect: Color, Direction, ShadowDepth, BlurRadius, Opacity),
 BitmapEffect (BlurBitmapEffect: Radius; DropShadowBitmapEffect: Color, Direction, ShadowDepth,
 Softness, Opacity; OuterGlowBitmapEffect: GlowColor, GlowSize, Opacity, drawn as an unmoved
-shadow) and RenderOptions.EdgeMode. Other effects (ShaderEffect and effects from other
-assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) and
-RenderOptions.BitmapScalingMode are an info diagnostic (DRW003) and the picture is drawn without
-them.
+shadow), RenderOptions.EdgeMode, and RenderOptions.BitmapScalingMode as the Images of visuals
+inherit it (``bitmap_scaling_mode``). Other effects (ShaderEffect and effects from other
+assemblies, BevelBitmapEffect, EmbossBitmapEffect, effect groups) are an info diagnostic (DRW003)
+and the picture is drawn without them; so is BitmapScalingMode on a viewport, which WPF does not
+apply to the brushes on 3D surfaces. An element around a viewport that the layout did not reach
+has no box to place its layer in: DRW006 says so.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.scene.drawing import Effect, Viewport2D
+from xaml3d.scene import tracks as K
+from xaml3d.scene.drawing import Around, Effect, Layer2D, Viewport2D
+from xaml3d.scene.transforms import node_matrix
+from xaml3d.scene.types import frozen_array
 from xaml3d.xaml import values as V
-from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
+from xaml3d.xaml.animation_tracks import built
+from xaml3d.xaml.brushes_reader import brush_property, transform2d_parts, transform2d_text
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.geometry_reader import geometry_property
 
@@ -77,39 +84,71 @@ def _effect_property(r, p, prop: str) -> Effect | None:
 _SINGLE_MAX = float(np.finfo(np.float32).max)  # WPF's renderer is single precision
 
 
-def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
-    """The viewport's Viewport2D (None when it sets none of the properties)."""
-    set_any = False
+def _render_transform(r, p, width: float, height: float):
+    """(RenderTransform about RenderTransformOrigin as one 3x3 matrix or None, its typed node
+    when an animation drives part of it (scene.tracks: the origin's shifts around it) or
+    None)."""
+    if not p.has("RenderTransform"):
+        return None, None
+    pair = p.obj(
+        "RenderTransform", lambda e: built(transform2d_parts(r, e)), None,
+        from_string=transform2d_text,
+    )  # fmt: skip
+    m, node = pair if isinstance(pair, tuple) else (pair, None)
+    if m is None or (node is None and np.allclose(m, np.eye(3), equal_nan=False)):
+        return None, None
+    ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
+    with np.errstate(over="ignore", invalid="ignore"):  # checked just below
+        o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
+        back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
+        if node is not None:
+            # the group a frame multiplies again (transforms.node_matrix): same bits at load
+            node = K.TransformGroup2D((frozen_array(back), node, frozen_array(o)))
+            transform = node_matrix(node)
+        else:
+            transform = o @ np.asarray(m) @ back
+    if not np.all(np.abs(transform) <= _SINGLE_MAX):
+        msg = (
+            "RenderTransform (with its RenderTransformOrigin) has values that are "
+            "infinite or beyond 3.4e38: not applied"
+        )
+        r.ctx.diag("DRW003", msg, p.el, attr=p.attr_keys.get("RenderTransform"))
+        return None, None
+    return transform, node
+
+
+def element_layer(r, p, width: float, height: float, *, node_out: list | None = None):
+    """The Layer2D of an element's Opacity, OpacityMask, Clip, RenderTransform (about its
+    RenderTransformOrigin, for a box ``width`` x ``height``) and Effect (or BitmapEffect); None
+    when it changes nothing. ``node_out``: receives the RenderTransform's typed node when an
+    animation drives it (the caller places it in the Scene)."""
     opacity = p.value("Opacity", _D, 1.0)
-    set_any |= opacity != 1.0
     mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
     clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
-    transform = None
-    if p.has("RenderTransform"):
-        m = p.obj(
-            "RenderTransform", lambda e: transform2d(r, e), None, from_string=transform2d_text
-        )
-        if m is not None and not np.allclose(m, np.eye(3), equal_nan=False):
-            ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
-            with np.errstate(over="ignore", invalid="ignore"):  # checked just below
-                o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
-                back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
-                transform = o @ np.asarray(m) @ back
-            if not np.all(np.abs(transform) <= _SINGLE_MAX):
-                msg = (
-                    "RenderTransform (with its RenderTransformOrigin) has values that are "
-                    "infinite or beyond 3.4e38: not applied"
-                )
-                r.ctx.diag("DRW003", msg, p.el, attr=p.attr_keys.get("RenderTransform"))
-                transform = None
+    transform, node = _render_transform(r, p, width, height)
+    if node_out is not None and node is not None:
+        node_out.append(node)
     effect = _effect_property(r, p, "Effect")
     if p.has("BitmapEffect"):
         bitmap = _effect_property(r, p, "BitmapEffect")
         effect = effect or bitmap  # WPF applies Effect when both are set
+    layer = Layer2D(
+        opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform, effect=effect
+    )
+    return layer if layer.changes_picture else None
+
+
+def viewport_picture(
+    r, p, width: float, height: float, around: tuple[Around, ...] = ()
+) -> Viewport2D | None:
+    """The viewport's Viewport2D (None when it sets none of the properties and no element
+    around it does); ``around``: the layers of the laid-out elements around it."""
+    nodes: list = []
+    own = element_layer(r, p, width, height, node_out=nodes) or Layer2D()
     if "RenderOptions.BitmapScalingMode" in p.attached:
         msg = (
-            "RenderOptions.BitmapScalingMode is not applied: brushes are sampled bilinearly "
-            "(WPF's default)"
+            "RenderOptions.BitmapScalingMode does not change how the brushes on 3D surfaces are "
+            "sampled (bilinearly, in WPF as in xaml3d); Images drawn in visuals follow it"
         )
         r.ctx.diag("DRW003", msg, p.el, attr="RenderOptions.BitmapScalingMode")
     # RenderOptions.EdgeMode is inherited: a Window's or a panel's reaches the viewport
@@ -117,13 +156,15 @@ def viewport_picture(r, p, width: float, height: float) -> Viewport2D | None:
     if edge not in ("Aliased", "Unspecified"):
         r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
         edge = "Unspecified"
-    set_any |= any(x is not None for x in (mask, clip, transform, effect)) or edge != "Unspecified"
-    if not set_any:
+    if not own.changes_picture and not around and edge == "Unspecified":
         return None
-    return Viewport2D(
-        opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform,
-        effect=effect, edge_mode=edge,
+    picture = Viewport2D(
+        opacity=own.opacity, opacity_mask=own.opacity_mask, clip=own.clip,
+        render_transform=own.render_transform, effect=own.effect, edge_mode=edge, around=around,
     )  # fmt: skip
+    if nodes:  # an animated RenderTransform: each frame draws the picture moved at t
+        r.world(picture, "render_transform", None, (nodes[0],))
+    return picture
 
 
 def _framework_ancestors(r, el):
@@ -138,6 +179,35 @@ def _framework_ancestors(r, el):
         anc = anc.getparent()
 
 
+_SCALING = ("Unspecified", "LowQuality", "HighQuality", "Linear", "Fant", "NearestNeighbor")
+# where RenderOptions stop flowing down: a brush is drawn apart from the elements around it
+_RENDER_OPTIONS_STOP = ("VisualBrush", "DrawingBrush", "Viewport2DVisual3D", "ResourceDictionary")
+
+
+def bitmap_scaling_mode(r, el) -> str:
+    """RenderOptions.BitmapScalingMode in effect at ``el``: its own, else that of the nearest
+    element around it inside the same visual that sets one (the render option applies to a
+    visual's subtree); "Unspecified" when none does, or for a value that is not a mode
+    (DRW003 says so)."""
+    node = el
+    while node is not None and isinstance(node.tag, str):
+        ns, local = qname(node.tag)
+        if local.endswith(".Resources") or local in _RENDER_OPTIONS_STOP:
+            break
+        if is_presentation(ns) and "." not in local:
+            p = r.props(node)
+            raw = p.attached.get("RenderOptions.BitmapScalingMode")
+            if raw is not None:
+                mode = raw.strip()
+                if mode in _SCALING:
+                    return mode
+                msg = f"RenderOptions.BitmapScalingMode {mode!r} is not a mode: Unspecified"
+                r.ctx.diag("DRW003", msg, node, once=("DRW003", id(node), "scaling"))
+                return "Unspecified"
+        node = node.getparent()
+    return "Unspecified"
+
+
 def _inherited_edge_mode(r, el) -> str:
     for _, ap in _framework_ancestors(r, el):
         if "RenderOptions.EdgeMode" in ap.attached:
@@ -148,11 +218,14 @@ def _inherited_edge_mode(r, el) -> str:
 _AROUND = ("OpacityMask", "Clip", "RenderTransform", "Effect", "BitmapEffect")
 
 
-def report_ancestors(r, el) -> None:
-    """DRW006: what an element around the viewport sets that changes WPF's picture of it
-    (Opacity, OpacityMask, Clip, RenderTransform, Effect, BitmapEffect) and xaml3d does not
-    apply: the viewport is drawn without it, and this says so."""
+def report_ancestors(r, el, laid_out: frozenset = frozenset()) -> None:
+    """DRW006: what an element around the viewport that the layout did not reach sets that
+    changes WPF's picture of it (Opacity, OpacityMask, Clip, RenderTransform, Effect,
+    BitmapEffect): without its box the viewport is drawn without it, and this says so. The
+    laid-out elements (``laid_out``: ids of their XML elements) are applied (``Around``)."""
     for anc, ap in _framework_ancestors(r, el):
+        if id(anc) in laid_out:
+            continue
         found = [prop for prop in _AROUND if ap.has(prop)]
         if ap.has("Opacity") and ap.value("Opacity", _D, 1.0) != 1.0:
             found.insert(0, "Opacity")
@@ -160,6 +233,6 @@ def report_ancestors(r, el) -> None:
             what = ", ".join(found)
             msg = (
                 f"{ap.type} around the viewport sets {what}: WPF applies it to everything "
-                "inside, xaml3d draws the viewport without it"
+                "inside, xaml3d draws the viewport without it (the layout did not reach it)"
             )
             r.ctx.diag("DRW006", msg, anc, once=("DRW006", id(anc)))

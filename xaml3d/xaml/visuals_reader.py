@@ -10,8 +10,10 @@ Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch No
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
 Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
 RadioButton, ProgressBar, Slider and a closed ComboBox in WPF's default Windows 10/11 look (the
-[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity applies to an element and
-its children. Anything else is skipped with DRW002: the rest is drawn.
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, and RenderTransform (about
+RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect and their bitmap effects:
+``picture_reader.element_layer``), apply to an element and its children as one layer. Anything
+else is skipped with DRW002: the rest is drawn.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import numpy as np
 from xaml3d.layout import layout
 from xaml3d.layout import tree as L
 from xaml3d.layout.text import line_height, text_width
+from xaml3d.layout.transform import placed_by_layout
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -54,6 +57,7 @@ from xaml3d.xaml.panels_reader import (
     PanelsReader,
     parse_thickness,
 )
+from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
@@ -182,9 +186,24 @@ def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
     clip = _layout_clip(n) if n.type in _TEXT_CONTROLS else None
     if clip is not None:  # the clip is in the element's own coordinates, under its transform
         own = [DrawingGroup(children=tuple(own), clip=clip)]
+    # RenderTransform (about RenderTransformOrigin), Clip and Effect act on the element and its
+    # children as one layer, in its own coordinates, as the window's and a viewport's do
+    layer = element_layer(r, r.props(el), ink_w, ink_h)
     px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
-    out.append(DrawingGroup(children=tuple(own), opacity=opacity, transform=m))
+    if n.layout_transform is not None:  # its own box turned about the corner the layout set
+        m = m @ placed_by_layout(n)
+    if layer is not None and layer.render_transform is not None:
+        m = m @ layer.render_transform
+    out.append(
+        DrawingGroup(
+            children=tuple(own),
+            opacity=opacity,
+            transform=m,
+            clip=layer.clip if layer is not None else None,
+            effect=layer.effect if layer is not None else None,
+        )  # fmt: skip
+    )
 
 
 def _layout_clip(n):
@@ -237,7 +256,8 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
             if image is None:  # the diagnostic says a grey checker stands in
                 image = placeholder_image()
             if image is not None:
-                out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h)))
+                scaling = bitmap_scaling_mode(r, el)
+                out.append(ImageDrawing(image=image, rect=(0.0, 0.0, w, h), scaling=scaling))
         return
     r.ctx.diag("DRW002", f"{local} is not drawn by xaml3d in a visual: skipped", el)
 

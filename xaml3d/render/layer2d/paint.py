@@ -16,6 +16,7 @@ import skia
 from xaml3d.fonts import typeface
 from xaml3d.render.layer2d.paths import matrix, path_of
 from xaml3d.render.layer2d.pens import caps_path, stroke_paint
+from xaml3d.render.layer2d.picture import effect_filter
 from xaml3d.render.layer2d.shaders import image_of, paint_of
 from xaml3d.scene.drawing import (
     DrawingGroup,
@@ -74,11 +75,18 @@ def draw(canvas: skia.Canvas, d) -> None:
         img = image_of(d.image)
         x, y, w, h = d.rect
         if img is not None and w > 0 and h > 0:
-            canvas.drawImageRect(
-                img, skia.Rect.MakeXYWH(x, y, w, h), skia.SamplingOptions(skia.FilterMode.kLinear)
-            )
+            canvas.drawImageRect(img, skia.Rect.MakeXYWH(x, y, w, h), _sampling(d.scaling))
     elif isinstance(d, DrawingGroup):
         _draw_group(canvas, d)
+
+
+def _sampling(scaling: str) -> skia.SamplingOptions:
+    """How an image is resampled under RenderOptions.BitmapScalingMode."""
+    if scaling == "NearestNeighbor":
+        return skia.SamplingOptions(skia.FilterMode.kNearest)
+    if scaling in ("Fant", "HighQuality"):  # WPF's Fant scaler averages when it shrinks
+        return skia.SamplingOptions(skia.FilterMode.kLinear, skia.MipmapMode.kLinear)
+    return skia.SamplingOptions(skia.FilterMode.kLinear)
 
 
 def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
@@ -89,11 +97,14 @@ def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
     clip = path_of(g.clip)
     if clip is not None:
         canvas.clipPath(clip, skia.ClipOp.kIntersect, True)
-    layered = g.opacity < 1.0 or g.opacity_mask is not None
+    layered = g.opacity < 1.0 or g.opacity_mask is not None or g.effect is not None
     if layered:
-        # the group is composed first, then faded as a whole (not each child on its own)
+        # the group is composed first, then filtered and faded as a whole (not each child)
         layer = skia.Paint()
         layer.setAlphaf(min(1.0, float(g.opacity)))
+        f = effect_filter(g.effect)
+        if f is not None:
+            layer.setImageFilter(f)
         canvas.saveLayer(None, layer)
     for child in g.children:
         draw(canvas, child)

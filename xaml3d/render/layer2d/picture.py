@@ -1,9 +1,12 @@
-"""A Viewport3D's own 2D properties applied to its rendered picture (scene Viewport2D).
+"""A UIElement's 2D layer (scene Layer2D): a Viewport3D's own properties and those of the
+elements around it applied to its rendered picture (scene Viewport2D), and any element's layer
+over what ``render --window`` drew inside it.
 
 Pipeline step: after the 3D picture is resolved, before it is composed over the background.
 WPF draws a UIElement's content, clips it (Clip), applies its Effect to the clipped content,
 fades it (Opacity, OpacityMask) and places the result by its RenderTransform, all in the
-element's own coordinates (DIPs; ``scale`` gives image pixels per DIP). The picture keeps its
+element's own coordinates (DIPs; ``scale`` gives image pixels per DIP). The layers of nested
+elements nest: each parent's applies to its child's composed layer. The picture keeps its
 box: what a transform or a shadow moves beyond the viewport's rectangle is cut off.
 
 BlurEffect's Radius and DropShadowEffect's BlurRadius are taken as a Gaussian of standard
@@ -23,7 +26,8 @@ from xaml3d.render.layer2d.shaders import image_of, paint_of
 from xaml3d.scene.drawing import Viewport2D
 
 
-def _filter(effect, scale: float):
+def effect_filter(effect):
+    """The skia image filter of a scene Effect (None: nothing to do)."""
     if effect is None:
         return None
     sigma = max(0.0, float(effect.radius)) / 3.0
@@ -37,9 +41,14 @@ def _filter(effect, scale: float):
     return skia.ImageFilters.DropShadow(dx, dy, sigma, sigma, color)
 
 
-def apply_picture(rgba: np.ndarray, picture: Viewport2D, scale: tuple[float, float]):
-    """``rgba``: the viewport's straight-alpha uint8 picture (H, W, 4) on a transparent
-    background; returns the picture WPF shows in the same box (straight-alpha uint8)."""
+def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.ndarray:
+    """``rgba``: a straight-alpha uint8 picture (H, W, 4) on a transparent background, drawn
+    in coordinates of ``scale`` image pixels per DIP; ``levels``: (Layer2D, (x, y, w, h)) from
+    the outermost element in, each element's box in the picture's coordinates (DIPs). Each
+    element's layer nests inside its parent's, as WPF renders a visual tree: the parent's
+    RenderTransform about its own box, its Clip, then the children drawn into one layer that
+    takes its Effect, Opacity and OpacityMask. Returns the straight-alpha uint8 picture in the
+    same box."""
     h, w = rgba.shape[:2]
     sx, sy = scale
     info = skia.ImageInfo.Make(
@@ -49,30 +58,52 @@ def apply_picture(rgba: np.ndarray, picture: Viewport2D, scale: tuple[float, flo
     canvas = surface.getCanvas()
     canvas.clear(skia.ColorTRANSPARENT)
     canvas.scale(sx, sy)
-    if picture.render_transform is not None:
-        canvas.concat(matrix(picture.render_transform))
-    clip = path_of(picture.clip)
-    if clip is not None:
-        canvas.clipPath(clip, skia.ClipOp.kIntersect, True)
-    box = skia.Rect.MakeWH(w / sx, h / sy)
-    layer = skia.Paint()
-    layer.setAlphaf(min(1.0, max(0.0, float(picture.opacity))))
-    f = _filter(picture.effect, sx)
-    if f is not None:
-        layer.setImageFilter(f)
-    canvas.saveLayer(None, layer)
+    at = (0.0, 0.0)
+    for layer, (x, y, _, _) in levels:
+        canvas.save()
+        # each element's coordinates start at its box's corner: the layout offsets nest
+        canvas.translate(x - at[0], y - at[1])
+        at = (x, y)
+        if layer.layout_transform is not None:  # placed by the layout, then render-transformed
+            canvas.concat(matrix(layer.layout_transform))
+        if layer.render_transform is not None:
+            canvas.concat(matrix(layer.render_transform))
+        clip = path_of(layer.clip)
+        if clip is not None:
+            canvas.clipPath(clip, skia.ClipOp.kIntersect, True)
+        paint = skia.Paint()
+        paint.setAlphaf(min(1.0, max(0.0, float(layer.opacity))))
+        f = effect_filter(layer.effect)
+        if f is not None:
+            paint.setImageFilter(f)
+        canvas.saveLayer(None, paint)
     canvas.save()
+    canvas.translate(-at[0], -at[1])
     canvas.scale(1.0 / sx, 1.0 / sy)
     canvas.drawImage(image_of(rgba), 0, 0)
     canvas.restore()
-    if picture.opacity_mask is not None:
-        mask = paint_of(picture.opacity_mask, box)
-        if mask is None:  # a mask that paints nothing hides everything
-            mask = skia.Paint()
-            mask.setColor(skia.ColorTRANSPARENT)
-        mask.setBlendMode(skia.BlendMode.kDstIn)
-        canvas.drawRect(box, mask)
-    canvas.restore()
+    for layer, (_, _, bw, bh) in reversed(levels):
+        if layer.opacity_mask is not None:
+            box = skia.Rect.MakeWH(bw, bh)
+            mask = paint_of(layer.opacity_mask, box)
+            if mask is None:  # a mask that paints nothing hides everything
+                mask = skia.Paint()
+                mask.setColor(skia.ColorTRANSPARENT)
+            mask.setBlendMode(skia.BlendMode.kDstIn)
+            canvas.drawRect(box, mask)
+        canvas.restore()  # the layer: faded and filtered into its parent
+        canvas.restore()
     return surface.makeImageSnapshot().toarray(
         colorType=skia.ColorType.kRGBA_8888_ColorType, alphaType=skia.AlphaType.kUnpremul_AlphaType
     )
+
+
+def apply_picture(rgba: np.ndarray, picture: Viewport2D, scale: tuple[float, float]):
+    """``rgba``: the viewport's straight-alpha uint8 picture (H, W, 4) on a transparent
+    background; returns the picture WPF shows in the same box (straight-alpha uint8): the
+    layers of the elements around it (outermost first), then its own."""
+    h, w = rgba.shape[:2]
+    sx, sy = scale
+    levels = [(a.layer, a.rect) for a in reversed(picture.around)]
+    levels.append((picture, (0.0, 0.0, w / sx, h / sy)))
+    return compose_layers(rgba, levels, scale)
