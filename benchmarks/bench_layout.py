@@ -14,7 +14,7 @@ from __future__ import annotations
 import argparse
 import time
 
-from xaml3d.layout import layout
+from xaml3d.xaml import layout_step
 from xaml3d.xaml.loader import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
@@ -37,10 +37,14 @@ def main() -> None:
     ap.add_argument("--siblings", type=int, default=98)
     args = ap.parse_args()
     text = markup(args.depth, args.siblings)
+    # The scene holds the laid-out boxes, not the layout tree: keep the tree the reader hands
+    # to the layout engine, to lay it out once more on its own.
+    engine, trees = layout_step.layout, []
+    layout_step.layout = lambda root, size=None: engine(trees.append((root, size)) or root, size)
     t0 = time.perf_counter()
     scene = load(text, text=True)
     t1 = time.perf_counter()
-    result = layout(scene.layout.root)
+    result = engine(*trees[0])
     t2 = time.perf_counter()
     n = sum(1 for _ in result.nodes())
     vp = scene.viewports[0]
