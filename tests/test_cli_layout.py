@@ -54,8 +54,11 @@ def test_window_picture_and_outline(tmp_path):
     assert (b[3, 1:99] == a[3, 1:99]).all() and (b[8:] == a[8:]).all()
 
 
-def test_window_reference_case_through_the_cli(tmp_path):
-    src = REF / "window-two-viewports.xaml"
+@pytest.mark.parametrize(
+    "case", ["window-two-viewports", "window-around-layer", "window-layout-transform"]
+)
+def test_window_reference_case_through_the_cli(tmp_path, case):
+    src = REF / f"{case}.xaml"
     p = xaml3d("render", src, "-o", tmp_path / "w.png", "--window")
     assert p.returncode == 0, p.stderr
     with Image.open(tmp_path / "w.png") as got, Image.open(src.with_suffix(".png")) as want:

@@ -597,3 +597,29 @@ def test_window_draws_a_viewports_render_transform_beyond_its_box(tmp_path):
     assert tuple(rgba[12, 64 + 20]) == (0, 255, 0, 255)
     assert tuple(rgba[30, 64 + 20]) == (0, 0, 255, 255)
     assert tuple(rgba[12, 20]) == (255, 255, 255, 255)
+
+
+def test_a_layer_inside_a_viewbox_is_in_the_elements_own_units(tmp_path):
+    # a Grid of 32 x 24 scaled 2x by a Viewbox, translated by 8 of its own units: 16 px on
+    # screen, for the viewport's picture and in the window
+    from xaml3d.render.window import compose_window
+
+    text = (PICTURE / "opacity.xaml").read_text().replace(' Opacity="0.5"', "")
+    text = text.replace('Width="64" Height="48"', "")
+    start = text.index("<Viewport3D")
+    ns = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+    body = text[start:].replace(f" {ns}", "", 1)
+    path = tmp_path / "v.xaml"
+    path.write_text(
+        f'<Grid {ns} Width="64" Height="48"><Viewbox><Grid Width="32" Height="24">'
+        f'<Grid.RenderTransform><TranslateTransform X="8"/></Grid.RenderTransform>{body}'
+        "</Grid></Viewbox></Grid>"
+    )
+    scene = xaml3d.load(path)
+    [around] = scene.viewports[0].picture.around
+    assert around.unit == (2.0, 2.0)
+    rgba = xaml3d.render_arrays(scene).rgba
+    assert rgba.shape == (48, 64, 4)
+    assert tuple(rgba[12, 31]) == (0, 0, 0, 0) and tuple(rgba[12, 32]) == (0, 255, 0, 255)
+    window, _ = compose_window(scene)
+    assert np.array_equal(window, rgba)

@@ -172,14 +172,14 @@ def _subtree_ends(boxes) -> list[int]:
 
 
 def _close_layer(
-    layer2d: Layer2D, rect, end: int, beneath: np.ndarray, layer: np.ndarray
+    layer2d: Layer2D, rect, unit, end: int, beneath: np.ndarray, layer: np.ndarray
 ) -> np.ndarray:
     """What an element drew into ``layer`` (a premultiplied float canvas of the client area)
     composed with its Layer2D about its box ``rect``, as WPF composes the element (the 2D
     layer, skia), over ``beneath``; returns ``beneath``."""
     from xaml3d.render.layer2d.picture import compose_layers
 
-    drawn = compose_layers(straight_uint8(layer), [(layer2d, rect)], (1.0, 1.0))
+    drawn = compose_layers(straight_uint8(layer), [(layer2d, rect, unit)], (1.0, 1.0))
     premul = drawn.astype(np.float32) / 255.0
     premul[..., :3] *= premul[..., 3:4]
     _over(beneath, 0, 0, premul)
@@ -246,7 +246,7 @@ def compose_window(
     ends = _subtree_ends(result.boxes)
     open_layers: list = []  # (box, end, the canvas beneath), innermost last
     for i, b in enumerate(result.boxes):  # paint order: parents before children
-        while open_layers and open_layers[-1][2] <= i:
+        while open_layers and open_layers[-1][3] <= i:
             canvas = _close_layer(*open_layers.pop(), canvas)
         if not b.shown:
             continue
@@ -254,7 +254,7 @@ def compose_window(
         if layer is not None:
             # the element and everything inside it are drawn into a layer of their own, which
             # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
-            open_layers.append((layer, b.rect, ends[i], canvas))
+            open_layers.append((layer, b.rect, b.unit, ends[i], canvas))
             canvas = np.zeros_like(canvas)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:

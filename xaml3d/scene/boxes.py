@@ -50,11 +50,25 @@ class Box:
     column: int | None = None
 
     @property
+    def unit(self) -> tuple[float, float]:
+        """The size on screen of one unit of the element's own coordinates."""
+        return own_unit(self.rect, self.ink)
+
+    @property
     def inner(self) -> tuple[float, float, float, float]:
         """The rectangle less the border band (where a Border's Background goes)."""
         left, top, right, bottom = self.border
         x, y, w, h = self.rect
         return (x + left, y + top, max(0.0, w - left - right), max(0.0, h - top - bottom))
+
+
+def own_unit(rect, ink) -> tuple[float, float]:
+    """The size on screen of one unit of an element's own coordinates: its box over its
+    natural size (a Viewbox around it scales it), 1 where it has no size."""
+    return (
+        float(rect[2]) / float(ink[0]) if ink[0] > 0 else 1.0,
+        float(rect[3]) / float(ink[1]) if ink[1] > 0 else 1.0,
+    )
 
 
 @dataclass(frozen=True)

@@ -241,6 +241,9 @@ class Around:
 
     layer: Layer2D
     rect: tuple[float, float, float, float]
+    # the size of one of the element's own units in the viewport's coordinates (a Viewbox
+    # around it scales them): its layer's transforms, clip and effects are in its own units
+    unit: tuple[float, float] = (1.0, 1.0)
 
 
 @dataclass(frozen=True)

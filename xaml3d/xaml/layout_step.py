@@ -17,7 +17,7 @@ from xaml3d.layout.engine import LayoutResult
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
 from xaml3d.layout.transform import placed_by_layout
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
-from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout
+from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout, own_unit
 from xaml3d.scene.drawing import Around, Layer2D
 from xaml3d.xaml.panels_reader import ElementValues, parse_length, read_layout
 
@@ -149,7 +149,11 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             if own is not None and own.changes_picture:
                 unplaced[id(a)] = own
         around = tuple(
-            Around(unplaced[id(a)], (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]))
+            Around(
+                unplaced[id(a)],
+                (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]),
+                own_unit(a.rect, a.ink),
+            )  # fmt: skip
             for a in n.ancestors()
             if id(a) in unplaced
         )
@@ -173,7 +177,7 @@ def _layers(r, root: Node, elements: dict) -> dict:
             continue
         layer = None
         if n.kind != VIEWPORT:
-            layer = element_layer(r, r.props(el), float(n.rect[2]), float(n.rect[3]))
+            layer = element_layer(r, r.props(el), float(n.ink[0]), float(n.ink[1]))
         if layer is not None and n.kind == CONTROL and n.drawing is not None:
             layer = replace(layer, opacity=1.0)
         if n.layout_transform is not None:

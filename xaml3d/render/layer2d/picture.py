@@ -43,12 +43,13 @@ def effect_filter(effect):
 
 def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.ndarray:
     """``rgba``: a straight-alpha uint8 picture (H, W, 4) on a transparent background, drawn
-    in coordinates of ``scale`` image pixels per DIP; ``levels``: (Layer2D, (x, y, w, h)) from
-    the outermost element in, each element's box in the picture's coordinates (DIPs). Each
+    in coordinates of ``scale`` image pixels per DIP; ``levels``: (Layer2D, (x, y, w, h),
+    (sx, sy)) from the outermost element in, each element's box in the picture's coordinates
+    (DIPs) and the size of one of its own units there (a Viewbox around it scales them). Each
     element's layer nests inside its parent's, as WPF renders a visual tree: the parent's
     RenderTransform about its own box, its Clip, then the children drawn into one layer that
-    takes its Effect, Opacity and OpacityMask. Returns the straight-alpha uint8 picture in the
-    same box."""
+    takes its Effect, Opacity and OpacityMask, all in the element's own units. Returns the
+    straight-alpha uint8 picture in the same box."""
     h, w = rgba.shape[:2]
     sx, sy = scale
     info = skia.ImageInfo.Make(
@@ -58,12 +59,13 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.n
     canvas = surface.getCanvas()
     canvas.clear(skia.ColorTRANSPARENT)
     canvas.scale(sx, sy)
-    at = (0.0, 0.0)
-    for layer, (x, y, _, _) in levels:
+    at, unit = (0.0, 0.0), (1.0, 1.0)  # the canvas's origin and unit, in picture DIPs
+    for layer, (x, y, _, _), (ux, uy) in levels:
         canvas.save()
         # each element's coordinates start at its box's corner: the layout offsets nest
-        canvas.translate(x - at[0], y - at[1])
-        at = (x, y)
+        canvas.translate((x - at[0]) / unit[0], (y - at[1]) / unit[1])
+        canvas.scale(ux / unit[0], uy / unit[1])
+        at, unit = (x, y), (ux, uy)
         if layer.layout_transform is not None:  # placed by the layout, then render-transformed
             canvas.concat(matrix(layer.layout_transform))
         if layer.render_transform is not None:
@@ -78,13 +80,14 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.n
             paint.setImageFilter(f)
         canvas.saveLayer(None, paint)
     canvas.save()
+    canvas.scale(1.0 / unit[0], 1.0 / unit[1])
     canvas.translate(-at[0], -at[1])
     canvas.scale(1.0 / sx, 1.0 / sy)
     canvas.drawImage(image_of(rgba), 0, 0)
     canvas.restore()
-    for layer, (_, _, bw, bh) in reversed(levels):
+    for layer, (_, _, bw, bh), (ux, uy) in reversed(levels):
         if layer.opacity_mask is not None:
-            box = skia.Rect.MakeWH(bw, bh)
+            box = skia.Rect.MakeWH(bw / ux, bh / uy)  # the element's own box, in its units
             mask = paint_of(layer.opacity_mask, box)
             if mask is None:  # a mask that paints nothing hides everything
                 mask = skia.Paint()
@@ -104,6 +107,6 @@ def apply_picture(rgba: np.ndarray, picture: Viewport2D, scale: tuple[float, flo
     layers of the elements around it (outermost first), then its own."""
     h, w = rgba.shape[:2]
     sx, sy = scale
-    levels = [(a.layer, a.rect) for a in reversed(picture.around)]
-    levels.append((picture, (0.0, 0.0, w / sx, h / sy)))
+    levels = [(a.layer, a.rect, a.unit) for a in reversed(picture.around)]
+    levels.append((picture, (0.0, 0.0, w / sx, h / sy), (1.0, 1.0)))
     return compose_layers(rgba, levels, scale)
