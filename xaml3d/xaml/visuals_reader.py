@@ -22,7 +22,6 @@ import numpy as np
 
 from xaml3d.layout import layout
 from xaml3d.layout import tree as L
-from xaml3d.layout.text import line_height, text_width
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -36,115 +35,27 @@ from xaml3d.scene.types import placeholder_image
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import load_image
 from xaml3d.xaml.context import qname
-from xaml3d.xaml.controls_reader import (
-    _COMBO_BUTTON,
-    _OPTION_MARK,
-    _TEXT_BOX_INSET,
-    AERO2,
-    _combo_box,
-    _combo_items,
-    _control,
-    _progress_bar,
-    _slider,
-)
+from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels, shape_points
+from xaml3d.xaml.controls_reader import AERO2, _combo_box, _control, _progress_bar, _slider
 from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
-    PanelsReader,
     parse_thickness,
 )
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
-    _font_style,
-    _lines,
     _text,
-    _text_of,
-    _wrap_width,
 )
 
-_TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
-                  "CheckBox", "RadioButton"}  # fmt: skip
-_SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
-
-
-class _VisualPanels(PanelsReader):
-    """The panel reader, recording each node's element and measuring text and shapes."""
-
-    def __init__(self, r) -> None:
-        super().__init__(r, [])
-
-    def _estimate(self, n, v, el, font: float = FONT_SIZE) -> None:
-        local = n.type
-        if local in _SHAPES:
-            n.estimate = _shape_extent(self.r, v)
-        elif local == "Slider":
-            n.estimate = (0.0, 18.0)  # Aero2's thumb is 11 x 18; the track stretches
-        elif local == "ComboBox":
-            items = [_text_of(k) for k in _combo_items(el)] or [""]
-            widest = max(text_width(t, font, *_font_style(el)) for t in items)
-            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
-            n.estimate = (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
-        elif local in _TEXT_CONTROLS:
-            text = _text_of(el)
-            weight, italic = _font_style(el)
-            pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
-            lines = _lines(text, font, weight, italic, _wrap_width(v, pad) if local ==
-                           "TextBlock" else math.inf)  # fmt: skip
-            w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
-            h = line_height(font) * max(1, len(lines))
-            border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
-            if local in ("CheckBox", "RadioButton"):
-                # the mark, then the content with Aero2's Padding 4,-1,0,0
-                w, h = _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
-            else:
-                w += pad[0] + pad[2] + 2 * border
-                h += pad[1] + pad[3] + 2 * border
-                if local == "TextBox":
-                    w += 2 * _TEXT_BOX_INSET
-            n.estimate = (w, h)
-        else:
-            super()._estimate(n, v, el, font)
-
-
-def _shape_extent(r, v) -> tuple[float, float]:
-    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
-    p = v.p
-    if p is None:
-        return (0.0, 0.0)
-    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
-    pts = _shape_points(r, p)
-    if pts is None or pts.size == 0:
-        return (0.0, 0.0)
-    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
-
-
-def _shape_points(r, p) -> np.ndarray | None:
-    d = V.parse_double
-    if p.type == "Line":
-        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
-        return np.array([[x1, y1], [x2, y2]])
-    if p.type in ("Polyline", "Polygon"):
-        text = p.string("Points")
-        return V.parse_point_collection(text).reshape(-1, 2) if text else None
-    if p.type == "Path":
-        g = geometry_property(r, p, "Data")
-        if isinstance(g, PathGeometry):
-            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
-            return np.array(xy, dtype=float).reshape(-1, 2)
-        if isinstance(g, RectangleGeometry):
-            x, y, w, h = g.rect
-            return np.array([[x + w, y + h]])
-        if isinstance(g, EllipseGeometry):
-            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
-            return np.array([[cx + rx, cy + ry]])
-    return None
+_TEXT_CONTROLS = TEXT_CONTROLS
+_SHAPES = SHAPES
 
 
 def visual_drawing(r, el):
     """(Drawing, (0, 0, width, height)) of the visual ``el`` laid out at its desired size."""
-    reader = _VisualPanels(r)
+    reader = MeasuringPanels(r, [])
     root = reader.build(el)
     if root is None:
         r.ctx.diag("DRW002", f"{qname(el.tag)[1]} is not a visual xaml3d draws: skipped", el)
@@ -159,7 +70,7 @@ def visual_drawing(r, el):
     return DrawingGroup(children=tuple(out)), (0.0, 0.0, float(w), float(h))
 
 
-def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
+def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     """``parent``: the parent's absolute origin and scale (x, y, sx, sy); the layout's
     rectangles are absolute, the drawing groups nest."""
     if not n.arranged or n.visibility != "Visible":
@@ -288,7 +199,7 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
     if local == "Path":
         g = geometry_property(r, v.p, "Data")
     else:
-        pts = _shape_points(r, v.p)
+        pts = shape_points(r, v.p)
         if pts is None or pts.shape[0] < 2:
             return
         cmds = [("M", *pts[0])] + [("L", *q) for q in pts[1:]]

@@ -1,0 +1,106 @@
+"""The content size of the 2D controls, as their templates measure it (layout's measure pass).
+
+One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
+beside the viewports (``render --window``): text by the package font's advance widths and
+Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
+Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox; a
+Slider's thumb; a Stretch="None" shape's geometry (Line, Polyline, Polygon, Path). skia is
+imported only when there is text to measure.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xaml3d.layout.text import line_height, text_width
+from xaml3d.scene.drawing import EllipseGeometry, PathGeometry, RectangleGeometry
+from xaml3d.xaml import values as V
+from xaml3d.xaml.controls_reader import (
+    _COMBO_BUTTON,
+    _OPTION_MARK,
+    _TEXT_BOX_INSET,
+    AERO2,
+    _combo_items,
+)
+from xaml3d.xaml.geometry_reader import geometry_property
+from xaml3d.xaml.panels_reader import PanelsReader, parse_thickness
+from xaml3d.xaml.visual_text import _font_style, _lines, _text_of, _wrap_width
+
+TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
+                 "CheckBox", "RadioButton"}  # fmt: skip
+SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
+
+
+class MeasuringPanels(PanelsReader):
+    """The panel reader with the controls' content measured as WPF's templates do."""
+
+    def content_size(self, n, v, el, font: float):
+        local = n.type
+        if local in SHAPES:
+            return _shape_extent(self.r, v)
+        if local == "Slider":
+            return (0.0, 18.0)  # Aero2's thumb is 11 x 18; the track stretches
+        if local == "ComboBox":
+            items = [_text_of(k) for k in _combo_items(el)] or [""]
+            widest = max(text_width(t, font, *_font_style(el)) for t in items)
+            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
+            return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
+        if local in TEXT_CONTROLS:
+            return _text_control_size(v, el, local, font)
+        return None
+
+
+def _text_control_size(v, el, local: str, font: float) -> tuple[float, float]:
+    text = _text_of(el)
+    weight, italic = _font_style(el)
+    pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
+    wrap = _wrap_width(v, pad) if local == "TextBlock" else math.inf
+    lines = _lines(text, font, weight, italic, wrap)
+    w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
+    h = line_height(font) * max(1, len(lines))
+    border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
+    if local in ("CheckBox", "RadioButton"):
+        # the mark, then the content with Aero2's Padding 4,-1,0,0
+        return _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
+    w += pad[0] + pad[2] + 2 * border
+    h += pad[1] + pad[3] + 2 * border
+    if local == "TextBox":
+        w += 2 * _TEXT_BOX_INSET
+    return w, h
+
+
+def _shape_extent(r, v) -> tuple[float, float]:
+    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
+    p = v.p
+    if p is None:
+        return (0.0, 0.0)
+    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
+    pts = shape_points(r, p)
+    if pts is None or pts.size == 0:
+        return (0.0, 0.0)
+    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
+
+
+def shape_points(r, p) -> np.ndarray | None:
+    """The points of a Line, Polyline, Polygon or Path (its path's end points)."""
+    d = V.parse_double
+    if p.type == "Line":
+        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
+        return np.array([[x1, y1], [x2, y2]])
+    if p.type in ("Polyline", "Polygon"):
+        text = p.string("Points")
+        return V.parse_point_collection(text).reshape(-1, 2) if text else None
+    if p.type == "Path":
+        g = geometry_property(r, p, "Data")
+        if isinstance(g, PathGeometry):
+            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
+            return np.array(xy, dtype=float).reshape(-1, 2)
+        if isinstance(g, RectangleGeometry):
+            x, y, w, h = g.rect
+            return np.array([[x + w, y + h]])
+        if isinstance(g, EllipseGeometry):
+            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
+            return np.array([[cx + rx, cy + ry]])
+    return None
