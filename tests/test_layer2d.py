@@ -25,6 +25,7 @@ from xaml3d.scene.drawing import (
     PathGeometry,
     Pen,
     RectangleGeometry,
+    TextDrawing,
 )
 from xaml3d.scene.types import SolidColorBrush
 from xaml3d.xaml.geometry_reader import parse_path_data
@@ -367,16 +368,144 @@ def test_drawing_group_opacity_mask_in_the_groups_own_coordinates():
     assert a[8] > 0.85 and a[15] < 0.15 and (np.diff(a[8:]) < 0).all()
 
 
-def test_a_buttons_element_content_is_said_not_drawn(tmp_path):
+def _texts(drawing, origin=(0.0, 0.0)) -> list:
+    """(text, x, y of its baseline origin) of every TextDrawing in a drawing tree."""
+    if isinstance(drawing, DrawingGroup):
+        if drawing.transform is not None:
+            m = drawing.transform
+            origin = (origin[0] + m[0, 2], origin[1] + m[1, 2])  # translations only here
+        return [t for k in drawing.children for t in _texts(k, origin)]
+    if isinstance(drawing, TextDrawing):
+        return [(drawing.text, origin[0] + drawing.origin[0], origin[1] + drawing.origin[1])]
+    return []
+
+
+def test_a_buttons_element_content_is_laid_out_inside_its_chrome(tmp_path):
+    # Aero2's Button: a 1 px border, Padding 1, the content centred; here a 4 px dot and a
+    # TextBlock side by side in a 60 x 30 Button
     button = (
-        "<Button><StackPanel><Ellipse Width='4' Height='4'/><Run>Go</Run></StackPanel></Button>"
+        "<Button Width='60' Height='30'><StackPanel Orientation='Horizontal'>"
+        "<Ellipse Width='4' Height='4' Fill='Blue'/><TextBlock Text='Go'/></StackPanel></Button>"
     )
     path = tmp_path / "s.xaml"
     path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{button}"
                                   "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
     scene = xaml3d.load(path)
-    [d] = [d for d in scene.diagnostics if d.code == "DRW002"]
-    assert "StackPanel inside this Button" in d.message
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    drawing = scene.viewports[0].models[0].material[0].brush.drawing
+    [(text, x, y)] = _texts(drawing)
+    content_w = 4 + text_width("Go", 12.0)
+    left = (60 - content_w) / 2  # centred in the box inside the border and padding
+    top = (30 - line_height(12.0)) / 2
+    assert text == "Go"
+    assert (x, y) == pytest.approx((left + 4, top + baseline(12.0)))
+
+
+def _control_drawing(tmp_path, control: str):
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{control}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    scene = xaml3d.load(path)
+    return scene, scene.viewports[0].models[0].material[0].brush.drawing
+
+
+def _fills(drawing) -> list:
+    """The brushes of every filled GeometryDrawing in a drawing tree, in paint order."""
+    if isinstance(drawing, DrawingGroup):
+        return [b for k in drawing.children for b in _fills(k)]
+    if isinstance(drawing, GeometryDrawing) and drawing.brush is not None:
+        return [drawing.brush]
+    return []
+
+
+def test_list_box_items_and_the_selected_items_highlight(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<ListBox SelectedIndex='1'><ListBoxItem>Alpha</ListBoxItem><ListBoxItem>Beta"
+        "</ListBoxItem><TextBlock Text='Gamma'/></ListBox>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    texts = _texts(drawing)
+    # border 1 + the template's Padding 1, then each item's 1 px border and Padding 4,1
+    row = line_height(12.0) + 4
+    assert [t for t, _, _ in texts] == ["Alpha", "Beta", "Gamma"]
+    for i, (_, x, y) in enumerate(texts):
+        assert (x, y) == pytest.approx((7.0, 2 + i * row + 2 + baseline(12.0)))
+    colors = [getattr(b, "color", None) for b in _fills(drawing)]
+    # white inside the #FFABADB3 border; one item highlighted (#3DDADADA in #FFDADADA)
+    assert colors[:2] == [(1.0, 1.0, 1.0, 1.0), (0xAB / 255, 0xAD / 255, 0xB3 / 255, 1.0)]
+    assert colors.count((0xDA / 255,) * 3 + (0x3D / 255,)) == 1
+
+
+def test_tab_control_shows_the_selected_tabs_content_only(tmp_path):
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<TabControl SelectedIndex='1'><TabItem Header='One'><TextBlock Text='first'/></TabItem>"
+        "<TabItem Header='Two'><TextBlock Text='second'/></TabItem></TabControl>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    texts = {t: (x, y) for t, x, y in _texts(drawing)}
+    assert set(texts) == {"One", "Two", "second"}
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    # the headers from 2 px in, each its text plus Padding 6,2,6,2 and a 1 px border each
+    # side; the selected one (Two) drawn last, its text 1 px up with its larger box
+    one_w = text_width("One", 12.0) + 12 + 2
+    assert texts["One"] == pytest.approx((2 + 1 + 6, 2 + 1 + 2 + baseline(12.0)))
+    assert texts["Two"] == pytest.approx((2 + one_w + 1 + 6, 2 + 1 + 2 + baseline(12.0) - 1))
+    # the content inside the 1 px border at Padding 2, below the header row
+    row = 2 + 1 + 2 + line_height(12.0) + 2
+    assert texts["second"] == pytest.approx((1 + 2, row + 1 + 2 + baseline(12.0)))
+    assert _texts(drawing)[-2][0] == "Two"  # the selected tab over its neighbours
+
+
+def test_group_box_and_expander(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<StackPanel><GroupBox Header='Group'><TextBlock Text='in'/></GroupBox>"
+        "<Expander Header='More' IsExpanded='True'><TextBlock Text='shown'/></Expander>"
+        "<Expander Header='Less'><TextBlock Text='hidden'/></Expander></StackPanel>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    texts = {t: (x, y) for t, x, y in _texts(drawing)}
+    assert set(texts) == {"Group", "in", "More", "shown", "Less"}
+    line = line_height(12.0)
+    # the header at Padding 3,1,3,0 in the 6 px column; the content 6 px in, below it
+    assert texts["Group"] == pytest.approx((6 + 3, 1 + baseline(12.0)))
+    assert texts["in"] == pytest.approx((6, 1 + line + baseline(12.0)))
+    group_h = 1 + line + line + 6
+    # the Expander: 1 px border, the toggle's 1 px margin, the 19 px circle, 4 px, the header
+    # centred on the circle's row; the content below when IsExpanded
+    assert texts["More"][0] == pytest.approx(1 + 1 + 19 + 4)
+    assert texts["More"][1] == pytest.approx(group_h + 2 + (19 - line) / 2 + baseline(12.0))
+    assert texts["shown"] == pytest.approx((1, group_h + 1 + 21 + baseline(12.0)))
+
+
+def test_vertical_slider_and_separator(tmp_path):
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<StackPanel Width='40'><Separator/><Slider Orientation='Vertical' Height='111' "
+        "Value='3'/></StackPanel>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    geometry = [k for k in _geometries(drawing)]
+    separator = geometry[0]
+    assert separator.geometry.rect == (0.0, 0.0, 40.0, 1.0)  # 2 px from the top: a group moves it
+    # the 18 x 11 thumb 3/10 of the way up from the bottom: (111 - 11) * 0.7 from the top
+    thumb = geometry[-1].geometry.rect
+    assert thumb == pytest.approx((20 - 8.5, 70 + 0.5, 17.0, 10.0))
+
+
+def _geometries(drawing) -> list:
+    if isinstance(drawing, DrawingGroup):
+        return [g for k in drawing.children for g in _geometries(k)]
+    return [drawing] if isinstance(drawing, GeometryDrawing) else []
 
 
 def test_a_window_background_drawing_brush_tiles_at_one_texel_a_pixel(tmp_path):
@@ -471,9 +600,9 @@ def test_window_controls_not_drawn_are_said(tmp_path):
     path = tmp_path / "w.xaml"
     path.write_text(
         '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" Width="300"'
-        ' Height="200"><DockPanel><ListBox DockPanel.Dock="Left" Width="80"/>'
-        '<CheckBox DockPanel.Dock="Top" Content="Wire"/><Viewport3D/></DockPanel></Window>'
+        ' Height="200"><DockPanel><DataGrid DockPanel.Dock="Left" Width="80"/>'
+        '<ListBox DockPanel.Dock="Top"/><Viewport3D/></DockPanel></Window>'
     )
     found = [d for d in xaml3d.load(path).diagnostics if d.code == "DRW007"]
     assert [(d.severity, d.line, d.column) for d in found] == [("info", 1, 111)]
-    assert found[0].message.startswith("ListBox is not drawn by --window")
+    assert found[0].message.startswith("DataGrid is not drawn by --window")

@@ -116,6 +116,7 @@ class Node:
     viewport: int | None = None
     # a 2D control's own drawing in its box (scene.drawing; None: not drawn, outlined at most)
     drawing: object = None
+    z_index: int = 0  # Panel.ZIndex: drawn after its siblings of a lower one (a selected tab)
     # ----------------------------------------------------------------- results
     parent: Node | None = field(default=None, repr=False)
     desired: tuple[float, float] = (0.0, 0.0)  # including the margin, as WPF's DesiredSize

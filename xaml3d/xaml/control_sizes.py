@@ -14,8 +14,10 @@ import math
 
 import numpy as np
 
+from xaml3d.layout import tree as L
 from xaml3d.layout.text import line_height, text_width
 from xaml3d.scene.drawing import EllipseGeometry, PathGeometry, RectangleGeometry
+from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
@@ -25,7 +27,14 @@ from xaml3d.xaml.controls_reader import (
     _combo_items,
 )
 from xaml3d.xaml.geometry_reader import geometry_property
-from xaml3d.xaml.panels_reader import PanelsReader, parse_thickness
+from xaml3d.xaml.panels_reader import (
+    FONT_SIZE,
+    ElementValues,
+    PanelsReader,
+    _layout_transform,
+    _turns,
+    parse_thickness,
+)
 from xaml3d.xaml.visual_text import _font_style, _lines, _text_of, _wrap_width
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
@@ -34,14 +43,31 @@ SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
 
 
 class MeasuringPanels(PanelsReader):
-    """The panel reader with the controls' content measured as WPF's templates do."""
+    """The panel reader with the controls' content measured as WPF's templates do, and the
+    controls that hold content laid out through their template's parts (``templates``)."""
+
+    def build(self, el, font: float = FONT_SIZE):
+        n = super().build(el, font)
+        if n is not None and n.type == "Separator" and n.kind == L.CONTROL:
+            v = ElementValues(self.r, el, self.style_setters(el, n.type))
+            n.margin = v.get("Margin", parse_thickness, (0.0, 2.0, 0.0, 2.0))  # Aero2's Style
+        if n is not None and n.kind == L.CONTROL and templates.expands(self, el, n.type):
+            v = ElementValues(self.r, el, self.style_setters(el, n.type))
+            if not _turns(_layout_transform(self.r, v)):
+                templates.expand(self, n, el, v, self.elements[id(n)][1])
+        return n
 
     def content_size(self, n, v, el, font: float):
         local = n.type
+        if templates.expands(self, el, local):
+            return (0.0, 0.0)  # laid out through its template's parts (build)
+        if local == "Separator":
+            return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
         if local in SHAPES:
             return _shape_extent(self.r, v)
         if local == "Slider":
-            return (0.0, 18.0)  # Aero2's thumb is 11 x 18; the track stretches
+            # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
+            return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
         if local == "ComboBox":
             items = [_text_of(k) for k in _combo_items(el)] or [""]
             widest = max(text_width(t, font, *_font_style(el)) for t in items)
@@ -50,6 +76,11 @@ class MeasuringPanels(PanelsReader):
         if local in TEXT_CONTROLS:
             return _text_control_size(v, el, local, font)
         return None
+
+
+def vertical(v) -> bool:
+    return v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
+                 "Horizontal") == "Vertical"  # fmt: skip
 
 
 def _text_control_size(v, el, local: str, font: float) -> tuple[float, float]:

@@ -1,10 +1,11 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
 Covers Button, ToggleButton, RepeatButton, TextBox, Label, CheckBox, RadioButton, ProgressBar,
-a closed ComboBox and a horizontal Slider in their resting state, with the values of the
-[[Aero2.NormalColor]] sections of dotnet/wpf's theme files (PresentationFramework.Aero2):
+a closed ComboBox and a Slider (horizontal or upright) in their resting state, with the values of
+the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files (PresentationFramework.Aero2):
 backgrounds, borders, paddings, marks, arrows and thumbs; their text through ``visual_text``.
-Element content of a content control other than text is said (DRW002), its text drawn.
+Element content of a CheckBox or RadioButton is said (DRW002), its text drawn (a Button's or a
+Label's is laid out through its template: ``templates``).
 """
 
 from __future__ import annotations
@@ -182,12 +183,25 @@ def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
 
 
 def _slider(r, v, w: float, h: float, out: list) -> None:
-    """Aero2's horizontal Slider: a 4 px #FFE7EAEA track in a #FFD6D6D6 border, inset by half
-    the thumb, and the 11 x 18 #FFF0F0F0 thumb (#FFACACAC edge) at Value's share of the way."""
+    """Aero2's Slider: a 4 px #FFE7EAEA track in a #FFD6D6D6 border, inset by half the thumb,
+    and the #FFF0F0F0 thumb (#FFACACAC edge) at Value's share of the way: horizontal, an
+    11 x 18 thumb from the left; Orientation="Vertical", an 18 x 11 thumb from the bottom."""
     lo = v.get("Minimum", V.parse_double, 0.0)
     hi = v.get("Maximum", V.parse_double, 10.0)
     value = v.get("Value", V.parse_double, 0.0)
     share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
+    upright = v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
+                    "Horizontal") == "Vertical"  # fmt: skip
+    if upright:  # the same parts turned upright; Minimum at the bottom
+        cx = w / 2
+        track = _box_drawing(_rgb("E7EAEA"), _rgb("D6D6D6"), (1.0,) * 4, 0.0, 4.0,
+                             max(0.0, h - 11))  # fmt: skip
+        shift = np.array([[1.0, 0.0, cx - 2.0], [0.0, 1.0, 5.5], [0.0, 0.0, 1.0]])
+        out.append(DrawingGroup(children=tuple(track), transform=shift))
+        y = max(0.0, h - 11.0) * (1.0 - share)
+        thumb = RectangleGeometry((cx - 8.5, y + 0.5, 17.0, 10.0))
+        out.append(GeometryDrawing(thumb, brush=_rgb("F0F0F0"), pen=Pen(brush=_rgb("ACACAC"))))
+        return
     cy = h / 2
     track = _box_drawing(_rgb("E7EAEA"), _rgb("D6D6D6"), (1.0,) * 4, 0.0, max(0.0, w - 11), 4.0)
     shift = np.array([[1.0, 0.0, 5.5], [0.0, 1.0, cy - 2.0], [0.0, 0.0, 1.0]])

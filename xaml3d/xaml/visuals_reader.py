@@ -2,14 +2,16 @@
 
 WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
 xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
-measured with the package's font, shapes by their geometry), laid out by ``xaml3d.layout`` as
+measured with the package's font, shapes by their geometry: ``control_sizes``; the controls
+that hold content built as their template's parts: ``templates``), laid out by ``xaml3d.layout`` as
 WPF lays out a brush's visual (measured with infinite room, arranged at its desired size), and
 each element becomes the drawing WPF's would: panel and Border backgrounds and borders
 (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
 Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
 Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
-RadioButton, ProgressBar, Slider and a closed ComboBox in WPF's default Windows 10/11 look (the
+RadioButton, ProgressBar, Slider, Separator, a closed ComboBox, ListBox, TabControl, GroupBox
+and Expander (with the content they hold) in WPF's default Windows 10/11 look (the
 [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity applies to an element and
 its children. Anything else is skipped with DRW002: the rest is drawn.
 """
@@ -32,6 +34,7 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
 )
 from xaml3d.scene.types import placeholder_image
+from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import load_image
 from xaml3d.xaml.context import qname
@@ -46,6 +49,7 @@ from xaml3d.xaml.panels_reader import (
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
+    _rgb,
     _text,
 )
 
@@ -64,6 +68,7 @@ def visual_drawing(r, el):
     # visual is measured with infinite room and arranged at its desired size
     size = getattr(r, "laid_out_sizes", {}).get(id(el))
     layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
+    templates.raise_selected_tabs(root)
     out = []
     _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
     w, h = root.rect[2], root.rect[3]
@@ -76,20 +81,24 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     if not n.arranged or n.visibility != "Visible":
         return
     el, font = reader.elements.get(id(n), (None, FONT_SIZE))
-    if el is None:
+    if el is None and not n.type.startswith("#"):
         return
     x, y, w, h = n.rect
     ink_w, ink_h = n.ink
     sx = w / ink_w if ink_w > 0 else 1.0
     sy = h / ink_h if ink_h > 0 else 1.0
     own: list = []
-    v = ElementValues(r, el)
-    _element(r, v, n, el, font, ink_w, ink_h, own)
+    if el is None:  # a part of a control's template: its Border look or its own drawing
+        v = None
+        own.extend(_part(n, ink_w, ink_h))
+    else:
+        v = ElementValues(r, el)
+        _element(r, v, n, el, font, ink_w, ink_h, own)
     for k in n.children:
         _compile(r, reader, k, own, (x, y, sx, sy))
     if not own:
         return
-    opacity = v.get("Opacity", V.parse_double, 1.0)
+    opacity = v.get("Opacity", V.parse_double, 1.0) if v is not None else 1.0
     clip = _layout_clip(n) if n.type in _TEXT_CONTROLS else None
     if clip is not None:  # the clip is in the element's own coordinates, under its transform
         own = [DrawingGroup(children=tuple(own), clip=clip)]
@@ -108,8 +117,25 @@ def _layout_clip(n):
     return RectangleGeometry((0.0, 0.0, w, h))
 
 
+def _part(n, w: float, h: float) -> list:
+    """A template part's look: its own drawing, or its Border's Background and BorderBrush."""
+    out = _box_drawing(n.background, n.border_brush, n.border, 0.0, w, h)
+    if n.drawing is not None:
+        out.append(n.drawing)
+    return out
+
+
 def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     local = n.type
+    if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
+        out.extend(_part(n, w, h))
+        if local == "GroupBox":
+            out.extend(templates.group_box_chrome(r, el, n))
+        return
+    if local == "Separator":
+        fill = _brush(r, v, "Background", _rgb("A0A0A0"))  # SystemColors.ControlDark
+        out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)), brush=fill))
+        return
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
@@ -214,15 +240,22 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
         out.append(GeometryDrawing(g, brush=fill, pen=pen))
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider"}
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
+                                             "Separator"}  # fmt: skip
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
     """``render --window``: each laid-out 2D control that the 2D layer draws gets its drawing
     (``Node.drawing``, in its own box). The others stay undrawn, and DRW007 says so (their
     space is kept: LAY003 says it is estimated)."""
+    templates.raise_selected_tabs(root)
     for n in root.walk():
-        if n.kind != L.CONTROL or not n.arranged:
+        if n.type == "GroupBox" and n.kind == L.GRID and n.arranged:
+            el = elements.get(id(n), (None,))[0]
+            if el is not None:  # its border with the header's gap, over its Background
+                n.drawing = DrawingGroup(children=tuple(templates.group_box_chrome(r, el, n)))
+            continue
+        if n.kind != L.CONTROL or not n.arranged or n.type.startswith("#"):
             continue
         if n.type not in _WINDOW_DRAWN:
             el = elements.get(id(n), (None,))[0]
