@@ -606,3 +606,64 @@ def test_window_controls_not_drawn_are_said(tmp_path):
     found = [d for d in xaml3d.load(path).diagnostics if d.code == "DRW007"]
     assert [(d.severity, d.line, d.column) for d in found] == [("info", 1, 111)]
     assert found[0].message.startswith("DataGrid is not drawn by --window")
+
+
+def test_textblock_wraps_to_the_width_its_parent_gives(tmp_path):
+    from xaml3d.layout.text import line_height, text_width
+
+    tb = '<TextBlock TextWrapping="Wrap" Text="one two three four" Background="Blue"/>'
+    scene, drawing = _control_drawing(tmp_path, f'<StackPanel Width="60">{tb}</StackPanel>')
+    words = [t for t, _, _ in _texts(drawing)]
+    assert " ".join(words) == "one two three four" and len(words) > 1
+    assert all(text_width(t, 12.0) <= 60 for t in words)
+    # the TextBlock is as tall as its lines (its Background's box)
+    [background] = [g for g in _geometries(drawing) if g.brush.color == (0.0, 0.0, 1.0, 1.0)]
+    assert background.geometry.rect == pytest.approx((0, 0, 60, len(words) * line_height(12.0)))
+
+
+def test_window_text_wraps_to_its_column_and_moves_the_viewport(tmp_path):
+    from xaml3d.layout.text import line_height, text_width
+
+    path = tmp_path / "w.xaml"
+    text = "one two three four five six"
+    path.write_text(
+        '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" Width="116"'
+        ' Height="239"><DockPanel><TextBlock DockPanel.Dock="Top" TextWrapping="Wrap"'
+        f' Text="{text}"/><Viewport3D/></DockPanel></Window>'
+    )
+    scene = xaml3d.load(path)
+    lines, line = [], ""
+    for word in text.split():  # greedy breaking at spaces within the 100 px client width
+        trial = f"{line} {word}".strip()
+        if line and text_width(trial, 12.0) > 100:
+            lines.append(line)
+            line = word
+        else:
+            line = trial
+    lines.append(line)
+    assert len(lines) == 2
+    vp = scene.viewports[0]
+    assert (vp.width, vp.height) == pytest.approx((100, 200 - 2 * line_height(12.0)))
+
+
+@pytest.mark.parametrize(
+    "mode, text, expected",
+    [("CharacterEllipsis", "Hello World", "Hello Wo\u2026"),
+     ("WordEllipsis", "Hello World again", "Hello\u2026"),
+     ("None", "Hello World", "Hello World")],
+)  # fmt: skip
+def test_text_trimming_cuts_the_line_to_the_laid_out_width(tmp_path, mode, text, expected):
+    from xaml3d.layout.text import text_width
+
+    tb = f'<TextBlock TextTrimming="{mode}" Text="{text}"/>'
+    scene, drawing = _control_drawing(tmp_path, f'<StackPanel Width="60">{tb}</StackPanel>')
+    [(shown, _, _)] = _texts(drawing)
+    assert shown == expected
+    # the longest start that fits with the ellipsis: one more character (or word) does not
+    longer = {
+        "CharacterEllipsis": text[: len(shown)] + "\u2026",
+        "WordEllipsis": "Hello World\u2026",
+    }
+    if mode in longer:
+        assert text_width(shown, 12.0) <= 60 < text_width(longer[mode], 12.0)
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]

@@ -110,6 +110,9 @@ class Node:
     design_size: tuple[float | None, float | None] | None = None
     # a control that is not laid out: its estimated content size (width, height)
     estimate: tuple[float, float] | None = None
+    # a control whose size depends on the room offered (text wrapped to the width): a function
+    # of the available (width, height) giving its content size; None: ``estimate`` stands
+    measure: object = field(default=None, repr=False)
     # what the picture needs (opaque to layout): brushes, the viewport's index
     background: object = None
     border_brush: object = None

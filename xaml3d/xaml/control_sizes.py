@@ -35,7 +35,7 @@ from xaml3d.xaml.panels_reader import (
     _turns,
     parse_thickness,
 )
-from xaml3d.xaml.visual_text import _font_style, _lines, _text_of, _wrap_width
+from xaml3d.xaml.visual_text import _font_style, _lines, _text_of, trim, trimming, wraps
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
                  "CheckBox", "RadioButton"}  # fmt: skip
@@ -74,6 +74,10 @@ class MeasuringPanels(PanelsReader):
             # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
             return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
         if local in TEXT_CONTROLS:
+            if local == "TextBlock" and (wraps(v) or trimming(v) != "None"):
+                # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
+                # own Width or MaxWidth, else its parent's room), less its Padding
+                n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
             return _text_control_size(v, el, local, font)
         return None
 
@@ -83,12 +87,18 @@ def vertical(v) -> bool:
                  "Horizontal") == "Vertical"  # fmt: skip
 
 
-def _text_control_size(v, el, local: str, font: float) -> tuple[float, float]:
+def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
+    """(width, height) of a text control's content and chrome; a wrapping TextBlock's lines
+    broken to ``room`` less its Padding."""
     text = _text_of(el)
     weight, italic = _font_style(el)
     pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
-    wrap = _wrap_width(v, pad) if local == "TextBlock" else math.inf
-    lines = _lines(text, font, weight, italic, wrap)
+    inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
+    block = local == "TextBlock"
+    lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf)
+    if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
+        mode = trimming(v)
+        lines = [trim(t, font, weight, italic, inner, mode) for t in lines]
     w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
     h = line_height(font) * max(1, len(lines))
     border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0

@@ -112,7 +112,8 @@ def _layout_clip(n):
     if n.type not in _TEXT_CONTROLS or n.estimate is None:
         return None
     w, h = n.ink
-    if n.estimate[0] <= w + 1e-9 and n.estimate[1] <= h + 1e-9:
+    need = n.measure(w, math.inf) if n.measure is not None else n.estimate  # wrapped at w
+    if need[0] <= w + 1e-9 and need[1] <= h + 1e-9:
         return None
     return RectangleGeometry((0.0, 0.0, w, h))
 
