@@ -667,3 +667,14 @@ def test_text_trimming_cuts_the_line_to_the_laid_out_width(tmp_path, mode, text,
     if mode in longer:
         assert text_width(shown, 12.0) <= 60 < text_width(longer[mode], 12.0)
     assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+
+
+def test_an_open_combo_box_is_drawn_closed(tmp_path):
+    # WPF shows the list in a Popup, a window of its own: never part of a visual's picture
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<ComboBox IsDropDownOpen='True' SelectedIndex='0'><ComboBoxItem>Alpha</ComboBoxItem>"
+        "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>",
+    )
+    assert [t for t, _, _ in _texts(drawing)] == ["Alpha"]
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]

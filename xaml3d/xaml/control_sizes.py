@@ -51,15 +51,25 @@ class MeasuringPanels(PanelsReader):
         if n is not None and n.type == "Separator" and n.kind == L.CONTROL:
             v = ElementValues(self.r, el, self.style_setters(el, n.type))
             n.margin = v.get("Margin", parse_thickness, (0.0, 2.0, 0.0, 2.0))  # Aero2's Style
-        if n is not None and n.kind == L.CONTROL and templates.expands(self, el, n.type):
+        if (n is not None and n.kind == L.CONTROL and not self._in_bar
+                and templates.expands(self, el, n.type)):  # fmt: skip
             v = ElementValues(self.r, el, self.style_setters(el, n.type))
             if not _turns(_layout_transform(self.r, v)):
                 templates.expand(self, n, el, v, self.elements[id(n)][1])
         return n
 
+    _in_bar = False  # a ToolBar's items are only measured for the bar's estimate
+
+    def _estimated_size(self, n, v, el, font: float):
+        self._in_bar = True
+        try:
+            return super()._estimated_size(n, v, el, font)
+        finally:
+            self._in_bar = False
+
     def content_size(self, n, v, el, font: float):
         local = n.type
-        if templates.expands(self, el, local):
+        if not self._in_bar and templates.expands(self, el, local):
             return (0.0, 0.0)  # laid out through its template's parts (build)
         if local == "Separator":
             return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
