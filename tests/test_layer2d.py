@@ -678,3 +678,22 @@ def test_an_open_combo_box_is_drawn_closed(tmp_path):
     )
     assert [t for t, _, _ in _texts(drawing)] == ["Alpha"]
     assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+
+
+def test_scroll_bar_thumb_placed_as_wpfs_track(tmp_path):
+    # a 100 px vertical bar: 17 px line buttons at the ends, a 66 px track; ViewportSize 50 of
+    # a 0..100 range: the thumb is 66 * 50 / 150 = 22 px, a quarter of the rest down (Value 25)
+    scene, drawing = _control_drawing(
+        tmp_path, "<ScrollBar Height='100' Maximum='100' Value='25' ViewportSize='50'/>"
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    rects = [(g.geometry.rect, g.brush.color) for g in _geometries(drawing)
+             if isinstance(g.geometry, RectangleGeometry)]  # fmt: skip
+    grey = 0xF0 / 255
+    assert rects[0] == ((0.0, 0.0, 17.0, 100.0), (grey, grey, grey, 1.0))
+    thumb, color = rects[-1]
+    assert thumb == pytest.approx((0.0, 17 + (66 - 22) * 0.25, 17.0, 22.0))
+    assert color == (0xCD / 255, 0xCD / 255, 0xCD / 255, 1.0)
+    # nothing to scroll (Maximum = Minimum): WPF hides the thumb
+    _, drawing = _control_drawing(tmp_path, "<ScrollBar Height='100' Maximum='0'/>")
+    assert len([g for g in _geometries(drawing) if isinstance(g.geometry, RectangleGeometry)]) == 1

@@ -9,9 +9,9 @@ box; a Border's Background fills, and maps to, the box inside its BorderThicknes
 Border's BorderBrush band of BorderThickness, and every visible Viewport3D rendered at its
 laid-out rectangle with its own camera and aspect ratio (``render_scene``), composited over
 what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
-CheckBox, RadioButton, ComboBox, Slider, ProgressBar, Separator, shapes, Image, and the parts of
-ListBox, TabControl, GroupBox, Expander and content controls: ``Box.drawing``, docs/layer2d.md)
-are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
+CheckBox, RadioButton, ComboBox, Slider, ProgressBar, Separator, ScrollBar, shapes, Image, the
+parts of ListBox, TabControl, GroupBox, Expander and content controls: ``Box.drawing``,
+docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
 outline of each control's layout box. Hidden and Collapsed elements and their content are left
 out. A pixel belongs to a box when its centre lies inside it.
 """

@@ -3,9 +3,10 @@
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
 beside the viewports (``render --window``): text by the package font's advance widths and
 Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
-Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox; a
-Slider's thumb; a Stretch="None" shape's geometry (Line, Polyline, Polygon, Path). skia is
-imported only when there is text to measure.
+Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox
+(a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
+and a Separator's thickness; a Stretch="None" shape's geometry (Line, Polyline, Polygon, Path).
+skia is imported only when there is text to measure.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from xaml3d.xaml.controls_reader import (
     _TEXT_BOX_INSET,
     AERO2,
     _combo_items,
+    scroll_bar_upright,
 )
 from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.panels_reader import (
@@ -71,6 +73,8 @@ class MeasuringPanels(PanelsReader):
         local = n.type
         if not self._in_bar and templates.expands(self, el, local):
             return (0.0, 0.0)  # laid out through its template's parts (build)
+        if local == "ScrollBar":  # 17 px across (SystemParameters' scroll bar size)
+            return (17.0, 0.0) if scroll_bar_upright(v) else (0.0, 17.0)
         if local == "Separator":
             return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
         if local in SHAPES:

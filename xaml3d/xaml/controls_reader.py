@@ -1,9 +1,10 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
 Covers Button, ToggleButton, RepeatButton, TextBox, Label, CheckBox, RadioButton, ProgressBar,
-a closed ComboBox and a Slider (horizontal or upright) in their resting state, with the values of
-the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files (PresentationFramework.Aero2):
-backgrounds, borders, paddings, marks, arrows and thumbs; their text through ``visual_text``.
+a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
+the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
+(PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
+text through ``visual_text``.
 Element content of a CheckBox or RadioButton is said (DRW002), its text drawn (a Button's or a
 Label's is laid out through its template: ``templates``).
 """
@@ -209,3 +210,61 @@ def _slider(r, v, w: float, h: float, out: list) -> None:
     x = max(0.0, w - 11.0) * share
     thumb = RectangleGeometry((x + 0.5, cy - 8.5, 10.0, 17.0))
     out.append(GeometryDrawing(thumb, brush=_rgb("F0F0F0"), pen=Pen(brush=_rgb("ACACAC"))))
+
+
+_SCROLL = 17.0  # SystemParameters.VerticalScrollBarWidth / ...ButtonHeight (and horizontal)
+# Aero2's ScrollBar arrows (#FF606060), pointing up, down, left and right
+_ARROWS = {
+    "up": "M 0,4 C0,4 0,6 0,6 0,6 3.5,2.5 3.5,2.5 3.5,2.5 7,6 7,6 7,6 7,4 7,4 7,4 3.5,0.5 "
+          "3.5,0.5 3.5,0.5 0,4 0,4 z",
+    "down": "M 0,2.5 C0,2.5 0,0.5 0,0.5 0,0.5 3.5,4 3.5,4 3.5,4 7,0.5 7,0.5 7,0.5 7,2.5 7,2.5 "
+            "7,2.5 3.5,6 3.5,6 3.5,6 0,2.5 0,2.5 z",
+    "left": "M 3.18,7 C3.18,7 5,7 5,7 5,7 1.81,3.5 1.81,3.5 1.81,3.5 5,0 5,0 5,0 3.18,0 3.18,0 "
+            "3.18,0 0,3.5 0,3.5 0,3.5 3.18,7 3.18,7 z",
+    "right": "M 1.81,7 C1.81,7 0,7 0,7 0,7 3.18,3.5 3.18,3.5 3.18,3.5 0,0 0,0 0,0 1.81,0 1.81,0 "
+             "1.81,0 5,3.5 5,3.5 5,3.5 1.81,7 1.81,7 z",
+}  # fmt: skip
+# the arrows' extents (x0, y0, x1, y1), to centre them in their buttons
+_ARROW_BOUNDS = {"up": (0, 0.5, 7, 6), "down": (0, 0.5, 7, 6), "left": (0, 0, 5, 7),
+                 "right": (0, 0, 5, 7)}  # fmt: skip
+
+
+def scroll_bar_upright(v) -> bool:
+    return v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
+                  "Vertical") == "Vertical"  # fmt: skip
+
+
+def _scroll_bar(r, v, w: float, h: float, out: list) -> None:
+    """Aero2's ScrollBar at rest: a #FFF0F0F0 bar, a 17 px line button at each end with its
+    #FF606060 arrow, and the #FFCDCDCD thumb placed and sized as WPF's Track does from Minimum,
+    Maximum (1 by default), Value and ViewportSize: its length is the track's share
+    ViewportSize / (Maximum - Minimum + ViewportSize), at least half a button; no thumb when
+    there is nothing to scroll or it would not fit."""
+    upright = scroll_bar_upright(v)
+    length, across = (h, w) if upright else (w, h)
+    out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)),
+                               brush=_brush(r, v, "Background", _rgb("F0F0F0"))))  # fmt: skip
+    button = min(_SCROLL, length / 2)  # the end rows: star sized, at most 17 px each
+    ends = ("up", "down") if upright else ("left", "right")
+    for i, name in enumerate(ends):
+        start = 0.0 if i == 0 else length - button
+        x0, y0, x1, y1 = _ARROW_BOUNDS[name]
+        cx, cy = (across / 2, start + button / 2) if upright else (start + button / 2, across / 2)
+        m = np.array([[1.0, 0.0, cx - (x0 + x1) / 2], [0.0, 1.0, cy - (y0 + y1) / 2],
+                      [0.0, 0.0, 1.0]])  # fmt: skip
+        arrow = GeometryDrawing(path_from_string(_ARROWS[name]), brush=_rgb("606060"))
+        out.append(DrawingGroup(children=(arrow,), transform=m))
+    lo = v.get("Minimum", V.parse_double, 0.0)
+    hi = v.get("Maximum", V.parse_double, 1.0)
+    value = v.get("Value", V.parse_double, 0.0)
+    view = max(0.0, v.get("ViewportSize", V.parse_double, 0.0))
+    track = max(0.0, length - 2 * button)
+    span = max(0.0, hi - lo)
+    offset = min(span, max(0.0, value - lo))
+    thumb = track * view / (span + view) if span + view > 0 else 0.0
+    thumb = max(_SCROLL / 2, min(thumb, track))
+    if span <= 0 or thumb > track:
+        return  # WPF hides the thumb: nothing to scroll, or no room for it
+    at = button + (track - thumb) * offset / span
+    rect = (0.0, at, across, thumb) if upright else (at, 0.0, thumb, across)
+    out.append(GeometryDrawing(RectangleGeometry(rect), brush=_rgb("CDCDCD")))

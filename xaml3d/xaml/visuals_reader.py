@@ -9,9 +9,9 @@ each element becomes the drawing WPF's would: panel and Border backgrounds and b
 (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
 Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
-Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
-RadioButton, ProgressBar, Slider, Separator, a closed ComboBox, ListBox, TabControl, GroupBox
-and Expander (with the content they hold) in WPF's default Windows 10/11 look (the
+Background; wrapped and trimmed to its laid-out width), Label, Image, and Button, TextBox, CheckBox,
+RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed ComboBox, ListBox, TabControl,
+GroupBox and Expander (with the content they hold) in WPF's default Windows 10/11 look (the
 [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity applies to an element and
 its children. Anything else is skipped with DRW002: the rest is drawn.
 """
@@ -39,7 +39,14 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import load_image
 from xaml3d.xaml.context import qname
 from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels, shape_points
-from xaml3d.xaml.controls_reader import AERO2, _combo_box, _control, _progress_bar, _slider
+from xaml3d.xaml.controls_reader import (
+    AERO2,
+    _combo_box,
+    _control,
+    _progress_bar,
+    _scroll_bar,
+    _slider,
+)
 from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
@@ -168,6 +175,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "Slider":
         _slider(r, v, w, h, out)
         return
+    if local == "ScrollBar":
+        _scroll_bar(r, v, w, h, out)
+        return
     if local == "Image" and v.p is not None:
         source = v.p.string("Source")
         if source:
@@ -242,7 +252,7 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
 
 
 _WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
-                                             "Separator"}  # fmt: skip
+                                             "Separator", "ScrollBar"}  # fmt: skip
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
