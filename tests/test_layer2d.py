@@ -697,3 +697,20 @@ def test_scroll_bar_thumb_placed_as_wpfs_track(tmp_path):
     # nothing to scroll (Maximum = Minimum): WPF hides the thumb
     _, drawing = _control_drawing(tmp_path, "<ScrollBar Height='100' Maximum='0'/>")
     assert len([g for g in _geometries(drawing) if isinstance(g.geometry, RectangleGeometry)]) == 1
+
+
+def test_a_check_boxs_element_content_sits_beside_its_mark(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<CheckBox IsChecked='True'><StackPanel><TextBlock Text='a'/><TextBlock Text='b'/>"
+        "</StackPanel></CheckBox>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    assert _glyphs(drawing) == 1  # the check glyph in the 13 px mark
+    # the content 13 + 4 px in, 1 px up (Aero2's Padding 4,-1,0,0), two lines below each other
+    texts = _texts(drawing)
+    line = line_height(12.0)
+    assert texts == [("a", 17.0, pytest.approx(-1 + baseline(12.0))),
+                     ("b", 17.0, pytest.approx(-1 + line + baseline(12.0)))]  # fmt: skip

@@ -5,8 +5,7 @@ a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their res
 the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
 text through ``visual_text``.
-Element content of a CheckBox or RadioButton is said (DRW002), its text drawn (a Button's or a
-Label's is laid out through its template: ``templates``).
+A content control's element content is laid out through its template (``templates``).
 """
 
 from __future__ import annotations
@@ -76,24 +75,8 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
     pad = v.get("Padding", parse_thickness, look["padding"])
     if local in ("CheckBox", "RadioButton"):
         top = (h - _OPTION_MARK) / 2
-        checked = v.get("IsChecked", _checked, False)
-        if local == "CheckBox":
-            box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
-            if checked:  # Aero2's optionMark Path, Margin 1 inside the 1 px border
-                glyph = path_from_string(_CHECK_GLYPH)
-                at = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])
-                mark = GeometryDrawing(glyph, brush=_GLYPH)
-                box = (*box, DrawingGroup(children=(mark,), transform=at))
-            shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
-            out.append(DrawingGroup(children=tuple(box), transform=shift))
-        else:
-            out.append(GeometryDrawing(
-                EllipseGeometry((6.5, top + 6.5), 6.0, 6.0), brush=background,
-                pen=Pen(brush=border, thickness=1.0),
-            ))  # fmt: skip
-            if checked:  # Aero2's optionMark Ellipse fills the mark grid (Margin 2) inside
-                dot = EllipseGeometry((6.5, top + 6.5), 3.5, 3.5)
-                out.append(GeometryDrawing(dot, brush=_GLYPH))
+        shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
+        out.append(DrawingGroup(children=tuple(option_mark(r, v, local)), transform=shift))
         t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - line_height(font)) / 2 - 0.5, w)
         if t is not None:
             out.append(t)
@@ -112,6 +95,27 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
         box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
         out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
+
+
+def option_mark(r, v, local: str) -> list:
+    """A CheckBox's or RadioButton's 13 px mark at (0, 0), checked or not (IsChecked)."""
+    look = AERO2[local]
+    background = _brush(r, v, "Background", look["background"])
+    border = _brush(r, v, "BorderBrush", look["border"])
+    checked = v.get("IsChecked", _checked, False)
+    if local == "CheckBox":
+        box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
+        if checked:  # Aero2's optionMark Path, Margin 1 inside the 1 px border
+            glyph = path_from_string(_CHECK_GLYPH)
+            at = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])
+            mark = GeometryDrawing(glyph, brush=_GLYPH)
+            box = [*box, DrawingGroup(children=(mark,), transform=at)]
+        return list(box)
+    out = [GeometryDrawing(EllipseGeometry((6.5, 6.5), 6.0, 6.0), brush=background,
+                           pen=Pen(brush=border, thickness=1.0))]  # fmt: skip
+    if checked:  # Aero2's optionMark Ellipse fills the mark grid (Margin 2) inside
+        out.append(GeometryDrawing(EllipseGeometry((6.5, 6.5), 3.5, 3.5), brush=_GLYPH))
+    return out
 
 
 def _checked(text: str) -> bool:
