@@ -25,6 +25,7 @@ from xaml3d.scene.drawing import (
     PathGeometry,
     Pen,
     RectangleGeometry,
+    TextDrawing,
 )
 from xaml3d.scene.types import SolidColorBrush
 from xaml3d.xaml.geometry_reader import parse_path_data
@@ -367,16 +368,144 @@ def test_drawing_group_opacity_mask_in_the_groups_own_coordinates():
     assert a[8] > 0.85 and a[15] < 0.15 and (np.diff(a[8:]) < 0).all()
 
 
-def test_a_buttons_element_content_is_said_not_drawn(tmp_path):
+def _texts(drawing, origin=(0.0, 0.0)) -> list:
+    """(text, x, y of its baseline origin) of every TextDrawing in a drawing tree."""
+    if isinstance(drawing, DrawingGroup):
+        if drawing.transform is not None:
+            m = drawing.transform
+            origin = (origin[0] + m[0, 2], origin[1] + m[1, 2])  # translations only here
+        return [t for k in drawing.children for t in _texts(k, origin)]
+    if isinstance(drawing, TextDrawing):
+        return [(drawing.text, origin[0] + drawing.origin[0], origin[1] + drawing.origin[1])]
+    return []
+
+
+def test_a_buttons_element_content_is_laid_out_inside_its_chrome(tmp_path):
+    # Aero2's Button: a 1 px border, Padding 1, the content centred; here a 4 px dot and a
+    # TextBlock side by side in a 60 x 30 Button
     button = (
-        "<Button><StackPanel><Ellipse Width='4' Height='4'/><Run>Go</Run></StackPanel></Button>"
+        "<Button Width='60' Height='30'><StackPanel Orientation='Horizontal'>"
+        "<Ellipse Width='4' Height='4' Fill='Blue'/><TextBlock Text='Go'/></StackPanel></Button>"
     )
     path = tmp_path / "s.xaml"
     path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{button}"
                                   "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
     scene = xaml3d.load(path)
-    [d] = [d for d in scene.diagnostics if d.code == "DRW002"]
-    assert "StackPanel inside this Button" in d.message
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    drawing = scene.viewports[0].models[0].material[0].brush.drawing
+    [(text, x, y)] = _texts(drawing)
+    content_w = 4 + text_width("Go", 12.0)
+    left = (60 - content_w) / 2  # centred in the box inside the border and padding
+    top = (30 - line_height(12.0)) / 2
+    assert text == "Go"
+    assert (x, y) == pytest.approx((left + 4, top + baseline(12.0)))
+
+
+def _control_drawing(tmp_path, control: str):
+    path = tmp_path / "s.xaml"
+    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{control}"
+                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
+    scene = xaml3d.load(path)
+    return scene, scene.viewports[0].models[0].material[0].brush.drawing
+
+
+def _fills(drawing) -> list:
+    """The brushes of every filled GeometryDrawing in a drawing tree, in paint order."""
+    if isinstance(drawing, DrawingGroup):
+        return [b for k in drawing.children for b in _fills(k)]
+    if isinstance(drawing, GeometryDrawing) and drawing.brush is not None:
+        return [drawing.brush]
+    return []
+
+
+def test_list_box_items_and_the_selected_items_highlight(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<ListBox SelectedIndex='1'><ListBoxItem>Alpha</ListBoxItem><ListBoxItem>Beta"
+        "</ListBoxItem><TextBlock Text='Gamma'/></ListBox>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    texts = _texts(drawing)
+    # border 1 + the template's Padding 1, then each item's 1 px border and Padding 4,1
+    row = line_height(12.0) + 4
+    assert [t for t, _, _ in texts] == ["Alpha", "Beta", "Gamma"]
+    for i, (_, x, y) in enumerate(texts):
+        assert (x, y) == pytest.approx((7.0, 2 + i * row + 2 + baseline(12.0)))
+    colors = [getattr(b, "color", None) for b in _fills(drawing)]
+    # white inside the #FFABADB3 border; one item highlighted (#3DDADADA in #FFDADADA)
+    assert colors[:2] == [(1.0, 1.0, 1.0, 1.0), (0xAB / 255, 0xAD / 255, 0xB3 / 255, 1.0)]
+    assert colors.count((0xDA / 255,) * 3 + (0x3D / 255,)) == 1
+
+
+def test_tab_control_shows_the_selected_tabs_content_only(tmp_path):
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<TabControl SelectedIndex='1'><TabItem Header='One'><TextBlock Text='first'/></TabItem>"
+        "<TabItem Header='Two'><TextBlock Text='second'/></TabItem></TabControl>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    texts = {t: (x, y) for t, x, y in _texts(drawing)}
+    assert set(texts) == {"One", "Two", "second"}
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    # the headers from 2 px in, each its text plus Padding 6,2,6,2 and a 1 px border each
+    # side; the selected one (Two) drawn last, its text 1 px up with its larger box
+    one_w = text_width("One", 12.0) + 12 + 2
+    assert texts["One"] == pytest.approx((2 + 1 + 6, 2 + 1 + 2 + baseline(12.0)))
+    assert texts["Two"] == pytest.approx((2 + one_w + 1 + 6, 2 + 1 + 2 + baseline(12.0) - 1))
+    # the content inside the 1 px border at Padding 2, below the header row
+    row = 2 + 1 + 2 + line_height(12.0) + 2
+    assert texts["second"] == pytest.approx((1 + 2, row + 1 + 2 + baseline(12.0)))
+    assert _texts(drawing)[-2][0] == "Two"  # the selected tab over its neighbours
+
+
+def test_group_box_and_expander(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<StackPanel><GroupBox Header='Group'><TextBlock Text='in'/></GroupBox>"
+        "<Expander Header='More' IsExpanded='True'><TextBlock Text='shown'/></Expander>"
+        "<Expander Header='Less'><TextBlock Text='hidden'/></Expander></StackPanel>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    texts = {t: (x, y) for t, x, y in _texts(drawing)}
+    assert set(texts) == {"Group", "in", "More", "shown", "Less"}
+    line = line_height(12.0)
+    # the header at Padding 3,1,3,0 in the 6 px column; the content 6 px in, below it
+    assert texts["Group"] == pytest.approx((6 + 3, 1 + baseline(12.0)))
+    assert texts["in"] == pytest.approx((6, 1 + line + baseline(12.0)))
+    group_h = 1 + line + line + 6
+    # the Expander: 1 px border, the toggle's 1 px margin, the 19 px circle, 4 px, the header
+    # centred on the circle's row; the content below when IsExpanded
+    assert texts["More"][0] == pytest.approx(1 + 1 + 19 + 4)
+    assert texts["More"][1] == pytest.approx(group_h + 2 + (19 - line) / 2 + baseline(12.0))
+    assert texts["shown"] == pytest.approx((1, group_h + 1 + 21 + baseline(12.0)))
+
+
+def test_vertical_slider_and_separator(tmp_path):
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<StackPanel Width='40'><Separator/><Slider Orientation='Vertical' Height='111' "
+        "Value='3'/></StackPanel>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    geometry = [k for k in _geometries(drawing)]
+    separator = geometry[0]
+    assert separator.geometry.rect == (0.0, 0.0, 40.0, 1.0)  # 2 px from the top: a group moves it
+    # the 18 x 11 thumb 3/10 of the way up from the bottom: (111 - 11) * 0.7 from the top
+    thumb = geometry[-1].geometry.rect
+    assert thumb == pytest.approx((20 - 8.5, 70 + 0.5, 17.0, 10.0))
+
+
+def _geometries(drawing) -> list:
+    if isinstance(drawing, DrawingGroup):
+        return [g for k in drawing.children for g in _geometries(k)]
+    return [drawing] if isinstance(drawing, GeometryDrawing) else []
 
 
 def test_a_window_background_drawing_brush_tiles_at_one_texel_a_pixel(tmp_path):
@@ -512,12 +641,12 @@ def test_window_controls_not_drawn_are_said(tmp_path):
     path = tmp_path / "w.xaml"
     path.write_text(
         '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" Width="300"'
-        ' Height="200"><DockPanel><ListBox DockPanel.Dock="Left" Width="80"/>'
-        '<CheckBox DockPanel.Dock="Top" Content="Wire"/><Viewport3D/></DockPanel></Window>'
+        ' Height="200"><DockPanel><DataGrid DockPanel.Dock="Left" Width="80"/>'
+        '<ListBox DockPanel.Dock="Top"/><Viewport3D/></DockPanel></Window>'
     )
     found = [d for d in xaml3d.load(path).diagnostics if d.code == "DRW007"]
     assert [(d.severity, d.line, d.column) for d in found] == [("info", 1, 111)]
-    assert found[0].message.startswith("ListBox is not drawn by --window")
+    assert found[0].message.startswith("DataGrid is not drawn by --window")
 
 
 def _images(drawing) -> list:
@@ -623,3 +752,113 @@ def test_a_layer_inside_a_viewbox_is_in_the_elements_own_units(tmp_path):
     assert tuple(rgba[12, 31]) == (0, 0, 0, 0) and tuple(rgba[12, 32]) == (0, 255, 0, 255)
     window, _ = compose_window(scene)
     assert np.array_equal(window, rgba)
+
+
+
+
+def test_textblock_wraps_to_the_width_its_parent_gives(tmp_path):
+    from xaml3d.layout.text import line_height, text_width
+
+    tb = '<TextBlock TextWrapping="Wrap" Text="one two three four" Background="Blue"/>'
+    scene, drawing = _control_drawing(tmp_path, f'<StackPanel Width="60">{tb}</StackPanel>')
+    words = [t for t, _, _ in _texts(drawing)]
+    assert " ".join(words) == "one two three four" and len(words) > 1
+    assert all(text_width(t, 12.0) <= 60 for t in words)
+    # the TextBlock is as tall as its lines (its Background's box)
+    [background] = [g for g in _geometries(drawing) if g.brush.color == (0.0, 0.0, 1.0, 1.0)]
+    assert background.geometry.rect == pytest.approx((0, 0, 60, len(words) * line_height(12.0)))
+
+
+def test_window_text_wraps_to_its_column_and_moves_the_viewport(tmp_path):
+    from xaml3d.layout.text import line_height, text_width
+
+    path = tmp_path / "w.xaml"
+    text = "one two three four five six"
+    path.write_text(
+        '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" Width="116"'
+        ' Height="239"><DockPanel><TextBlock DockPanel.Dock="Top" TextWrapping="Wrap"'
+        f' Text="{text}"/><Viewport3D/></DockPanel></Window>'
+    )
+    scene = xaml3d.load(path)
+    lines, line = [], ""
+    for word in text.split():  # greedy breaking at spaces within the 100 px client width
+        trial = f"{line} {word}".strip()
+        if line and text_width(trial, 12.0) > 100:
+            lines.append(line)
+            line = word
+        else:
+            line = trial
+    lines.append(line)
+    assert len(lines) == 2
+    vp = scene.viewports[0]
+    assert (vp.width, vp.height) == pytest.approx((100, 200 - 2 * line_height(12.0)))
+
+
+@pytest.mark.parametrize(
+    "mode, text, expected",
+    [("CharacterEllipsis", "Hello World", "Hello Wo\u2026"),
+     ("WordEllipsis", "Hello World again", "Hello\u2026"),
+     ("None", "Hello World", "Hello World")],
+)  # fmt: skip
+def test_text_trimming_cuts_the_line_to_the_laid_out_width(tmp_path, mode, text, expected):
+    from xaml3d.layout.text import text_width
+
+    tb = f'<TextBlock TextTrimming="{mode}" Text="{text}"/>'
+    scene, drawing = _control_drawing(tmp_path, f'<StackPanel Width="60">{tb}</StackPanel>')
+    [(shown, _, _)] = _texts(drawing)
+    assert shown == expected
+    # the longest start that fits with the ellipsis: one more character (or word) does not
+    longer = {
+        "CharacterEllipsis": text[: len(shown)] + "\u2026",
+        "WordEllipsis": "Hello World\u2026",
+    }
+    if mode in longer:
+        assert text_width(shown, 12.0) <= 60 < text_width(longer[mode], 12.0)
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+
+
+def test_an_open_combo_box_is_drawn_closed(tmp_path):
+    # WPF shows the list in a Popup, a window of its own: never part of a visual's picture
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<ComboBox IsDropDownOpen='True' SelectedIndex='0'><ComboBoxItem>Alpha</ComboBoxItem>"
+        "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>",
+    )
+    assert [t for t, _, _ in _texts(drawing)] == ["Alpha"]
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+
+
+def test_scroll_bar_thumb_placed_as_wpfs_track(tmp_path):
+    # a 100 px vertical bar: 17 px line buttons at the ends, a 66 px track; ViewportSize 50 of
+    # a 0..100 range: the thumb is 66 * 50 / 150 = 22 px, a quarter of the rest down (Value 25)
+    scene, drawing = _control_drawing(
+        tmp_path, "<ScrollBar Height='100' Maximum='100' Value='25' ViewportSize='50'/>"
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    rects = [(g.geometry.rect, g.brush.color) for g in _geometries(drawing)
+             if isinstance(g.geometry, RectangleGeometry)]  # fmt: skip
+    grey = 0xF0 / 255
+    assert rects[0] == ((0.0, 0.0, 17.0, 100.0), (grey, grey, grey, 1.0))
+    thumb, color = rects[-1]
+    assert thumb == pytest.approx((0.0, 17 + (66 - 22) * 0.25, 17.0, 22.0))
+    assert color == (0xCD / 255, 0xCD / 255, 0xCD / 255, 1.0)
+    # nothing to scroll (Maximum = Minimum): WPF hides the thumb
+    _, drawing = _control_drawing(tmp_path, "<ScrollBar Height='100' Maximum='0'/>")
+    assert len([g for g in _geometries(drawing) if isinstance(g.geometry, RectangleGeometry)]) == 1
+
+
+def test_a_check_boxs_element_content_sits_beside_its_mark(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<CheckBox IsChecked='True'><StackPanel><TextBlock Text='a'/><TextBlock Text='b'/>"
+        "</StackPanel></CheckBox>",
+    )
+    assert not [d for d in scene.diagnostics if d.code == "DRW002"]
+    assert _glyphs(drawing) == 1  # the check glyph in the 13 px mark
+    # the content 13 + 4 px in, 1 px up (Aero2's Padding 4,-1,0,0), two lines below each other
+    texts = _texts(drawing)
+    line = line_height(12.0)
+    assert texts == [("a", 17.0, pytest.approx(-1 + baseline(12.0))),
+                     ("b", 17.0, pytest.approx(-1 + line + baseline(12.0)))]  # fmt: skip

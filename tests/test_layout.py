@@ -15,6 +15,7 @@ from xaml3d.layout.grid import distribute, round_sizes
 from xaml3d.xaml.loader import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
+LINE = 2724 / 2048 * 12  # one line of text at 12 px: Segoe UI's LineSpacing x FontSize
 
 
 def vp(**kw) -> Node:
@@ -373,13 +374,20 @@ def test_markup_gotcha_is_located_warning():
     assert "vertical StackPanel" in d.message
 
 
-def test_markup_control_estimate_is_info():
+def test_markup_control_measured_and_estimate_is_info():
+    # a Button's text is measured with the font (one 15.96 px line of Segoe UI at 12 px) inside
+    # Aero2's 1 px border and Padding 1: 19.96 px, as WPF sizes it; nothing is estimated
     x = (
         f"<DockPanel {NS} Width='300' Height='200'>"
         "<Button DockPanel.Dock='Top'>Go</Button><Viewport3D/></DockPanel>"
     )
     s = load(x, text=True)
-    assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 20)
+    assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - (2724 / 2048 * 12 + 4))
+    assert not any(d.code == "LAY003" for d in s.diagnostics)
+    # a control whose template xaml3d does not know is estimated (16 px line), and says so
+    s = load(x.replace("<Button DockPanel.Dock='Top'>Go</Button>",
+                       "<DatePicker DockPanel.Dock='Top'/>"), text=True)  # fmt: skip
+    assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 16)
     assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
 
 
@@ -460,14 +468,14 @@ def test_markup_out_of_range_cells_and_infinite_sizes_are_errors():
 
 
 def test_markup_text_after_a_property_element_and_layout_transform():
-    text = "KeyFrame Progress (Output)"  # 26 characters: 182 px estimated
+    text = "KeyFrame Progress (Output)"  # 158.07 px in Open Sans 12 px
     plain = f"<TextBlock DockPanel.Dock='Left'>{text}</TextBlock>"
-    assert size(_dock_left(plain)) == (640 - 182, 480)
+    assert size(_dock_left(plain)) == (640 - 158.068359375, 480)
     turned = (
         "<TextBlock DockPanel.Dock='Left'><TextBlock.LayoutTransform>"
         f"<RotateTransform Angle='-90'/></TextBlock.LayoutTransform>\n  {text}\n</TextBlock>"
     )
-    assert size(_dock_left(turned)) == (640 - 16, 480)
+    assert size(_dock_left(turned)) == (640 - LINE, 480)
     group = (
         "<Button DockPanel.Dock='Left' Width='40' Height='10' Margin='5'>"
         "<Button.LayoutTransform><TransformGroup><ScaleTransform ScaleX='2'/>"
@@ -484,23 +492,31 @@ def test_markup_estimates_follow_font_size_padding_and_toolbar_items():
             f"</Page.Resources><DockPanel>{item}<Viewport3D/></DockPanel></Page>"
         )
 
-    # one 16 px line at FontSize 12; at 24: 32 px (direct, inherited, or from a Style)
-    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>") == (400, 284)
-    assert top("<TextBlock DockPanel.Dock='Top' FontSize='24' Text='Title'/>") == (400, 268)
+    # one line of text at FontSize 12 (15.96 px); at 24 twice that (direct, inherited, or
+    # from a Style)
+    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>") == (400, 300 - LINE)
+    assert top("<TextBlock DockPanel.Dock='Top' FontSize='24' Text='Title'/>") == (
+        400,
+        300 - 2 * LINE,
+    )
     assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>", attrs="FontSize='24'") == (
         400,
-        268,
+        300 - 2 * LINE,
     )
     style = "<Style TargetType='TextBlock'><Setter Property='FontSize' Value='18pt'/></Style>"
-    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>", style) == (400, 268)
+    assert top("<TextBlock DockPanel.Dock='Top' Text='Title'/>", style) == (400, 300 - 2 * LINE)
     # an own Padding replaces the template's (a Label's default Padding is 5)
-    assert top("<Label DockPanel.Dock='Top' Content='x'/>") == (400, 274)
-    assert top("<Label DockPanel.Dock='Top' Content='x' Padding='4,0'/>") == (400, 284)
-    assert top("<TextBlock DockPanel.Dock='Top' FontSize='24' Padding='4' Text='T'/>") == (400, 260)
+    assert top("<Label DockPanel.Dock='Top' Content='x'/>") == (400, 300 - LINE - 10)
+    assert top("<Label DockPanel.Dock='Top' Content='x' Padding='4,0'/>") == (400, 300 - LINE)
+    assert top("<TextBlock DockPanel.Dock='Top' FontSize='24' Padding='4' Text='T'/>") == (
+        400,
+        300 - 2 * LINE - 8,
+    )
     # a ToolBarTray holding a ToolBar of Buttons: the items' height plus the bar's chrome
     tray = ("<ToolBarTray DockPanel.Dock='Top'><ToolBar><Button Content='Open'/><Separator/>"
             "<Button Content='Save'/></ToolBar></ToolBarTray>")  # fmt: skip
-    assert top(tray) == (400, 300 - 30)
+    # (the Buttons measured: one line in Aero2's border and padding, 19.96 px; the bar's 10)
+    assert top(tray) == (400, 300 - (LINE + 4 + 10))
 
 
 def test_auto_row_sized_by_a_cell_in_a_star_column():

@@ -15,8 +15,9 @@ at its own size, scaled by Stretch/StretchDirection), ScrollViewer (content meas
 infinite room in each scrolling direction, arranged at least as large as the view; a Visible
 scroll bar takes 17 px, an Auto one when the content overflows), UniformGrid (equal cells),
 Viewport3D (no content size of its own: 0 x 0 unless sized), controls
-(their estimated content size). UseLayoutRounding (inherited) rounds margins, desired sizes,
-arranged sizes and offsets to whole pixels as WPF does at 96 dpi.
+(their measured or estimated content size; wrapping text measured at the width offered).
+UseLayoutRounding (inherited) rounds margins, desired sizes, arranged sizes and offsets to whole
+pixels as WPF does at 96 dpi.
 
 LayoutTransform (transform.py): an element with one is measured and arranged in its own space,
 in the largest box whose transformed bounds fit the room offered; its parent sees and aligns the
@@ -478,6 +479,8 @@ def _uniform_arrange(e: Engine, n: Node, w: float, h: float):
 
 
 def _leaf_measure(e: Engine, n: Node, w: float, h: float):
+    if n.measure is not None:  # wrapping text: its lines depend on the width offered
+        return n.measure(w, h)
     return n.estimate if n.estimate is not None else (0.0, 0.0)
 
 

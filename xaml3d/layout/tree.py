@@ -112,12 +112,16 @@ class Node:
     design_size: tuple[float | None, float | None] | None = None
     # a control that is not laid out: its estimated content size (width, height)
     estimate: tuple[float, float] | None = None
+    # a control whose size depends on the room offered (text wrapped to the width): a function
+    # of the available (width, height) giving its content size; None: ``estimate`` stands
+    measure: object = field(default=None, repr=False)
     # what the picture needs (opaque to layout): brushes, the viewport's index
     background: object = None
     border_brush: object = None
     viewport: int | None = None
     # a 2D control's own drawing in its box (scene.drawing; None: not drawn, outlined at most)
     drawing: object = None
+    z_index: int = 0  # Panel.ZIndex: drawn after its siblings of a lower one (a selected tab)
     # ----------------------------------------------------------------- results
     parent: Node | None = field(default=None, repr=False)
     desired: tuple[float, float] = (0.0, 0.0)  # including the margin, as WPF's DesiredSize

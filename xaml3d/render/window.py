@@ -9,7 +9,8 @@ box; a Border's Background fills, and maps to, the box inside its BorderThicknes
 Border's BorderBrush band of BorderThickness, and every visible Viewport3D rendered at its
 laid-out rectangle with its own camera and aspect ratio (``render_scene``), composited over
 what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
-CheckBox, RadioButton, ComboBox, Slider, ProgressBar, shapes, Image: ``Box.drawing``,
+CheckBox, RadioButton, ComboBox, Slider, ProgressBar, Separator, ScrollBar, shapes, Image, the
+parts of ListBox, TabControl, GroupBox, Expander and content controls: ``Box.drawing``,
 docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
 outline of each control's layout box. An element with Opacity, OpacityMask, Clip,
 RenderTransform or an Effect (``Box.layer``) is drawn with everything inside it into a layer of
@@ -281,7 +282,7 @@ def compose_window(
                 ye, xe = min(h, H - y0), min(w, W - x0)
                 if ye > ys and xe > xs:
                     _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
-        if b.kind == CONTROL and b.drawing is not None:
+        if b.drawing is not None:  # a control's look (a GroupBox's frame over its panel)
             _draw_control(canvas, b)
         if b.kind == CONTROL and outline_controls:
             _outline(canvas, b.rect)

@@ -1,10 +1,11 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
 Covers Button, ToggleButton, RepeatButton, TextBox, Label, CheckBox, RadioButton, ProgressBar,
-a closed ComboBox and a horizontal Slider in their resting state, with the values of the
-[[Aero2.NormalColor]] sections of dotnet/wpf's theme files (PresentationFramework.Aero2):
-backgrounds, borders, paddings, marks, arrows and thumbs; their text through ``visual_text``.
-Element content of a content control other than text is said (DRW002), its text drawn.
+a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
+the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
+(PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
+text through ``visual_text``.
+A content control's element content is laid out through its template (``templates``).
 """
 
 from __future__ import annotations
@@ -74,24 +75,8 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
     pad = v.get("Padding", parse_thickness, look["padding"])
     if local in ("CheckBox", "RadioButton"):
         top = (h - _OPTION_MARK) / 2
-        checked = v.get("IsChecked", _checked, False)
-        if local == "CheckBox":
-            box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
-            if checked:  # Aero2's optionMark Path, Margin 1 inside the 1 px border
-                glyph = path_from_string(_CHECK_GLYPH)
-                at = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])
-                mark = GeometryDrawing(glyph, brush=_GLYPH)
-                box = (*box, DrawingGroup(children=(mark,), transform=at))
-            shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
-            out.append(DrawingGroup(children=tuple(box), transform=shift))
-        else:
-            out.append(GeometryDrawing(
-                EllipseGeometry((6.5, top + 6.5), 6.0, 6.0), brush=background,
-                pen=Pen(brush=border, thickness=1.0),
-            ))  # fmt: skip
-            if checked:  # Aero2's optionMark Ellipse fills the mark grid (Margin 2) inside
-                dot = EllipseGeometry((6.5, top + 6.5), 3.5, 3.5)
-                out.append(GeometryDrawing(dot, brush=_GLYPH))
+        shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
+        out.append(DrawingGroup(children=tuple(option_mark(r, v, local)), transform=shift))
         t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - line_height(font)) / 2 - 0.5, w)
         if t is not None:
             out.append(t)
@@ -110,6 +95,27 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
         box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
         out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
+
+
+def option_mark(r, v, local: str) -> list:
+    """A CheckBox's or RadioButton's 13 px mark at (0, 0), checked or not (IsChecked)."""
+    look = AERO2[local]
+    background = _brush(r, v, "Background", look["background"])
+    border = _brush(r, v, "BorderBrush", look["border"])
+    checked = v.get("IsChecked", _checked, False)
+    if local == "CheckBox":
+        box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
+        if checked:  # Aero2's optionMark Path, Margin 1 inside the 1 px border
+            glyph = path_from_string(_CHECK_GLYPH)
+            at = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])
+            mark = GeometryDrawing(glyph, brush=_GLYPH)
+            box = [*box, DrawingGroup(children=(mark,), transform=at)]
+        return list(box)
+    out = [GeometryDrawing(EllipseGeometry((6.5, 6.5), 6.0, 6.0), brush=background,
+                           pen=Pen(brush=border, thickness=1.0))]  # fmt: skip
+    if checked:  # Aero2's optionMark Ellipse fills the mark grid (Margin 2) inside
+        out.append(GeometryDrawing(EllipseGeometry((6.5, 6.5), 3.5, 3.5), brush=_GLYPH))
+    return out
 
 
 def _checked(text: str) -> bool:
@@ -182,12 +188,25 @@ def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
 
 
 def _slider(r, v, w: float, h: float, out: list) -> None:
-    """Aero2's horizontal Slider: a 4 px #FFE7EAEA track in a #FFD6D6D6 border, inset by half
-    the thumb, and the 11 x 18 #FFF0F0F0 thumb (#FFACACAC edge) at Value's share of the way."""
+    """Aero2's Slider: a 4 px #FFE7EAEA track in a #FFD6D6D6 border, inset by half the thumb,
+    and the #FFF0F0F0 thumb (#FFACACAC edge) at Value's share of the way: horizontal, an
+    11 x 18 thumb from the left; Orientation="Vertical", an 18 x 11 thumb from the bottom."""
     lo = v.get("Minimum", V.parse_double, 0.0)
     hi = v.get("Maximum", V.parse_double, 10.0)
     value = v.get("Value", V.parse_double, 0.0)
     share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
+    upright = v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
+                    "Horizontal") == "Vertical"  # fmt: skip
+    if upright:  # the same parts turned upright; Minimum at the bottom
+        cx = w / 2
+        track = _box_drawing(_rgb("E7EAEA"), _rgb("D6D6D6"), (1.0,) * 4, 0.0, 4.0,
+                             max(0.0, h - 11))  # fmt: skip
+        shift = np.array([[1.0, 0.0, cx - 2.0], [0.0, 1.0, 5.5], [0.0, 0.0, 1.0]])
+        out.append(DrawingGroup(children=tuple(track), transform=shift))
+        y = max(0.0, h - 11.0) * (1.0 - share)
+        thumb = RectangleGeometry((cx - 8.5, y + 0.5, 17.0, 10.0))
+        out.append(GeometryDrawing(thumb, brush=_rgb("F0F0F0"), pen=Pen(brush=_rgb("ACACAC"))))
+        return
     cy = h / 2
     track = _box_drawing(_rgb("E7EAEA"), _rgb("D6D6D6"), (1.0,) * 4, 0.0, max(0.0, w - 11), 4.0)
     shift = np.array([[1.0, 0.0, 5.5], [0.0, 1.0, cy - 2.0], [0.0, 0.0, 1.0]])
@@ -195,3 +214,61 @@ def _slider(r, v, w: float, h: float, out: list) -> None:
     x = max(0.0, w - 11.0) * share
     thumb = RectangleGeometry((x + 0.5, cy - 8.5, 10.0, 17.0))
     out.append(GeometryDrawing(thumb, brush=_rgb("F0F0F0"), pen=Pen(brush=_rgb("ACACAC"))))
+
+
+_SCROLL = 17.0  # SystemParameters.VerticalScrollBarWidth / ...ButtonHeight (and horizontal)
+# Aero2's ScrollBar arrows (#FF606060), pointing up, down, left and right
+_ARROWS = {
+    "up": "M 0,4 C0,4 0,6 0,6 0,6 3.5,2.5 3.5,2.5 3.5,2.5 7,6 7,6 7,6 7,4 7,4 7,4 3.5,0.5 "
+          "3.5,0.5 3.5,0.5 0,4 0,4 z",
+    "down": "M 0,2.5 C0,2.5 0,0.5 0,0.5 0,0.5 3.5,4 3.5,4 3.5,4 7,0.5 7,0.5 7,0.5 7,2.5 7,2.5 "
+            "7,2.5 3.5,6 3.5,6 3.5,6 0,2.5 0,2.5 z",
+    "left": "M 3.18,7 C3.18,7 5,7 5,7 5,7 1.81,3.5 1.81,3.5 1.81,3.5 5,0 5,0 5,0 3.18,0 3.18,0 "
+            "3.18,0 0,3.5 0,3.5 0,3.5 3.18,7 3.18,7 z",
+    "right": "M 1.81,7 C1.81,7 0,7 0,7 0,7 3.18,3.5 3.18,3.5 3.18,3.5 0,0 0,0 0,0 1.81,0 1.81,0 "
+             "1.81,0 5,3.5 5,3.5 5,3.5 1.81,7 1.81,7 z",
+}  # fmt: skip
+# the arrows' extents (x0, y0, x1, y1), to centre them in their buttons
+_ARROW_BOUNDS = {"up": (0, 0.5, 7, 6), "down": (0, 0.5, 7, 6), "left": (0, 0, 5, 7),
+                 "right": (0, 0, 5, 7)}  # fmt: skip
+
+
+def scroll_bar_upright(v) -> bool:
+    return v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
+                  "Vertical") == "Vertical"  # fmt: skip
+
+
+def _scroll_bar(r, v, w: float, h: float, out: list) -> None:
+    """Aero2's ScrollBar at rest: a #FFF0F0F0 bar, a 17 px line button at each end with its
+    #FF606060 arrow, and the #FFCDCDCD thumb placed and sized as WPF's Track does from Minimum,
+    Maximum (1 by default), Value and ViewportSize: its length is the track's share
+    ViewportSize / (Maximum - Minimum + ViewportSize), at least half a button; no thumb when
+    there is nothing to scroll or it would not fit."""
+    upright = scroll_bar_upright(v)
+    length, across = (h, w) if upright else (w, h)
+    out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)),
+                               brush=_brush(r, v, "Background", _rgb("F0F0F0"))))  # fmt: skip
+    button = min(_SCROLL, length / 2)  # the end rows: star sized, at most 17 px each
+    ends = ("up", "down") if upright else ("left", "right")
+    for i, name in enumerate(ends):
+        start = 0.0 if i == 0 else length - button
+        x0, y0, x1, y1 = _ARROW_BOUNDS[name]
+        cx, cy = (across / 2, start + button / 2) if upright else (start + button / 2, across / 2)
+        m = np.array([[1.0, 0.0, cx - (x0 + x1) / 2], [0.0, 1.0, cy - (y0 + y1) / 2],
+                      [0.0, 0.0, 1.0]])  # fmt: skip
+        arrow = GeometryDrawing(path_from_string(_ARROWS[name]), brush=_rgb("606060"))
+        out.append(DrawingGroup(children=(arrow,), transform=m))
+    lo = v.get("Minimum", V.parse_double, 0.0)
+    hi = v.get("Maximum", V.parse_double, 1.0)
+    value = v.get("Value", V.parse_double, 0.0)
+    view = max(0.0, v.get("ViewportSize", V.parse_double, 0.0))
+    track = max(0.0, length - 2 * button)
+    span = max(0.0, hi - lo)
+    offset = min(span, max(0.0, value - lo))
+    thumb = track * view / (span + view) if span + view > 0 else 0.0
+    thumb = max(_SCROLL / 2, min(thumb, track))
+    if span <= 0 or thumb > track:
+        return  # WPF hides the thumb: nothing to scroll, or no room for it
+    at = button + (track - thumb) * offset / span
+    rect = (0.0, at, across, thumb) if upright else (at, 0.0, thumb, across)
+    out.append(GeometryDrawing(RectangleGeometry(rect), brush=_rgb("CDCDCD")))

@@ -107,8 +107,13 @@ def window_layout(result: LayoutResult, layers: dict | None = None) -> WindowLay
 
 def lay_out(r, root_el, viewport_elements: list, window_size=None):
     """({viewport index: ViewportLayout}, WindowLayout or None)."""
+    # the controls beside the viewports are measured as those inside visuals are
+    from xaml3d.xaml.control_sizes import MeasuringPanels
+
     root, nodes, elements = (
-        read_layout(r, root_el, viewport_elements) if viewport_elements else (None, {}, {})
+        read_layout(r, root_el, viewport_elements, MeasuringPanels)
+        if viewport_elements
+        else (None, {}, {})
     )
     result = layout(root, window_size) if root is not None else None
     if result is not None:

@@ -488,11 +488,15 @@ class PanelsReader:
             out.append(L.Definition(unit, value, lo, hi))
         return tuple(out)
 
-    def _estimate(self, n: L.Node, v: ElementValues, el, font: float = FONT_SIZE) -> None:
+    def content_size(self, n: L.Node, v: ElementValues, el, font: float):
+        """A control's content size as its template measures it, None when it is not known
+        (the documented estimate then stands in). The 2D layer's reader measures text and
+        shapes (``control_sizes``); this plain reader knows none."""
+        return None
+
+    def _estimated_size(self, n: L.Node, v: ElementValues, el, font: float):
+        """The documented estimate: 7 px a character, a 16 px line, the template's chrome."""
         local = n.type
-        if local in _SHAPES or not is_presentation(qname(el.tag)[0]):
-            n.estimate = (0.0, 0.0)  # shapes and images without a size: nothing to measure
-            return
         text = None
         for prop in ("Text", "Content", "Header"):
             s = el.get(prop)
@@ -515,12 +519,27 @@ class PanelsReader:
             if items:
                 w = sum(_outer(k)[0] for k in items) + cw
                 h = max(LINE_HEIGHT * scale, max(_outer(k)[1] for k in items)) + ch
-        n.estimate = (max(0.0, w), max(0.0, h))
-        if n.layout_transform is not None and (n.width != n.width or n.height != n.height):
+        return (max(0.0, w), max(0.0, h))
+
+    def _estimate(self, n: L.Node, v: ElementValues, el, font: float = FONT_SIZE) -> None:
+        local = n.type
+        measured = self.content_size(n, v, el, font)
+        if measured is not None:  # measured as WPF's template does: no estimate to report
+            n.estimate = measured
+        elif local in _SHAPES or not is_presentation(qname(el.tag)[0]):
+            n.estimate = (0.0, 0.0)  # shapes and images without a size: nothing to measure
+            return
+        else:
+            n.estimate = self._estimated_size(n, v, el, font)
+        w, h = n.estimate
+        # a LayoutTransform is applied by the layout engine (layout/transform.py) to the
+        # measured or estimated size alike
+        unsized = n.width != n.width or n.height != n.height
+        if measured is None and unsized and n.layout_transform is not None:
             self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
                       f"estimated as {w:g} x {h:g}, then turned by its LayoutTransform",
                       el)  # fmt: skip
-        elif n.width != n.width or n.height != n.height:
+        elif measured is None and unsized:
             self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
                       f"estimated as {w:g} x {h:g}", el)  # fmt: skip
 
@@ -580,9 +599,10 @@ def _design(el, name: str) -> float | None:
     return x if x == x and x >= 0 else None
 
 
-def read_layout(r, root_el, viewport_elements: list):
+def read_layout(r, root_el, viewport_elements: list, reader_type=PanelsReader):
     """(layout root or None, {viewport index: Node}, {id(node): (element, FontSize)}) for the
-    document whose root is ``root_el``; None when the root takes no part in layout."""
-    reader = PanelsReader(r, viewport_elements)
+    document whose root is ``root_el``; None when the root takes no part in layout.
+    ``reader_type``: the panel reader (a subclass measuring the controls' content)."""
+    reader = reader_type(r, viewport_elements)
     root = reader.build(root_el)
     return root, reader.viewports, reader.elements

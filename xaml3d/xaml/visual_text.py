@@ -2,9 +2,10 @@
 
 Covers a TextBlock's (and a control's) text: its content (Text, Content, inline Runs flattened,
 white space collapsed), the inherited Foreground, FontSize, FontWeight, FontStyle and
-FontFamily, TextAlignment, TextWrapping (to the element's own Width or MaxWidth) and one
-TextDrawing per line at Segoe UI's line metrics (``xaml3d.layout.text``); and the Background /
-BorderBrush band of a Border-like box (BorderThickness, CornerRadius).
+FontFamily, TextAlignment, TextWrapping and TextTrimming (CharacterEllipsis, WordEllipsis) to
+the width the layout gives the TextBlock, and one TextDrawing per line at Segoe UI's line
+metrics (``xaml3d.layout.text``); and the Background / BorderBrush band of a Border-like box
+(BorderThickness, CornerRadius).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from xaml3d.scene.types import SolidColorBrush
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
-from xaml3d.xaml.panels_reader import _content_text, parse_length, parse_thickness
+from xaml3d.xaml.panels_reader import _content_text
 
 
 def _rgb(hex6: str, a: float = 1.0) -> SolidColorBrush:
@@ -105,18 +106,44 @@ def _foreground(r, el):
 
 
 _WRAPS = ("NoWrap", "Wrap", "WrapWithOverflow")
+_TRIMS = ("None", "CharacterEllipsis", "WordEllipsis")
+ELLIPSIS = "\u2026"
+# a line laid out again at its arranged width may meet a width rounded to whole pixels below
+# the measured one (UseLayoutRounding): so much is let through rather than wrapped or trimmed
+_SLACK = 0.5
 
 
-def _wrap_width(v, pad) -> float:
-    """The width a TextBlock with TextWrapping wraps its text to: its own Width (or MaxWidth)
-    less its Padding; infinite when it does not wrap or has no width of its own."""
-    wrap = v.get("TextWrapping", lambda s: V.parse_enum(s, _WRAPS), "NoWrap")
-    if wrap == "NoWrap":
-        return math.inf
-    w = v.get("Width", parse_length, math.nan)
-    if w != w:
-        w = v.get("MaxWidth", parse_length, math.inf)
-    return max(0.0, w - pad[0] - pad[2])
+def wraps(v) -> bool:
+    """Whether a TextBlock breaks its text into lines (TextWrapping Wrap or WrapWithOverflow)."""
+    return v.get("TextWrapping", lambda s: V.parse_enum(s, _WRAPS), "NoWrap") != "NoWrap"
+
+
+def trimming(v) -> str:
+    return v.get("TextTrimming", lambda s: V.parse_enum(s, _TRIMS), "None")
+
+
+def trim(line: str, font: float, weight: int, italic: bool, width: float, mode: str) -> str:
+    """A line cut to ``width`` as TextTrimming does: the longest start of it (whole words for
+    WordEllipsis, when one fits) followed by an ellipsis; the line itself when it fits."""
+    if mode == "None" or text_width(line, font, weight, italic) <= width + _SLACK:
+        return line
+
+    def fits(k: int) -> bool:
+        return text_width(line[:k].rstrip() + ELLIPSIS, font, weight, italic) <= width + _SLACK
+
+    if mode == "WordEllipsis":
+        ends = [i for i in range(1, len(line)) if line[i] == " " and line[i - 1] != " "]
+        best = max((k for k in ends if fits(k)), default=None)
+        if best is not None:
+            return line[:best].rstrip() + ELLIPSIS
+    lo, hi = 0, len(line)  # the longest start that fits with the ellipsis (bisection)
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        if fits(mid):
+            lo = mid
+        else:
+            hi = mid - 1
+    return line[:lo].rstrip() + ELLIPSIS
 
 
 def _lines(text: str, font: float, weight: int, italic: bool, width: float) -> list[str]:
@@ -138,19 +165,23 @@ def _lines(text: str, font: float, weight: int, italic: bool, width: float) -> l
 
 
 def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
-    """The element's text as one TextDrawing per line (a DrawingGroup when it wraps)."""
+    """The element's text as one TextDrawing per line (a DrawingGroup when it wraps). ``w``:
+    the width laid out for it: a TextBlock wraps (TextWrapping) and trims (TextTrimming) its
+    lines to it, as WPF formats the text again at the arranged width."""
     text = _text_of(el)
     if not text:
         return None
     weight, italic = _font_style(el)
-    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-    width = _wrap_width(v, pad) if qname(el.tag)[1] == "TextBlock" else math.inf
+    block = qname(el.tag)[1] == "TextBlock"
+    width = w + _SLACK if block and wraps(v) else math.inf
+    mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip
     family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
     brush = _foreground(r, el)
     out = []
     for i, line in enumerate(_lines(text, font, weight, italic, width)):
+        line = trim(line, font, weight, italic, w, mode)
         tw = text_width(line, font, weight, italic)
         lx = x
         if align_center or alignment == "Center":

@@ -2,18 +2,20 @@
 
 WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
 xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
-measured with the package's font, shapes by their geometry), laid out by ``xaml3d.layout`` as
+measured with the package's font, shapes by their geometry: ``control_sizes``; the controls
+that hold content built as their template's parts: ``templates``), laid out by ``xaml3d.layout`` as
 WPF lays out a brush's visual (measured with infinite room, arranged at its desired size), and
 each element becomes the drawing WPF's would: panel and Border backgrounds and borders
 (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
 Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
-Background; wrapped to its own width), Label, Image, and Button, TextBox, CheckBox,
-RadioButton, ProgressBar, Slider and a closed ComboBox in WPF's default Windows 10/11 look (the
-[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, and RenderTransform (about
-RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect and their bitmap effects:
-``picture_reader.element_layer``), apply to an element and its children as one layer. Anything
-else is skipped with DRW002: the rest is drawn.
+Background; wrapped and trimmed to its laid-out width), Label, Image, and Button, TextBox,
+CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed ComboBox, ListBox,
+TabControl, GroupBox and Expander (with the content they hold) in WPF's default Windows 10/11
+look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, and
+RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect and
+their bitmap effects: ``picture_reader.element_layer``), apply to an element and its children as
+one layer. Anything else is skipped with DRW002: the rest is drawn.
 """
 
 from __future__ import annotations
@@ -24,7 +26,6 @@ import numpy as np
 
 from xaml3d.layout import layout
 from xaml3d.layout import tree as L
-from xaml3d.layout.text import line_height, text_width
 from xaml3d.layout.transform import placed_by_layout
 from xaml3d.scene.drawing import (
     DrawingGroup,
@@ -36,119 +37,40 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
 )
 from xaml3d.scene.types import placeholder_image
+from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import load_image
 from xaml3d.xaml.context import qname
+from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels, shape_points
 from xaml3d.xaml.controls_reader import (
-    _COMBO_BUTTON,
-    _OPTION_MARK,
-    _TEXT_BOX_INSET,
     AERO2,
     _combo_box,
-    _combo_items,
     _control,
     _progress_bar,
+    _scroll_bar,
     _slider,
 )
 from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
-    PanelsReader,
     parse_thickness,
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
-    _font_style,
-    _lines,
+    _rgb,
     _text,
-    _text_of,
-    _wrap_width,
 )
 
-_TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
-                  "CheckBox", "RadioButton"}  # fmt: skip
-_SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
-
-
-class _VisualPanels(PanelsReader):
-    """The panel reader, recording each node's element and measuring text and shapes."""
-
-    def __init__(self, r) -> None:
-        super().__init__(r, [])
-
-    def _estimate(self, n, v, el, font: float = FONT_SIZE) -> None:
-        local = n.type
-        if local in _SHAPES:
-            n.estimate = _shape_extent(self.r, v)
-        elif local == "Slider":
-            n.estimate = (0.0, 18.0)  # Aero2's thumb is 11 x 18; the track stretches
-        elif local == "ComboBox":
-            items = [_text_of(k) for k in _combo_items(el)] or [""]
-            widest = max(text_width(t, font, *_font_style(el)) for t in items)
-            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
-            n.estimate = (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
-        elif local in _TEXT_CONTROLS:
-            text = _text_of(el)
-            weight, italic = _font_style(el)
-            pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
-            lines = _lines(text, font, weight, italic, _wrap_width(v, pad) if local ==
-                           "TextBlock" else math.inf)  # fmt: skip
-            w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
-            h = line_height(font) * max(1, len(lines))
-            border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
-            if local in ("CheckBox", "RadioButton"):
-                # the mark, then the content with Aero2's Padding 4,-1,0,0
-                w, h = _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
-            else:
-                w += pad[0] + pad[2] + 2 * border
-                h += pad[1] + pad[3] + 2 * border
-                if local == "TextBox":
-                    w += 2 * _TEXT_BOX_INSET
-            n.estimate = (w, h)
-        else:
-            super()._estimate(n, v, el, font)
-
-
-def _shape_extent(r, v) -> tuple[float, float]:
-    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
-    p = v.p
-    if p is None:
-        return (0.0, 0.0)
-    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
-    pts = _shape_points(r, p)
-    if pts is None or pts.size == 0:
-        return (0.0, 0.0)
-    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
-
-
-def _shape_points(r, p) -> np.ndarray | None:
-    d = V.parse_double
-    if p.type == "Line":
-        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
-        return np.array([[x1, y1], [x2, y2]])
-    if p.type in ("Polyline", "Polygon"):
-        text = p.string("Points")
-        return V.parse_point_collection(text).reshape(-1, 2) if text else None
-    if p.type == "Path":
-        g = geometry_property(r, p, "Data")
-        if isinstance(g, PathGeometry):
-            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
-            return np.array(xy, dtype=float).reshape(-1, 2)
-        if isinstance(g, RectangleGeometry):
-            x, y, w, h = g.rect
-            return np.array([[x + w, y + h]])
-        if isinstance(g, EllipseGeometry):
-            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
-            return np.array([[cx + rx, cy + ry]])
-    return None
+_TEXT_CONTROLS = TEXT_CONTROLS
+_SHAPES = SHAPES
 
 
 def visual_drawing(r, el):
     """(Drawing, (0, 0, width, height)) of the visual ``el`` laid out at its desired size."""
-    reader = _VisualPanels(r)
+    reader = MeasuringPanels(r, [])
     root = reader.build(el)
     if root is None:
         r.ctx.diag("DRW002", f"{qname(el.tag)[1]} is not a visual xaml3d draws: skipped", el)
@@ -157,32 +79,37 @@ def visual_drawing(r, el):
     # visual is measured with infinite room and arranged at its desired size
     size = getattr(r, "laid_out_sizes", {}).get(id(el))
     layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
+    templates.raise_selected_tabs(root)
     out = []
     _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
     w, h = root.rect[2], root.rect[3]
     return DrawingGroup(children=tuple(out)), (0.0, 0.0, float(w), float(h))
 
 
-def _compile(r, reader: _VisualPanels, n, out: list, parent) -> None:
+def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     """``parent``: the parent's absolute origin and scale (x, y, sx, sy); the layout's
     rectangles are absolute, the drawing groups nest."""
     if not n.arranged or n.visibility != "Visible":
         return
     el, font = reader.elements.get(id(n), (None, FONT_SIZE))
-    if el is None:
+    if el is None and not n.type.startswith("#"):
         return
     x, y, w, h = n.rect
     ink_w, ink_h = n.ink
     sx = w / ink_w if ink_w > 0 else 1.0
     sy = h / ink_h if ink_h > 0 else 1.0
     own: list = []
-    v = ElementValues(r, el)
-    _element(r, v, n, el, font, ink_w, ink_h, own)
+    if el is None:  # a part of a control's template: its Border look or its own drawing
+        v = None
+        own.extend(_part(n, ink_w, ink_h))
+    else:
+        v = ElementValues(r, el)
+        _element(r, v, n, el, font, ink_w, ink_h, own)
     for k in n.children:
         _compile(r, reader, k, own, (x, y, sx, sy))
     if not own:
         return
-    opacity = v.get("Opacity", V.parse_double, 1.0)
+    opacity = v.get("Opacity", V.parse_double, 1.0) if v is not None else 1.0
     clip = _layout_clip(n) if n.type in _TEXT_CONTROLS else None
     if clip is not None:  # the clip is in the element's own coordinates, under its transform
         own = [DrawingGroup(children=tuple(own), clip=clip)]
@@ -211,13 +138,31 @@ def _layout_clip(n):
     if n.type not in _TEXT_CONTROLS or n.estimate is None:
         return None
     w, h = n.ink
-    if n.estimate[0] <= w + 1e-9 and n.estimate[1] <= h + 1e-9:
+    need = n.measure(w, math.inf) if n.measure is not None else n.estimate  # wrapped at w
+    if need[0] <= w + 1e-9 and need[1] <= h + 1e-9:
         return None
     return RectangleGeometry((0.0, 0.0, w, h))
 
 
+def _part(n, w: float, h: float) -> list:
+    """A template part's look: its own drawing, or its Border's Background and BorderBrush."""
+    out = _box_drawing(n.background, n.border_brush, n.border, 0.0, w, h)
+    if n.drawing is not None:
+        out.append(n.drawing)
+    return out
+
+
 def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     local = n.type
+    if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
+        out.extend(_part(n, w, h))
+        if local == "GroupBox":
+            out.extend(templates.group_box_chrome(r, el, n))
+        return
+    if local == "Separator":
+        fill = _brush(r, v, "Background", _rgb("A0A0A0"))  # SystemColors.ControlDark
+        out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)), brush=fill))
+        return
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
@@ -248,6 +193,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         return
     if local == "Slider":
         _slider(r, v, w, h, out)
+        return
+    if local == "ScrollBar":
+        _scroll_bar(r, v, w, h, out)
         return
     if local == "Image" and v.p is not None:
         source = v.p.string("Source")
@@ -308,7 +256,7 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
     if local == "Path":
         g = geometry_property(r, v.p, "Data")
     else:
-        pts = _shape_points(r, v.p)
+        pts = shape_points(r, v.p)
         if pts is None or pts.shape[0] < 2:
             return
         cmds = [("M", *pts[0])] + [("L", *q) for q in pts[1:]]
@@ -323,15 +271,22 @@ def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
         out.append(GeometryDrawing(g, brush=fill, pen=pen))
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider"}
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
+                                             "Separator", "ScrollBar"}  # fmt: skip
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
     """``render --window``: each laid-out 2D control that the 2D layer draws gets its drawing
     (``Node.drawing``, in its own box). The others stay undrawn, and DRW007 says so (their
     space is kept: LAY003 says it is estimated)."""
+    templates.raise_selected_tabs(root)
     for n in root.walk():
-        if n.kind != L.CONTROL or not n.arranged:
+        if n.type == "GroupBox" and n.kind == L.GRID and n.arranged:
+            el = elements.get(id(n), (None,))[0]
+            if el is not None:  # its border with the header's gap, over its Background
+                n.drawing = DrawingGroup(children=tuple(templates.group_box_chrome(r, el, n)))
+            continue
+        if n.kind != L.CONTROL or not n.arranged or n.type.startswith("#"):
             continue
         if n.type not in _WINDOW_DRAWN:
             el = elements.get(id(n), (None,))[0]

@@ -1,0 +1,161 @@
+"""The content size of the 2D controls, as their templates measure it (layout's measure pass).
+
+One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
+beside the viewports (``render --window``): text by the package font's advance widths and
+Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
+Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox
+(a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
+and a Separator's thickness; a Stretch="None" shape's geometry (Line, Polyline, Polygon, Path).
+skia is imported only when there is text to measure.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xaml3d.layout import tree as L
+from xaml3d.layout.text import line_height, text_width
+from xaml3d.scene.drawing import EllipseGeometry, PathGeometry, RectangleGeometry
+from xaml3d.xaml import templates
+from xaml3d.xaml import values as V
+from xaml3d.xaml.controls_reader import (
+    _COMBO_BUTTON,
+    _OPTION_MARK,
+    _TEXT_BOX_INSET,
+    AERO2,
+    _combo_items,
+    scroll_bar_upright,
+)
+from xaml3d.xaml.geometry_reader import geometry_property
+from xaml3d.xaml.panels_reader import (
+    FONT_SIZE,
+    ElementValues,
+    PanelsReader,
+    _layout_transform,
+    _turns,
+    parse_thickness,
+)
+from xaml3d.xaml.visual_text import _font_style, _lines, _text_of, trim, trimming, wraps
+
+TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
+                 "CheckBox", "RadioButton"}  # fmt: skip
+SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
+
+
+class MeasuringPanels(PanelsReader):
+    """The panel reader with the controls' content measured as WPF's templates do, and the
+    controls that hold content laid out through their template's parts (``templates``)."""
+
+    def build(self, el, font: float = FONT_SIZE):
+        n = super().build(el, font)
+        if n is not None and n.type == "Separator" and n.kind == L.CONTROL:
+            v = ElementValues(self.r, el, self.style_setters(el, n.type))
+            n.margin = v.get("Margin", parse_thickness, (0.0, 2.0, 0.0, 2.0))  # Aero2's Style
+        if (n is not None and n.kind == L.CONTROL and not self._in_bar
+                and templates.expands(self, el, n.type)):  # fmt: skip
+            v = ElementValues(self.r, el, self.style_setters(el, n.type))
+            if not _turns(_layout_transform(self.r, v)):
+                templates.expand(self, n, el, v, self.elements[id(n)][1])
+        return n
+
+    _in_bar = False  # a ToolBar's items are only measured for the bar's estimate
+
+    def _estimated_size(self, n, v, el, font: float):
+        self._in_bar = True
+        try:
+            return super()._estimated_size(n, v, el, font)
+        finally:
+            self._in_bar = False
+
+    def content_size(self, n, v, el, font: float):
+        local = n.type
+        if not self._in_bar and templates.expands(self, el, local):
+            return (0.0, 0.0)  # laid out through its template's parts (build)
+        if local == "ScrollBar":  # 17 px across (SystemParameters' scroll bar size)
+            return (17.0, 0.0) if scroll_bar_upright(v) else (0.0, 17.0)
+        if local == "Separator":
+            return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
+        if local in SHAPES:
+            return _shape_extent(self.r, v)
+        if local == "Slider":
+            # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
+            return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
+        if local == "ComboBox":
+            items = [_text_of(k) for k in _combo_items(el)] or [""]
+            widest = max(text_width(t, font, *_font_style(el)) for t in items)
+            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
+            return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
+        if local in TEXT_CONTROLS:
+            if local == "TextBlock" and (wraps(v) or trimming(v) != "None"):
+                # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
+                # own Width or MaxWidth, else its parent's room), less its Padding
+                n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
+            return _text_control_size(v, el, local, font)
+        return None
+
+
+def vertical(v) -> bool:
+    return v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
+                 "Horizontal") == "Vertical"  # fmt: skip
+
+
+def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
+    """(width, height) of a text control's content and chrome; a wrapping TextBlock's lines
+    broken to ``room`` less its Padding."""
+    text = _text_of(el)
+    weight, italic = _font_style(el)
+    pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
+    inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
+    block = local == "TextBlock"
+    lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf)
+    if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
+        mode = trimming(v)
+        lines = [trim(t, font, weight, italic, inner, mode) for t in lines]
+    w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
+    h = line_height(font) * max(1, len(lines))
+    border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
+    if local in ("CheckBox", "RadioButton"):
+        # the mark, then the content with Aero2's Padding 4,-1,0,0
+        return _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
+    w += pad[0] + pad[2] + 2 * border
+    h += pad[1] + pad[3] + 2 * border
+    if local == "TextBox":
+        w += 2 * _TEXT_BOX_INSET
+    return w, h
+
+
+def _shape_extent(r, v) -> tuple[float, float]:
+    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
+    p = v.p
+    if p is None:
+        return (0.0, 0.0)
+    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
+    pts = shape_points(r, p)
+    if pts is None or pts.size == 0:
+        return (0.0, 0.0)
+    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
+
+
+def shape_points(r, p) -> np.ndarray | None:
+    """The points of a Line, Polyline, Polygon or Path (its path's end points)."""
+    d = V.parse_double
+    if p.type == "Line":
+        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
+        return np.array([[x1, y1], [x2, y2]])
+    if p.type in ("Polyline", "Polygon"):
+        text = p.string("Points")
+        return V.parse_point_collection(text).reshape(-1, 2) if text else None
+    if p.type == "Path":
+        g = geometry_property(r, p, "Data")
+        if isinstance(g, PathGeometry):
+            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
+            return np.array(xy, dtype=float).reshape(-1, 2)
+        if isinstance(g, RectangleGeometry):
+            x, y, w, h = g.rect
+            return np.array([[x + w, y + h]])
+        if isinstance(g, EllipseGeometry):
+            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
+            return np.array([[cx + rx, cy + ry]])
+    return None

@@ -1,0 +1,421 @@
+"""The Aero2 templates of the controls that hold other elements, as layout parts (measure pass).
+
+WPF lays a templated control out as the tree its ControlTemplate builds: borders, panels and
+content presenters around the control's content. xaml3d builds the same tree of layout nodes
+for the controls whose template places content, so their content is laid out and drawn inside
+their chrome, beside the viewports (``render --window``) and inside visuals alike:
+
+- Button, ToggleButton, RepeatButton, Label whose content is an element (a StackPanel holding an
+  Image and a TextBlock...): the chrome's Border, then a ContentPresenter at Padding, aligned by
+  HorizontalContentAlignment / VerticalContentAlignment (Button: centred; Label: top left);
+  CheckBox, RadioButton: the 13 px mark, then the content at Padding 4,-1,0,0, centred on the row.
+- ListBox: a white Border (#FFABADB3, 1 px, Padding 1), the items stacked; each ListBoxItem a
+  1 px transparent Border with Padding 4,1, the selected one (SelectedIndex or IsSelected) in
+  Aero2's inactive selection look (#3DDADADA inside #FFDADADA: a picture has no keyboard focus).
+- TabControl: the row of TabItem headers (Padding 6,2,6,2; a #FFF0F0F0-#FFE5E5E5 face in a
+  #FFACACAC border open at the bottom; the selected tab white, 2 px larger each side and above,
+  drawn over its neighbours), then the selected tab's content in a white Border (#FFACACAC, 1 px)
+  at Padding 2. SelectedIndex or IsSelected choose the tab; the first one otherwise.
+- GroupBox: the header at Padding 3,1,3,0 over a 1 px #FFD5DFE5 border (CornerRadius 3) that
+  starts half the header's height down and leaves a gap for the header; the content 6 px inside.
+- Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
+  the content below when IsExpanded.
+
+Part nodes (type ``#text``, ``#part``, ``#tabs``) have no element of their own: a ``#text`` part
+carries its text's drawing, a ``#part`` its Background, BorderBrush and BorderThickness (painted as
+a Border's), ``#tabs`` is the header row whose selected tab is drawn last (Panel.ZIndex 1).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from xaml3d.layout import tree as L
+from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.scene.drawing import (
+    CombinedGeometry,
+    DrawingGroup,
+    EllipseGeometry,
+    GeometryDrawing,
+    Pen,
+    RectangleGeometry,
+    TextDrawing,
+)
+from xaml3d.scene.types import GradientStop, LinearGradientBrush
+from xaml3d.xaml import values as V
+from xaml3d.xaml.context import is_presentation, qname, split_markup
+from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
+from xaml3d.xaml.geometry_reader import path_from_string
+from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
+from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _inherited, _rgb
+
+TEXT_PART, PART, TABS_PART = "#text", "#part", "#tabs"
+_INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
+_CONTENT_CONTROLS = {"Button", "ToggleButton", "RepeatButton", "Label"}
+_OPTIONS = {"CheckBox", "RadioButton"}
+_HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
+TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED
+_ALIGN_H = ("Left", "Center", "Right", "Stretch")
+_ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
+
+# Aero2's brushes for these templates ([[Aero2.NormalColor]])
+_LIST_BORDER = _rgb("ABADB3")
+_SELECTED_INACTIVE = _rgb("DADADA", 0x3D / 255)
+_SELECTED_INACTIVE_BORDER = _rgb("DADADA")
+_TAB_BORDER = _rgb("ACACAC")
+_TAB_FACE = LinearGradientBrush(
+    stops=(GradientStop((0xF0 / 255,) * 3 + (1.0,), 0.0),
+           GradientStop((0xE5 / 255,) * 3 + (1.0,), 1.0)),
+    start_point=(0.0, 0.0), end_point=(0.0, 1.0),
+)  # fmt: skip
+_WHITE = _rgb("FFFFFF")
+_GROUP_BORDER = _rgb("D5DFE5")
+_EXPANDER_INK = _rgb("333333")
+_CIRCLE = 19.0  # the Expander's toggle circle and its column
+# Aero2's Expander arrow (ExpanderDownHeaderStyle's Path), collapsed and expanded
+_ARROW_DOWN = "M 1,1.5 L 4.5,5 L 8,1.5"
+_ARROW_UP = "M 1,4.5 L 4.5,1 L 8,4.5"
+
+
+def _elements(items) -> list:
+    return [k for k in items if isinstance(k.tag, str)]
+
+
+def rich_content(reader, el) -> list:
+    """The element content of a content control (not inline text): what its presenter lays out."""
+    kids = _elements(reader.content_of(el))
+    if any(qname(k.tag)[1] not in _INLINES for k in kids):
+        return kids
+    return []
+
+
+def expands(reader, el, local: str) -> bool:
+    """Whether ``el`` is laid out through its template's parts (not as one measured box)."""
+    if not is_presentation(qname(el.tag)[0]):
+        return False
+    if local in _CONTENT_CONTROLS or local in _OPTIONS:
+        return bool(rich_content(reader, el))
+    return local in _HEADERED
+
+
+def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
+    """Turn the control node ``n`` into its template's tree (its kind and children change)."""
+    local = n.type
+    n.estimate = None
+    if local in _CONTENT_CONTROLS:
+        _content_control(reader, n, el, v, font)
+    elif local in _OPTIONS:
+        _option(reader, n, el, v, font)
+    elif local == "ListBox":
+        _list_box(reader, n, el, v, font)
+    elif local == "ListBoxItem":
+        _list_item(reader, n, el, v, font)
+    elif local == "TabControl":
+        _tab_control(reader, n, el, v, font)
+    elif local == "GroupBox":
+        _group_box(reader, n, el, v, font)
+    elif local == "Expander":
+        _expander(reader, n, el, v, font)
+    else:  # a TabItem outside a TabControl: its header alone
+        _tab_item(reader, n, el, v, font, False)
+
+
+# --------------------------------------------------------------------------- parts
+
+
+def part(reader, kind: str, font: float, children=(), type: str = PART, **fields) -> L.Node:
+    n = L.Node(kind, type, **fields)
+    n.children = [k for k in children if k is not None]
+    reader.elements[id(n)] = (None, font)
+    return n
+
+
+def text_part(reader, owner, text: str, font: float) -> L.Node:
+    """One line of ``text`` in the owner's font and Foreground, sized by the font's metrics."""
+    weight, italic = _font_style(owner)
+    n = part(reader, L.CONTROL, font, type=TEXT_PART)
+    n.estimate = (text_width(text, font, weight, italic), line_height(font))
+    if text:
+        family = _inherited(owner, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+        n.drawing = TextDrawing(
+            text=text, origin=(0.0, baseline(font)), font_size=font, weight=weight,
+            italic=italic, family=family, brush=_foreground(reader.r, owner),
+            **reader.r.ctx.position(owner),
+        )  # fmt: skip
+    return n
+
+
+def _presenter(reader, font, children, margin=(0.0,) * 4, h="Stretch", v="Stretch", **fields):
+    return part(reader, L.CONTAINER, font, children, margin=margin, h_align=h, v_align=v,
+                **fields)  # fmt: skip
+
+
+def _build_all(reader, items, font) -> list:
+    return [k for k in (reader.build(c, font) for c in items) if k is not None]
+
+
+def _content(reader, el, font) -> list:
+    """The laid-out content of a content control: its elements, else its text as one line."""
+    from xaml3d.xaml.visual_text import _text_of
+
+    kids = rich_content(reader, el)
+    if kids:
+        return _build_all(reader, kids, font)
+    text = _text_of(el)
+    return [text_part(reader, el, text, font)] if text else []
+
+
+def _header(reader, el, font) -> list:
+    """A headered control's Header: its text (attribute or property element) or elements."""
+    raw = el.get("Header")
+    if raw is not None:
+        if split_markup(raw) is not None:
+            return []
+        return [text_part(reader, el, " ".join(raw.split()), font)]
+    for child in el:
+        if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Header"):
+            kids = _elements(child)
+            if kids:
+                return _build_all(reader, kids, font)
+            text = " ".join((child.text or "").split())
+            return [text_part(reader, el, text, font)] if text else []
+    return []
+
+
+def _align(v: ElementValues, h_default: str, v_default: str) -> tuple[str, str]:
+    h = v.get("HorizontalContentAlignment", lambda s: V.parse_enum(s, _ALIGN_H), h_default)
+    vv = v.get("VerticalContentAlignment", lambda s: V.parse_enum(s, _ALIGN_V), v_default)
+    return h, vv
+
+
+def _chrome(reader, n, v, background, border, thickness=(1.0,) * 4) -> None:
+    """The control's own Border: its Background and BorderBrush (the Aero2 ones by default)."""
+    r = reader.r
+    n.kind = L.BORDER
+    n.background = _brush(r, v, "Background", background)
+    n.border_brush = _brush(r, v, "BorderBrush", border)
+    default = thickness if n.border_brush is not None else (0.0,) * 4
+    n.border = v.get("BorderThickness", parse_thickness, default)
+
+
+# --------------------------------------------------------------------------- the templates
+
+
+def _content_control(reader, n, el, v, font) -> None:
+    look = AERO2[n.type]
+    _chrome(reader, n, v, look["background"], look["border"])
+    pad = v.get("Padding", parse_thickness, look["padding"])
+    h, vv = _align(v, *(("Left", "Top") if n.type == "Label" else ("Center", "Center")))
+    n.children = [_presenter(reader, font, _build_all(reader, rich_content(reader, el), font),
+                             pad, h, vv)]  # fmt: skip
+
+
+def _option(reader, n, el, v, font) -> None:
+    """A CheckBox's or RadioButton's mark, then its element content at Aero2's Padding 4,-1,0,0
+    (both centred on the row, as the text is)."""
+    n.kind = L.GRID
+    n.columns = (L.Definition("auto"), L.Definition("star"))
+    n.rows = ()
+    mark = part(reader, L.CONTROL, font, estimate=(_OPTION_MARK, _OPTION_MARK), v_align="Center")
+    mark.drawing = DrawingGroup(children=tuple(option_mark(reader.r, v, n.type)))
+    pad = v.get("Padding", parse_thickness, (4.0, -1.0, 0.0, 0.0))
+    h, vv = _align(v, "Left", "Center")
+    body = _presenter(reader, font, _build_all(reader, rich_content(reader, el), font), pad, h,
+                      vv, col=1)  # fmt: skip
+    n.children = [mark, body]
+
+
+def _selected_index(v, items, el) -> int:
+    index = v.get("SelectedIndex", V.parse_int, -1)
+    if 0 <= index < len(items):
+        return index
+    for i, k in enumerate(items):
+        if k.get("IsSelected") == "True":
+            return i
+    return -1
+
+
+def _list_box(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, _WHITE, _LIST_BORDER)
+    # the template's Border has Padding 1; the ScrollViewer inside it the ListBox's Padding
+    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
+    n.padding = tuple(1.0 + p for p in pad)
+    h, vv = _align(v, "Left", "Center")
+    items = _elements(reader.content_of(el))
+    chosen = _selected_index(v, items, el)
+    rows = []
+    for i, item in enumerate(items):
+        if qname(item.tag)[1] == "ListBoxItem":
+            k = reader.build(item, font)
+            if k is not None and k.children:
+                k.children[0].h_align = _own_align(reader, item, "HorizontalContentAlignment", h)
+                k.children[0].v_align = _own_align(reader, item, "VerticalContentAlignment", vv)
+        else:  # WPF wraps any other item in a ListBoxItem container
+            if not is_presentation(qname(item.tag)[0]) and len(item) == 0:
+                inner = [text_part(reader, el, " ".join((item.text or "").split()), font)]
+            else:
+                inner = _build_all(reader, [item], font)
+            k = part(reader, L.BORDER, font, [_presenter(reader, font, inner, h=h, v=vv)],
+                     border=(1.0,) * 4, padding=(4.0, 1.0, 4.0, 1.0))  # fmt: skip
+        if k is None:
+            continue
+        if i == chosen:
+            k.background, k.border_brush = _SELECTED_INACTIVE, _SELECTED_INACTIVE_BORDER
+        rows.append(k)
+    n.children = [part(reader, L.STACK, font, rows)]
+
+
+def _own_align(reader, el, prop: str, default: str) -> str:
+    raw = el.get(prop)
+    allowed = _ALIGN_H if prop.startswith("Horizontal") else _ALIGN_V
+    return raw.strip() if raw is not None and raw.strip() in allowed else default
+
+
+def _list_item(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, None, None)
+    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    n.padding = v.get("Padding", parse_thickness, (4.0, 1.0, 4.0, 1.0))
+    n.children = [_presenter(reader, font, _content(reader, el, font))]
+
+
+def _tab_item(reader, n, el, v, font, selected: bool, h="Center", vv="Center") -> None:
+    _chrome(reader, n, v, _WHITE if selected else _TAB_FACE, _TAB_BORDER, (1.0, 1.0, 1.0, 0.0))
+    if selected:  # Aero2: the selected tab's white inner border covers the face
+        n.background = _WHITE
+        n.z_index = 1  # and it is 2 px larger each side and above (raise_selected_tabs)
+    pad = v.get("Padding", parse_thickness, (6.0, 2.0, 6.0, 2.0))
+    n.padding = (0.0,) * 4
+    n.children = [_presenter(reader, font, _header(reader, el, font), pad, h, vv)]
+
+
+def _tab_control(reader, n, el, v, font) -> None:
+    from xaml3d.xaml.panels_reader import PanelsReader
+
+    n.kind = L.GRID
+    n.rows = (L.Definition("auto"), L.Definition("star"))
+    n.columns = ()
+    h, vv = _align(v, "Center", "Center")
+    tabs = [k for k in _elements(reader.content_of(el)) if qname(k.tag)[1] == "TabItem"]
+    chosen = _selected_index(v, tabs, el)
+    chosen = 0 if chosen < 0 and tabs else chosen
+    headers = []
+    for i, tab in enumerate(tabs):
+        k = PanelsReader.build(reader, tab, font)  # its header only: the content goes below
+        if k is None:
+            continue
+        tv = ElementValues(reader.r, tab, reader.style_setters(tab, "TabItem"))
+        k.estimate = None
+        _tab_item(reader, k, tab, tv, font, i == chosen, h, vv)
+        headers.append(k)
+    strip = part(reader, L.STACK, font, headers, type=TABS_PART, orientation="Horizontal",
+                 margin=(2.0, 2.0, 2.0, 0.0))  # fmt: skip
+    content = []
+    if 0 <= chosen < len(tabs):
+        tab_font = reader.elements.get(id(headers[chosen]), (None, font))[1] if headers else font
+        content = _content(reader, tabs[chosen], tab_font)
+    pad = v.get("Padding", parse_thickness, (2.0,) * 4)
+    panel = part(reader, L.BORDER, font, [_presenter(reader, font, content, pad)], row=1,
+                 background=_brush(reader.r, v, "Background", _WHITE),
+                 border_brush=_brush(reader.r, v, "BorderBrush", _TAB_BORDER),
+                 border=v.get("BorderThickness", parse_thickness, (1.0,) * 4))  # fmt: skip
+    n.children = [strip, panel]
+
+
+def _group_box(reader, n, el, v, font) -> None:
+    n.kind = L.GRID
+    n.columns = (L.Definition("pixel", 6.0), L.Definition("auto"), L.Definition("star"),
+                 L.Definition("pixel", 6.0))  # fmt: skip
+    n.rows = (L.Definition("auto"), L.Definition("auto"), L.Definition("star"),
+              L.Definition("pixel", 6.0))  # fmt: skip
+    header = part(reader, L.BORDER, font, _header(reader, el, font), padding=(3.0, 1.0, 3.0, 0.0),
+                  row=0, row_span=2, col=1)  # fmt: skip
+    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
+    body = _presenter(reader, font, _content(reader, el, font), pad, row=2, col=1, col_span=2)
+    n.children = [header, body]
+
+
+def group_box_chrome(r, el, n) -> list:
+    """The GroupBox's Background and its #FFD5DFE5 border with the gap under the header, from
+    the laid-out header (BorderGapMaskConverter: the line is hidden from 7 px for the header's
+    width, over the top half of the border's box)."""
+    v = ElementValues(r, el)
+    w, h = n.ink
+    header = n.children[0]
+    top = header.ink[1] / 2 if header.arranged else 0.0
+    box_h = max(0.0, h - top)
+    out = []
+    background = _brush(r, v, "Background", None)
+    if background is not None:
+        rect = RectangleGeometry((0.0, top, w, box_h), 4.0, 4.0)
+        out.append(GeometryDrawing(rect, brush=background))
+    brush = _brush(r, v, "BorderBrush", _GROUP_BORDER)
+    t = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    if brush is None or not any(t):
+        return out
+    # the coloured border sits inside the template's outer 1 px white border
+    x0, y0, bw, bh = t[0], top + t[1], max(0.0, w - t[0] - t[2]), max(0.0, box_h - t[1] - t[3])
+    inner = (x0 + t[0], y0 + t[1], max(0.0, bw - t[0] - t[2]), max(0.0, bh - t[1] - t[3]))
+    band = CombinedGeometry("Exclude", RectangleGeometry((x0, y0, bw, bh), 3.0, 3.0),
+                            RectangleGeometry(inner, 2.0, 2.0))  # fmt: skip
+    gap_w = header.ink[0] if header.arranged else 0.0
+    if gap_w > 0:
+        gap = RectangleGeometry((7.0, top, gap_w, box_h / 2))
+        band = CombinedGeometry("Exclude", band, gap)
+    out.append(GeometryDrawing(band, brush=brush))
+    return out
+
+
+def _expander(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, None, None)
+    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    expanded = v.get("IsExpanded", V.parse_bool, False)
+    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
+    h, vv = _align(v, "Stretch", "Stretch")
+    circle = part(reader, L.CONTROL, font, estimate=(_CIRCLE, _CIRCLE), h_align="Center",
+                  v_align="Center")  # fmt: skip
+    circle.drawing = _toggle_circle(expanded)
+    title = _presenter(reader, font, _header(reader, el, font), (4.0, 0.0, 0.0, 0.0), "Left",
+                       "Center", col=1)  # fmt: skip
+    grid = part(reader, L.GRID, font, [circle, title],
+                columns=(L.Definition("pixel", _CIRCLE), L.Definition("star")))  # fmt: skip
+    toggle = part(reader, L.BORDER, font, [grid], padding=pad, margin=(1.0,) * 4, dock="Top")
+    kids = [toggle]
+    if expanded:
+        kids.append(_presenter(reader, font, _content(reader, el, font), pad, h, vv,
+                               dock="Bottom"))  # fmt: skip
+    n.children = [part(reader, L.DOCK, font, kids)]
+
+
+def _toggle_circle(expanded: bool) -> DrawingGroup:
+    """Aero2's Expander toggle: a 19 px white circle with a #FF333333 edge and the 2 px arrow
+    (an 8 x 5 chevron, pointing down when collapsed) centred in it."""
+    ring = GeometryDrawing(EllipseGeometry((9.5, 9.5), 9.0, 9.0), brush=_WHITE,
+                           pen=Pen(brush=_EXPANDER_INK, thickness=1.0))  # fmt: skip
+    arrow = path_from_string(_ARROW_UP if expanded else _ARROW_DOWN)
+    # the Path's box is its geometry's extent (1..8 x 1..5 or 1..4.5) plus the pen: centre it
+    top = 1.0 if expanded else 1.5
+    bottom = 4.5 if expanded else 5.0
+    dx = 9.5 - 4.5
+    dy = 9.5 - (top + bottom) / 2
+    m = np.array([[1.0, 0.0, dx], [0.0, 1.0, dy], [0.0, 0.0, 1.0]])
+    chevron = GeometryDrawing(arrow, pen=Pen(brush=_EXPANDER_INK, thickness=2.0))
+    return DrawingGroup(children=(ring, DrawingGroup(children=(chevron,), transform=m)))
+
+
+def raise_selected_tabs(root: L.Node) -> None:
+    """After layout, the selected TabItem as Aero2 shows it: its Margin -2,-2,-2,0 makes it
+    2 px larger each side and above the cell the TabPanel gives it (the TabPanel places the tabs
+    by their size without margins, so its neighbours keep their places), and Panel.ZIndex 1
+    draws it over them. Its centred header moves with its box's centre (1 px up)."""
+    for n in root.walk():
+        if n.type != TABS_PART:
+            continue
+        for k in n.children:
+            if k.z_index > 0 and k.arranged:
+                x, y, w, h = k.rect
+                k.rect = (x - 2.0, y - 2.0, w + 4.0, h + 2.0)
+                k.ink = (k.ink[0] + 4.0, k.ink[1] + 2.0)
+                for d in list(k.walk())[1:]:
+                    dx, dy, dw, dh = d.rect
+                    d.rect = (dx, dy - 1.0, dw, dh)
+        n.children.sort(key=lambda k: k.z_index)  # stable: document order otherwise
