@@ -754,8 +754,6 @@ def test_a_layer_inside_a_viewbox_is_in_the_elements_own_units(tmp_path):
     assert np.array_equal(window, rgba)
 
 
-
-
 def test_textblock_wraps_to_the_width_its_parent_gives(tmp_path):
     from xaml3d.layout.text import line_height, text_width
 
