@@ -223,3 +223,19 @@ def test_apng_from_frames_encoded_where_drawn_is_the_same_file(tmp_path):
         im.seek(1)
         assert im.info["duration"] == 200.0
         assert np.array_equal(np.array(im.convert("RGBA")), frames[1])
+
+
+def test_a_frame_file_encoded_where_drawn_is_the_file_save_image_writes(tmp_path):
+    from xaml3d.cli_outputs import FrameSequence
+    from xaml3d.output.images import png_bytes, save_image
+
+    rng = np.random.default_rng(11)
+    frame = rng.integers(0, 256, (9, 13, 4), dtype=np.uint8)
+    save_image(frame, tmp_path / "direct.png", format="PNG")
+    seq = FrameSequence(tmp_path / "d", ["frame_0000.png", "frame_0001.png"])
+    seq.add(png_bytes(frame))
+    seq.add(frame)
+    seq.commit()
+    want = (tmp_path / "direct.png").read_bytes()
+    assert (tmp_path / "d" / "frame_0000.png").read_bytes() == want
+    assert (tmp_path / "d" / "frame_0001.png").read_bytes() == want
