@@ -204,3 +204,38 @@ def test_webp_is_streamed_and_is_the_file_pillow_writes_from_a_list(tmp_path):
     assert (tmp_path / "s.webp").read_bytes() == buf.getvalue()
     with Image.open(tmp_path / "s.webp") as im:
         assert im.n_frames == 6  # the encoder merges the repeated frame into the one before
+
+
+def test_apng_from_frames_encoded_where_drawn_is_the_same_file(tmp_path):
+    from xaml3d.output.animation import png_frame, write_apng
+
+    rng = np.random.default_rng(9)
+    frames = [rng.integers(0, 256, (12, 17, 4), dtype=np.uint8) for _ in range(5)]
+    frames[2] = frames[1].copy()  # merged into the frame before, its time added
+    write_apng(iter(frames), tmp_path / "a.png", 0.5, 5, loop=3)
+    write_apng((png_frame(f) for f in frames), tmp_path / "b.png", 0.5, 5, loop=3)
+    mixed = [png_frame(f) if i % 2 else f for i, f in enumerate(frames)]
+    write_apng(iter(mixed), tmp_path / "c.png", 0.5, 5, loop=3)
+    data = (tmp_path / "a.png").read_bytes()
+    assert (tmp_path / "b.png").read_bytes() == data == (tmp_path / "c.png").read_bytes()
+    with Image.open(tmp_path / "a.png") as im:
+        assert im.n_frames == 4
+        im.seek(1)
+        assert im.info["duration"] == 200.0
+        assert np.array_equal(np.array(im.convert("RGBA")), frames[1])
+
+
+def test_a_frame_file_encoded_where_drawn_is_the_file_save_image_writes(tmp_path):
+    from xaml3d.cli_outputs import FrameSequence
+    from xaml3d.output.images import png_bytes, save_image
+
+    rng = np.random.default_rng(11)
+    frame = rng.integers(0, 256, (9, 13, 4), dtype=np.uint8)
+    save_image(frame, tmp_path / "direct.png", format="PNG")
+    seq = FrameSequence(tmp_path / "d", ["frame_0000.png", "frame_0001.png"])
+    seq.add(png_bytes(frame))
+    seq.add(frame)
+    seq.commit()
+    want = (tmp_path / "direct.png").read_bytes()
+    assert (tmp_path / "d" / "frame_0000.png").read_bytes() == want
+    assert (tmp_path / "d" / "frame_0001.png").read_bytes() == want

@@ -4,10 +4,10 @@ Thin layer over ``xaml3d.render.frames`` and ``xaml3d.output.animation``: picks 
 (``--fps``, ``--start``, ``--end``/``--duration``, by default one full cycle of what runs at
 load), renders each frame as ``render`` would (in worker processes, in order), streams the
 frames to the output as they come (a frame directory, an APNG and a WebP frame by frame; a GIF's
-frames quantized in the workers, only palette images held),
-reports progress (a bar on a terminal, a line every few seconds elsewhere), and writes the file
-atomically. Bad input is one
-``file:line:col: error CODE message`` line and exit status 1.
+frames quantized and the PNGs of an APNG or a directory encoded in the workers, only palette
+images held for a GIF), reports progress (a bar on a terminal, a line every few seconds
+elsewhere), and writes the file atomically. Bad input is one ``file:line:col: error CODE
+message`` line and exit status 1.
 """
 
 from __future__ import annotations
@@ -63,10 +63,12 @@ from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.animation import (
     frame_names,
     gif_frame,
+    png_frame,
     write_apng,
     write_gif,
     write_webp,
 )
+from xaml3d.output.images import png_bytes
 from xaml3d.render import frames as frames_module
 from xaml3d.render.settings import RenderSettings
 from xaml3d.render.workers import default_jobs
@@ -211,11 +213,11 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
             source = lambda plan: drawn(functools.partial(_gif_ready, plan=plan))  # noqa: E731
             flattened = write_gif(source, output, end - start, len(times), loop=loop, matte=matte)
-        elif sequence is not None:  # to disk frame by frame
-            for rgba in drawn(_lean):
-                sequence.add(rgba)
-        elif apng:  # streamed too, one frame held
-            write_apng(drawn(_lean), output, end - start, len(times), loop=loop)
+        elif sequence is not None:  # to disk frame by frame, encoded by the workers
+            for png in drawn(_png_ready):
+                sequence.add(png)
+        elif apng:  # streamed too, one frame held, each encoded by the worker that drew it
+            write_apng(drawn(_apng_ready), output, end - start, len(times), loop=loop)
         else:  # WebP: streamed too, one RGBA frame held
             write_webp(drawn(_lean), output, end - start, len(times), loop=loop)
         empty = [d for d in diags if d.code == "RND002"]
@@ -318,6 +320,22 @@ def _gif_ready(r, plan):
     (quantized where it was drawn: in parallel, and a quarter of the bytes to send back)."""
     r = _lean(r)
     r.rgba = gif_frame(r.rgba, plan)
+    return r
+
+
+def _png_ready(r):
+    """A frame's Rendering with its picture encoded as the PNG file of a frame directory
+    (``png_bytes``, the bytes ``save_image`` writes) where it was drawn."""
+    r = _lean(r)
+    r.rgba = png_bytes(r.rgba)
+    return r
+
+
+def _apng_ready(r):
+    """A frame's Rendering with its picture encoded for the APNG writer (``png_frame``) where
+    it was drawn: in parallel, and compressed bytes to send back."""
+    r = _lean(r)
+    r.rgba = png_frame(r.rgba)
     return r
 
 

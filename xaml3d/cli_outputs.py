@@ -25,7 +25,7 @@ import click
 from xaml3d.cli_common import same_file
 from xaml3d.codes.outputs import OUTPUT_CODES  # noqa: F401 (the stage's table)
 from xaml3d.output.animation import ANIMATED_FORMATS, FRAME_FILE
-from xaml3d.output.atomic import Staged, together
+from xaml3d.output.atomic import Staged, together, write_atomically
 from xaml3d.output.images import save_image
 
 
@@ -126,10 +126,15 @@ class FrameSequence:
         self.written: list[tuple[Path, Path]] = []  # (temporary, final)
         directory.mkdir(parents=True, exist_ok=True)
 
-    def add(self, rgba) -> None:
+    def add(self, frame) -> None:
+        """The next frame: an RGBA array, or its PNG file's bytes (``images.png_bytes``,
+        encoded where it was drawn)."""
         final = self.directory / self.names[len(self.written)]
         with together(commit=False) as staged:  # a temporary name, renamed by ``commit``
-            save_image(rgba, final, format="PNG")
+            if isinstance(frame, bytes):
+                write_atomically(final, lambda fh: fh.write(frame))
+            else:
+                save_image(frame, final, format="PNG")
         self.written.extend(staged.pending)
 
     def commit(self) -> None:

@@ -2,12 +2,14 @@
 
 Pipeline step: (Scene, t) -> Scene, before any render or export. The storyboards are
 evaluated from the scene's typed tracks (``xaml3d.animation.timeline``); a frame of an
-animation is an ordinary render of the Scene this returns.
+animation is an ordinary render of the Scene this returns. ``scene_and_values_at`` also gives
+the exact animated values that made it, so that a frame already drawn for the same values need
+not be drawn again (``xaml3d.render.frames.FrameSession``).
 """
 
 from __future__ import annotations
 
-from xaml3d.animation.timeline import scene_and_values_at as scene_and_values_at_
+from xaml3d.animation import timeline
 from xaml3d.animation.timeline import scene_at as frame_at
 from xaml3d.errors import SceneError
 from xaml3d.scene.types import Scene
@@ -36,4 +38,4 @@ def scene_and_values_at(
         return scene, ()
     if scene.tracks is None:
         return scene_at(scene, time, storyboard), ()
-    return scene_and_values_at_(scene, float(time), storyboard)
+    return timeline.scene_and_values_at(scene, float(time), storyboard)

@@ -17,6 +17,7 @@ decision wrong. ``write_apng`` streams APNG likewise (one frame held), and ``wri
 from __future__ import annotations
 
 import functools
+import hashlib
 import io
 import re
 import struct
@@ -238,27 +239,54 @@ def _png_data(rgba: np.ndarray) -> tuple[bytes, bytes]:
     return ihdr, b"".join(idat)
 
 
+@dataclass
+class PngFrame:
+    """One frame made ready for the APNG writer where it was drawn (``png_frame``): its size,
+    IHDR data and compressed image data as Pillow encodes it, and a digest of its pixels (to
+    merge it into the frame before when they are the same: SHA-1, no collision in practice).
+    A fraction of the RGBA's bytes to send between processes, and encoded in parallel."""
+
+    width: int
+    height: int
+    ihdr: bytes
+    data: bytes
+    digest: bytes
+
+
+def png_frame(rgba: np.ndarray) -> PngFrame:
+    """``rgba`` (H, W, 4 uint8) encoded for ``write_apng``."""
+    rgba = np.ascontiguousarray(rgba)
+    ihdr, data = _png_data(rgba)
+    h, w = rgba.shape[:2]
+    return PngFrame(w, h, ihdr, data, _digest(rgba))
+
+
+def _digest(rgba: np.ndarray) -> bytes:
+    shape = struct.pack(">III", *rgba.shape)
+    return hashlib.sha1(shape + rgba.tobytes(), usedforsecurity=False).digest()
+
+
 def write_apng(frames, path, total: float, count: int, *, loop: int = 0) -> None:
-    """Write ``count`` RGBA frames (any iterable, taken one by one) lasting ``total`` seconds
-    as an APNG at ``path``, atomically, frame by frame: one frame is held (to merge a frame
-    identical to the one before into it, its display time added, as Pillow's writer does).
-    Every frame is a whole picture (no cropping to what changed): the decoded frames are
-    those Pillow's writer gives."""
+    """Write ``count`` RGBA frames (any iterable, taken one by one; arrays, or ``PngFrame``s
+    made by ``png_frame`` where they were drawn) lasting ``total`` seconds as an APNG at
+    ``path``, atomically, frame by frame: one frame is held (to merge a frame identical to the
+    one before into it, its display time added, as Pillow's writer does). Every frame is a
+    whole picture (no cropping to what changed): the decoded frames are those Pillow's writer
+    gives, and the file is the same whichever form the frames come in."""
     durations = frame_durations(count, total, 0.001)
 
     def write(fh) -> None:
         it = iter(frames)
-        first = np.ascontiguousarray(next(it))
-        ihdr, data = _png_data(first)
-        fh.write(PNG_SIGNATURE + _chunk(b"IHDR", ihdr))
+        first = _as_png_frame(next(it))
+        fh.write(PNG_SIGNATURE + _chunk(b"IHDR", first.ihdr))
         actl = fh.tell()
         fh.write(_chunk(b"acTL", struct.pack(">II", 0, loop)))  # the count is set at the end
         seq, written = 0, 0
-        held, held_data, held_ms = first, data, durations[0]
+        held, held_ms = first, durations[0]
 
         def put(data: bytes, ms: int) -> None:
             nonlocal seq, written
-            h, w = first.shape[:2]
+            w, h = first.width, first.height
             fh.write(_chunk(b"fcTL", struct.pack(">IIIIIHHBB", seq, w, h, 0, 0, ms, 1000, 0, 0)))
             seq += 1
             if written == 0:
@@ -269,18 +297,28 @@ def write_apng(frames, path, total: float, count: int, *, loop: int = 0) -> None
             written += 1
 
         for ms, f in zip(durations[1:], it, strict=True):
-            if np.array_equal(f, held):
+            if _same_frame(f, held):
                 held_ms += ms
                 continue
-            put(held_data, held_ms)
-            held = np.ascontiguousarray(f)
-            held_data, held_ms = _png_data(held)[1], ms
-        put(held_data, held_ms)
+            put(held.data, held_ms)
+            held, held_ms = _as_png_frame(f), ms
+        put(held.data, held_ms)
         fh.write(_chunk(b"IEND", b""))
         fh.seek(actl)
         fh.write(_chunk(b"acTL", struct.pack(">II", written, loop)))
 
     write_atomically(path, write)
+
+
+def _as_png_frame(f) -> PngFrame:
+    return f if isinstance(f, PngFrame) else png_frame(f)
+
+
+def _same_frame(f, held: PngFrame) -> bool:
+    """Whether the frame ``f`` (an array or a PngFrame) has the pixels of ``held``."""
+    if isinstance(f, PngFrame):
+        return f.digest == held.digest
+    return _digest(np.ascontiguousarray(f)) == held.digest
 
 
 def save_animation(

@@ -76,6 +76,14 @@ def save_image(
     write_atomically(path, write)
 
 
+def png_bytes(image, *, compress_level: int = 1) -> bytes:
+    """The bytes ``save_image(image, path, format="PNG", compress_level=...)`` writes: a frame
+    encoded where it was drawn (a worker process), written later as it is."""
+    buf = io.BytesIO()
+    _prepared(image, "PNG", None).save(buf, format="PNG", compress_level=int(compress_level))
+    return buf.getvalue()
+
+
 def encode(image, format: str) -> bytes:
     """The bytes of ``image`` in ``format`` ("png", "jpeg", "webp"), JPEG and WebP flattened
     onto white as ``save_image`` does (the picture already holds its background)."""
