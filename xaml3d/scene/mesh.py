@@ -289,14 +289,14 @@ def build_mesh(
         diags.append(_diag("MSH006", msg, line, locate, at))
 
     flat = (degenerate or degenerate_faces)(p, tri)
-    degenerate = int(np.count_nonzero(flat))
-    if degenerate:
+    count = int(np.count_nonzero(flat))
+    if count:
         k = int(tri_ids[np.argmax(flat)])  # the first degenerate triangle, as given
         at = ("Positions", 9 * k) if implicit else ("TriangleIndices", 3 * k)
         diags.append(
             _diag(
                 "MSH005",
-                f"{degenerate} of {tri.shape[0]} triangles are degenerate (zero area), "
+                f"{count} of {tri.shape[0]} triangles are degenerate (zero area), "
                 f"the first is triangle #{k}",
                 line,
                 locate,
@@ -310,12 +310,13 @@ def build_mesh(
         diags.append(
             _count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line, locate, 3)
         )
+    p, tri = _frozen(p), _frozen(tri, np.int64)  # (kept by the Mesh: copied at most once)
     if m >= n:
         nrm = _sealed(_normalize_rows(user_n[:n]))
     else:
         # generated when first read (shaded drawing, exports): info, validate and flat
         # shading never need them
-        nrm = Deferred(_generated_normals, _frozen(p), _frozen(tri, np.int64), _frozen(user_n))
+        nrm = Deferred(_generated_normals, p, tri, _frozen(user_n))
 
     uv = _rows(texcoords, 2)
     k = uv.shape[0]
@@ -330,8 +331,8 @@ def build_mesh(
         tex = _sealed(tex)
 
     mesh = Mesh(
-        positions=_frozen(p),
-        indices=_frozen(tri, np.int64),
+        positions=p,
+        indices=tri,
         normals=nrm,
         texcoords=tex,
         line=line,
