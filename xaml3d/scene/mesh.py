@@ -132,6 +132,11 @@ def _generated_normals(p: np.ndarray, tri: np.ndarray, given: np.ndarray) -> np.
     return _sealed(nrm)
 
 
+def _given_normals(given: np.ndarray) -> np.ndarray:
+    """The user's normals, one per position, normalized. Read-only."""
+    return _sealed(_normalize_rows(given))
+
+
 def vertex_normals(positions, indices) -> np.ndarray:
     """Generated vertex normals (N, 3): normalize(sum of unit face normals using the vertex).
 
@@ -311,11 +316,11 @@ def build_mesh(
             _count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line, locate, 3)
         )
     p, tri = _frozen(p), _frozen(tri, np.int64)  # (kept by the Mesh: copied at most once)
+    # made when first read (shaded drawing, exports): info, validate and flat shading never
+    # need them
     if m >= n:
-        nrm = _sealed(_normalize_rows(user_n[:n]))
+        nrm = Deferred(_given_normals, _frozen(user_n[:n]))
     else:
-        # generated when first read (shaded drawing, exports): info, validate and flat
-        # shading never need them
         nrm = Deferred(_generated_normals, p, tri, _frozen(user_n))
 
     uv = _rows(texcoords, 2)
