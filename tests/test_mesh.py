@@ -239,8 +239,8 @@ def test_generated_normals_are_made_when_first_read():
     assert first[0] == pytest.approx([R2, R2, 0]) and not first.flags.writeable
     assert mesh.normals is first  # made once
     given, _ = build_mesh(HINGE, HINGE_INDICES, normals=[(0, 0, 2)] * 4)
-    assert isinstance(vars(given)["_normals"], np.ndarray)  # the user's: nothing to make later
-    assert given.normals.tolist() == [[0, 0, 1]] * 4
+    assert not isinstance(vars(given)["_normals"], np.ndarray)  # the user's: normalized later
+    assert given.normals.tolist() == [[0, 0, 1]] * 4 and not given.normals.flags.writeable
 
 
 def test_read_only_parsed_arrays_are_kept_not_copied():

@@ -83,7 +83,16 @@ def load_scene(
     (``--no-app``) reads no App.xaml found beside the scene or above it. ``collect`` False:
     the commands that allocate nothing big afterwards (``info``, ``validate``) skip the
     collection below (about 0.06 s once numba's objects are loaded)."""
-    scene = _load(source, resources, window_size, discover_app)
+    # No automatic collection while reading: loading numba's compiler for a big file creates
+    # some 100k objects, which set off full collections over everything (0.1-0.2 s measured)
+    # while nothing the reader makes is garbage yet; its cycles are collected just below.
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        scene = _load(source, resources, window_size, discover_app)
+    finally:
+        if enabled:
+            gc.enable()
     if collect:
         # The reader's tree, decoded text and number lists sit in reference cycles: collect
         # them now, before a render allocates its buffers, or they stay until the next

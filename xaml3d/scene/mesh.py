@@ -132,6 +132,11 @@ def _generated_normals(p: np.ndarray, tri: np.ndarray, given: np.ndarray) -> np.
     return _sealed(nrm)
 
 
+def _given_normals(given: np.ndarray) -> np.ndarray:
+    """The user's normals, one per position, normalized. Read-only."""
+    return _sealed(_normalize_rows(given))
+
+
 def vertex_normals(positions, indices) -> np.ndarray:
     """Generated vertex normals (N, 3): normalize(sum of unit face normals using the vertex).
 
@@ -289,14 +294,14 @@ def build_mesh(
         diags.append(_diag("MSH006", msg, line, locate, at))
 
     flat = (degenerate or degenerate_faces)(p, tri)
-    degenerate = int(np.count_nonzero(flat))
-    if degenerate:
+    count = int(np.count_nonzero(flat))
+    if count:
         k = int(tri_ids[np.argmax(flat)])  # the first degenerate triangle, as given
         at = ("Positions", 9 * k) if implicit else ("TriangleIndices", 3 * k)
         diags.append(
             _diag(
                 "MSH005",
-                f"{degenerate} of {tri.shape[0]} triangles are degenerate (zero area), "
+                f"{count} of {tri.shape[0]} triangles are degenerate (zero area), "
                 f"the first is triangle #{k}",
                 line,
                 locate,
@@ -310,12 +315,13 @@ def build_mesh(
         diags.append(
             _count_mismatch("MSH003", "Normals", m, n, "the rest are generated", line, locate, 3)
         )
+    p, tri = _frozen(p), _frozen(tri, np.int64)  # (kept by the Mesh: copied at most once)
+    # made when first read (shaded drawing, exports): info, validate and flat shading never
+    # need them
     if m >= n:
-        nrm = _sealed(_normalize_rows(user_n[:n]))
+        nrm = Deferred(_given_normals, _frozen(user_n[:n]))
     else:
-        # generated when first read (shaded drawing, exports): info, validate and flat
-        # shading never need them
-        nrm = Deferred(_generated_normals, _frozen(p), _frozen(tri, np.int64), _frozen(user_n))
+        nrm = Deferred(_generated_normals, p, tri, _frozen(user_n))
 
     uv = _rows(texcoords, 2)
     k = uv.shape[0]
@@ -330,8 +336,8 @@ def build_mesh(
         tex = _sealed(tex)
 
     mesh = Mesh(
-        positions=_frozen(p),
-        indices=_frozen(tri, np.int64),
+        positions=p,
+        indices=tri,
         normals=nrm,
         texcoords=tex,
         line=line,
