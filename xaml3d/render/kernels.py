@@ -657,3 +657,36 @@ def draw_pass(
                 if color[p, c] > one:
                     color[p, c] = one
     return drawn, tag + 1
+
+
+def _load_cached_lightly(dispatcher) -> None:
+    """Load ``dispatcher``'s cached machine code without refreshing numba's whole typing and
+    lowering registries first.
+
+    numba's cache refreshes the target context before every load (``FunctionCache.
+    load_overload``): it imports and installs every registry numba has (typed lists and dicts,
+    random, polynomials, jitclass...), about 60 ms of CPU on the first load of a process, which
+    cached machine code does not need: it needs the runtime (``rtsys``, for the arrays passed
+    in) and the codegen only. Compiling still refreshes (``compiler.compile_extra`` does it
+    itself), so a cache miss costs what it did. The code loaded is the same, so are pictures.
+    Left as numba made it when its cache's private methods are not there (another version)."""
+    cache = getattr(dispatcher, "_cache", None)
+    guard = getattr(cache, "_guard_against_spurious_io_errors", None)
+    load = getattr(cache, "_load_overload", None)
+    if guard is None or load is None:
+        return
+    from numba.core.runtime import rtsys
+
+    def load_overload(sig, target_context):
+        rtsys.initialize(target_context)
+        with guard():
+            return load(sig, target_context)
+        return None  # the guard swallowed a spurious I/O error: compile instead
+
+    cache.load_overload = load_overload
+
+
+for _kernel in list(globals().values()):
+    if isinstance(_kernel, numba.core.registry.CPUDispatcher):
+        _load_cached_lightly(_kernel)
+del _kernel
