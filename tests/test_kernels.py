@@ -343,3 +343,34 @@ def test_an_animation_pays_for_the_kernels_where_one_frame_would_not(monkeypatch
         assert accel.for_work(small, 10) is not None and accel.active() is not None
     finally:
         accel.expect_frames(1)
+
+
+def test_cached_kernels_load_without_numba_registries():
+    """A process that finds the kernels in numba's cache loads their machine code without
+    installing numba's typing registries (typed lists among them), and draws the same picture
+    as the numpy path."""
+    code = (
+        "import sys, hashlib; from xaml3d.render.api import render_arrays; "
+        "from xaml3d.render import accel; "
+        "r = render_arrays('samples/cube.xaml', width=160, height=120); "
+        "k = accel.active(); "
+        "hits = 0 if k is None else sum(sum(f.stats.cache_hits.values()) "
+        "for f in (k.draw_pass, k.resolve, k.raster_chunk, k.blend_rows)); "
+        "print(hashlib.sha256(r.rgba.tobytes()).hexdigest(), hits, "
+        "'numba.typed.typedlist' in sys.modules)"
+    )
+    root = Path(__file__).resolve().parent.parent
+
+    def run(kernels):
+        env = dict(os.environ, **{accel.ENV: kernels})
+        out = subprocess.run(
+            [sys.executable, "-c", code], cwd=root, env=env, capture_output=True, text=True
+        )
+        assert out.returncode == 0, out.stderr
+        return out.stdout.split()
+
+    run("numba")  # fills numba's cache when it is cold
+    digest, hits, registries = run("numba")
+    assert int(hits) > 0
+    assert registries == "False"
+    assert run("numpy")[0] == digest

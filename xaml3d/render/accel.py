@@ -32,6 +32,9 @@ __all__ = [
 # 0.66 -> 0.41 s, about even; corpus hexsphere 1024x768, 4 textured passes (28M), whole process
 # 1.09 -> 0.91 s; two lit, textured, translucent spheres (56M) 1.36 -> 0.85 s and a 200k sphere
 # with ssaa 4 (110M) 1.65 -> 0.89 s. Very many triangles pay too (numpy's per-row setup).
+# Checked again with one compiled loop per pass, CPU time in one process: corpus hexsphere
+# (plan's estimate 21M) numpy 1.25 s against the kernels' 0.17 s plus their start-up (import
+# 0.18 s, first calls loading the cached code 0.1-0.2 s): the bar still sits on the safe side.
 FRAGMENTS_WORTH = 12_000_000
 TRIANGLES_WORTH = 2_000_000
 # Once numba is imported and running (the reader's number scanner loads it for big files), the

@@ -16,7 +16,9 @@ For every GeometryModel3D (``Model``), vectorized over all its vertices and tria
    pass can interpolate any vertex attribute from the same fragments.
 4. Per pass: vertex colours (``shade_vertices``; ``flat`` mode: the face normal at the centroid,
    one colour per face) times the brush sample (uniform brushes: one constant), then blended.
-   Fragments beyond the far plane (d > 1) are dropped.
+   Fragments beyond the far plane (d > 1) are dropped. With the compiled kernels loaded, a side
+   with no triangle to clip skips the fragment arrays: each pass is one compiled loop that
+   rasterizes, shades and blends (``xaml3d.render.pass_loop``), the same picture.
 
 ``mode="flat"`` samples non-uniform brushes per pixel exactly as ``shaded`` does; only the
 lighting is per face.
@@ -203,6 +205,7 @@ def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) 
     sampled outside the kernels (gradients, drawn tiles) take the fragment path in their turn.
     False when the side does not allow it, and nothing was drawn."""
     kernels = accel.active()
+    # flat solid colours need no weights: blended straight from the per-triangle table
     if kernels is None or (shaders[0].flat and all(sh.uniform for sh in shaders)):
         return False
     passes = [sh.loop_args(kernels) for sh in shaders]

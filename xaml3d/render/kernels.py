@@ -394,12 +394,14 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
     one = np.float32(1.0)
     c255 = np.float32(255.0)
     half = np.float32(0.5)
-    c = np.empty(4, np.float32)
     for y in range(h):
         for x in range(w):
             base = y * s * width + x * s
-            for k in range(4):
-                c[k] = color[base, k]
+            # scalars, not a small array: they stay in registers (the same float32 sums)
+            c0 = color[base, 0]
+            c1 = color[base, 1]
+            c2 = color[base, 2]
+            c3 = color[base, 3]
             z = zbuf[base]
             for a in range(s):
                 for b in range(s):
@@ -408,26 +410,31 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
                     q = base + a * width + b
                     if nearest:
                         if zbuf[q] < z:
-                            for k in range(4):
-                                c[k] = color[q, k]
+                            c0 = color[q, 0]
+                            c1 = color[q, 1]
+                            c2 = color[q, 2]
+                            c3 = color[q, 3]
                             z = zbuf[q]
                     else:
-                        for k in range(4):
-                            c[k] += color[q, k]
+                        c0 += color[q, 0]
+                        c1 += color[q, 1]
+                        c2 += color[q, 2]
+                        c3 += color[q, 3]
                         if zbuf[q] < z:
                             z = zbuf[q]
             if s > 1 and not nearest:
-                for k in range(4):
-                    c[k] *= inv
+                c0 *= inv
+                c1 *= inv
+                c2 *= inv
+                c3 *= inv
             depth[y, x] = z + 2.0 if z < 0.0 else np.inf
-            al = _max32(_max32(c[0], c[1]), _max32(c[2], c[3]))
+            al = _max32(_max32(c0, c1), _max32(c2, c3))
             al = _min32(_max32(al, zero), one)
             scale = c255 / al if al > zero else zero
-            for k in range(3):
-                v = _min32(_max32(c[k] * scale, zero), c255) + half
-                rgba[y, x, k] = np.uint8(v)
-            v = _min32(_max32(al * c255, zero), c255) + half
-            rgba[y, x, 3] = np.uint8(v)
+            rgba[y, x, 0] = np.uint8(_min32(_max32(c0 * scale, zero), c255) + half)
+            rgba[y, x, 1] = np.uint8(_min32(_max32(c1 * scale, zero), c255) + half)
+            rgba[y, x, 2] = np.uint8(_min32(_max32(c2 * scale, zero), c255) + half)
+            rgba[y, x, 3] = np.uint8(_min32(_max32(al * c255, zero), c255) + half)
 
 
 DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
@@ -657,3 +664,36 @@ def draw_pass(
                 if color[p, c] > one:
                     color[p, c] = one
     return drawn, tag + 1
+
+
+def _load_cached_lightly(dispatcher) -> None:
+    """Load ``dispatcher``'s cached machine code without refreshing numba's whole typing and
+    lowering registries first.
+
+    numba's cache refreshes the target context before every load (``FunctionCache.
+    load_overload``): it imports and installs every registry numba has (typed lists and dicts,
+    random, polynomials, jitclass...), about 60 ms of CPU on the first load of a process, which
+    cached machine code does not need: it needs the runtime (``rtsys``, for the arrays passed
+    in) and the codegen only. Compiling still refreshes (``compiler.compile_extra`` does it
+    itself), so a cache miss costs what it did. The code loaded is the same, so are pictures.
+    Left as numba made it when its cache's private methods are not there (another version)."""
+    cache = getattr(dispatcher, "_cache", None)
+    guard = getattr(cache, "_guard_against_spurious_io_errors", None)
+    load = getattr(cache, "_load_overload", None)
+    if guard is None or load is None:
+        return
+    from numba.core.runtime import rtsys
+
+    def load_overload(sig, target_context):
+        rtsys.initialize(target_context)
+        with guard():
+            return load(sig, target_context)
+        return None  # the guard swallowed a spurious I/O error: compile instead
+
+    cache.load_overload = load_overload
+
+
+for _kernel in list(globals().values()):
+    if isinstance(_kernel, numba.core.registry.CPUDispatcher):
+        _load_cached_lightly(_kernel)
+del _kernel
