@@ -372,5 +372,11 @@ def test_cached_kernels_load_without_numba_registries():
     run("numba")  # fills numba's cache when it is cold
     digest, hits, registries = run("numba")
     assert int(hits) > 0
-    assert registries == "False"
+    import numba
+
+    from xaml3d.render import kernels
+
+    # on a numba this was not checked against, the ordinary loading (registries) is kept
+    checked = tuple(int(x) for x in numba.__version__.split(".")[:2]) in kernels.LIGHT_LOAD_CHECKED
+    assert registries == str(not checked)
     assert run("numpy")[0] == digest

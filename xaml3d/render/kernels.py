@@ -666,6 +666,10 @@ def draw_pass(
     return drawn, tag + 1
 
 
+# numba versions whose cache internals _load_cached_lightly was checked against
+LIGHT_LOAD_CHECKED = {(0, 68)}
+
+
 def _load_cached_lightly(dispatcher) -> None:
     """Load ``dispatcher``'s cached machine code without refreshing numba's whole typing and
     lowering registries first.
@@ -676,7 +680,11 @@ def _load_cached_lightly(dispatcher) -> None:
     cached machine code does not need: it needs the runtime (``rtsys``, for the arrays passed
     in) and the codegen only. Compiling still refreshes (``compiler.compile_extra`` does it
     itself), so a cache miss costs what it did. The code loaded is the same, so are pictures.
-    Left as numba made it when its cache's private methods are not there (another version)."""
+    Left as numba made it when its cache's private methods are not there, and on numba
+    versions this was not checked against (``LIGHT_LOAD_CHECKED``): it leans on private
+    methods, so a new numba takes its ordinary (slower, always right) path."""
+    if tuple(int(x) for x in numba.__version__.split(".")[:2]) not in LIGHT_LOAD_CHECKED:
+        return
     cache = getattr(dispatcher, "_cache", None)
     guard = getattr(cache, "_guard_against_spurious_io_errors", None)
     load = getattr(cache, "_load_overload", None)
