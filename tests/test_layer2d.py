@@ -860,3 +860,23 @@ def test_a_check_boxs_element_content_sits_beside_its_mark(tmp_path):
     line = line_height(12.0)
     assert texts == [("a", 17.0, pytest.approx(-1 + baseline(12.0))),
                      ("b", 17.0, pytest.approx(-1 + line + baseline(12.0)))]  # fmt: skip
+
+
+def test_an_effect_counts_in_a_drawing_groups_bounds_as_wpf_counts_it():
+    # WPF's Effect.GetRenderBounds: a blur spreads Radius every way; a drop shadow BlurRadius
+    # every way and ShadowDepth along Direction (y up on screen)
+    from xaml3d.render.layer2d.paint import drawing_bounds
+    from xaml3d.scene.drawing import Effect, GeometryDrawing, RectangleGeometry
+
+    square = GeometryDrawing(RectangleGeometry((10.0, 20.0, 16.0, 8.0)), brush=LIME)
+
+    def bounds(effect):
+        r = drawing_bounds(DrawingGroup(children=(square,), effect=effect))
+        return tuple(round(v, 9) for v in (r.left(), r.top(), r.right(), r.bottom()))
+
+    assert bounds(None) == (10, 20, 26, 28)
+    assert bounds(Effect(kind="Blur", radius=4.0)) == (6, 16, 30, 32)
+    shadow = Effect(kind="DropShadow", radius=2.0, direction=135.0, shadow_depth=2**0.5 * 3)
+    assert bounds(shadow) == (5, 15, 28, 30)  # 3 left and 3 up, the blur 2 all round
+    below = Effect(kind="DropShadow", radius=0.0, direction=270.0, shadow_depth=5.0)
+    assert bounds(below) == (10, 20, 26, 33)
