@@ -880,3 +880,43 @@ def test_an_effect_counts_in_a_drawing_groups_bounds_as_wpf_counts_it():
     assert bounds(shadow) == (5, 15, 28, 30)  # 3 left and 3 up, the blur 2 all round
     below = Effect(kind="DropShadow", radius=0.0, direction=270.0, shadow_depth=5.0)
     assert bounds(below) == (10, 20, 26, 33)
+
+
+def test_an_animated_render_transform_and_opacity_around_a_viewport_are_tracks():
+    from test_reference import REFERENCE
+
+    from xaml3d.animation.moment import scene_at
+
+    scene = xaml3d.load(REFERENCE / "animation" / "around-render-transform.xaml")
+    assert not [d for d in scene.diagnostics if d.code.startswith("ANIM")]
+    slide, fade = scene.tracks.tracks
+    assert [str(p) for p in slide.moves] == [
+        "viewport 0 / picture / around[0] / layer . render_transform",
+        "layout / boxes[0] / layer . render_transform",
+    ]
+    assert [str(p) for p in fade.paths] == [
+        "viewport 0 / picture / around[0] / layer . opacity",
+        "layout / boxes[0] / layer . opacity",
+    ]
+    [around] = scene.viewports[0].picture.around
+    assert around.layer.opacity == 1.0
+    assert np.array_equal(around.layer.render_transform, np.eye(3))
+    frame = scene_at(scene, 0.5)
+    [moved] = frame.viewports[0].picture.around
+    assert moved.layer.opacity == 0.75
+    assert np.array_equal(moved.layer.render_transform, [[1, 0, 8], [0, 1, 0], [0, 0, 1]])
+    box = frame.layout.boxes[0].layer
+    assert box.opacity == 0.75 and box.render_transform[0, 2] == 8.0
+    assert scene.layout.boxes[0].layer.opacity == 1.0  # the loaded scene is untouched
+
+
+def test_a_panels_width_animation_resolves_and_is_said_to_be_laid_out_once():
+    text = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" x:Name="g" Width="100">'
+        '<Grid.Triggers><EventTrigger RoutedEvent="Grid.Loaded"><BeginStoryboard><Storyboard>'
+        '<DoubleAnimation Storyboard.TargetName="g" Storyboard.TargetProperty="Width" To="50"/>'
+        "</Storyboard></BeginStoryboard></EventTrigger></Grid.Triggers><Viewport3D/></Grid>"
+    )
+    codes = [d.code for d in xaml3d.load(text, text=True).diagnostics if d.code.startswith("ANIM")]
+    assert codes == ["ANIM014"]

@@ -458,7 +458,7 @@ def build_scene(
             ctx.diag("SCN001", msg, doc.root)
 
     resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
-    found = None if resolution is None else tracks(resolution, viewports)
+    found = None if resolution is None else tracks(resolution, viewports, laid_out)
     extra = () if resolution is None else resolution.diagnostics
     diags = sorted((*ctx.diagnostics, *extra),
                    key=lambda g: (g.file or "", g.line or 0, g.column or 0))  # fmt: skip
