@@ -303,7 +303,7 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
         r.build_node(k, lambda e: walk_visual3d(r, e, T.identity(), acc))
     from xaml3d.xaml.picture_reader import report_ancestors, viewport_picture
 
-    picture = viewport_picture(r, p, w, h, lay.around)
+    picture = viewport_picture(r, p, w, h, lay.around, lay.layout_transform)
     report_ancestors(r, el, lay.laid_out)
     return Viewport(
         index=index,

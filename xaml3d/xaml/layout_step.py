@@ -36,6 +36,8 @@ class ViewportLayout:
     # first (scene.drawing.Around), and the ids of the XML elements the layout reached around it
     around: tuple = ()
     laid_out: frozenset = frozenset()
+    # its own LayoutTransform's placement (scene.drawing.Layer2D.layout_transform) or None
+    layout_transform: object = None
 
 
 def derivation(vp: Node) -> str:
@@ -146,26 +148,26 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             source = "default"
         elif n.parent is None and n.width == n.width and n.height == n.height:
             source = "viewport"
-        # a viewport's picture is drawn at its own size: the LayoutTransforms around it only
-        # place it in the window (render --window)
-        unplaced = {}
+        # the layers around act on the viewport's picture, LayoutTransforms included (its
+        # picture is drawn at its own size, then turned as the layout shows it)
+        own = {}
         for a in n.ancestors():
-            own = replace(layers[id(a)], layout_transform=None) if id(a) in layers else None
-            if own is not None and (own.changes_picture or id(a) in notes):
-                unplaced[id(a)] = _animated(r, own, notes.get(id(a)))
+            if id(a) in layers:  # a copy of its own: the frames replace its fields apart
+                own[id(a)] = _animated(r, replace(layers[id(a)]), notes.get(id(a)))
         around = tuple(
             Around(
-                unplaced[id(a)],
+                own[id(a)],
                 (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]),
                 own_unit(a.rect, a.ink),
             )  # fmt: skip
             for a in n.ancestors()
-            if id(a) in unplaced
+            if id(a) in own
         )
+        placed = layers[id(n)].layout_transform if id(n) in layers else None
         reached = frozenset(
             id(el) for a in n.ancestors() if (el := elements.get(id(a), (None,))[0]) is not None
         )
-        out[i] = ViewportLayout(w, h, n.rect, source, background, around, reached)
+        out[i] = ViewportLayout(w, h, n.rect, source, background, around, reached, placed)
     return out, None if result is None else window_layout(result, layers)
 
 

@@ -150,10 +150,11 @@ def element_layer(
 
 
 def viewport_picture(
-    r, p, width: float, height: float, around: tuple[Around, ...] = ()
+    r, p, width: float, height: float, around: tuple[Around, ...] = (), placed=None
 ) -> Viewport2D | None:
     """The viewport's Viewport2D (None when it sets none of the properties and no element
-    around it does); ``around``: the layers of the laid-out elements around it."""
+    around it does); ``around``: the layers of the laid-out elements around it; ``placed``:
+    its own LayoutTransform's placement (``layout_step``), or None."""
     nodes: list = []
     own = element_layer(r, p, width, height, node_out=nodes, animated=True) or Layer2D()
     if "RenderOptions.BitmapScalingMode" in p.attached:
@@ -167,12 +168,13 @@ def viewport_picture(
     if edge not in ("Aliased", "Unspecified"):
         r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
         edge = "Unspecified"
-    if not own.changes_picture and not around and edge == "Unspecified":
+    if not own.changes_picture and not around and edge == "Unspecified" and placed is None:
         if not (nodes or animates(r, p.el, "Opacity")):
             return None
     picture = Viewport2D(
         opacity=own.opacity, opacity_mask=own.opacity_mask, clip=own.clip,
         render_transform=own.render_transform, effect=own.effect, edge_mode=edge, around=around,
+        layout_transform=placed,
     )  # fmt: skip
     if nodes:  # an animated RenderTransform: each frame draws the picture moved at t
         r.world(picture, "render_transform", None, (nodes[0],))
