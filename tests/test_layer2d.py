@@ -920,3 +920,24 @@ def test_a_panels_width_animation_resolves_and_is_said_to_be_laid_out_once():
     )
     codes = [d.code for d in xaml3d.load(text, text=True).diagnostics if d.code.startswith("ANIM")]
     assert codes == ["ANIM014"]
+
+
+def test_an_animated_viewport_opacity_is_a_track():
+    from test_reference import REFERENCE
+
+    from xaml3d.animation.moment import scene_at
+
+    text = (REFERENCE / "animation" / "viewport-render-transform.xaml").read_text()
+    text = text.replace(
+        'Storyboard.TargetProperty="X" From="0" To="16" Duration="0:0:1"/>',
+        'Storyboard.TargetProperty="X" From="0" To="16" Duration="0:0:1"/>'
+        '<DoubleAnimation Storyboard.TargetName="view" Storyboard.TargetProperty="Opacity" '
+        'From="1" To="0.5" Duration="0:0:1"/>',
+    ).replace('Width="64" Height="48"', 'x:Name="view" Width="64" Height="48"', 1)
+    scene = xaml3d.load(text, text=True)
+    assert not [d for d in scene.diagnostics if d.code.startswith("ANIM")]
+    fade = scene.tracks.tracks[1]
+    assert [str(p) for p in fade.paths] == ["viewport 0 / picture . opacity"]
+    assert scene_at(scene, 0.5).viewports[0].picture.opacity == 0.75
+    rgba = xaml3d.render_arrays(scene, time=1.0).rgba
+    assert tuple(rgba[16, 40]) == (0, 0, 255, 128)  # blue, moved 16 right, half faded
