@@ -941,3 +941,18 @@ def test_an_animated_viewport_opacity_is_a_track():
     assert scene_at(scene, 0.5).viewports[0].picture.opacity == 0.75
     rgba = xaml3d.render_arrays(scene, time=1.0).rgba
     assert tuple(rgba[16, 40]) == (0, 0, 255, 128)  # blue, moved 16 right, half faded
+
+
+def test_render_under_a_layout_transform_turns_the_buffers_with_the_picture():
+    from test_reference import REFERENCE
+
+    scene = xaml3d.load(REFERENCE / "layout" / "render-layout-transform.xaml")
+    assert (scene.viewports[0].width, scene.viewports[0].height) == (64.0, 80.0)
+    r = xaml3d.render_arrays(scene, ids=True)
+    assert (r.width, r.height) == (80, 64)
+    assert r.rgba.shape == (64, 80, 4) and r.ids.shape == r.depth.shape == (64, 80)
+    # the lime quad (model 0) turned to the right of the blue one (model 1)
+    assert tuple(r.rgba[30, 45]) == (0, 255, 0, 255) and r.ids[30, 45] == 0
+    assert tuple(r.rgba[30, 30]) == (0, 0, 255, 255) and r.ids[30, 30] == 1
+    assert r.ids[5, 5] == -1 and np.isinf(r.depth[5, 5]) and np.isnan(r.distance[5, 5])
+    assert np.isfinite(r.distance[30, 30])
