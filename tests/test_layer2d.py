@@ -860,3 +860,99 @@ def test_a_check_boxs_element_content_sits_beside_its_mark(tmp_path):
     line = line_height(12.0)
     assert texts == [("a", 17.0, pytest.approx(-1 + baseline(12.0))),
                      ("b", 17.0, pytest.approx(-1 + line + baseline(12.0)))]  # fmt: skip
+
+
+def test_an_effect_counts_in_a_drawing_groups_bounds_as_wpf_counts_it():
+    # WPF's Effect.GetRenderBounds: a blur spreads Radius every way; a drop shadow BlurRadius
+    # every way and ShadowDepth along Direction (y up on screen)
+    from xaml3d.render.layer2d.paint import drawing_bounds
+    from xaml3d.scene.drawing import Effect, GeometryDrawing, RectangleGeometry
+
+    square = GeometryDrawing(RectangleGeometry((10.0, 20.0, 16.0, 8.0)), brush=LIME)
+
+    def bounds(effect):
+        r = drawing_bounds(DrawingGroup(children=(square,), effect=effect))
+        return tuple(round(v, 9) for v in (r.left(), r.top(), r.right(), r.bottom()))
+
+    assert bounds(None) == (10, 20, 26, 28)
+    assert bounds(Effect(kind="Blur", radius=4.0)) == (6, 16, 30, 32)
+    shadow = Effect(kind="DropShadow", radius=2.0, direction=135.0, shadow_depth=2**0.5 * 3)
+    assert bounds(shadow) == (5, 15, 28, 30)  # 3 left and 3 up, the blur 2 all round
+    below = Effect(kind="DropShadow", radius=0.0, direction=270.0, shadow_depth=5.0)
+    assert bounds(below) == (10, 20, 26, 33)
+
+
+def test_an_animated_render_transform_and_opacity_around_a_viewport_are_tracks():
+    from test_reference import REFERENCE
+
+    from xaml3d.animation.moment import scene_at
+
+    scene = xaml3d.load(REFERENCE / "animation" / "around-render-transform.xaml")
+    assert not [d for d in scene.diagnostics if d.code.startswith("ANIM")]
+    slide, fade = scene.tracks.tracks
+    assert [str(p) for p in slide.moves] == [
+        "viewport 0 / picture / around[0] / layer . render_transform",
+        "layout / boxes[0] / layer . render_transform",
+    ]
+    assert [str(p) for p in fade.paths] == [
+        "viewport 0 / picture / around[0] / layer . opacity",
+        "layout / boxes[0] / layer . opacity",
+    ]
+    [around] = scene.viewports[0].picture.around
+    assert around.layer.opacity == 1.0
+    assert np.array_equal(around.layer.render_transform, np.eye(3))
+    frame = scene_at(scene, 0.5)
+    [moved] = frame.viewports[0].picture.around
+    assert moved.layer.opacity == 0.75
+    assert np.array_equal(moved.layer.render_transform, [[1, 0, 8], [0, 1, 0], [0, 0, 1]])
+    box = frame.layout.boxes[0].layer
+    assert box.opacity == 0.75 and box.render_transform[0, 2] == 8.0
+    assert scene.layout.boxes[0].layer.opacity == 1.0  # the loaded scene is untouched
+
+
+def test_a_panels_width_animation_resolves_and_is_said_to_be_laid_out_once():
+    text = (
+        '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" x:Name="g" Width="100">'
+        '<Grid.Triggers><EventTrigger RoutedEvent="Grid.Loaded"><BeginStoryboard><Storyboard>'
+        '<DoubleAnimation Storyboard.TargetName="g" Storyboard.TargetProperty="Width" To="50"/>'
+        "</Storyboard></BeginStoryboard></EventTrigger></Grid.Triggers><Viewport3D/></Grid>"
+    )
+    codes = [d.code for d in xaml3d.load(text, text=True).diagnostics if d.code.startswith("ANIM")]
+    assert codes == ["ANIM014"]
+
+
+def test_an_animated_viewport_opacity_is_a_track():
+    from test_reference import REFERENCE
+
+    from xaml3d.animation.moment import scene_at
+
+    text = (REFERENCE / "animation" / "viewport-render-transform.xaml").read_text()
+    text = text.replace(
+        'Storyboard.TargetProperty="X" From="0" To="16" Duration="0:0:1"/>',
+        'Storyboard.TargetProperty="X" From="0" To="16" Duration="0:0:1"/>'
+        '<DoubleAnimation Storyboard.TargetName="view" Storyboard.TargetProperty="Opacity" '
+        'From="1" To="0.5" Duration="0:0:1"/>',
+    ).replace('Width="64" Height="48"', 'x:Name="view" Width="64" Height="48"', 1)
+    scene = xaml3d.load(text, text=True)
+    assert not [d for d in scene.diagnostics if d.code.startswith("ANIM")]
+    fade = scene.tracks.tracks[1]
+    assert [str(p) for p in fade.paths] == ["viewport 0 / picture . opacity"]
+    assert scene_at(scene, 0.5).viewports[0].picture.opacity == 0.75
+    rgba = xaml3d.render_arrays(scene, time=1.0).rgba
+    assert tuple(rgba[16, 40]) == (0, 0, 255, 128)  # blue, moved 16 right, half faded
+
+
+def test_render_under_a_layout_transform_turns_the_buffers_with_the_picture():
+    from test_reference import REFERENCE
+
+    scene = xaml3d.load(REFERENCE / "layout" / "render-layout-transform.xaml")
+    assert (scene.viewports[0].width, scene.viewports[0].height) == (64.0, 80.0)
+    r = xaml3d.render_arrays(scene, ids=True)
+    assert (r.width, r.height) == (80, 64)
+    assert r.rgba.shape == (64, 80, 4) and r.ids.shape == r.depth.shape == (64, 80)
+    # the lime quad (model 0) turned to the right of the blue one (model 1)
+    assert tuple(r.rgba[30, 45]) == (0, 255, 0, 255) and r.ids[30, 45] == 0
+    assert tuple(r.rgba[30, 30]) == (0, 0, 255, 255) and r.ids[30, 30] == 1
+    assert r.ids[5, 5] == -1 and np.isinf(r.depth[5, 5]) and np.isnan(r.distance[5, 5])
+    assert np.isfinite(r.distance[30, 30])

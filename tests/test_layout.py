@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+import xaml3d
 from xaml3d.layout import Definition, Node, layout
 from xaml3d.layout import tree as L
 from xaml3d.layout.engine import scale_factor
@@ -699,5 +700,9 @@ def test_layout_transform_turns_sizes_and_boxes():
         text=True,
     )
     assert (s.viewports[0].width, s.viewports[0].height) == (48.0, 32.0)
-    # the picture of the viewport alone is drawn at its own size, the turn left to the window
-    assert s.viewports[0].picture is None
+    # the picture of the viewport alone is drawn at its own size, then scaled as on screen
+    [around] = s.viewports[0].picture.around
+    assert around.layer.layout_transform.tolist() == [[2, 0, 0], [0, 2, 0], [0, 0, 1]]
+    r = xaml3d.render_arrays(s)
+    assert r.rgba.shape == (64, 96, 4) and (r.width, r.height) == (96, 64)
+    assert r.depth.shape == (64, 96) and r.distance.shape == (64, 96)

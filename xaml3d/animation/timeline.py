@@ -253,9 +253,13 @@ def _frame(scene: Scene, values: dict) -> Scene:
         p = chain.path
         changes.setdefault(p.viewport, []).append((p.steps, p.field, partial(_const, m)))
     viewports = list(scene.viewports)
+    layout = scene.layout
     for vi, todo in changes.items():
-        viewports[vi] = _set(viewports[vi], todo)
-    return replace(scene, viewports=tuple(viewports), tracks=None)
+        if vi is None:  # the laid-out boxes' layers (render --window)
+            layout = _set(layout, todo)
+        else:
+            viewports[vi] = _set(viewports[vi], todo)
+    return replace(scene, viewports=tuple(viewports), layout=layout, tracks=None)
 
 
 def _const(value, _base):

@@ -42,8 +42,8 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
     "ANIM014": (
         WARNING,
         "animation of a property xaml3d evaluates once, at load (a panel's or viewport's size, "
-        "a LayoutTransform, the RenderTransform of an element around a viewport): its value at "
-        "load is drawn in every frame",
+        "a LayoutTransform, the RenderTransform or Opacity of an element inside a visual or "
+        "one the layout does not reach): its value at load is drawn in every frame",
     ),  # fmt: skip
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
     "ANIM015": (

@@ -22,6 +22,7 @@ from xaml3d.render import accel
 from xaml3d.render.distance import eye_depth
 from xaml3d.render.draw import draw_viewport_models, make_context
 from xaml3d.render.frame import Framebuffer, FrameStore
+from xaml3d.render.placement import placement, warp_nearest
 from xaml3d.render.settings import FrameSize, RenderSettings
 from xaml3d.render.wireframe import draw_wireframe
 from xaml3d.scene.camera_math import camera_pipeline
@@ -124,11 +125,20 @@ def draw_viewport(
             "with another colour to see what is drawn"
         )
         diags.append(Diagnostic("RND009", WARNING, msg, scene.file))
+    place = None
+    if picture is not None:
+        scale = (w / vp.width if vp.width > 0 else 1.0, h / vp.height if vp.height > 0 else 1.0)
+        # LayoutTransforms around the viewport: the output is its box as turned on screen
+        place = placement(picture, w, h, scale)
     if picture is not None and not nearest:
         from xaml3d.render.layer2d.picture import apply_picture  # imports skia: only when needed
 
-        scale = (w / vp.width if vp.width > 0 else 1.0, h / vp.height if vp.height > 0 else 1.0)
-        rgba = _over(apply_picture(rgba, picture, scale), bg)
+        rgba = _over(apply_picture(rgba, picture, scale, place), bg)
+    elif place is not None:  # the model-id render: its colours are codes, moved unblended
+        rgba = warp_nearest(rgba, place, 0)
+    if place is not None:
+        zbuf = warp_nearest(zbuf, place, np.inf)
+        w, h = place.width, place.height
     zbuf = zbuf if depth else None
     result = Rendering(rgba=rgba, depth=zbuf, width=w, height=h, diagnostics=diags)
     if pipeline is not None and zbuf is not None:

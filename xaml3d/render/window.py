@@ -15,8 +15,10 @@ docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a
 outline of each control's layout box. An element with Opacity, OpacityMask, Clip,
 RenderTransform or an Effect (``Box.layer``) is drawn with everything inside it into a layer of
 its own, which the 2D layer then transforms, clips, filters and fades over what lies beneath, as
-WPF composes a visual's subtree. Hidden and Collapsed elements and their content are left
-out. A pixel belongs to a box when its centre lies inside it.
+WPF composes a visual's subtree; the canvas reaches past the client area (at most one client
+area each way) where such an element holds what its transform or effect can bring into view.
+Hidden and Collapsed elements and their content are left out. A pixel belongs to a box when
+its centre lies inside it.
 """
 
 from __future__ import annotations
@@ -215,6 +217,49 @@ def _layer_of(b: Box, own: dict[int, Layer2D]) -> Layer2D | None:
     return replace(own[b.viewport], layout_transform=placed)
 
 
+def _reach(boxes, W: int, H: int) -> tuple[int, int, int, int]:
+    """(left, top, right, bottom) whole pixels the canvas reaches beyond the client area: what
+    lies outside it but inside an element whose layer turns, moves or spreads what it holds
+    (RenderTransform, LayoutTransform, Effect) can be carried back into view, so it is drawn
+    too; at most one client area each way, and none past the pixel limit."""
+    ends = _subtree_ends(boxes)
+    x0, y0, x1, y1 = 0.0, 0.0, float(W), float(H)
+    for i, b in enumerate(boxes):
+        layer = b.layer
+        moves = layer is not None and any(
+            v is not None for v in (layer.render_transform, layer.layout_transform, layer.effect)
+        )  # fmt: skip
+        if not (moves and b.shown):
+            continue
+        for k in boxes[i : ends[i]]:
+            x, y, w, h = (float(v) for v in k.rect)
+            if k.shown and all(math.isfinite(v) for v in (x, y, w, h)):
+                x0, y0 = min(x0, x), min(y0, y)
+                x1, y1 = max(x1, x + w), max(y1, y + h)
+        pad = _spread(layer.effect)
+        x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
+    left, top = min(W, math.ceil(-x0)), min(H, math.ceil(-y0))
+    right, bottom = min(W, math.ceil(x1 - W)), min(H, math.ceil(y1 - H))
+    if (W + left + right) * (H + top + bottom) > MAX_SUPERSAMPLED_PIXELS:
+        return 0, 0, 0, 0
+    return left, top, right, bottom
+
+
+def _spread(effect) -> float:
+    """How far an Effect reaches beyond what it is applied to (a blur's radius, a shadow's
+    blur and depth)."""
+    if effect is None:
+        return 0.0
+    depth = float(effect.shadow_depth) if effect.kind == "DropShadow" else 0.0
+    v = max(0.0, float(effect.radius)) + abs(depth)
+    return v if math.isfinite(v) else 0.0
+
+
+def _shifted(b: Box, dx: int, dy: int) -> Box:
+    x, y, w, h = b.rect
+    return replace(b, rect=(x + dx, y + dy, w, h))
+
+
 def compose_window(
     scene: Scene,
     settings: RenderSettings | None = None,
@@ -235,6 +280,14 @@ def compose_window(
 
     result = scene.layout
     W, H = client_pixels(result.client)
+    # the canvas reaches past the client area where a turned or moved element may bring what
+    # lies there into view (its layer is drawn whole, then transformed); cut back at the end
+    left, top, right, bottom = _reach(result.boxes, W, H)
+    boxes = result.boxes
+    if left or top:
+        boxes = tuple(_shifted(b, left, top) for b in boxes)
+    client_w, client_h = W, H
+    W, H = W + left + right, H + top + bottom
     canvas = np.zeros((H, W, 4), dtype=np.float32)
     if background is not None:
         bg = np.array(background, dtype=np.float32)
@@ -244,9 +297,9 @@ def compose_window(
     # the window composes every layer itself (below), a viewport's own ones too: its picture
     # keeps only how its 3D is drawn
     scene, own = _window_pictures(scene)
-    ends = _subtree_ends(result.boxes)
+    ends = _subtree_ends(boxes)
     open_layers: list = []  # (box, end, the canvas beneath), innermost last
-    for i, b in enumerate(result.boxes):  # paint order: parents before children
+    for i, b in enumerate(boxes):  # paint order: parents before children
         while open_layers and open_layers[-1][3] <= i:
             canvas = _close_layer(*open_layers.pop(), canvas)
         if not b.shown:
@@ -288,4 +341,5 @@ def compose_window(
             _outline(canvas, b.rect)
     while open_layers:
         canvas = _close_layer(*open_layers.pop(), canvas)
-    return straight_uint8(canvas), diags
+    canvas = canvas[top : top + client_h, left : left + client_w]
+    return straight_uint8(np.ascontiguousarray(canvas)), diags

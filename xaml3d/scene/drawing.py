@@ -217,8 +217,9 @@ class Layer2D:
     effect: Effect | None = None
     # LayoutTransform (3 x 3) about the box's top-left, after the render transform, its
     # translation the one that puts its turned box's bounds at that corner: the layout placed
-    # the element's own box with it (``render --window`` draws
-    # it; a viewport's picture, rendered at its own size, is drawn without it)
+    # the element's own box with it (``render --window`` draws it; ``render`` of a viewport
+    # draws its picture at its own size, then turned by its own and its ancestors' into the
+    # bounds they give its box: ``xaml3d.render.placement``)
     layout_transform: np.ndarray | None = None
 
     @property

@@ -7,9 +7,10 @@ markup, no reader, no functions). One ``Track`` per animated property of one mar
 it, in document order, and every place its value lands in the Scene. A markup object shared by
 several models (a resource brush, a transform) has several places.
 
-Places are ``ScenePath``s: a viewport, the steps from it to a scene object (``("models", 3)``,
-``("material", 0)``, ``("brush", None)``...) and the object's field (``"color"``). Camera,
-light, material-pass, brush and gradient-stop fields are replaced as they are.
+Places are ``ScenePath``s: a viewport (or the Scene's layout), the steps from it to a scene
+object (``("models", 3)``, ``("material", 0)``, ``("brush", None)``, ``("boxes", 2)``...) and the
+object's field (``"color"``). Camera, light, material-pass, brush, gradient-stop and 2D layer
+fields are replaced as they are.
 
 Transforms are products along the tree (a model's world matrix is its own Transform, then its
 Model3DGroups', then its ModelVisual3Ds'), so an animated transform component moves every world
@@ -173,15 +174,16 @@ def slots_in(node) -> frozenset[int]:
 
 @dataclass(frozen=True)
 class ScenePath:
-    """A field of an object of the Scene: ``steps`` lead from ``Scene.viewports[viewport]``,
-    each an attribute and, for a tuple attribute, the index in it."""
+    """A field of an object of the Scene: ``steps`` lead from ``Scene.viewports[viewport]``
+    (``viewport`` None: from ``Scene.layout``, the laid-out boxes), each an attribute and, for
+    a tuple attribute, the index in it."""
 
-    viewport: int
+    viewport: int | None
     steps: tuple[tuple[str, int | None], ...]
     field: str
 
     def __str__(self) -> str:
-        parts = [f"viewport {self.viewport}"]
+        parts = ["layout" if self.viewport is None else f"viewport {self.viewport}"]
         parts += [name if i is None else f"{name}[{i}]" for name, i in self.steps]
         return " / ".join(parts) + f" . {self.field}"
 

@@ -196,7 +196,10 @@ def resolve(
             raise TargetError("ANIM002", f"{tname} has no property {prop!r} (path {path!r})")
         last = n == len(steps) - 1
         if last and not indices:
-            kind = et.property_kind(prop) or "object"
+            kind = et.property_kind(prop)
+            if kind is None and et.kind == "framework":  # a panel's or control's UIElement part
+                kind = voc.UI_PROPS.get(prop)
+            kind = kind or "object"
             if kind not in _KINDS.get(vtype, ()):
                 raise TargetError(
                     "ANIM003",

@@ -9,10 +9,11 @@ matrix made from an animated transform, with its chain). ``tracks`` then walks t
 viewports once and turns each tagged object into the paths where it lands.
 
 A slot read while building but held by no scene object is a property xaml3d evaluates only at
-load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once), an
-element's RenderTransform around a viewport. WPF would show it change; ANIM014 says that xaml3d
-draws its value at load instead. A Viewport3D's own RenderTransform is a track (its picture's
-``render_transform``).
+load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once). WPF would
+show it change; ANIM014 says that xaml3d draws its value at load instead. A Viewport3D's own
+RenderTransform and Opacity are tracks (its picture's ``render_transform`` and ``opacity``), and
+so are those of a laid-out element around it: its ``Around`` layer in each viewport's picture it
+encloses and its ``Box.layer`` in the Scene's layout (``render --window``).
 
 What runs (storyboard checks): ANIM007 for a storyboard no trigger begins or whose BeginTime
 is {x:Null}, ANIM008 for an animation whose BeginTime is {x:Null}.
@@ -184,8 +185,9 @@ def _resolve(res: Resolution, r, names, a: Animation, host) -> Target | None:
 # --------------------------------------------------------------------------- the tracks
 
 
-def tracks(res: Resolution, viewports: tuple[Viewport, ...]) -> Tracks:
-    """The tracks of the built viewports; ANIM014 for slots read but held by no scene object."""
+def tracks(res: Resolution, viewports: tuple[Viewport, ...], layout=None) -> Tracks:
+    """The tracks of the built viewports and of the laid-out boxes (``layout``, the Scene's
+    WindowLayout or None); ANIM014 for slots read but held by no scene object."""
     slots = res.slots
     paths: list[list[ScenePath]] = [[] for _ in slots.targets]
     worlds: list[WorldChain] = []
@@ -221,8 +223,15 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...]) -> Tracks:
                         visit_brush(ps.brush, vi, (*steps, ("brush", None)))
         if vp.background is not None:
             visit_brush(vp.background, vi, (("background", None),))
-        if vp.picture is not None:  # an animated RenderTransform of the viewport
+        if vp.picture is not None:  # an animated RenderTransform or Opacity of the viewport
             visit(vp.picture, vi, (("picture", None),))
+            # and of the elements around it, as they act on its picture
+            for ai, a in enumerate(vp.picture.around):
+                visit(a.layer, vi, (("picture", None), ("around", ai), ("layer", None)))
+    # the elements' layers that render --window composes (ScenePath.viewport None: the layout)
+    for bi, box in enumerate(layout.boxes if layout is not None else ()):
+        if box.layer is not None:
+            visit(box.layer, None, (("boxes", bi), ("layer", None)))
 
     moves: list[list[ScenePath]] = [[] for _ in slots.targets]
     for chain in worlds:

@@ -303,7 +303,7 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
         r.build_node(k, lambda e: walk_visual3d(r, e, T.identity(), acc))
     from xaml3d.xaml.picture_reader import report_ancestors, viewport_picture
 
-    picture = viewport_picture(r, p, w, h, lay.around)
+    picture = viewport_picture(r, p, w, h, lay.around, lay.layout_transform)
     report_ancestors(r, el, lay.laid_out)
     return Viewport(
         index=index,
@@ -458,7 +458,7 @@ def build_scene(
             ctx.diag("SCN001", msg, doc.root)
 
     resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
-    found = None if resolution is None else tracks(resolution, viewports)
+    found = None if resolution is None else tracks(resolution, viewports, laid_out)
     extra = () if resolution is None else resolution.diagnostics
     diags = sorted((*ctx.diagnostics, *extra),
                    key=lambda g: (g.file or "", g.line or 0, g.column or 0))  # fmt: skip

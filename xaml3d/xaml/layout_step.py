@@ -36,6 +36,8 @@ class ViewportLayout:
     # first (scene.drawing.Around), and the ids of the XML elements the layout reached around it
     around: tuple = ()
     laid_out: frozenset = frozenset()
+    # its own LayoutTransform's placement (scene.drawing.Layer2D.layout_transform) or None
+    layout_transform: object = None
 
 
 def derivation(vp: Node) -> str:
@@ -126,7 +128,7 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             for n in root.walk()
             if (el := elements.get(id(n), (None,))[0]) is not None
         }
-    layers = _layers(r, root, elements) if result is not None else {}
+    layers, notes = _layers(r, root, elements) if result is not None else ({}, {})
     out: dict[int, ViewportLayout] = {}
     if result is not None:
         for note in viewport_notes(result.viewports):
@@ -146,50 +148,71 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
             source = "default"
         elif n.parent is None and n.width == n.width and n.height == n.height:
             source = "viewport"
-        # a viewport's picture is drawn at its own size: the LayoutTransforms around it only
-        # place it in the window (render --window)
-        unplaced = {}
+        # the layers around act on the viewport's picture, LayoutTransforms included (its
+        # picture is drawn at its own size, then turned as the layout shows it)
+        own = {}
         for a in n.ancestors():
-            own = replace(layers[id(a)], layout_transform=None) if id(a) in layers else None
-            if own is not None and own.changes_picture:
-                unplaced[id(a)] = own
+            if id(a) in layers:  # a copy of its own: the frames replace its fields apart
+                own[id(a)] = _animated(r, replace(layers[id(a)]), notes.get(id(a)))
         around = tuple(
             Around(
-                unplaced[id(a)],
+                own[id(a)],
                 (a.rect[0] - n.rect[0], a.rect[1] - n.rect[1], *a.rect[2:]),
                 own_unit(a.rect, a.ink),
             )  # fmt: skip
             for a in n.ancestors()
-            if id(a) in unplaced
+            if id(a) in own
         )
+        placed = layers[id(n)].layout_transform if id(n) in layers else None
         reached = frozenset(
             id(el) for a in n.ancestors() if (el := elements.get(id(a), (None,))[0]) is not None
         )
-        out[i] = ViewportLayout(w, h, n.rect, source, background, around, reached)
+        out[i] = ViewportLayout(w, h, n.rect, source, background, around, reached, placed)
     return out, None if result is None else window_layout(result, layers)
 
 
-def _layers(r, root: Node, elements: dict) -> dict:
+def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
     """The Layer2D of every laid-out element, by ``id(node)``: its LayoutTransform, and but
     for a viewport (whose own are its picture's) its Opacity, OpacityMask, Clip,
-    RenderTransform and Effect. A control's drawing holds its Opacity already."""
-    from xaml3d.xaml.picture_reader import element_layer
+    RenderTransform and Effect. A control's drawing holds its Opacity already. And, by the
+    same key, what a storyboard animates of a layer: (element, the RenderTransform's typed
+    node or None, whether its Opacity is the layer's)."""
+    from xaml3d.xaml.picture_reader import animates, element_layer
 
-    out = {}
+    out, notes = {}, {}
     for n in root.walk():
         el = elements.get(id(n), (None,))[0]
         if el is None:
             continue
-        layer = None
+        layer, nodes = None, []
         if n.kind != VIEWPORT:
-            layer = element_layer(r, r.props(el), float(n.ink[0]), float(n.ink[1]))
-        if layer is not None and n.kind == CONTROL and n.drawing is not None:
+            w, h = float(n.ink[0]), float(n.ink[1])
+            layer = element_layer(r, r.props(el), w, h, node_out=nodes, animated=True)
+        opacity = layer is not None and not (n.kind == CONTROL and n.drawing is not None)
+        if layer is not None and not opacity:
             layer = replace(layer, opacity=1.0)
         if n.layout_transform is not None:
             layer = replace(layer or Layer2D(), layout_transform=placed_by_layout(n))
-        if layer is not None and layer.changes_picture:
-            out[id(n)] = layer
-    return out
+        if layer is None:
+            continue
+        note = None
+        if nodes or (opacity and animates(r, el, "Opacity")):
+            note = notes[id(n)] = (el, nodes[0] if nodes else None, opacity)
+        if layer.changes_picture or note is not None:
+            out[id(n)] = _animated(r, layer, note)
+    return out, notes
+
+
+def _animated(r, layer: Layer2D, note) -> Layer2D:
+    """``layer``, noted as holding what a storyboard animates of its element (``note``, from
+    ``_layers``): each frame replaces its RenderTransform and Opacity with their values at t."""
+    if note is not None:
+        el, node, opacity = note
+        if node is not None:
+            r.world(layer, "render_transform", None, (node,))
+        if opacity:
+            r.tag(layer, el, {"Opacity": "opacity"})
+    return layer
 
 
 def unreached(r, el) -> ViewportLayout:

@@ -117,11 +117,20 @@ def _render_transform(r, p, width: float, height: float):
     return transform, node
 
 
-def element_layer(r, p, width: float, height: float, *, node_out: list | None = None):
+def animates(r, el, prop: str) -> bool:
+    """Whether a storyboard animates ``el``'s property ``prop`` itself."""
+    return r.slots is not None and any(f is None for f, _ in r.slots.of(el, prop))
+
+
+def element_layer(
+    r, p, width: float, height: float, *, node_out: list | None = None, animated: bool = False
+):
     """The Layer2D of an element's Opacity, OpacityMask, Clip, RenderTransform (about its
     RenderTransformOrigin, for a box ``width`` x ``height``) and Effect (or BitmapEffect); None
     when it changes nothing. ``node_out``: receives the RenderTransform's typed node when an
-    animation drives it (the caller places it in the Scene)."""
+    animation drives it (the caller places it in the Scene). ``animated``: a layer is kept
+    when a storyboard drives its Opacity or RenderTransform, even if it changes nothing at
+    load (the frames of an animation change it)."""
     opacity = p.value("Opacity", _D, 1.0)
     mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
     clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
@@ -135,16 +144,19 @@ def element_layer(r, p, width: float, height: float, *, node_out: list | None = 
     layer = Layer2D(
         opacity=opacity, opacity_mask=mask, clip=clip, render_transform=transform, effect=effect
     )
+    if animated and (node is not None or animates(r, p.el, "Opacity")):
+        return layer
     return layer if layer.changes_picture else None
 
 
 def viewport_picture(
-    r, p, width: float, height: float, around: tuple[Around, ...] = ()
+    r, p, width: float, height: float, around: tuple[Around, ...] = (), placed=None
 ) -> Viewport2D | None:
     """The viewport's Viewport2D (None when it sets none of the properties and no element
-    around it does); ``around``: the layers of the laid-out elements around it."""
+    around it does); ``around``: the layers of the laid-out elements around it; ``placed``:
+    its own LayoutTransform's placement (``layout_step``), or None."""
     nodes: list = []
-    own = element_layer(r, p, width, height, node_out=nodes) or Layer2D()
+    own = element_layer(r, p, width, height, node_out=nodes, animated=True) or Layer2D()
     if "RenderOptions.BitmapScalingMode" in p.attached:
         msg = (
             "RenderOptions.BitmapScalingMode does not change how the brushes on 3D surfaces are "
@@ -156,14 +168,17 @@ def viewport_picture(
     if edge not in ("Aliased", "Unspecified"):
         r.ctx.diag("DRW003", f"RenderOptions.EdgeMode {edge!r} is not a mode: Unspecified", p.el)
         edge = "Unspecified"
-    if not own.changes_picture and not around and edge == "Unspecified":
-        return None
+    if not own.changes_picture and not around and edge == "Unspecified" and placed is None:
+        if not (nodes or animates(r, p.el, "Opacity")):
+            return None
     picture = Viewport2D(
         opacity=own.opacity, opacity_mask=own.opacity_mask, clip=own.clip,
         render_transform=own.render_transform, effect=own.effect, edge_mode=edge, around=around,
+        layout_transform=placed,
     )  # fmt: skip
     if nodes:  # an animated RenderTransform: each frame draws the picture moved at t
         r.world(picture, "render_transform", None, (nodes[0],))
+    r.tag(picture, p.el, {"Opacity": "opacity"})  # an animated Opacity: faded as at t
     return picture
 
 

@@ -12,7 +12,7 @@ and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, Te
 Background; wrapped and trimmed to its laid-out width), Label, Image, and Button, TextBox,
 CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed ComboBox, ListBox,
 TabControl, GroupBox and Expander (with the content they hold) in WPF's default Windows 10/11
-look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, and
+look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
 RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect and
 their bitmap effects: ``picture_reader.element_layer``), apply to an element and its children as
 one layer. Anything else is skipped with DRW002: the rest is drawn.
@@ -129,6 +129,9 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
             opacity=opacity,
             transform=m,
             clip=layer.clip if layer is not None else None,
+            # the mask's relative units refer to what the element and its children draw (the
+            # group's content), as WPF's compositor sizes a visual's OpacityMask
+            opacity_mask=layer.opacity_mask if layer is not None else None,
             effect=layer.effect if layer is not None else None,
         )  # fmt: skip
     )

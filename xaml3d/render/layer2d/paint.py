@@ -5,10 +5,13 @@ device-independent pixels (96 dpi: one DIP is one pixel at scale 1), anti-aliase
 WPF blends (premultiplied sRGB, source over): GeometryDrawing (fill, then pen: ``paths``,
 ``shaders``, ``pens``), ImageDrawing, TextDrawing (the package's font, ``xaml3d.fonts``) and
 DrawingGroup (Transform, ClipGeometry, Opacity and OpacityMask on the composed group); and a
-drawing's bounds (WPF's Drawing.Bounds: pens included, clips applied).
+drawing's bounds (WPF's Drawing.Bounds: pens included, clips applied; a visual's effects
+spread them as WPF's Effect.GetRenderBounds).
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 import skia
@@ -122,7 +125,7 @@ def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
 
 def drawing_bounds(d) -> skia.Rect | None:
     """A drawing's bounds in its own coordinates (WPF's Drawing.Bounds: pens included,
-    clips applied), None for nothing drawn."""
+    clips applied, an element's effect spread), None for nothing drawn."""
     if d is None:
         return None
     if isinstance(d, GeometryDrawing):
@@ -153,11 +156,29 @@ def drawing_bounds(d) -> skia.Rect | None:
                 out.join(r)
         if out is None:
             return None
+        if d.effect is not None:
+            out = _effect_bounds(out, d.effect)
         clip = path_of(d.clip)
         if clip is not None and not out.intersect(clip.computeTightBounds()):
             return None
         return matrix(d.transform).mapRect(out)
     return None
+
+
+def _effect_bounds(r: skia.Rect, effect) -> skia.Rect:
+    """What an Effect draws of content within ``r``, as WPF's Effect.GetRenderBounds counts it
+    (a visual's bounds include it): a blur spreads Radius every way; a drop shadow spreads
+    BlurRadius every way and reaches ShadowDepth further along Direction (y up on screen)."""
+    spread = max(0.0, float(effect.radius))
+    left, top = r.left() - spread, r.top() - spread
+    right, bottom = r.right() + spread, r.bottom() + spread
+    if effect.kind == "DropShadow":
+        a = math.radians(float(effect.direction))
+        dx = float(effect.shadow_depth) * math.cos(a)
+        dy = float(effect.shadow_depth) * math.sin(a)
+        left, right = (left, right + dx) if dx >= 0 else (left + dx, right)
+        top, bottom = (top - dy, bottom) if dy >= 0 else (top, bottom - dy)
+    return skia.Rect(left, top, right, bottom)
 
 
 def rasterize(drawing, width: int, height: int, transform=None) -> np.ndarray:

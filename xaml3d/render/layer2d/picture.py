@@ -17,6 +17,7 @@ ShadowDepth along Direction (degrees counter-clockwise from +x, y up on screen).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import skia
@@ -41,7 +42,7 @@ def effect_filter(effect):
     return skia.ImageFilters.DropShadow(dx, dy, sigma, sigma, color)
 
 
-def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.ndarray:
+def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=None) -> np.ndarray:
     """``rgba``: a straight-alpha uint8 picture (H, W, 4) on a transparent background, drawn
     in coordinates of ``scale`` image pixels per DIP; ``levels``: (Layer2D, (x, y, w, h),
     (sx, sy)) from the outermost element in, each element's box in the picture's coordinates
@@ -49,16 +50,20 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.n
     element's layer nests inside its parent's, as WPF renders a visual tree: the parent's
     RenderTransform about its own box, its Clip, then the children drawn into one layer that
     takes its Effect, Opacity and OpacityMask, all in the element's own units. Returns the
-    straight-alpha uint8 picture in the same box."""
+    straight-alpha uint8 picture in the same box, or with ``place`` (``placement.Placement``:
+    the LayoutTransforms in ``levels`` turn the box) in the box they turn it into."""
     h, w = rgba.shape[:2]
     sx, sy = scale
+    out_w, out_h = (w, h) if place is None else (place.width, place.height)
     info = skia.ImageInfo.Make(
-        w, h, skia.ColorType.kRGBA_8888_ColorType, skia.AlphaType.kUnpremul_AlphaType
+        out_w, out_h, skia.ColorType.kRGBA_8888_ColorType, skia.AlphaType.kUnpremul_AlphaType
     )
     surface = skia.Surface.MakeRaster(info)
     canvas = surface.getCanvas()
     canvas.clear(skia.ColorTRANSPARENT)
     canvas.scale(sx, sy)
+    if place is not None:  # the turned box's corner at the output's
+        canvas.translate(-place.origin[0], -place.origin[1])
     at, unit = (0.0, 0.0), (1.0, 1.0)  # the canvas's origin and unit, in picture DIPs
     for layer, (x, y, _, _), (ux, uy) in levels:
         canvas.save()
@@ -101,12 +106,15 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float]) -> np.n
     )
 
 
-def apply_picture(rgba: np.ndarray, picture: Viewport2D, scale: tuple[float, float]):
+def apply_picture(rgba: np.ndarray, picture: Viewport2D, scale: tuple[float, float], place=None):
     """``rgba``: the viewport's straight-alpha uint8 picture (H, W, 4) on a transparent
     background; returns the picture WPF shows in the same box (straight-alpha uint8): the
-    layers of the elements around it (outermost first), then its own."""
+    layers of the elements around it (outermost first), then its own; with ``place``
+    (``placement.placement`` of the same picture) in the box its LayoutTransforms turn it to."""
     h, w = rgba.shape[:2]
     sx, sy = scale
     levels = [(a.layer, a.rect, a.unit) for a in reversed(picture.around)]
     levels.append((picture, (0.0, 0.0, w / sx, h / sy), (1.0, 1.0)))
-    return compose_layers(rgba, levels, scale)
+    if place is None:  # without a placement, a LayoutTransform in the levels is not drawn
+        levels = [(replace(lay, layout_transform=None), r, u) for lay, r, u in levels]
+    return compose_layers(rgba, levels, scale, place)
