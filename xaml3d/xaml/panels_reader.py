@@ -68,6 +68,8 @@ _DEFAULT_PADDING = {
     "Label": (5, 5, 5, 5), "Button": (1, 1, 1, 1), "ToggleButton": (1, 1, 1, 1),
     "RepeatButton": (1, 1, 1, 1), "TextBox": (1, 1, 1, 1), "PasswordBox": (1, 1, 1, 1),
 }  # fmt: skip
+# Controls the 2D layer draws whose content size has no measurement: their estimate stands.
+_DRAWN_ESTIMATED = {"ProgressBar"}
 # Bars whose items sit side by side: their estimate is the sum of the items' sizes.
 _BARS = {"ToolBar", "ToolBarTray", "StatusBar"}
 # Property elements whose children are not laid out as content.
@@ -535,13 +537,29 @@ class PanelsReader:
         # a LayoutTransform is applied by the layout engine (layout/transform.py) to the
         # measured or estimated size alike
         unsized = n.width != n.width or n.height != n.height
-        if measured is None and unsized and n.layout_transform is not None:
-            self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
-                      f"estimated as {w:g} x {h:g}, then turned by its LayoutTransform",
-                      el)  # fmt: skip
-        elif measured is None and unsized:
-            self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
-                      f"estimated as {w:g} x {h:g}", el)  # fmt: skip
+        if measured is not None or not unsized:
+            return
+        what = (f"{local} is drawn but not measured by xaml3d" if local in _DRAWN_ESTIMATED
+                else f"{local} is not laid out by xaml3d")  # fmt: skip
+        turned = ", then turned by its LayoutTransform" if n.layout_transform is not None else ""
+        if self._beside_viewport(el):
+            # the viewport's box depends on the guess: said without -v (LAY007)
+            self.note("LAY007", f"{what}: its content size is estimated as {w:g} x {h:g}"
+                      f"{turned}, and a Viewport3D in the same panel is placed by that "
+                      "estimate (give the control a Width and Height)", el)  # fmt: skip
+        else:
+            self.note("LAY003", f"{what}: its content size is estimated as {w:g} x {h:g}"
+                      f"{turned}", el)  # fmt: skip
+
+    def _beside_viewport(self, el) -> bool:
+        """Whether an estimated element shares a panel that lays out its children one after
+        another (not a Canvas) with a Viewport3D: the viewport's room is then what the estimate
+        leaves."""
+        parent = el.getparent()
+        while parent is not None and "." in qname(parent.tag)[1]:
+            parent = parent.getparent()  # a property element: its owner is the panel
+        return (parent is not None and id(parent) in self.holds_viewport
+                and qname(parent.tag)[1] != "Canvas")  # fmt: skip
 
 
 def _outer(k: L.Node) -> tuple[float, float]:
