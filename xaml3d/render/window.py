@@ -6,17 +6,18 @@ background (WPF's default is the system window colour, white), every panel's and
 Background (solid, gradient, image, drawing and visual brushes, in the element's own
 coordinates, a drawn tile at one texel a pixel: a brush's relative units refer to the element's
 box; a Border's Background fills, and maps to, the box inside its BorderThickness), each
-Border's BorderBrush band of BorderThickness, and every visible Viewport3D rendered at its
-laid-out rectangle with its own camera and aspect ratio (``render_scene``), composited over
-what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
-CheckBox, RadioButton, ComboBox, Slider, ProgressBar, Separator, ScrollBar, shapes, Image, the
-parts of ListBox, TabControl, GroupBox, Expander and content controls: ``Box.drawing``,
-docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
-outline of each control's layout box. An element with Opacity, OpacityMask, Clip,
-RenderTransform or an Effect (``Box.layer``) is drawn with everything inside it into a layer of
-its own, which the 2D layer then transforms, clips, filters and fades over what lies beneath, as
-WPF composes a visual's subtree. Hidden and Collapsed elements and their content are left
-out. A pixel belongs to a box when its centre lies inside it.
+Border's BorderBrush band of BorderThickness (both rounded by its CornerRadius), and every
+visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect ratio
+(``render_scene``), composited over what lies beneath. The 2D controls the 2D layer draws
+(TextBlock, Label, Button, TextBox, CheckBox, RadioButton, ComboBox, Slider, ProgressBar,
+Separator, ScrollBar, shapes, Image, the parts of ListBox, TabControl, GroupBox, Expander and
+content controls: ``Box.drawing``, docs/layer2d.md) are drawn in their laid-out boxes;
+``outline_controls`` draws a one-pixel outline of each control's layout box. An element with
+Opacity, OpacityMask, Clip, RenderTransform or an Effect (``Box.layer``) is drawn with
+everything inside it into a layer of its own, which the 2D layer then transforms, clips, filters
+and fades over what lies beneath, as WPF composes a visual's subtree. Hidden and Collapsed
+elements and their content are left out. A pixel belongs to a box when its centre lies inside
+it.
 """
 
 from __future__ import annotations
@@ -105,16 +106,72 @@ def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     _over(canvas, r0, c0, color)
 
 
-def _band(b: Box):
-    """The BorderThickness band of a Border, as a mask over element coordinates."""
+def _radii(b: Box, outer: bool) -> list[tuple[float, float]]:
+    """A Border's corner radii (TopLeft, TopRight, BottomRight, BottomLeft) as WPF's Border
+    draws them: CornerRadius is the radius of the band's centre line, so the outer edge's is
+    half a thickness more (a zero radius stays square) and the inner edge's half a thickness
+    less."""
     left, top, right, bottom = b.border
-    w, h = b.rect[2], b.rect[3]
+    sides = ((left, top), (right, top), (right, bottom), (left, bottom))
+    out = []
+    for (cx, cy), (tx, ty) in zip(b.corner, sides, strict=True):
+        if outer:
+            out.append((cx + tx / 2, cy + ty / 2) if cx > 0 and cy > 0 else (0.0, 0.0))
+        else:
+            out.append((max(0.0, cx - tx / 2), max(0.0, cy - ty / 2)))
+    return out
+
+
+def _rounded(w: float, h: float, radii):
+    """The coverage (0..1) of the rectangle (0, 0, w, h) with elliptical corners ``radii``
+    (TopLeft, TopRight, BottomRight, BottomLeft), over element coordinates: pixel centres
+    inside the straight edges, anti-aliased along the arcs (radii that do not fit are scaled
+    down in proportion, as WPF's Border does)."""
+    (a, b), (c, d), (e, f), (g, k) = radii
+    sums = ((w, a + c), (w, g + e), (h, b + k), (h, d + f))
+    fit = min([1.0, *(length / both for length, both in sums if both > length)])
+    rs = [(rx * fit, ry * fit) for rx, ry in radii]
+    # each corner: its ellipse's centre and the quadrant it rounds (sign of x, y from it)
+    centres = [(rs[0][0], rs[0][1], -1, -1), (w - rs[1][0], rs[1][1], 1, -1),
+               (w - rs[2][0], h - rs[2][1], 1, 1), (rs[3][0], h - rs[3][1], -1, 1)]  # fmt: skip
 
     def mask(px, py):
-        inner = (px >= left) & (px < w - right) & (py >= top) & (py < h - bottom)
-        return (~inner).astype(np.float32)
+        cov = ((px >= 0) & (px < w) & (py >= 0) & (py < h)).astype(np.float32)
+        for (rx, ry), (cx, cy, sx, sy) in zip(rs, centres, strict=True):
+            if rx <= 0 or ry <= 0:
+                continue
+            dx, dy = (px - cx) * sx, (py - cy) * sy
+            corner = (dx > 0) & (dy > 0)
+            q = np.hypot(dx / rx, dy / ry)
+            # the distance past the arc in pixels, near enough for a pixel's coverage
+            edge = np.clip(0.5 - (q - 1.0) * min(rx, ry), 0.0, 1.0).astype(np.float32)
+            cov = np.where(corner, np.minimum(cov, edge), cov)
+        return cov
 
     return mask
+
+
+def _band(b: Box):
+    """The BorderThickness band of a Border, as a mask over element coordinates (rounded by
+    its CornerRadius)."""
+    left, top, right, bottom = b.border
+    w, h = b.rect[2], b.rect[3]
+    outer = _rounded(w, h, _radii(b, True))
+    inner = _rounded(max(0.0, w - left - right), max(0.0, h - top - bottom), _radii(b, False))
+
+    def mask(px, py):
+        return np.clip(outer(px, py) - inner(px - left, py - top), 0.0, 1.0)
+
+    return mask
+
+
+def _background_mask(b: Box):
+    """Where a Border's Background shows: the box inside the band, its corners rounded by the
+    inner radii (None: square, nothing to mask)."""
+    if b.kind != BORDER or not any(r > 0 for c in b.corner for r in c):
+        return None
+    x, y, w, h = b.inner
+    return _rounded(w, h, _radii(b, False))
 
 
 def _outline(canvas: np.ndarray, rect) -> None:
@@ -264,7 +321,7 @@ def compose_window(
             _fill(canvas, b.rect, b.border_brush, _band(b))
         if brush is not None:
             # a Border paints its Background inside the border band (its brush maps there)
-            _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush)
+            _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush, _background_mask(b))
         if b.kind == VIEWPORT and _overlaps(b.rect, W, H):
             w, h = round(b.rect[2]), round(b.rect[3])
             if w >= 1 and h >= 1:

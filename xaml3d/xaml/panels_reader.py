@@ -114,6 +114,15 @@ def parse_thickness(s: str) -> tuple[float, float, float, float]:
     raise ValueSyntaxError(f"Thickness needs 1, 2 or 4 lengths, got {len(toks)}", code="VAL003")
 
 
+def parse_corner_radius(s: str) -> tuple[float, float, float, float]:
+    """A CornerRadius: one number (every corner) or four (TopLeft, TopRight, BottomRight,
+    BottomLeft); a negative radius is taken as 0, as Border draws it."""
+    toks = [V.parse_double(t) for t, _ in V.split_tokens(s, "CornerRadius")]
+    if len(toks) not in (1, 4):
+        raise ValueSyntaxError(f"CornerRadius needs 1 or 4 numbers, got {len(toks)}", code="VAL003")
+    return tuple(max(0.0, t) if math.isfinite(t) else 0.0 for t in toks * (4 // len(toks)))
+
+
 def parse_grid_length(s: str) -> tuple[str, float]:
     """A GridLength: ``Auto``, ``*``, ``2*`` or a length -> (unit, value)."""
     t = s.strip()
@@ -441,6 +450,8 @@ class PanelsReader:
         if kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.BORDER, L.CONTAINER, L.SCROLL):
             n.padding = v.get("Padding", parse_thickness, n.padding)
             n.border = v.get("BorderThickness", parse_thickness, n.border)
+        if kind == L.BORDER:
+            n.corner_radius = v.get("CornerRadius", parse_corner_radius, n.corner_radius)
         if kind == L.UNIFORM:
             n.uniform = tuple(
                 max(0, v.get(p, V.parse_int, 0)) for p in ("Rows", "Columns", "FirstColumn")

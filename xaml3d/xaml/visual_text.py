@@ -72,18 +72,26 @@ def _brush(r, v, prop: str, default=None):
 
 
 def _box_drawing(background, border, thickness, radius, w: float, h: float) -> list:
-    """A Border's background and border: the border is a band inside the box."""
+    """A Border's background and border: the border is a band inside the box. ``radius``
+    (CornerRadius) is that of the band's centre line, as WPF's Border draws it: the outer
+    edge's is half a thickness more (none stays square), the inner edge's half a thickness
+    less."""
     out = []
     left, top, right, bottom = thickness
     inner = (left, top, max(0.0, w - left - right), max(0.0, h - top - bottom))
+    rx_in, ry_in = max(0.0, radius - left / 2), max(0.0, radius - top / 2)
     if background is not None:
-        rect = inner if border is not None else (0.0, 0.0, w, h)
-        out.append(GeometryDrawing(RectangleGeometry(rect, radius, radius), brush=background))
+        if border is not None:
+            geometry = RectangleGeometry(inner, rx_in, ry_in)
+        else:
+            geometry = RectangleGeometry((0.0, 0.0, w, h), radius, radius)
+        out.append(GeometryDrawing(geometry, brush=background))
     if border is not None and any(t > 0 for t in thickness):
+        rx, ry = (radius + left / 2, radius + top / 2) if radius > 0 else (0.0, 0.0)
         band = CombinedGeometry(
             "Exclude",
-            RectangleGeometry((0.0, 0.0, w, h), radius, radius),
-            RectangleGeometry(inner, max(0.0, radius - left), max(0.0, radius - top)),
+            RectangleGeometry((0.0, 0.0, w, h), rx, ry),
+            RectangleGeometry(inner, rx_in, ry_in),
         )
         out.append(GeometryDrawing(band, brush=border))
     return out
