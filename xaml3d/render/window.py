@@ -238,10 +238,28 @@ def _close_layer(
     from xaml3d.render.layer2d.picture import compose_layers
 
     drawn = compose_layers(straight_uint8(layer), [(layer2d, rect, unit)], (1.0, 1.0))
-    premul = drawn.astype(np.float32) / 255.0
+    hb, wb = beneath.shape[:2]  # the layer may reach past the canvas beneath (_layer_canvas)
+    premul = drawn[:hb, :wb].astype(np.float32) / 255.0
     premul[..., :3] *= premul[..., 3:4]
     _over(beneath, 0, 0, premul)
     return beneath
+
+
+# how far past the client area a layer's canvas grows to hold an element's own box (per side,
+# in client sizes): a LayoutTransform shrinking it to a quarter still shows whole
+MAX_LAYER_GROWTH = 4
+
+
+def _layer_canvas(canvas: np.ndarray, rect) -> np.ndarray:
+    """An empty canvas for an element's layer, large enough for its own (untransformed) box:
+    a LayoutTransform that shrinks the element arranges it larger than the room it fills (a
+    0.7 scale in a 280 x 360 cell: 400 x 514), and what of it lay past the client area would
+    otherwise be lost before the transform brings it back in."""
+    H, W = canvas.shape[:2]
+    x, y, w, h = (_clamped(float(v), 1 << 30) for v in rect)
+    need_w = min(max(W, math.ceil(x + w)), MAX_LAYER_GROWTH * W)
+    need_h = min(max(H, math.ceil(y + h)), MAX_LAYER_GROWTH * H)
+    return np.zeros((need_h, need_w, 4), dtype=canvas.dtype)
 
 
 def _window_pictures(scene: Scene) -> tuple[Scene, dict[int, Layer2D]]:
@@ -313,7 +331,7 @@ def compose_window(
             # the element and everything inside it are drawn into a layer of their own, which
             # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
             open_layers.append((layer, b.rect, b.unit, ends[i], canvas))
-            canvas = np.zeros_like(canvas)
+            canvas = _layer_canvas(canvas, b.rect)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:
             brush = WINDOW_BACKGROUND
@@ -322,7 +340,7 @@ def compose_window(
         if brush is not None:
             # a Border paints its Background inside the border band (its brush maps there)
             _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush, _background_mask(b))
-        if b.kind == VIEWPORT and _overlaps(b.rect, W, H):
+        if b.kind == VIEWPORT and _overlaps(b.rect, canvas.shape[1], canvas.shape[0]):
             w, h = round(b.rect[2]), round(b.rect[3])
             if w >= 1 and h >= 1:
                 r = render_scene(
@@ -336,7 +354,7 @@ def compose_window(
                 x0, y0 = round(b.rect[0]), round(b.rect[1])
                 # the part inside the client area (a viewport may overhang it)
                 ys, xs = max(0, -y0), max(0, -x0)
-                ye, xe = min(h, H - y0), min(w, W - x0)
+                ye, xe = min(h, canvas.shape[0] - y0), min(w, canvas.shape[1] - x0)
                 if ye > ys and xe > xs:
                     _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
         if b.drawing is not None:  # a control's look (a GroupBox's frame over its panel)
