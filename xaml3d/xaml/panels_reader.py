@@ -587,7 +587,12 @@ def _content_text(el) -> str:
     (Run, Bold ...) and the text after property elements, with white space collapsed."""
     parts = [el.text or ""]
     for child in el:
-        if isinstance(child.tag, str) and "." not in qname(child.tag)[1]:
+        local = qname(child.tag)[1] if isinstance(child.tag, str) else "."
+        if local == "Run" and child.get("Text") is not None:  # a Run's text as an attribute
+            parts.append(child.get("Text"))
+        elif local == "LineBreak":
+            parts.append(" ")
+        elif "." not in local:
             parts.append("".join(child.itertext()))
         parts.append(child.tail or "")
     return " ".join("".join(parts).split())
