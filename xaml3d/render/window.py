@@ -245,20 +245,26 @@ def _close_layer(
     return beneath
 
 
-# how far past the client area a layer's canvas grows to hold an element's own box (per side,
-# in client sizes): a LayoutTransform shrinking it to a quarter still shows whole
+# how far past the client area a layer's canvas grows to hold an element's own box: four
+# client sizes a side (a LayoutTransform shrinking it to a quarter still shows whole), and at
+# most so many pixels in all (a float canvas of 16 M pixels is 256 MB)
 MAX_LAYER_GROWTH = 4
+MAX_LAYER_PIXELS = 1 << 24
 
 
-def _layer_canvas(canvas: np.ndarray, rect) -> np.ndarray:
-    """An empty canvas for an element's layer, large enough for its own (untransformed) box:
-    a LayoutTransform that shrinks the element arranges it larger than the room it fills (a
-    0.7 scale in a 280 x 360 cell: 400 x 514), and what of it lay past the client area would
-    otherwise be lost before the transform brings it back in."""
+def _layer_canvas(canvas: np.ndarray, layer, rect) -> np.ndarray:
+    """An empty canvas for an element's layer, large enough for its own (untransformed) box
+    when a LayoutTransform places it: one that shrinks the element arranges it larger than
+    the room it fills (a 0.7 scale in a 280 x 360 cell: 400 x 514), and what of it lay past
+    the client area would otherwise be lost before the transform brings it back in."""
     H, W = canvas.shape[:2]
+    if getattr(layer, "layout_transform", None) is None:
+        return np.zeros_like(canvas)
     x, y, w, h = (_clamped(float(v), 1 << 30) for v in rect)
     need_w = min(max(W, math.ceil(x + w)), MAX_LAYER_GROWTH * W)
     need_h = min(max(H, math.ceil(y + h)), MAX_LAYER_GROWTH * H)
+    if need_w * need_h > max(W * H, MAX_LAYER_PIXELS):
+        need_w, need_h = W, H  # too large to hold: drawn within the client area, as before
     return np.zeros((need_h, need_w, 4), dtype=canvas.dtype)
 
 
@@ -331,7 +337,7 @@ def compose_window(
             # the element and everything inside it are drawn into a layer of their own, which
             # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
             open_layers.append((layer, b.rect, b.unit, ends[i], canvas))
-            canvas = _layer_canvas(canvas, b.rect)
+            canvas = _layer_canvas(canvas, layer, b.rect)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:
             brush = WINDOW_BACKGROUND
