@@ -389,7 +389,32 @@ def test_markup_control_measured_and_estimate_is_info():
     s = load(x.replace("<Button DockPanel.Dock='Top'>Go</Button>",
                        "<DatePicker DockPanel.Dock='Top'/>"), text=True)  # fmt: skip
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 16)
-    assert any(d.code == "LAY003" and d.severity == "info" for d in s.diagnostics)
+    # ... and as the viewport shares its DockPanel, the guess places the viewport: a warning
+    (d,) = [d for d in s.diagnostics if d.code in ("LAY003", "LAY007")]
+    assert (d.code, d.severity) == ("LAY007", "warning")
+    assert d.message.startswith(
+        "DatePicker is not laid out by xaml3d: its content size is "
+        "estimated as 0 x 16, and a Viewport3D in the same panel"
+    )
+
+
+def test_estimate_beside_viewport_is_a_warning_and_drawn_controls_say_so():
+    # a Calendar docked left of the viewport: its guessed width is the viewport's room
+    x = (f"<DockPanel {NS} Width='400' Height='200'>"
+         "<Calendar DockPanel.Dock='Left'/><Viewport3D/></DockPanel>")  # fmt: skip
+    s = load(x, text=True)
+    assert [(d.code, d.severity) for d in s.diagnostics if d.code.startswith("LAY")] == [
+        ("LAY007", "warning")
+    ]
+    # on a Canvas the viewport does not move with its neighbour: info only, and a drawn
+    # control is not said to be left out of layout
+    s = load(f"<Canvas {NS} Width='400' Height='200'><ProgressBar/>"
+             "<Viewport3D Width='10' Height='10'/></Canvas>", text=True)  # fmt: skip
+    (d,) = [d for d in s.diagnostics if d.code.startswith("LAY")]
+    assert (d.code, d.severity) == ("LAY003", "info")
+    assert d.message.startswith(
+        "ProgressBar is drawn but not measured by xaml3d: its content size is estimated as 0 x 10"
+    )
 
 
 XNS = 'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'

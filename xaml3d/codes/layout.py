@@ -19,4 +19,8 @@ LAYOUT_CODES: dict[str, tuple[str, str]] = {
         "info",
         "no longer reported: a LayoutTransform is applied in layout and drawn (render --window)",
     ),
+    "LAY007": (
+        "warning",
+        "a control xaml3d does not measure takes an estimated size that places a Viewport3D",
+    ),
 }

@@ -35,3 +35,15 @@ def line_height(size: float) -> float:
 def baseline(size: float) -> float:
     """Distance from the top of a line to its baseline at ``size`` px."""
     return SEGOE_UI_BASELINE * size
+
+
+@functools.lru_cache(maxsize=256)
+def underline(size: float, weight: int = 400, italic: bool = False) -> tuple[float, float]:
+    """(offset below the baseline, thickness) of an underline at ``size`` px: the package
+    font's own underline metrics."""
+    import skia
+
+    from xaml3d.fonts import typeface
+
+    m = skia.Font(typeface(weight, italic), float(size)).getMetrics()
+    return float(m.fUnderlinePosition), float(m.fUnderlineThickness)

@@ -118,6 +118,7 @@ class Node:
     # what the picture needs (opaque to layout): brushes, the viewport's index
     background: object = None
     border_brush: object = None
+    corner_radius: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # a Border's
     viewport: int | None = None
     # a 2D control's own drawing in its box (scene.drawing; None: not drawn, outlined at most)
     drawing: object = None

@@ -6,19 +6,20 @@ background (WPF's default is the system window colour, white), every panel's and
 Background (solid, gradient, image, drawing and visual brushes, in the element's own
 coordinates, a drawn tile at one texel a pixel: a brush's relative units refer to the element's
 box; a Border's Background fills, and maps to, the box inside its BorderThickness), each
-Border's BorderBrush band of BorderThickness, and every visible Viewport3D rendered at its
-laid-out rectangle with its own camera and aspect ratio (``render_scene``), composited over
-what lies beneath. The 2D controls the 2D layer draws (TextBlock, Label, Button, TextBox,
-CheckBox, RadioButton, ComboBox, Slider, ProgressBar, Separator, ScrollBar, shapes, Image, the
-parts of ListBox, TabControl, GroupBox, Expander and content controls: ``Box.drawing``,
-docs/layer2d.md) are drawn in their laid-out boxes; ``outline_controls`` draws a one-pixel
-outline of each control's layout box. An element with Opacity, OpacityMask, Clip,
-RenderTransform or an Effect (``Box.layer``) is drawn with everything inside it into a layer of
-its own, which the 2D layer then transforms, clips, filters and fades over what lies beneath, as
-WPF composes a visual's subtree; the canvas reaches past the client area (at most one client
-area each way) where such an element holds what its transform or effect can bring into view.
-Hidden and Collapsed elements and their content are left out. A pixel belongs to a box when
-its centre lies inside it.
+Border's BorderBrush band of BorderThickness (both rounded by its CornerRadius), and every
+visible Viewport3D rendered at its laid-out rectangle with its own camera and aspect ratio
+(``render_scene``), composited over what lies beneath. The 2D controls the 2D layer draws
+(TextBlock, Label, Button, TextBox, CheckBox, RadioButton, ComboBox, Slider, ProgressBar,
+Separator, ScrollBar, shapes, Image, the parts of ListBox, TabControl, GroupBox, Expander and
+content controls: ``Box.drawing``, docs/layer2d.md) are drawn in their laid-out boxes;
+``outline_controls`` draws a one-pixel outline of each control's layout box. An element with
+Opacity, OpacityMask, Clip, RenderTransform or an Effect (``Box.layer``) is drawn with
+everything inside it into a layer of its own, which the 2D layer then transforms, clips, filters
+and fades over what lies beneath, as WPF composes a visual's subtree; the canvas reaches past
+the client area where such an element holds what its transform, effect or LayoutTransform can
+bring into view (``_layer_canvas``). Hidden and Collapsed
+elements and their content are left out. A pixel belongs to a box when its centre lies inside
+it.
 """
 
 from __future__ import annotations
@@ -107,16 +108,72 @@ def _fill(canvas: np.ndarray, rect, brush, mask=None) -> None:
     _over(canvas, r0, c0, color)
 
 
-def _band(b: Box):
-    """The BorderThickness band of a Border, as a mask over element coordinates."""
+def _radii(b: Box, outer: bool) -> list[tuple[float, float]]:
+    """A Border's corner radii (TopLeft, TopRight, BottomRight, BottomLeft) as WPF's Border
+    draws them: CornerRadius is the radius of the band's centre line, so the outer edge's is
+    half a thickness more (a zero radius stays square) and the inner edge's half a thickness
+    less."""
     left, top, right, bottom = b.border
-    w, h = b.rect[2], b.rect[3]
+    sides = ((left, top), (right, top), (right, bottom), (left, bottom))
+    out = []
+    for (cx, cy), (tx, ty) in zip(b.corner, sides, strict=True):
+        if outer:
+            out.append((cx + tx / 2, cy + ty / 2) if cx > 0 and cy > 0 else (0.0, 0.0))
+        else:
+            out.append((max(0.0, cx - tx / 2), max(0.0, cy - ty / 2)))
+    return out
+
+
+def _rounded(w: float, h: float, radii):
+    """The coverage (0..1) of the rectangle (0, 0, w, h) with elliptical corners ``radii``
+    (TopLeft, TopRight, BottomRight, BottomLeft), over element coordinates: pixel centres
+    inside the straight edges, anti-aliased along the arcs (radii that do not fit are scaled
+    down in proportion, as WPF's Border does)."""
+    (a, b), (c, d), (e, f), (g, k) = radii
+    sums = ((w, a + c), (w, g + e), (h, b + k), (h, d + f))
+    fit = min([1.0, *(length / both for length, both in sums if both > length)])
+    rs = [(rx * fit, ry * fit) for rx, ry in radii]
+    # each corner: its ellipse's centre and the quadrant it rounds (sign of x, y from it)
+    centres = [(rs[0][0], rs[0][1], -1, -1), (w - rs[1][0], rs[1][1], 1, -1),
+               (w - rs[2][0], h - rs[2][1], 1, 1), (rs[3][0], h - rs[3][1], -1, 1)]  # fmt: skip
 
     def mask(px, py):
-        inner = (px >= left) & (px < w - right) & (py >= top) & (py < h - bottom)
-        return (~inner).astype(np.float32)
+        cov = ((px >= 0) & (px < w) & (py >= 0) & (py < h)).astype(np.float32)
+        for (rx, ry), (cx, cy, sx, sy) in zip(rs, centres, strict=True):
+            if rx <= 0 or ry <= 0:
+                continue
+            dx, dy = (px - cx) * sx, (py - cy) * sy
+            corner = (dx > 0) & (dy > 0)
+            q = np.hypot(dx / rx, dy / ry)
+            # the distance past the arc in pixels, near enough for a pixel's coverage
+            edge = np.clip(0.5 - (q - 1.0) * min(rx, ry), 0.0, 1.0).astype(np.float32)
+            cov = np.where(corner, np.minimum(cov, edge), cov)
+        return cov
 
     return mask
+
+
+def _band(b: Box):
+    """The BorderThickness band of a Border, as a mask over element coordinates (rounded by
+    its CornerRadius)."""
+    left, top, right, bottom = b.border
+    w, h = b.rect[2], b.rect[3]
+    outer = _rounded(w, h, _radii(b, True))
+    inner = _rounded(max(0.0, w - left - right), max(0.0, h - top - bottom), _radii(b, False))
+
+    def mask(px, py):
+        return np.clip(outer(px, py) - inner(px - left, py - top), 0.0, 1.0)
+
+    return mask
+
+
+def _background_mask(b: Box):
+    """Where a Border's Background shows: the box inside the band, its corners rounded by the
+    inner radii (None: square, nothing to mask)."""
+    if b.kind != BORDER or not any(r > 0 for c in b.corner for r in c):
+        return None
+    x, y, w, h = b.inner
+    return _rounded(w, h, _radii(b, False))
 
 
 def _outline(canvas: np.ndarray, rect) -> None:
@@ -183,10 +240,34 @@ def _close_layer(
     from xaml3d.render.layer2d.picture import compose_layers
 
     drawn = compose_layers(straight_uint8(layer), [(layer2d, rect, unit)], (1.0, 1.0))
-    premul = drawn.astype(np.float32) / 255.0
+    hb, wb = beneath.shape[:2]  # the layer may reach past the canvas beneath (_layer_canvas)
+    premul = drawn[:hb, :wb].astype(np.float32) / 255.0
     premul[..., :3] *= premul[..., 3:4]
     _over(beneath, 0, 0, premul)
     return beneath
+
+
+# how far past the client area a layer's canvas grows to hold an element's own box: four
+# client sizes a side (a LayoutTransform shrinking it to a quarter still shows whole), and at
+# most so many pixels in all (a float canvas of 16 M pixels is 256 MB)
+MAX_LAYER_GROWTH = 4
+MAX_LAYER_PIXELS = 1 << 24
+
+
+def _layer_canvas(canvas: np.ndarray, layer, rect) -> np.ndarray:
+    """An empty canvas for an element's layer, large enough for its own (untransformed) box
+    when a LayoutTransform places it: one that shrinks the element arranges it larger than
+    the room it fills (a 0.7 scale in a 280 x 360 cell: 400 x 514), and what of it lay past
+    the client area would otherwise be lost before the transform brings it back in."""
+    H, W = canvas.shape[:2]
+    if getattr(layer, "layout_transform", None) is None:
+        return np.zeros_like(canvas)
+    x, y, w, h = (_clamped(float(v), 1 << 30) for v in rect)
+    need_w = min(max(W, math.ceil(x + w)), MAX_LAYER_GROWTH * W)
+    need_h = min(max(H, math.ceil(y + h)), MAX_LAYER_GROWTH * H)
+    if need_w * need_h > max(W * H, MAX_LAYER_PIXELS):
+        need_w, need_h = W, H  # too large to hold: drawn within the client area, as before
+    return np.zeros((need_h, need_w, 4), dtype=canvas.dtype)
 
 
 def _window_pictures(scene: Scene) -> tuple[Scene, dict[int, Layer2D]]:
@@ -309,7 +390,7 @@ def compose_window(
             # the element and everything inside it are drawn into a layer of their own, which
             # its Clip, Effect, Opacity and OpacityMask and RenderTransform then act on
             open_layers.append((layer, b.rect, b.unit, ends[i], canvas))
-            canvas = np.zeros_like(canvas)
+            canvas = _layer_canvas(canvas, layer, b.rect)
         brush = b.background
         if brush is None and b.kind == WINDOW and i == 0:
             brush = WINDOW_BACKGROUND
@@ -317,8 +398,8 @@ def compose_window(
             _fill(canvas, b.rect, b.border_brush, _band(b))
         if brush is not None:
             # a Border paints its Background inside the border band (its brush maps there)
-            _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush)
-        if b.kind == VIEWPORT and _overlaps(b.rect, W, H):
+            _fill(canvas, b.inner if b.kind == BORDER else b.rect, brush, _background_mask(b))
+        if b.kind == VIEWPORT and _overlaps(b.rect, canvas.shape[1], canvas.shape[0]):
             w, h = round(b.rect[2]), round(b.rect[3])
             if w >= 1 and h >= 1:
                 r = render_scene(
@@ -332,7 +413,7 @@ def compose_window(
                 x0, y0 = round(b.rect[0]), round(b.rect[1])
                 # the part inside the client area (a viewport may overhang it)
                 ys, xs = max(0, -y0), max(0, -x0)
-                ye, xe = min(h, H - y0), min(w, W - x0)
+                ye, xe = min(h, canvas.shape[0] - y0), min(w, canvas.shape[1] - x0)
                 if ye > ys and xe > xs:
                     _over(canvas, y0 + ys, x0 + xs, premul[ys:ye, xs:xe])
         if b.drawing is not None:  # a control's look (a GroupBox's frame over its panel)

@@ -38,6 +38,9 @@ class Box:
     border_brush: Brush | None = None
     border: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
     viewport: int | None = None  # index in Scene.viewports (kind VIEWPORT)
+    # a Border's CornerRadius (TopLeft, TopRight, BottomRight, BottomLeft), each as (x, y)
+    # radii scaled with the element like ``border``
+    corner: tuple = ((0.0, 0.0),) * 4
     # a control's look as the 2D layer draws it (xaml3d.scene.drawing), in its own coordinates
     # of natural size ``ink`` (scaled to ``rect``, e.g. by a Viewbox); None: not drawn
     drawing: object = None

@@ -29,6 +29,7 @@ from xaml3d.xaml.controls_reader import (
     scroll_bar_upright,
 )
 from xaml3d.xaml.geometry_reader import geometry_property
+from xaml3d.xaml.inline_text import has_inlines, size_of
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
@@ -37,7 +38,15 @@ from xaml3d.xaml.panels_reader import (
     _turns,
     parse_thickness,
 )
-from xaml3d.xaml.visual_text import _font_style, _lines, _text_of, trim, trimming, wraps
+from xaml3d.xaml.visual_text import (
+    _font_style,
+    _lines,
+    _text_of,
+    base_format,
+    trim,
+    trimming,
+    wraps,
+)
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
                  "CheckBox", "RadioButton"}  # fmt: skip
@@ -104,11 +113,14 @@ def vertical(v) -> bool:
 def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
     """(width, height) of a text control's content and chrome; a wrapping TextBlock's lines
     broken to ``room`` less its Padding."""
-    text = _text_of(el)
-    weight, italic = _font_style(el)
     pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
     inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
     block = local == "TextBlock"
+    if block and has_inlines(el):  # runs in their own fonts, LineBreaks (inline_text)
+        w, h = size_of(v.r, el, base_format(v.r, el, font), inner if wraps(v) else math.inf)
+        return w + pad[0] + pad[2], max(h, line_height(font)) + pad[1] + pad[3]
+    text = _text_of(el)
+    weight, italic = _font_style(el)
     lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf)
     if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
         mode = trimming(v)

@@ -93,6 +93,7 @@ def window_layout(result: LayoutResult, layers: dict | None = None) -> WindowLay
                 background=n.background,
                 border_brush=n.border_brush,
                 border=(left * sx, top * sy, right * sx, bottom * sy),
+                corner=tuple((c * sx, c * sy) for c in n.corner_radius),
                 viewport=n.viewport,
                 drawing=n.drawing,
                 layer=layers.get(id(n)),

@@ -68,6 +68,8 @@ _DEFAULT_PADDING = {
     "Label": (5, 5, 5, 5), "Button": (1, 1, 1, 1), "ToggleButton": (1, 1, 1, 1),
     "RepeatButton": (1, 1, 1, 1), "TextBox": (1, 1, 1, 1), "PasswordBox": (1, 1, 1, 1),
 }  # fmt: skip
+# Controls the 2D layer draws whose content size has no measurement: their estimate stands.
+_DRAWN_ESTIMATED = {"ProgressBar"}
 # Bars whose items sit side by side: their estimate is the sum of the items' sizes.
 _BARS = {"ToolBar", "ToolBarTray", "StatusBar"}
 # Property elements whose children are not laid out as content.
@@ -110,6 +112,15 @@ def parse_thickness(s: str) -> tuple[float, float, float, float]:
     if len(toks) == 4:
         return tuple(toks)
     raise ValueSyntaxError(f"Thickness needs 1, 2 or 4 lengths, got {len(toks)}", code="VAL003")
+
+
+def parse_corner_radius(s: str) -> tuple[float, float, float, float]:
+    """A CornerRadius: one number (every corner) or four (TopLeft, TopRight, BottomRight,
+    BottomLeft); a negative radius is taken as 0, as Border draws it."""
+    toks = [V.parse_double(t) for t, _ in V.split_tokens(s, "CornerRadius")]
+    if len(toks) not in (1, 4):
+        raise ValueSyntaxError(f"CornerRadius needs 1 or 4 numbers, got {len(toks)}", code="VAL003")
+    return tuple(max(0.0, t) if math.isfinite(t) else 0.0 for t in toks * (4 // len(toks)))
 
 
 def parse_grid_length(s: str) -> tuple[str, float]:
@@ -439,6 +450,8 @@ class PanelsReader:
         if kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.BORDER, L.CONTAINER, L.SCROLL):
             n.padding = v.get("Padding", parse_thickness, n.padding)
             n.border = v.get("BorderThickness", parse_thickness, n.border)
+        if kind == L.BORDER:
+            n.corner_radius = v.get("CornerRadius", parse_corner_radius, n.corner_radius)
         if kind == L.UNIFORM:
             n.uniform = tuple(
                 max(0, v.get(p, V.parse_int, 0)) for p in ("Rows", "Columns", "FirstColumn")
@@ -535,13 +548,29 @@ class PanelsReader:
         # a LayoutTransform is applied by the layout engine (layout/transform.py) to the
         # measured or estimated size alike
         unsized = n.width != n.width or n.height != n.height
-        if measured is None and unsized and n.layout_transform is not None:
-            self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
-                      f"estimated as {w:g} x {h:g}, then turned by its LayoutTransform",
-                      el)  # fmt: skip
-        elif measured is None and unsized:
-            self.note("LAY003", f"{local} is not laid out by xaml3d: its content size is "
-                      f"estimated as {w:g} x {h:g}", el)  # fmt: skip
+        if measured is not None or not unsized:
+            return
+        what = (f"{local} is drawn but not measured by xaml3d" if local in _DRAWN_ESTIMATED
+                else f"{local} is not laid out by xaml3d")  # fmt: skip
+        turned = ", then turned by its LayoutTransform" if n.layout_transform is not None else ""
+        if self._beside_viewport(el):
+            # the viewport's box depends on the guess: said without -v (LAY007)
+            self.note("LAY007", f"{what}: its content size is estimated as {w:g} x {h:g}"
+                      f"{turned}, and a Viewport3D in the same panel is placed by that "
+                      "estimate (give the control a Width and Height)", el)  # fmt: skip
+        else:
+            self.note("LAY003", f"{what}: its content size is estimated as {w:g} x {h:g}"
+                      f"{turned}", el)  # fmt: skip
+
+    def _beside_viewport(self, el) -> bool:
+        """Whether an estimated element shares a panel that lays out its children one after
+        another (not a Canvas) with a Viewport3D: the viewport's room is then what the estimate
+        leaves."""
+        parent = el.getparent()
+        while parent is not None and "." in qname(parent.tag)[1]:
+            parent = parent.getparent()  # a property element: its owner is the panel
+        return (parent is not None and id(parent) in self.holds_viewport
+                and qname(parent.tag)[1] != "Canvas")  # fmt: skip
 
 
 def _outer(k: L.Node) -> tuple[float, float]:
@@ -558,7 +587,12 @@ def _content_text(el) -> str:
     (Run, Bold ...) and the text after property elements, with white space collapsed."""
     parts = [el.text or ""]
     for child in el:
-        if isinstance(child.tag, str) and "." not in qname(child.tag)[1]:
+        local = qname(child.tag)[1] if isinstance(child.tag, str) else "."
+        if local == "Run" and child.get("Text") is not None:  # a Run's text as an attribute
+            parts.append(child.get("Text"))
+        elif local == "LineBreak":
+            parts.append(" ")
+        elif "." not in local:
             parts.append("".join(child.itertext()))
         parts.append(child.tail or "")
     return " ".join("".join(parts).split())

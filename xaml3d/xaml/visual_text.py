@@ -1,11 +1,11 @@
 """The text and boxes of a visual's elements, as WPF's OnRender draws them (visuals_reader).
 
-Covers a TextBlock's (and a control's) text: its content (Text, Content, inline Runs flattened,
-white space collapsed), the inherited Foreground, FontSize, FontWeight, FontStyle and
-FontFamily, TextAlignment, TextWrapping and TextTrimming (CharacterEllipsis, WordEllipsis) to
-the width the layout gives the TextBlock, and one TextDrawing per line at Segoe UI's line
-metrics (``xaml3d.layout.text``); and the Background / BorderBrush band of a Border-like box
-(BorderThickness, CornerRadius).
+Covers a TextBlock's (and a control's) text: its content (Text, Content, white space collapsed;
+a TextBlock's inlines in their own formats and lines: ``inline_text``), the inherited
+Foreground, FontSize, FontWeight, FontStyle and FontFamily, TextAlignment, TextWrapping and
+TextTrimming (CharacterEllipsis, WordEllipsis) to the width the layout gives the TextBlock, and
+one TextDrawing per line at Segoe UI's line metrics (``xaml3d.layout.text``); and the Background
+/ BorderBrush band of a Border-like box (BorderThickness, CornerRadius).
 """
 
 from __future__ import annotations
@@ -25,6 +25,7 @@ from xaml3d.scene.types import SolidColorBrush
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
+from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
 from xaml3d.xaml.panels_reader import _content_text
 
 
@@ -72,18 +73,26 @@ def _brush(r, v, prop: str, default=None):
 
 
 def _box_drawing(background, border, thickness, radius, w: float, h: float) -> list:
-    """A Border's background and border: the border is a band inside the box."""
+    """A Border's background and border: the border is a band inside the box. ``radius``
+    (CornerRadius) is that of the band's centre line, as WPF's Border draws it: the outer
+    edge's is half a thickness more (none stays square), the inner edge's half a thickness
+    less."""
     out = []
     left, top, right, bottom = thickness
     inner = (left, top, max(0.0, w - left - right), max(0.0, h - top - bottom))
+    rx_in, ry_in = max(0.0, radius - left / 2), max(0.0, radius - top / 2)
     if background is not None:
-        rect = inner if border is not None else (0.0, 0.0, w, h)
-        out.append(GeometryDrawing(RectangleGeometry(rect, radius, radius), brush=background))
+        if border is not None:
+            geometry = RectangleGeometry(inner, rx_in, ry_in)
+        else:
+            geometry = RectangleGeometry((0.0, 0.0, w, h), radius, radius)
+        out.append(GeometryDrawing(geometry, brush=background))
     if border is not None and any(t > 0 for t in thickness):
+        rx, ry = (radius + left / 2, radius + top / 2) if radius > 0 else (0.0, 0.0)
         band = CombinedGeometry(
             "Exclude",
-            RectangleGeometry((0.0, 0.0, w, h), radius, radius),
-            RectangleGeometry(inner, max(0.0, radius - left), max(0.0, radius - top)),
+            RectangleGeometry((0.0, 0.0, w, h), rx, ry),
+            RectangleGeometry(inner, rx_in, ry_in),
         )
         out.append(GeometryDrawing(band, brush=border))
     return out
@@ -168,11 +177,13 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     """The element's text as one TextDrawing per line (a DrawingGroup when it wraps). ``w``:
     the width laid out for it: a TextBlock wraps (TextWrapping) and trims (TextTrimming) its
     lines to it, as WPF formats the text again at the arranged width."""
+    block = qname(el.tag)[1] == "TextBlock"
+    if block and has_inlines(el):
+        return _inline_text(r, el, v, font, x, y, w, align_center)
     text = _text_of(el)
     if not text:
         return None
     weight, italic = _font_style(el)
-    block = qname(el.tag)[1] == "TextBlock"
     width = w + _SLACK if block and wraps(v) else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
@@ -193,4 +204,48 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
             text=line, origin=(lx, ly), font_size=font, weight=weight, italic=italic,
             family=family, brush=brush, **r.ctx.position(el),
         ))  # fmt: skip
+    return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
+
+
+def _alignment(v) -> str:
+    return v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
+                                                            "Justify")), "Left")  # fmt: skip
+
+
+def base_format(r, el, font: float) -> Format:
+    """The TextBlock's own text format, that its inlines start from."""
+    weight, italic = _font_style(el)
+    return Format(size=font, weight=weight, italic=italic, brush=_foreground(r, el))
+
+
+def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool):
+    """A TextBlock's inlines (``inline_text``): one TextDrawing per run of a line, on the
+    line's shared baseline, an underlined run over a bar at the font's underline metrics."""
+    from xaml3d.layout.text import underline
+
+    family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+    alignment = _alignment(v)
+    width = w + _SLACK if wraps(v) else math.inf
+    out = []
+    top = y
+    for line, height, base in laid_out(r, el, base_format(r, el, font), width):
+        lx = x
+        if align_center or alignment == "Center":
+            lx += (w - line_width(line)) / 2
+        elif alignment == "Right":
+            lx += w - line_width(line)
+        for text, fmt in line:
+            tw = fmt.width(text)
+            out.append(TextDrawing(
+                text=text, origin=(lx, top + base), font_size=fmt.size, weight=fmt.weight,
+                italic=fmt.italic, family=family, brush=fmt.brush, **r.ctx.position(el),
+            ))  # fmt: skip
+            if fmt.underline and tw > 0:
+                at, thick = underline(fmt.size, fmt.weight, fmt.italic)
+                bar = RectangleGeometry((lx, top + base + at, tw, thick))
+                out.append(GeometryDrawing(bar, brush=fmt.brush))
+            lx += tw
+        top += height
+    if not out:
+        return None
     return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))

@@ -3,8 +3,8 @@ elements around it applied to its rendered picture (scene Viewport2D), and any e
 over what ``render --window`` drew inside it.
 
 Pipeline step: after the 3D picture is resolved, before it is composed over the background.
-WPF draws a UIElement's content, clips it (Clip), applies its Effect to the clipped content,
-fades it (Opacity, OpacityMask) and places the result by its RenderTransform, all in the
+WPF draws a UIElement's content, applies its Effect, clips the result (Clip: a shadow or a
+blur is cut too), fades it (Opacity, OpacityMask) and places it by its RenderTransform, all in the
 element's own coordinates (DIPs; ``scale`` gives image pixels per DIP). The layers of nested
 elements nest: each parent's applies to its child's composed layer. The picture keeps its
 box: what a transform or a shadow moves beyond the viewport's rectangle is cut off.
@@ -49,7 +49,9 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=N
     (DIPs) and the size of one of its own units there (a Viewbox around it scales them). Each
     element's layer nests inside its parent's, as WPF renders a visual tree: the parent's
     RenderTransform about its own box, its Clip, then the children drawn into one layer that
-    takes its Effect, Opacity and OpacityMask, all in the element's own units. Returns the
+    takes its Effect, Opacity and OpacityMask, all in the element's own units. A clip set before
+    a filtered layer cuts the filter's output only (skia's saveLayer), so the Effect acts on the
+    unclipped content and the Clip on its result, as WPF's Visual composes them. Returns the
     straight-alpha uint8 picture in the same box, or with ``place`` (``placement.Placement``:
     the LayoutTransforms in ``levels`` turn the box) in the box they turn it into."""
     h, w = rgba.shape[:2]

@@ -1,0 +1,208 @@
+"""A TextBlock's inlines as WPF lays them out: Run, Span, Bold, Italic, Underline, Hyperlink and
+LineBreak (visuals_reader, control_sizes; the TextBlock step of the 2D layer).
+
+Each inline takes its own FontWeight, FontStyle, FontSize, Foreground and TextDecorations
+(Underline) over those it inherits; Bold, Italic and Underline set theirs, a Hyperlink draws
+in WPF's #FF0066CC, underlined. A Run's text is its Text attribute or its content. The text is
+collapsed as XAML collapses it (runs of white space become one space, across the inlines; none
+at the start and the end of the TextBlock, nor around a LineBreak). The runs flow on one line,
+each measured with its own font; a LineBreak starts a new line; a line is as tall as its tallest
+run's line (Segoe UI's line spacing) and its runs share the baseline of the lowest one.
+Wrapping breaks at spaces, as a plain TextBlock's text; TextTrimming is not applied to lines of
+several runs.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+from xaml3d.fonts import WEIGHTS
+from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.scene.types import SolidColorBrush
+from xaml3d.xaml.brushes_reader import brush_property
+from xaml3d.xaml.context import qname, split_markup
+
+# the inline elements; any other element inside a TextBlock (InlineUIContainer...) is skipped
+_INLINES = {"Run", "Span", "Bold", "Italic", "Underline", "Hyperlink", "LineBreak"}
+HYPERLINK = SolidColorBrush(color=(0.0, 0x66 / 255, 0xCC / 255, 1.0))  # WPF's Hyperlink style
+
+
+@dataclass(frozen=True)
+class Format:
+    """How a run is drawn: FontSize, FontWeight (OpenType number), italic, brush, underline."""
+
+    size: float
+    weight: int
+    italic: bool
+    brush: object
+    underline: bool = False
+
+    def width(self, text: str) -> float:
+        return text_width(text, self.size, self.weight, self.italic)
+
+
+Line = list  # of (text, Format) runs, left to right
+
+
+def has_inlines(el) -> bool:
+    """Whether a TextBlock's content holds inline elements (else its text is plain)."""
+    if el.get("Text") is not None:
+        return False
+    return any(isinstance(k.tag, str) and qname(k.tag)[1] in _INLINES for k in el)
+
+
+def _own(r, el, fmt: Format) -> Format:
+    """``fmt`` with what the inline element ``el`` sets itself."""
+    local = qname(el.tag)[1]
+    if local == "Bold":
+        fmt = replace(fmt, weight=700)
+    elif local == "Italic":
+        fmt = replace(fmt, italic=True)
+    elif local in ("Underline", "Hyperlink"):
+        fmt = replace(fmt, underline=True)
+    if local == "Hyperlink":
+        fmt = replace(fmt, brush=HYPERLINK)
+    w = el.get("FontWeight")
+    if w is not None and split_markup(w) is None:
+        fmt = replace(fmt, weight=WEIGHTS.get(w.strip(), fmt.weight))
+    s = el.get("FontStyle")
+    if s is not None and split_markup(s) is None:
+        fmt = replace(fmt, italic=s.strip() in ("Italic", "Oblique"))
+    size = el.get("FontSize")
+    if size is not None and split_markup(size) is None:
+        from xaml3d.xaml.panels_reader import parse_length
+
+        try:
+            value = parse_length(size)
+        except ValueError:
+            value = math.nan
+        if value == value and 0 < value < math.inf:
+            fmt = replace(fmt, size=value)
+    deco = el.get("TextDecorations")
+    if deco is not None and "Underline" in deco:
+        fmt = replace(fmt, underline=True)
+    p = r.props(el)
+    if "Foreground" in p.attrs or "Foreground" in p.elems:
+        brush = brush_property(r, p, "Foreground")
+        if brush is not None:
+            fmt = replace(fmt, brush=brush)
+    return fmt
+
+
+def _tokens(r, el, fmt: Format, out: list) -> None:
+    """The text and breaks of an inline element's content, in order: (text, Format) or None
+    for a LineBreak."""
+    if el.text:
+        out.append((el.text, fmt))
+    for k in el:
+        if isinstance(k.tag, str):
+            local = qname(k.tag)[1]
+            if local == "LineBreak":
+                out.append(None)
+            elif local in _INLINES:
+                own = _own(r, k, fmt)
+                text = k.get("Text") if local == "Run" else None
+                if text is not None and split_markup(text) is None:
+                    out.append((text, own))
+                else:
+                    _tokens(r, k, own, out)
+        if k.tail:
+            out.append((k.tail, fmt))
+
+
+def inline_lines(r, el, base: Format) -> list[Line]:
+    """A TextBlock's inlines as lines of runs (white space collapsed as XAML does)."""
+    tokens: list = []
+    _tokens(r, el, base, tokens)
+    lines: list[Line] = [[]]
+    space = True  # after the start of a line: leading white space goes
+    for t in tokens:
+        if t is None:
+            lines.append([])
+            space = True
+            continue
+        text, fmt = t
+        parts = text.split()
+        if not parts:
+            if not space and text:
+                lines[-1].append((" ", fmt))
+                space = True
+            continue
+        s = (" " if text[0].isspace() and not space else "") + " ".join(parts)
+        s += " " if text[-1].isspace() else ""
+        lines[-1].append((s, fmt))
+        space = s.endswith(" ")
+    out = []
+    for line in lines:  # no white space at a line's end (before a LineBreak or the end)
+        while line and line[-1][0].endswith(" "):
+            text = line[-1][0].rstrip(" ")
+            line[-1:] = [(text, line[-1][1])] if text else []
+        out.append(line)
+    return out
+
+
+def line_width(line: Line) -> float:
+    return sum(f.width(t) for t, f in line)
+
+
+def line_metrics(line: Line, base: Format) -> tuple[float, float]:
+    """(height, baseline from the top) of a line: its tallest run's (the base font's when
+    empty)."""
+    sizes = [f.size for _, f in line] or [base.size]
+    return max(line_height(s) for s in sizes), max(baseline(s) for s in sizes)
+
+
+def wrap(line: Line, width: float) -> list[Line]:
+    """A line of runs broken at spaces into lines no wider than ``width`` (a word wider than
+    the line keeps a line of its own)."""
+    if not math.isfinite(width) or line_width(line) <= width:
+        return [line]
+    words: list[Line] = [[]]  # each word: its runs; words are separated by one space
+    for text, fmt in line:
+        pieces = text.split(" ")
+        for i, piece in enumerate(pieces):
+            if i > 0:
+                words.append([])
+            if piece:
+                words[-1].append((piece, fmt))
+    words = [w for w in words if w]
+    out: list[Line] = []
+    cur: Line = []
+    for word in words:
+        trial = cur + [(" ", cur[-1][1])] + word if cur else word
+        if cur and line_width(trial) > width:
+            out.append(cur)
+            cur = list(word)
+        else:
+            cur = trial
+    out.append(cur)
+    return [_merged(x) for x in out]
+
+
+def _merged(line: Line) -> Line:
+    """Adjacent runs of one format joined (one TextDrawing each)."""
+    out: Line = []
+    for text, fmt in line:
+        if out and out[-1][1] == fmt:
+            out[-1] = (out[-1][0] + text, fmt)
+        else:
+            out.append((text, fmt))
+    return out
+
+
+def laid_out(r, el, base: Format, width: float) -> list[tuple[Line, float, float]]:
+    """The TextBlock's lines, wrapped to ``width`` (infinite: no wrapping), each with its
+    height and baseline."""
+    out = []
+    for line in inline_lines(r, el, base):
+        for part in wrap(line, width):
+            h, b = line_metrics(part, base)
+            out.append((part, h, b))
+    return out
+
+
+def size_of(r, el, base: Format, width: float = math.inf) -> tuple[float, float]:
+    """(width, height) of the TextBlock's inlines."""
+    lines = laid_out(r, el, base, width)
+    return max((line_width(x) for x, _, _ in lines), default=0.0), sum(h for _, h, _ in lines)
