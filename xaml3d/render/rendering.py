@@ -98,6 +98,11 @@ def draw_viewport(
     for d in ctx.diagnostics:
         diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
                                                  d.line, d.column))  # fmt: skip
+    uniform = None
+    if store is None:
+        rgba, zbuf = fb.resolve(grid, nearest=nearest)
+    else:  # passes the store kept are drawn here: the count of fragments is known after it
+        rgba, zbuf, uniform = store.finish(fb, grid, depth)
     if fb.fragments_drawn == 0 and pipeline is not None:  # a camera error says why already
         if vp.models:
             msg = "nothing was drawn in the image"
@@ -105,11 +110,6 @@ def draw_viewport(
         else:
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
-    uniform = None
-    if store is None:
-        rgba, zbuf = fb.resolve(grid, nearest=nearest)
-    else:
-        rgba, zbuf, uniform = store.finish(fb, grid, depth)
     if (
         fb.fragments_drawn
         and w * h > 1
