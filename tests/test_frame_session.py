@@ -262,3 +262,31 @@ def test_the_resolve_of_kept_buffers_band_by_band_is_the_fresh_resolve():
     assert np.array_equal(got, rgba) and np.array_equal(got_depth, depth)
     assert not uniform
     assert (zbuf == 0.0).all() and (color == background).all()
+
+
+def test_a_camera_that_does_not_move_is_set_up_once(monkeypatch):
+    """A session's frames share the pipeline of a camera that is not animated and reads no
+    scene bounds (finite far plane, near plane above 0); an infinite far plane follows the
+    moving scene's bounds every frame. The pictures are the fresh renders' either way."""
+    from xaml3d.render import rendering
+    from xaml3d.scene import camera_math
+
+    calls = []
+    real = camera_math.camera_pipeline
+
+    def counted(camera, *args, **kw):
+        calls.append(kw.get("bounds"))
+        return real(camera, *args, **kw)
+
+    monkeypatch.setattr(camera_math, "camera_pipeline", counted)
+    monkeypatch.setattr(rendering, "camera_pipeline", counted)
+    for far, count in (('FarPlaneDistance="20"', 1), ("", len(TIMES) - 1)):
+        scene = load(GLOW.replace('FieldOfView="60"', f'FieldOfView="60" {far}'))
+        settings = RenderSettings(width=40, height=30)
+        session = FrameSession(scene, None, settings)
+        del calls[:]
+        kept = [session.frame(t)[1].rgba for t in TIMES]
+        assert len(calls) == count  # TIMES repeats one time: not drawn again
+        assert all((b is None) == (count == 1) for b in calls)
+        for t, rgba in zip(TIMES, kept, strict=True):
+            assert np.array_equal(rgba, render_scene(scene_at(scene, t), settings).rgba)

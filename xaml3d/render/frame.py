@@ -295,6 +295,20 @@ class FrameStore:
     def __init__(self) -> None:
         self._fb: Framebuffer | None = None
         self._background: tuple | None = None
+        self._pipeline: tuple | None = None  # (camera, width, height, aspect, its pipeline)
+
+    def pipeline(self, camera, width: int, height: int, aspect: float):
+        """``camera_pipeline(camera, width, height, aspect=aspect)`` (no bounds: the caller
+        knows they are not read), kept for the next frames while they have the same camera
+        object (frozen) and size: an animation whose camera does not move computes it once."""
+        kept = self._pipeline
+        if kept is not None and kept[0] is camera and kept[1:4] == (width, height, aspect):
+            return kept[4]
+        from xaml3d.scene.camera_math import camera_pipeline
+
+        pipeline = camera_pipeline(camera, width, height, aspect=aspect)  # may raise: not kept
+        self._pipeline = (camera, width, height, aspect, pipeline)
+        return pipeline
 
     def take(self, width: int, height: int, background) -> Framebuffer:
         """A clean ``width`` x ``height`` framebuffer of ``background`` (straight RGBA)."""
