@@ -118,18 +118,20 @@ def marks_and_clear(rgba: np.ndarray) -> tuple[tuple[bool, bool, bytes, bytes], 
 
         drawn = np.empty(alpha.size, dtype=np.uint32)
         found = gif_pass.marks(rgba, words.reshape(-1), drawn, opaque)
-        n_partial, inside, covered, clear = found
+        n_partial, inside, covered, clear, stray = found
         partial = n_partial > 0
         translucent = inside > 0 and inside >= TRANSLUCENT_SHARE * covered
         clear = clear > 0
+        same = n_partial == 0 and stray == 0  # ``drawn`` is then rgba's bytes: one digest
     else:
         partial = bool(((alpha > 0) & (alpha < 255)).any())
         translucent = partial and _translucent(alpha)
         drawn = np.where(alpha > 0, words | opaque, np.uint32(0))
         clear = bool((alpha == 0).any())
+        same = False
     # hashed in place (the buffer protocol): no copy of the frame's bytes
     seen = hashlib.sha1(drawn, usedforsecurity=False).digest()
-    whole = hashlib.sha1(rgba, usedforsecurity=False).digest()
+    whole = seen if same else hashlib.sha1(rgba, usedforsecurity=False).digest()
     return (partial, translucent, seen, whole), clear
 
 
