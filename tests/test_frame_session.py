@@ -96,6 +96,50 @@ def test_kept_buffers_give_the_fresh_renders(case, kernels, monkeypatch):
     assert not np.array_equal(pictures[0], pictures[-1])  # the frames differ: a real test
 
 
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_frames_drawn_band_by_band_give_the_fresh_renders(case, monkeypatch):
+    """With the kernels, a kept framebuffer draws its opaque and over passes band by band of
+    image rows (here one row a band), each band resolved right after: the same pictures,
+    depth and diagnostics; an additive pass (the specular and emissive of GLOW) is drawn
+    whole, after the passes kept before it (drawn whole then)."""
+    pytest.importorskip("numba")
+    from xaml3d.render import frame, pass_loop
+
+    monkeypatch.setenv("XAML3D_KERNELS", "numba")
+    monkeypatch.setattr(frame, "BAND_BYTES", 1)
+    bands = []
+    draw = pass_loop.SideLoop.draw
+
+    def counted(self, kernels, args, rows=None):
+        bands.append(rows)
+        return draw(self, kernels, args, rows)
+
+    monkeypatch.setattr(pass_loop.SideLoop, "draw", counted)
+    source, options = CASES[case]
+    scene = load(source)
+    settings = RenderSettings(**options)
+    session = FrameSession(scene, None, settings)
+    for t in TIMES:
+        fresh = render_scene(scene_at(scene, t), settings)
+        del bands[:]
+        drawn = session.drawn
+        _, kept = session.frame(t)
+        assert np.array_equal(kept.rgba, fresh.rgba), t
+        assert np.array_equal(kept.depth, fresh.depth)
+        assert np.array_equal(kept.distance, fresh.distance, equal_nan=True)
+        assert kept.diagnostics == fresh.diagnostics
+        if session.drawn == drawn:  # a repeated time: given again, not drawn
+            assert bands == []
+        elif case in ("spin msaa", "spin background ssaa"):  # solid Gouraud-lit faces: banded
+            grid = 2
+            assert sorted({r for r in bands if r is not None}) == [
+                (y * grid, y * grid + grid) for y in range(options["height"])
+            ]
+        elif case.startswith("translucent"):
+            # the diffuse pass was kept, then drawn whole before the additive passes
+            assert bands and all(r is None for r in bands)
+
+
 @pytest.mark.parametrize("kernels", ["numpy", "numba"])
 def test_the_buffers_are_left_clean_and_depth_can_be_left_out(kernels, monkeypatch):
     if kernels == "numba":
@@ -188,3 +232,61 @@ def test_a_still_is_drawn_once_and_the_memo_is_bounded(monkeypatch):
     for t in (0.0, 0.25, 0.5, 0.0):  # the first picture was pushed out by the third
         session.frame(t)
     assert (session.drawn, session.repeated) == (4, 0) and len(session.memo) == 2
+
+
+def test_the_resolve_of_kept_buffers_band_by_band_is_the_fresh_resolve():
+    """``frame_kernels.resolve_clear`` over bands of rows gives ``kernels.resolve``'s pixels
+    and depth, blocks repeating the block before them included (their pixel is reused), and
+    leaves every sample clean."""
+    pytest.importorskip("numba")
+    from xaml3d.render import kernels
+    from xaml3d.render.frame_kernels import resolve_clear
+
+    rng = np.random.default_rng(7)
+    s, w, h = 2, 9, 7
+    width = w * s
+    color = rng.uniform(-0.2, 1.2, (width * h * s, 4)).astype(np.float32)
+    zbuf = np.where(rng.random(width * h * s) < 0.7, -rng.random(width * h * s), 0.0)
+    grid = color.reshape(h * s, width, 4)
+    grid[2:6, 4:14] = [0.5, 0.25, 0.0, 0.5]  # runs of equal blocks
+    grid[8:10, :] = [-0.0, 0.0, 0.0, 0.0]
+    grid[10:12, :] = [0.0, 0.0, 0.0, 0.0]
+    color[5, 1] = np.nan
+    rgba, depth = np.empty((h, w, 4), np.uint8), np.empty((h, w))
+    kernels.resolve(color, zbuf, width, s, False, rgba, depth)
+    background = np.array([0.1, 0.2, 0.3, 0.4], np.float32)
+    got, got_depth = np.empty_like(rgba), np.empty_like(depth)
+    uniform = True
+    for y0, y1 in ((0, 3), (3, 4), (4, 7)):
+        uniform &= resolve_clear(color, zbuf, width, s, got, got_depth, True, background, y0, y1)
+    assert np.array_equal(got, rgba) and np.array_equal(got_depth, depth)
+    assert not uniform
+    assert (zbuf == 0.0).all() and (color == background).all()
+
+
+def test_a_camera_that_does_not_move_is_set_up_once(monkeypatch):
+    """A session's frames share the pipeline of a camera that is not animated and reads no
+    scene bounds (finite far plane, near plane above 0); an infinite far plane follows the
+    moving scene's bounds every frame. The pictures are the fresh renders' either way."""
+    from xaml3d.render import rendering
+    from xaml3d.scene import camera_math
+
+    calls = []
+    real = camera_math.camera_pipeline
+
+    def counted(camera, *args, **kw):
+        calls.append(kw.get("bounds"))
+        return real(camera, *args, **kw)
+
+    monkeypatch.setattr(camera_math, "camera_pipeline", counted)
+    monkeypatch.setattr(rendering, "camera_pipeline", counted)
+    for far, count in (('FarPlaneDistance="20"', 1), ("", len(TIMES) - 1)):
+        scene = load(GLOW.replace('FieldOfView="60"', f'FieldOfView="60" {far}'))
+        settings = RenderSettings(width=40, height=30)
+        session = FrameSession(scene, None, settings)
+        del calls[:]
+        kept = [session.frame(t)[1].rgba for t in TIMES]
+        assert len(calls) == count  # TIMES repeats one time: not drawn again
+        assert all((b is None) == (count == 1) for b in calls)
+        for t, rgba in zip(TIMES, kept, strict=True):
+            assert np.array_equal(rgba, render_scene(scene_at(scene, t), settings).rgba)

@@ -73,4 +73,27 @@ def test_the_marks_of_a_known_frame():
     # 10 partial pixels (9 on the border, 1 inside) of 81 covered: inside 1 >= 0.01 * 81
     assert partial and translucent and seen != whole
     assert gif_pass.marks(edge, edge.view(np.uint32).reshape(-1), np.empty(81, np.uint32),
-                          np.uint32(0))[:3] == (10, 1, 81)  # fmt: skip
+                          np.uint32(0), np.empty(81, np.uint8),
+                          np.empty(81, np.int64))[:3] == (10, 1, 81)  # fmt: skip
+
+
+def test_the_rest_digest_tells_frames_that_differ_only_in_alpha(monkeypatch):
+    """The second digest covers the alpha plane and the empty pixels holding a colour: among
+    frames GIF draws alike (the same first digest) it differs exactly when the frames do, the
+    same with numpy and the compiled pass."""
+    base = np.zeros((6, 7, 4), np.uint8)
+    base[1:5, 2:6] = (200, 30, 40, 255)
+    faded = base.copy()
+    faded[2, 3, 3] = 128  # only alpha differs
+    stray = base.copy()
+    stray[0, 0] = (9, 0, 0, 0)  # an empty pixel holding a colour
+    stray2 = base.copy()
+    stray2[0, 1] = (9, 0, 0, 0)
+    marks = {}
+    for name, f in (("base", base), ("faded", faded), ("stray", stray), ("stray2", stray2)):
+        compiled, plain = both(lambda f=f: frame_marks(f), monkeypatch)
+        assert compiled == plain
+        marks[name] = compiled
+    assert len({m[2] for m in marks.values()}) == 1  # GIF draws them alike
+    assert len({m[3] for m in marks.values()}) == 4  # yet all four differ
+    assert frame_marks(base.copy()) == marks["base"]

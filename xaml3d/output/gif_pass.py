@@ -28,24 +28,31 @@ def available() -> bool:
 
 
 @numba.njit(cache=True, nogil=True)
-def marks(rgba, words, drawn, opaque):
+def marks(rgba, words, drawn, opaque, alphas, strays):
     """One pass over ``rgba`` (H, W, 4 uint8; ``words``: its pixels as H*W uint32): (pixels
     with partial alpha, those of them inside covered areas (3x3 neighbourhood all covered,
-    outside the image empty), covered pixels, empty pixels), and ``drawn`` (H*W uint32) filled
-    with what GIF draws: 0 where empty, else the pixel's word with alpha 255 (``opaque``: that
-    alpha as a word)."""
+    outside the image empty), covered pixels, empty pixels, empty pixels whose word is not 0),
+    and ``drawn`` (H*W uint32) filled with what GIF draws: 0 where empty, else the pixel's word
+    with alpha 255 (``opaque``: that alpha as a word); ``alphas`` (H*W uint8) with the alpha
+    of each pixel and ``strays`` (H*W int64) starting with the positions of the empty pixels
+    whose word is not 0 (as many as the last count)."""
     h = rgba.shape[0]
     w = rgba.shape[1]
     partial = 0
     inside = 0
     covered = 0
     clear = 0
+    stray = 0
     for y in range(h):
         for x in range(w):
             i = y * w + x
             a = rgba[y, x, 3]
+            alphas[i] = a
             if a == 0:
                 clear += 1
+                if words[i] != 0:
+                    strays[stray] = i
+                    stray += 1
                 drawn[i] = 0
                 continue
             covered += 1
@@ -62,7 +69,7 @@ def marks(rgba, words, drawn, opaque):
                         ok = False
             if ok:
                 inside += 1
-    return partial, inside, covered, clear
+    return partial, inside, covered, clear, stray
 
 
 @numba.njit(cache=True, nogil=True)

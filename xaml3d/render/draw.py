@@ -219,6 +219,14 @@ def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) 
     xy = np.stack([sx[idx], sy[idx]], axis=-1)
     side = SideLoop(fb, xy, dv[idx], qv[idx], tris, _read_only(shaders[0].indices), ctx.msaa)
     for shader, args in zip(shaders, passes, strict=True):
+        # A kept framebuffer draws opaque/over passes band by band when it resolves
+        # (``frame.FrameStore``). Additive passes clamp where the rasterizer's chunks end,
+        # which bands would move: they, and the fragment path, are drawn now, after the passes
+        # kept before them.
+        if args is not None and fb.deferred is not None and not args[-1]:
+            fb.deferred.append((side, kernels, args))
+            continue
+        fb.draw_deferred()
         if args is not None:
             side.draw(kernels, args)
         else:
@@ -555,6 +563,7 @@ def draw_model(
                 shading.lightings += 1
         if _draw_side_compiled(fb, pm, tris, ctx, shaders):
             continue
+        fb.draw_deferred()  # the passes kept before this side come first
         # Flat colours with uniform brushes are per triangle: no weights to interpolate.
         need_weights = not (flat and all(sh.uniform for sh in shaders))
         frags = side_fragments(pm, tris, ctx, weights=need_weights, passes=len(shaders))

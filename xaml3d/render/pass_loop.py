@@ -51,11 +51,13 @@ class SideLoop:
         self.s = set_up(xy, d, fb.width, fb.height, q)
         if self.s is not None:
             self.mtri = np.ascontiguousarray(tris[self.s.tris], dtype=np.int64)
+            self.first_row, self.last_row = int(self.s.box[2].min()), int(self.s.box[3].max())
         self.indices = indices
         self.msaa = max(int(msaa), 1)
 
-    def draw(self, kernels, args) -> None:
-        """One pass with its loop arguments (``PassShader.loop_args``)."""
+    def draw(self, kernels, args, rows=None) -> None:
+        """One pass with its loop arguments (``PassShader.loop_args``); ``rows``: only the
+        sample rows [r0, r1) of it (a band of ``frame.FrameStore``)."""
         s, fb = self.s, self.fb
         if s is None:
             return
@@ -63,6 +65,10 @@ class SideLoop:
         source, colors, brush, uvp, lay, img, additive = args
         A, B, C = s.edges
         i0, i1, j0, j1 = s.box
+        if rows is not None:
+            if rows[0] > self.last_row or rows[1] <= self.first_row:
+                return
+            j0, j1 = np.maximum(j0, rows[0]), np.minimum(j1, rows[1] - 1)
         gx, gy, zr, xr, yr = s.plane
         drawn, scratch.tag = kernels.draw_pass(
             A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, s.inv_area, s.q, s.persp, self.msaa,

@@ -12,6 +12,7 @@ sample of each supersampling block, +inf where nothing was drawn.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -26,7 +27,7 @@ from xaml3d.render.placement import placement, warp_nearest
 from xaml3d.render.settings import FrameSize, RenderSettings
 from xaml3d.render.wireframe import draw_wireframe
 from xaml3d.scene.camera_math import camera_pipeline
-from xaml3d.scene.types import Scene
+from xaml3d.scene.types import PerspectiveCamera, ProjectionCamera, Scene
 
 
 @dataclass
@@ -83,9 +84,13 @@ def draw_viewport(
     fb = Framebuffer(sw, sh, fill) if store is None else store.take(sw, sh, fill)
     ctx = make_context(sw, sh, settings.effective_msaa)
     try:
-        if bounds is False:
-            bounds = vp.bounds()
-        pipeline = camera_pipeline(vp.camera, sw, sh, bounds=bounds, aspect=size.aspect)
+        if store is not None and not _reads_bounds(vp.camera):
+            # an animation's frames: the same camera object while it is not animated
+            pipeline = store.pipeline(vp.camera, sw, sh, size.aspect)
+        else:
+            if bounds is False:
+                bounds = vp.bounds()
+            pipeline = camera_pipeline(vp.camera, sw, sh, bounds=bounds, aspect=size.aspect)
     except CameraError as exc:
         exc.with_location(file=scene.file)
         diags.append(exc.as_diagnostic())
@@ -99,6 +104,11 @@ def draw_viewport(
     for d in ctx.diagnostics:
         diags.append(d if d.file else Diagnostic(d.code, d.severity, d.message, scene.file,
                                                  d.line, d.column))  # fmt: skip
+    uniform = None
+    if store is None:
+        rgba, zbuf = fb.resolve(grid, nearest=nearest)
+    else:  # passes the store kept are drawn here: the count of fragments is known after it
+        rgba, zbuf, uniform = store.finish(fb, grid, depth)
     if fb.fragments_drawn == 0 and pipeline is not None:  # a camera error says why already
         if vp.models:
             msg = "nothing was drawn in the image"
@@ -106,11 +116,6 @@ def draw_viewport(
         else:
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
-    uniform = None
-    if store is None:
-        rgba, zbuf = fb.resolve(grid, nearest=nearest)
-    else:
-        rgba, zbuf, uniform = store.finish(fb, grid, depth)
     if (
         fb.fragments_drawn
         and w * h > 1
@@ -144,6 +149,24 @@ def draw_viewport(
     if pipeline is not None and zbuf is not None:
         result.distance = eye_depth(zbuf, pipeline)
     return result
+
+
+def _reads_bounds(camera) -> bool:
+    """Whether ``camera_pipeline`` reads the scene's bounds for ``camera`` (``effective_far``,
+    ``effective_near``): a projection camera's far plane infinite or past single precision,
+    or a perspective camera's near plane at 0. Else the pipeline is the camera's alone."""
+    if not isinstance(camera, ProjectionCamera):
+        return False  # a MatrixCamera, or none (camera_pipeline says why)
+    try:
+        far, near = float(camera.far_plane_distance), float(camera.near_plane_distance)
+    except (TypeError, ValueError):
+        return True
+    if not (math.isfinite(far) and far <= SINGLE_MAX):
+        return True
+    return isinstance(camera, PerspectiveCamera) and near == 0.0
+
+
+SINGLE_MAX = float(np.finfo(np.float32).max)  # camera_math's far limit
 
 
 def _over(rgba: np.ndarray, bg) -> np.ndarray:
