@@ -24,6 +24,7 @@ from xaml3d.cli_render_scene import (
     _Failed,
     _render_one,
 )
+from xaml3d.output.atomic import place
 
 
 def is_dir_target(output: str) -> bool:
@@ -116,12 +117,12 @@ def parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
             _discard(pending)
             ok, pending, read = _render_task(source, target, opts, [*inputs, *read_before])
             for tmp, out in pending:
-                os.replace(tmp, out)
+                place(tmp, out)
         else:
             sys.stderr.write(text)
             sys.stderr.flush()
             for tmp, out in pending:
-                os.replace(tmp, out)
+                place(tmp, out)
         read_before.extend(Path(p) for p in read)
         made.update(os.path.abspath(out) for _, out in pending)
         if not ok:
