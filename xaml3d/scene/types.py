@@ -614,6 +614,13 @@ class Scene:
     tracks: Tracks | None = field(default=None, compare=False, repr=False)
 
     @property
+    def input_files(self) -> tuple[str, ...]:
+        """Every file the scene was read from: its own (not for "<string>" or "<stdin>"), the
+        resource dictionaries, the images; what an output must never replace (IO002)."""
+        own = self.file is not None and not (self.file.startswith("<") and self.file.endswith(">"))
+        return (*((self.file,) if own else ()), *self.resources_used, *self.images_used)
+
+    @property
     def timeline(self):
         """The storyboards of this scene as ``xaml3d.animation.timeline.Timeline`` (``at(t)``,
         ``cycle()``, ``running_animations()``...), or None when ``tracks`` is None."""
