@@ -46,6 +46,7 @@ def load(
     if doc.path is None:
         ctx.allowed_roots.append(Path.cwd())
     res = Resources(ctx)
+    res.scene_folder = doc.path.parent if doc.path is not None else None
     resources = list(resources)
     for f in resources:
         res.add_app_file(f)
