@@ -116,6 +116,22 @@ def test_batch_in_workers_writes_into_a_fifo(tmp_path):
     assert (tmp_path / "out" / "b.png").read_bytes().startswith(PNG_SIGNATURE)
 
 
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_batch_onto_a_full_node_fails_that_scene_only(tmp_path, jobs):
+    for name in ("a", "b"):
+        (tmp_path / f"{name}.xaml").write_text(SQUARE)
+    (tmp_path / "out").mkdir()
+    node = char_node(tmp_path / "out" / "a.png", FULL)
+    p = xaml3d_cli("render", "a.xaml", "b.xaml", "--output-dir", "out", "-j", jobs, cwd=tmp_path)
+    assert p.returncode == 1
+    assert p.stderr.decode().splitlines() == [
+        "a.xaml: error RND007 cannot write out/a.png: No space left on device",
+        "xaml3d: rendered 1 of 2 scenes; failed: a.xaml",
+    ]
+    assert is_char(node) and os.stat(node).st_rdev == FULL
+    assert (tmp_path / "out" / "b.png").read_bytes().startswith(PNG_SIGNATURE)
+
+
 def test_animate_into_a_fifo_and_a_frame_node(tmp_path):
     (tmp_path / "s.xaml").write_text(animated_scene())
     pipe = fifo(tmp_path / "spin.gif")
