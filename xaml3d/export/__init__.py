@@ -121,7 +121,7 @@ def export(
                 target = companion(path, suffix) if suffix else path
                 write_atomically(target, lambda fh, data=data: fh.write(data))
     except RenderError as exc:
-        raise ExportError(exc.message, code="EXP002", file=str(path)) from None
+        raise ExportError(exc.message, code="EXP002") from None
     return diagnostics
 
 
