@@ -12,6 +12,8 @@
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 import re
 from pathlib import Path
@@ -111,15 +113,29 @@ def test_api_has_examples():
     assert len(api_blocks()) >= 8
 
 
+# ``print(x)   # what it prints``: "..." stands for any text, two spaces end what is printed
+# (a remark may follow)
+_PRINTS = re.compile(r"^\s*print\(.*\)\s+# (.+?)(?:  .*)?$", re.M)
+
+
 def test_api_examples_run(tmp_path, monkeypatch):
     monkeypatch.chdir(ROOT)
     namespace: dict = {"__name__": "__docs__", "tmp": tmp_path}
     for i, block in enumerate(api_blocks()):
         code = compile(block, f"docs/api.md block {i + 1}", "exec")
+        out = io.StringIO()
         try:
-            exec(code, namespace)
+            with contextlib.redirect_stdout(out):
+                exec(code, namespace)
         except Exception as exc:  # name the failing block in the report
             pytest.fail(f"docs/api.md block {i + 1} failed: {exc!r}\n{block}")
+        # what the comments say a print shows is what it shows
+        printed = out.getvalue().splitlines()
+        for said in _PRINTS.findall(block):
+            pattern = re.compile(".*?".join(map(re.escape, said.split("..."))))
+            assert any(pattern.match(line) for line in printed), (
+                f"docs/api.md block {i + 1}: no printed line reads {said!r}: {printed}"
+            )
 
 
 # --------------------------------------------------------------------------- links
@@ -200,3 +216,19 @@ def test_figures_exist_for_camera_math():
     assert figures, "camera-math.md embeds no figure"
     for f in figures:
         assert os.path.getsize(DOCS / f) > 0
+
+
+_NUMBERS = {"Five": 5, "Six": 6, "Seven": 7, "Eight": 8}
+
+
+def test_cli_page_counts_and_names_every_command():
+    import click
+
+    from xaml3d.cli import main
+
+    first = (DOCS / "cli.md").read_text(encoding="utf-8")
+    m = re.search(r"^(\w+) commands: (.*?)\.", first, re.M)
+    assert m, "docs/cli.md does not say how many commands there are"
+    named = re.findall(r"`(\w+)`", m.group(2))
+    commands = main.list_commands(click.Context(main))
+    assert sorted(named) == commands and _NUMBERS.get(m.group(1)) == len(commands)

@@ -176,3 +176,44 @@ def test_a_misspelt_property_element_is_not_followed_by_its_warning(tmp_path):
         "s.xaml:9:17: error XAML004 MeshGeometry3D has no property 'Positons' "
         "(did you mean Positions?)",
     ]
+
+
+def _camera_scene(position: str) -> str:
+    """The 2 x 2 quad of model #7's size around the origin, seen by a camera at ``position``."""
+    return f"""<Viewport3D {NS} Width="40" Height="30">
+  <Viewport3D.Camera>
+    <PerspectiveCamera Position="{position}" LookDirection="0,0,-1" FieldOfView="60"/>
+  </Viewport3D.Camera>
+  <ModelVisual3D>
+    <ModelVisual3D.Content>
+      <GeometryModel3D>
+        <GeometryModel3D.Geometry>
+          <MeshGeometry3D Positions="-1,-1,-1 1,-1,-1 1,1,1 -1,1,1" TriangleIndices="0 1 2 0 2 3"/>
+        </GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><EmissiveMaterial Brush="Red"/></GeometryModel3D.Material>
+      </GeometryModel3D>
+    </ModelVisual3D.Content>
+  </ModelVisual3D>
+</Viewport3D>
+"""
+
+
+def test_an_unreadable_camera_value_is_not_followed_by_findings_about_its_default(tmp_path):
+    # Position="2.2,1.8,abc": WPF refuses it; the default (0,0,0) that stands in lies inside the
+    # scene's box, but CAM108 about it would only mislead: the error is the one finding.
+    (tmp_path / "s.xaml").write_text(_camera_scene("2.2,1.8,abc"))
+    camera = load(tmp_path / "s.xaml").viewports[0].camera
+    assert camera.rejected == {"Position"} and camera.position == (0.0, 0.0, 0.0)
+    p = xaml3d("render", "s.xaml", "-o", "o.png", cwd=tmp_path)
+    assert p.returncode == 1
+    assert p.stderr.decode().splitlines() == [
+        "s.xaml:3:42: error VAL001 PerspectiveCamera.Position: Point3D: bad number 'abc' "
+        "(token 3, character 9)",
+        "s.xaml: not rendered: the scene has errors (--lenient renders it)",
+    ]
+    lenient = xaml3d("render", "s.xaml", "-o", "o.png", "--lenient", cwd=tmp_path)
+    assert lenient.returncode == 0 and b"CAM1" not in lenient.stderr
+    # the same position written in markup keeps its warning
+    (tmp_path / "s.xaml").write_text(_camera_scene("0,0,0"))
+    p = xaml3d("validate", "s.xaml", cwd=tmp_path)
+    assert [row[3] for row in _printed(p.stdout)] == ["CAM108", "CHK009"]

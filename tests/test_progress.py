@@ -23,20 +23,48 @@ def test_progress_lines_every_few_seconds_with_an_estimate(capsys):
         now[0] = t
         report(done)
     assert capsys.readouterr().err.splitlines() == [
-        "s.xaml: animating: 3/10 frames, 6 s elapsed, about 14 s left",  # 5 s after the start
-        "s.xaml: animating: 4/10 frames, 11 s elapsed, about 16 s left",
+        # 5 s after the start; frames 2 and 3 took 5 s: 2.5 s each for the 7 left
+        "s.xaml: animating: 3/10 frames, 6 s elapsed, about 18 s left",
+        "s.xaml: animating: 4/10 frames, 11 s elapsed, about 20 s left",  # 10 s for 3 frames
     ]  # the last frame says nothing: the run is over
     long = ProgressLines("rendering", 400, "scenes", clock=lambda: now[0])
     now[0] = 290.0
     long(1)
-    assert capsys.readouterr().err == "rendering: 1/400 scenes, 1 min 30 s elapsed, about 598 " \
-        "min 30 s left\n"  # fmt: skip
+    # one scene done: its time holds the start-up, no rate yet
+    assert capsys.readouterr().err == "rendering: 1/400 scenes, 1 min 30 s elapsed, estimating\n"
     long.finish()
     assert capsys.readouterr().err == "rendering: all 400 scenes in 1 min 30 s\n"
     quick = ProgressLines("rendering", 3, clock=lambda: now[0])
     quick(1)
     quick.finish()  # work that printed no progress prints no closing line either
     assert capsys.readouterr().err == ""
+
+
+def test_the_estimate_is_the_recent_rate_not_the_start_up(capsys):
+    # the first frame takes 10 s (the kernels compiled on a first run), then 0.1 s a frame:
+    # at frame 51 the 29 frames left take 3 s (an average from the start said 9 s)
+    now = [0.0]
+    report = ProgressLines("s.xaml: animating", 80, clock=lambda: now[0])
+    for k in range(1, 81):
+        now[0] = 10 + (k - 1) / 10
+        report(k)
+    assert capsys.readouterr().err.splitlines() == [
+        "s.xaml: animating: 1/80 frames, 10 s elapsed, estimating",
+        "s.xaml: animating: 51/80 frames, 15 s elapsed, about 3 s left",
+    ]
+    # a batch whose scenes speed up after the first ones: the estimate follows the last 10
+    now[0] = 100.0
+    report = ProgressLines("rendering", 37, "scenes", clock=lambda: now[0])
+    times = [0.0, 18.0, 20.0] + [20.0 + 0.5 * i for i in range(1, 35)]
+    for done, t in enumerate(times):
+        now[0] = 100.0 + t
+        report(done)
+    lines = capsys.readouterr().err.splitlines()
+    assert lines[0] == "rendering: 1/37 scenes, 18 s elapsed, estimating"
+    assert lines[1:3] == [
+        "rendering: 8/37 scenes, 23 s elapsed, about 21 s left",  # from the start: 83 s
+        "rendering: 18/37 scenes, 28 s elapsed, about 10 s left",  # from the start: 30 s
+    ]
 
 
 def test_animate_reports_progress_in_a_log(tmp_path, monkeypatch):
@@ -95,7 +123,7 @@ def test_lens_samples_report_progress_in_a_log(monkeypatch, capsys):
         progress(done, 48)
     progress.close()
     lines = capsys.readouterr().err.splitlines()
-    assert lines[0] == "s.xaml: lens samples: 11/48 renders, 5 s elapsed, about 17 s left"
+    assert lines[0] == "s.xaml: lens samples: 11/48 renders, 5 s elapsed, about 18 s left"
     assert len(lines) == 4  # 11, 21, 31, 41 done; the last render says nothing
 
 

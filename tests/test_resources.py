@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from conftest import CORPUS, needs_corpus
 
 from xaml3d.errors import ResourceError
 from xaml3d.xaml.loader import load
@@ -238,3 +239,52 @@ def test_missing_key_hint_names_the_sibling_dictionary_that_defines_it(tmp_path)
     assert [d.message for d in found.diagnostics if d.code == "RES001"] == [
         "StaticResource 'Nowhere' not found"
     ]
+
+
+def test_missing_keys_hint_suggests_the_dictionary_that_defines_most_of_them_once(tmp_path):
+    # a.xaml defines the first missing key only, b.xaml (saved with a byte order mark, as
+    # Visual Studio writes it) all three: b.xaml is suggested, once, with how many it resolves
+    (tmp_path / "a.xaml").write_text(
+        f'<ResourceDictionary {NS}><SolidColorBrush x:Key="K1" Color="Red"/></ResourceDictionary>'
+    )
+    entries = "".join(f'<SolidColorBrush x:Key="K{i}" Color="Red"/>' for i in (1, 2, 3))
+    (tmp_path / "b.xaml").write_bytes(
+        b"\xef\xbb\xbf" + f"<ResourceDictionary {NS}>{entries}</ResourceDictionary>".encode()
+    )
+    uses = "".join(f'\n<Viewport3D Tag="{{StaticResource K{i}}}"/>' for i in (1, 2, 3))
+    (tmp_path / "s.xaml").write_text(f"<Grid {NS}>{uses}\n</Grid>")
+    msgs = [d.message for d in load(tmp_path / "s.xaml").diagnostics if d.code == "RES001"]
+    assert msgs == [
+        "StaticResource 'K1' not found (b.xaml beside the scene defines all 3 missing keys, "
+        "this one included: give it with -r b.xaml)",
+        "StaticResource 'K2' not found (defined in the -r file suggested at line 2)",
+        "StaticResource 'K3' not found (defined in the -r file suggested at line 2)",
+    ]
+    # a key only another dictionary defines gets that one; the counts say how many each resolves
+    (tmp_path / "c.xaml").write_text(
+        f'<ResourceDictionary {NS}><SolidColorBrush x:Key="K4" Color="Red"/></ResourceDictionary>'
+    )
+    (tmp_path / "s.xaml").write_text(
+        f'<Grid {NS}>{uses}\n<Viewport3D Tag="{{StaticResource K4}}"/>\n</Grid>'
+    )
+    msgs = [d.message for d in load(tmp_path / "s.xaml").diagnostics if d.code == "RES001"]
+    assert msgs[0].endswith(
+        "(b.xaml beside the scene defines it and 2 more of the 4 missing keys: give it with "
+        "-r b.xaml)"
+    )
+    assert msgs[3] == (
+        "StaticResource 'K4' not found (c.xaml beside the scene defines it: give it with -r c.xaml)"
+    )
+
+
+@needs_corpus
+def test_the_corpus_cube_is_told_the_one_dictionary_that_defines_all_its_keys():
+    scene = load(CORPUS / "007_wpfsamples-controllable-cube.xaml")
+    msgs = [d.message for d in scene.diagnostics if d.code == "RES001"]
+    name = "008_wpfsamples-animationexamples-app-resources.xaml"
+    assert msgs[0] == (
+        f"StaticResource 'LeftArrowGeometry' not found ({name} beside the scene defines all "
+        f"{len(msgs)} missing keys, this one included: give it with -r {name})"
+    )
+    assert all(m.endswith("(defined in the -r file suggested at line 36)") for m in msgs[1:])
+    assert len(msgs) == 16

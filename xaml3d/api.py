@@ -2,7 +2,8 @@
 
 ``render_arrays`` and ``render`` accept a Scene or the path of a XAML file (loaded here: the
 renderer itself takes a Scene only) and either a ``RenderSettings`` or its fields as keyword
-arguments; ``save_image`` writes a picture atomically (``xaml3d.output``).
+arguments; ``save_image`` writes a picture atomically (``xaml3d.output``), never over a file a
+scene loaded in this process reads (RenderError IO002, as the command line refuses it).
 
 Size: the viewport's own size unless given. One of width/height given: the other follows the
 viewport's aspect ratio (rounded, at least 1). Both given: used as is, and the camera takes
@@ -21,8 +22,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from xaml3d.animation.moment import scene_at
-from xaml3d.errors import XamlError
-from xaml3d.output.images import flatten, save_image
+from xaml3d.errors import RenderError, XamlError
+from xaml3d.output import guard, images
+from xaml3d.output.images import flatten
 from xaml3d.render.pipeline import render_scene
 from xaml3d.render.rendering import Rendering
 from xaml3d.render.settings import MODES, RenderSettings, settings_of
@@ -137,3 +139,15 @@ def _render_kept(i: int) -> Rendering:
 def render(scene_or_path, width: int | None = None, height: int | None = None, **options):
     """Same arguments as ``render_arrays``; returns a Pillow RGBA image."""
     return render_arrays(scene_or_path, width, height, **options).image()
+
+
+def save_image(
+    image, path, format: str | None = None, background=None, *, compress_level: int = 1
+) -> None:
+    """``xaml3d.output.images.save_image`` (PNG, JPEG, WebP, atomically), refusing a ``path``
+    that is a file a scene loaded in this process reads (the scene, a resource dictionary, a
+    texture): RenderError IO002, nothing written."""
+    hit = guard.overwritten_input([path])
+    if hit is not None:
+        raise RenderError(guard.refusal_message(*hit), code="IO002", file=str(path))
+    images.save_image(image, path, format, background, compress_level=compress_level)

@@ -24,6 +24,7 @@ from xaml3d.cli_render_scene import (
     _Failed,
     _render_one,
 )
+from xaml3d.output.atomic import place
 
 
 def is_dir_target(output: str) -> bool:
@@ -72,6 +73,20 @@ def _render_task(source: str, target, opts: RenderOptions, inputs: list[Path]):
     return ok, deferred.pending, deferred.read
 
 
+def _place_all(pending, name: str) -> bool:
+    """Put a scene's finished temporaries in place (``atomic.place``: renamed, or copied into a
+    FIFO or device); False, with the RND007 line a serial run prints, when one cannot be."""
+    for i, (tmp, out) in enumerate(pending):
+        try:
+            place(tmp, out)
+        except OSError as exc:
+            _discard(pending[i + 1 :])
+            msg = f"cannot write {out}: {exc.strerror or exc}"
+            click.echo(io_error(name, msg, "RND007"), err=True)
+            return False
+    return True
+
+
 def _discard(pending) -> None:
     for tmp, _ in pending:
         try:
@@ -115,13 +130,10 @@ def parallel_steps(plan, opts, inputs, jobs, written: set, failed: list):
             # scene wrote: what a serial run does depends on that order, so do it serially.
             _discard(pending)
             ok, pending, read = _render_task(source, target, opts, [*inputs, *read_before])
-            for tmp, out in pending:
-                os.replace(tmp, out)
         else:
             sys.stderr.write(text)
             sys.stderr.flush()
-            for tmp, out in pending:
-                os.replace(tmp, out)
+        ok = _place_all(pending, display_name(source)) and ok
         read_before.extend(Path(p) for p in read)
         made.update(os.path.abspath(out) for _, out in pending)
         if not ok:

@@ -13,6 +13,7 @@ import math
 import os
 import sys
 import time
+from collections import deque
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import replace
@@ -301,13 +302,22 @@ storyboard_option = click.option(
 class ProgressLines:
     """Progress of long work where no progress bar can be drawn (stderr is not a terminal: a
     log, CI): one line every ``every`` seconds, ``label: done/total unit, elapsed, estimate``.
-    Work that ends within ``every`` seconds prints nothing."""
+    Work that ends within ``every`` seconds prints nothing.
+
+    The estimate is the recent rate: items per second over the last ``RECENT`` items finished,
+    counted from the end of the first one. The first item carries the start-up (numba compiling
+    or loading its kernels, worker processes starting, caches filling): an average from the
+    start counted it against every item left, so estimates ran long ("about 23 s left", then
+    done at once). Until a second item is done the estimate is "estimating"."""
+
+    RECENT = 10
 
     def __init__(self, label: str, total: int, unit: str = "frames", every: float = 5.0,
                  clock=time.monotonic) -> None:  # fmt: skip
         self.label, self.total, self.unit, self.every, self.clock = label, total, unit, every, clock
         self.start = self.last = clock()
         self.printed = False
+        self.recent: deque[tuple[float, int]] = deque(maxlen=self.RECENT + 1)  # (time, done)
 
     def finish(self, what: str = "") -> None:
         """The closing line of work that printed progress (``what``: what follows, e.g. the
@@ -316,16 +326,26 @@ class ProgressLines:
             elapsed = _seconds(self.clock() - self.start)
             click.echo(f"{self.label}: all {self.total} {self.unit} in {elapsed}{what}", err=True)
 
+    def left(self, done: int) -> float:
+        """Seconds the ``total - done`` items left take at the recent rate; inf when unknown."""
+        if len(self.recent) < 2:
+            return math.inf
+        (t0, d0), (t1, d1) = self.recent[0], self.recent[-1]
+        if t1 <= t0:
+            return math.inf
+        return (self.total - done) * (t1 - t0) / (d1 - d0)
+
     def __call__(self, done: int) -> None:
         now = self.clock()
+        if done > 0 and (not self.recent or done > self.recent[-1][1]):
+            self.recent.append((now, done))
         if now - self.last < self.every or done >= self.total:
             return
         self.last = now
-        elapsed = now - self.start
-        left = elapsed / done * (self.total - done) if done else math.inf
+        left = self.left(done)
         estimate = f"about {_seconds(left)} left" if math.isfinite(left) else "estimating"
-        click.echo(f"{self.label}: {done}/{self.total} {self.unit}, {_seconds(elapsed)} elapsed, "
-                   f"{estimate}", err=True)  # fmt: skip
+        click.echo(f"{self.label}: {done}/{self.total} {self.unit}, "
+                   f"{_seconds(now - self.start)} elapsed, {estimate}", err=True)  # fmt: skip
         self.printed = True
 
 

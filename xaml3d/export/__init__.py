@@ -18,6 +18,7 @@ from xaml3d.export.html import page
 from xaml3d.export.obj import obj_files
 from xaml3d.export.stl import stl_bytes
 from xaml3d.export.timeline import clip_of
+from xaml3d.output import guard
 from xaml3d.output.atomic import together, write_atomically
 
 FORMATS = {".glb": "glb", ".gltf": "gltf", ".obj": "obj", ".stl": "stl", ".html": "html",
@@ -36,6 +37,7 @@ def format_of(path) -> str:
         raise ExportError(
             f"cannot tell the export format of {str(path)!r}: use .glb, .gltf, .obj, .stl or .html",
             code="EXP001",
+            file=str(path),
         )
     return fmt
 
@@ -98,11 +100,18 @@ def export(
     """Write ``scene`` to ``path`` in the format its suffix names (or ``fmt``: glb, gltf, obj,
     stl, html); the diagnostics of what the format could not carry. Atomic: every file of the
     export (an OBJ's .mtl too) is written, or none is. ExportError EXP001 for an unknown format,
-    EXP002 when a file cannot be written. ``progress(done, total)`` is called as the animation
-    is sampled."""
+    EXP002 when a file cannot be written, IO002 (nothing written) when a file it would write is
+    one the scene reads (the scene, a resource dictionary, a texture) or one that a scene loaded
+    in this process reads. ``progress(done, total)`` is called as the animation is sampled."""
 
     path = Path(path)
     fmt = fmt or format_of(path)
+    if fmt not in FORMATS.values():
+        raise ExportError(f"unknown export format {fmt!r}", code="EXP001", file=str(path))
+    targets = [path, companion(path, ".mtl")] if fmt == "obj" else [path]
+    hit = guard.overwritten_input(targets, scene.input_files)
+    if hit is not None:
+        raise ExportError(guard.refusal_message(*hit), code="IO002", file=str(hit[0]))
     files, diagnostics = export_bytes(
         scene, fmt, viewport=viewport, storyboard=storyboard, stem=path.stem, progress=progress
     )

@@ -10,6 +10,13 @@ A temporary is named ``.<name>.<pid>-<random>.tmp``, the target's name cut so th
 fits in the file system's limit on a name (255 bytes on most): a temporary fits wherever its
 target does. The process id in the name and a registry of this process's temporaries let
 ``remove_temporaries`` clean up after a run whose parent was killed (``xaml3d.render.workers``).
+
+A target that exists and is not a regular file (a FIFO, a character device such as /dev/null,
+a socket) is never renamed over: that would replace the device or pipe by a plain file. Its
+bytes are still written to a temporary first (in the system's temporary folder, since the
+target's folder may be /dev or read-only) and then copied into the target itself, opened for
+writing as any other tool would (``place``): a reader of the pipe gets the whole file, and a
+failure while drawing or encoding writes nothing into it.
 """
 
 from __future__ import annotations
@@ -17,6 +24,9 @@ from __future__ import annotations
 import os
 import re
 import secrets
+import shutil
+import stat
+import tempfile
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -95,6 +105,36 @@ def remove_temporaries(pid: int, folders=()) -> None:
                     pass
 
 
+def special(path) -> bool:
+    """True when ``path`` exists (through links) and is not a regular file or a folder: a
+    FIFO, a device or a socket, which a write must go into, never replace."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
+
+
+def place(tmp, path) -> None:
+    """Put the finished temporary ``tmp`` in place of ``path``: renamed over it, or, when
+    ``path`` is a FIFO or a device (``special``), copied into it and removed. Raises OSError."""
+    if not special(path):
+        os.replace(tmp, path)
+        _gone(tmp)
+        return
+    try:
+        # no O_CREAT: should the node vanish meanwhile, fail rather than make a regular file
+        fd = os.open(path, os.O_WRONLY | getattr(os, "O_CLOEXEC", 0))
+        with open(tmp, "rb") as src, os.fdopen(fd, "wb") as dst:
+            shutil.copyfileobj(src, dst, 1 << 20)
+    finally:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        _gone(tmp)
+
+
 class Staged:
     """The files written inside ``together()``: (temporary, target) pairs not yet renamed."""
 
@@ -102,12 +142,11 @@ class Staged:
         self.pending: list[tuple[Path, Path]] = []
 
     def commit(self) -> None:
-        """Rename every temporary over its target, in the order written."""
+        """Put every temporary in place of its target (``place``), in the order written."""
         pending, self.pending = self.pending, []
         for i, (tmp, path) in enumerate(pending):
             try:
-                os.replace(tmp, path)
-                _gone(tmp)
+                place(tmp, path)
             except OSError as exc:
                 self.pending = pending[i + 1 :]
                 self.discard()
@@ -149,9 +188,12 @@ def together(commit: bool = True) -> Iterator[Staged]:
 def write_atomically(path, write: Callable[[BinaryIO], object]) -> None:
     """Call ``write(file)`` on a temporary file beside ``path``, then rename it over ``path``
     (inside ``together()``: at the end of the block); on any failure the temporary file is
-    removed. RenderError RND007 when it cannot be written."""
+    removed. A FIFO or device ``path`` is written into, never replaced (``place``). RenderError
+    RND007 when it cannot be written."""
     path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
+    if special(path):
+        directory = Path(tempfile.gettempdir())
     if len(path.name.encode()) > _name_max(directory):
         raise RenderError(
             f"cannot write {path}: the name is {len(path.name.encode())} bytes long, over the "
@@ -173,8 +215,7 @@ def write_atomically(path, write: Callable[[BinaryIO], object]) -> None:
         if staged is not None:
             staged.pending.append((Path(tmp), path))
             return
-        os.replace(tmp, path)
-        _gone(tmp)
+        place(tmp, path)
     except BaseException as exc:
         try:
             os.unlink(tmp)

@@ -46,7 +46,16 @@ def _box_corners(bounds) -> np.ndarray:
 
 def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagnostic]:
     """Every problem of ``camera`` for a ``width`` x ``height`` viewport (and, when given, the
-    scene's world AABB ``bounds`` = (min, max)). Never raises."""
+    scene's world AABB ``bounds`` = (min, max)). Never raises.
+
+    A camera with a value the reader refused (``rejected``: an error was reported there and
+    WPF's default stands in) gets no camera findings: they would be about the default (a camera
+    "inside the scene" at the (0,0,0) that replaced an unreadable Position), not the markup.
+    Only the viewport's size (CAM010) is still checked."""
+    if getattr(camera, "rejected", None):
+        report = Report(getattr(camera, "line", None), getattr(camera, "column", None))
+        check_values(None, width, height, report)
+        return [d for d in report.items if d.code == "CAM010"]
     report = Report(getattr(camera, "line", None), getattr(camera, "column", None))
     with np.errstate(all="ignore"):
         try:

@@ -315,6 +315,10 @@ def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     for i, model in enumerate(vp.models):
         out.extend(_check_model(model, i, file))
     out.extend(_check_lights(vp, file))
+    if getattr(vp.camera, "rejected", None):
+        # the camera holds a default standing in for a value WPF refused (an error says so):
+        # what it sees or is inside of would be about that default, not the markup
+        return out
     points = world_vertices(vp)  # (a million vertices: made once for both checks)
     out.extend(_check_visibility(vp, file, points))
     out.extend(_check_inside(vp, file, points))

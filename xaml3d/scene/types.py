@@ -157,7 +157,7 @@ Brush = (
 # A Material in the scene is a tuple of leaf passes (MaterialGroup flattened in document order).
 # A leaf with brush None draws nothing (WPF: Color is only a multiplier of the brush).
 #
-# ``rejected`` (materials, meshes, models): the properties whose markup value WPF's loader
+# ``rejected`` (materials, meshes, models, cameras): the properties whose markup value WPF's loader
 # refuses (an error was reported; the default stands in, for --lenient). The scene checks do not
 # add the warnings that only follow from such an error (no Brush, no triangles, no Material).
 def rejected_field():
@@ -353,6 +353,7 @@ class ProjectionCamera:
     name: str | None = None
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()  # "Position"...: see rejected_field
 
 
 @dataclass(frozen=True)
@@ -377,6 +378,7 @@ class MatrixCamera:
     name: str | None = None
     line: int | None = None
     column: int | None = None
+    rejected: frozenset[str] = rejected_field()
 
 
 Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
@@ -612,6 +614,13 @@ class Scene:
     # whenever the document has storyboards; None when it has none, and in a frame
     # (xaml3d.animation.scene_at: a finished moment is not evaluated again).
     tracks: Tracks | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def input_files(self) -> tuple[str, ...]:
+        """Every file the scene was read from: its own (not for "<string>" or "<stdin>"), the
+        resource dictionaries, the images; what an output must never replace (IO002)."""
+        own = self.file is not None and not (self.file.startswith("<") and self.file.endswith(">"))
+        return (*((self.file,) if own else ()), *self.resources_used, *self.images_used)
 
     @property
     def timeline(self):

@@ -458,6 +458,7 @@ def build_scene(
             ctx.diag("SCN001", msg, doc.root)
 
     resources.report_unresolved(doc.root)  # also where xaml3d reads nothing (2D, styles)
+    resources.finish_hints()
     found = None if resolution is None else tracks(resolution, viewports, laid_out)
     extra = () if resolution is None else resolution.diagnostics
     diags = sorted((*ctx.diagnostics, *extra),

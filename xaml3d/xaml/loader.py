@@ -13,6 +13,7 @@ import os
 from collections.abc import Iterable
 from pathlib import Path
 
+from xaml3d.output import guard
 from xaml3d.scene.types import Scene
 from xaml3d.xaml.builder import build_scene
 from xaml3d.xaml.context import ReadContext
@@ -45,6 +46,7 @@ def load(
     if doc.path is None:
         ctx.allowed_roots.append(Path.cwd())
     res = Resources(ctx)
+    res.scene_folder = doc.path.parent if doc.path is not None else None
     resources = list(resources)
     for f in resources:
         res.add_app_file(f)
@@ -53,4 +55,6 @@ def load(
         found = res.discover_app(doc.path)
         if found is not None:
             res.add_app_file(found, discovered=doc.path)
-    return build_scene(ctx, res, doc, window_size)
+    scene = build_scene(ctx, res, doc, window_size)
+    guard.note_read(scene.input_files)  # save_image and export refuse to write over them
+    return scene

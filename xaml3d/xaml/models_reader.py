@@ -175,14 +175,17 @@ def _camera(r, p, transform):
             **common,
         )
         if t == "PerspectiveCamera":
-            return PerspectiveCamera(field_of_view=p.value("FieldOfView", d, 45.0), **frame)
-        return OrthographicCamera(width=p.value("Width", d, 2.0), **frame)
+            fov = p.value("FieldOfView", d, 45.0)
+            return PerspectiveCamera(field_of_view=fov, rejected=frozenset(p.rejected), **frame)
+        width = p.value("Width", d, 2.0)
+        return OrthographicCamera(width=width, rejected=frozenset(p.rejected), **frame)
     if t == "MatrixCamera":
+        view = frozen_array(p.value("ViewMatrix", V.parse_matrix3d, np.eye(4)))
+        projection = frozen_array(p.value("ProjectionMatrix", V.parse_matrix3d, np.eye(4)))
         return MatrixCamera(
-            view_matrix=frozen_array(p.value("ViewMatrix", V.parse_matrix3d, np.eye(4))),
-            projection_matrix=frozen_array(
-                p.value("ProjectionMatrix", V.parse_matrix3d, np.eye(4))
-            ),
+            view_matrix=view,
+            projection_matrix=projection,
+            rejected=frozenset(p.rejected),
             **common,
         )
     r.ctx.diag("XAML013", f"{t} is not a Camera: ignored", el)

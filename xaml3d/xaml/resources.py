@@ -18,11 +18,12 @@ from __future__ import annotations
 import difflib
 import os
 import re
+from dataclasses import replace
 from pathlib import Path
 
 from lxml import etree
 
-from xaml3d.errors import ResourceError, XamlError
+from xaml3d.errors import Diagnostic, ResourceError, XamlError
 from xaml3d.xaml.context import (
     ReadContext,
     as_written,
@@ -130,7 +131,8 @@ def _dictionaries_in(folder: Path) -> list[tuple[str, bytes]]:
             data = path.read_bytes()
         except OSError:
             continue
-        first = re.sub(rb"<\?.*?\?>|<!--.*?-->", b"", data[:65536], flags=re.S).lstrip()
+        head = data[:65536].removeprefix(b"\xef\xbb\xbf")  # a UTF-8 byte order mark
+        first = re.sub(rb"<\?.*?\?>|<!--.*?-->", b"", head, flags=re.S).lstrip()
         if _DICTIONARY_ROOT.match(first):
             out.append((path.name, data))
     _sibling_cache.clear()  # one folder at a time: a scene's own
@@ -138,14 +140,32 @@ def _dictionaries_in(folder: Path) -> list[tuple[str, bytes]]:
     return out
 
 
-def sibling_defining(folder: Path, key: str) -> str | None:
-    """The name of a resource dictionary (or Application file) in ``folder`` that defines
-    ``key`` as an x:Key, or None."""
+def siblings_defining(folder: Path, key: str) -> list[str]:
+    """The names of the resource dictionaries (and Application files) in ``folder`` that
+    define ``key`` as an x:Key, in name order."""
     pattern = re.compile(rb"\b(?:[\w]+:)?Key\s*=\s*[\"']" + re.escape(key.encode()) + rb"[\"']")
-    for name, data in _dictionaries_in(folder):
-        if pattern.search(data):
-            return name
-    return None
+    return [name for name, data in _dictionaries_in(folder) if pattern.search(data)]
+
+
+def best_siblings(wanted: list[tuple[object, list[str]]]) -> dict[int, tuple[str, int]]:
+    """For missing keys ``wanted`` as (anything, the sibling files defining the key), in source
+    order: {index: (file, how many of the keys it resolves)}, a file chosen for each key that
+    one defines. The file defining the most of the keys still unresolved is taken first (the
+    first by name on a tie), then the next for the keys it leaves, and so on: one ``-r`` that
+    resolves them all is suggested as that, not as the file that happens to define the first."""
+    chosen: dict[int, tuple[str, int]] = {}
+    left = [i for i, (_, names) in enumerate(wanted) if names]
+    while left:
+        counts: dict[str, int] = {}
+        for i in left:
+            for name in wanted[i][1]:
+                counts[name] = counts.get(name, 0) + 1
+        best = min(counts, key=lambda n: (-counts[n], n))
+        for i in left:
+            if best in wanted[i][1]:
+                chosen[i] = (best, counts[best])
+        left = [i for i in left if i not in chosen]
+    return chosen
 
 
 class Resources:
@@ -161,6 +181,10 @@ class Resources:
         # the references looked up so far: id(element) -> (element, its attributes)
         self._looked: dict[int, tuple[etree._Element, set[str | None]]] = {}
         self._orders: dict[int, tuple] = {}  # id(root) -> (root, its elements, id -> index)
+        self.scene_folder: Path | None = None  # the scene file's folder (the sibling hints')
+        # RES001 reports whose hint names a dictionary beside the scene: (report, sibling files
+        # that define the key), completed once every key is looked up (``finish_hints``)
+        self._sibling_hints: list[tuple[Diagnostic, list[str]]] = []
 
     # ----------------------------------------------------------------- dictionaries
     def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
@@ -433,7 +457,12 @@ class Resources:
             near = difflib.get_close_matches(key, sorted(self._keys_in_scope(from_el)), 1, 0.8)
             hint = f" (did you mean {near[0]}?)" if near else ""
             # a near key in scope is the likelier cause than an application resource
-            msg = f"StaticResource {key!r} not found{hint or self._app_hint(key, from_el)}"
+            siblings = [] if hint else self._siblings(key, from_el)
+            if siblings:  # the hint is chosen among all the missing keys: finish_hints
+                self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
+                self._sibling_hints.append((self.ctx.diagnostics[-1], siblings))
+                return None
+            msg = f"StaticResource {key!r} not found{hint or self._app_hint()}"
             self.ctx.diag("RES001", msg, from_el, attr=attr)
         return None
 
@@ -451,18 +480,46 @@ class Resources:
             keys.update(d.keys())
         return {k for k in keys if not k.startswith("{")}
 
-    def _app_hint(self, key: str, from_el: etree._Element) -> str:
-        """For a key no dictionary defines: a resource dictionary beside the scene that defines
-        it, else the application's resources may (an App.xaml is read only when found beside
-        the scene or above it, or given with -r)."""
+    def _siblings(self, key: str, from_el: etree._Element) -> list[str]:
+        """The resource dictionaries beside the scene (or the document holding ``from_el``)
+        that define ``key``."""
         doc = self.ctx.doc_of(from_el)
         folder = doc.path.parent if doc is not None and doc.path is not None else None
-        sibling = sibling_defining(folder, key) if folder is not None else None
-        if sibling is not None:
-            return f" ({sibling} beside the scene defines it: give it with -r {sibling})"
+        folder = folder or self.scene_folder
+        return siblings_defining(folder, key) if folder is not None else []
+
+    def _app_hint(self) -> str:
+        """For a key no dictionary defines, none beside the scene either: the application's
+        resources may (an App.xaml is read only when found beside the scene or above it, or
+        given with -r)."""
         if self.app:
             return ""
         return " (if the application's App.xaml defines it, give it with -r App.xaml)"
+
+    def finish_hints(self) -> None:
+        """Complete the RES001 reports of keys that dictionaries beside the scene define: the
+        dictionary resolving the most of them is suggested once, at the first key it defines,
+        with how many it resolves; its other keys point there (``best_siblings``)."""
+        pending, self._sibling_hints = self._sibling_hints, []
+        at = {id(d): i for i, d in enumerate(self.ctx.diagnostics)}
+        pending = [p for p in pending if id(p[0]) in at]  # (a muted read's are gone)
+        pending.sort(key=lambda p: (p[0].file or "", p[0].line or 0, p[0].column or 0))
+        first: dict[str, Diagnostic] = {}
+        for i, (name, count) in sorted(best_siblings(pending).items()):
+            d = pending[i][0]
+            total = len(pending)
+            if name not in first:
+                first[name] = d
+                if count == 1:
+                    what = "defines it"
+                elif count == total:
+                    what = f"defines all {total} missing keys, this one included"
+                else:
+                    what = f"defines it and {count - 1} more of the {total} missing keys"
+                hint = f"{name} beside the scene {what}: give it with -r {name}"
+            else:
+                hint = f"defined in the -r file suggested at line {first[name].line}"
+            self.ctx.diagnostics[at[id(d)]] = replace(d, message=f"{d.message} ({hint})")
 
     # ----------------------------------------------------------------- every reference
     def report_unresolved(self, root: etree._Element) -> None:
