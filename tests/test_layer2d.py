@@ -956,3 +956,27 @@ def test_render_under_a_layout_transform_turns_the_buffers_with_the_picture():
     assert tuple(r.rgba[30, 30]) == (0, 0, 255, 255) and r.ids[30, 30] == 1
     assert r.ids[5, 5] == -1 and np.isinf(r.depth[5, 5]) and np.isnan(r.distance[5, 5])
     assert np.isfinite(r.distance[30, 30])
+
+
+def test_menu_items_side_by_side_on_aero2s_bar(tmp_path):
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<Menu><MenuItem Header='_File'><MenuItem Header='Open'/></MenuItem>"
+        "<MenuItem Header='Edit'/><TextBlock Text='Help'/></Menu>",
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    # each header at Padding 6,0 in a 1 px border; the access key's underscore not shown;
+    # the sub-item is in the closed Popup; a TextBlock is wrapped in a MenuItem
+    file_w = text_width("File", 12.0) + 12 + 2
+    edit_w = text_width("Edit", 12.0) + 12 + 2
+    texts = _texts(drawing)
+    assert [t for t, _, _ in texts] == ["File", "Edit", "Help"]
+    assert [x for _, x, _ in texts] == pytest.approx([7.0, file_w + 7, file_w + edit_w + 7])
+    assert [y for _, _, y in texts] == pytest.approx([1 + baseline(12.0)] * 3)
+    bar = _geometries(drawing)[0]
+    help_w = text_width("Help", 12.0) + 12 + 2
+    assert bar.geometry.rect == pytest.approx((0, 0, file_w + edit_w + help_w,
+                                               line_height(12.0) + 2))  # fmt: skip
+    assert bar.brush.color == (0xF0 / 255,) * 3 + (1.0,)  # Menu.Static.Background

@@ -398,6 +398,17 @@ def test_markup_control_measured_and_estimate_is_info():
     )
 
 
+def test_a_menu_above_the_viewport_is_measured_as_aero2s():
+    from xaml3d.layout.text import line_height
+
+    # the bar is one line of menu text in the items' 1 px borders: 17.96 px, as WPF's
+    s = load(f"<DockPanel {NS} Width='300' Height='200'><Menu DockPanel.Dock='Top'>"
+             "<MenuItem Header='_File'/><MenuItem Header='Edit'/></Menu><Viewport3D/>"
+             "</DockPanel>", text=True)  # fmt: skip
+    assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - (line_height(12.0) + 2))
+    assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+
+
 def test_estimate_beside_viewport_is_a_warning_and_drawn_controls_say_so():
     # a Calendar docked left of the viewport: its guessed width is the viewport's room
     x = (f"<DockPanel {NS} Width='400' Height='200'>"

@@ -18,6 +18,11 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   at Padding 2. SelectedIndex or IsSelected choose the tab; the first one otherwise.
 - GroupBox: the header at Padding 3,1,3,0 over a 1 px #FFD5DFE5 border (CornerRadius 3) that
   starts half the header's height down and leaves a gap for the header; the content 6 px inside.
+- Menu: a #FFF0F0F0 Border (Menu.Static.Background) at Padding, its items side by side (the
+  ItemsPanel, a WrapPanel, on one row); each top-level MenuItem a transparent 1 px Border
+  around its Header at Padding 6,0 (TopLevelHeaderTemplate; the Icon and check glyph columns
+  are collapsed), its sub-items in the closed Popup (not shown). Any other item is wrapped in a
+  MenuItem, as WPF's ItemContainerGenerator does; a Separator stays one.
 - Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
   the content below when IsExpanded.
 
@@ -27,6 +32,8 @@ a Border's), ``#tabs`` is the header row whose selected tab is drawn last (Panel
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
@@ -54,7 +61,8 @@ _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlin
 _CONTENT_CONTROLS = {"Button", "ToggleButton", "RepeatButton", "Label"}
 _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
-TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED
+_MENUS = {"Menu", "MenuItem"}
+TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
 
@@ -69,6 +77,7 @@ _TAB_FACE = LinearGradientBrush(
     start_point=(0.0, 0.0), end_point=(0.0, 1.0),
 )  # fmt: skip
 _WHITE = _rgb("FFFFFF")
+_MENU_BAR = _rgb("F0F0F0")  # Menu.Static.Background
 _GROUP_BORDER = _rgb("D5DFE5")
 _EXPANDER_INK = _rgb("333333")
 _CIRCLE = 19.0  # the Expander's toggle circle and its column
@@ -95,7 +104,7 @@ def expands(reader, el, local: str) -> bool:
         return False
     if local in _CONTENT_CONTROLS or local in _OPTIONS:
         return bool(rich_content(reader, el))
-    return local in _HEADERED
+    return local in _HEADERED or local in _MENUS
 
 
 def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
@@ -116,6 +125,10 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _group_box(reader, n, el, v, font)
     elif local == "Expander":
         _expander(reader, n, el, v, font)
+    elif local == "Menu":
+        _menu(reader, n, el, v, font)
+    elif local == "MenuItem":  # a top-level item (its sub-items are in a closed Popup)
+        _menu_item(reader, n, el, v, font)
     else:  # a TabItem outside a TabControl: its header alone
         _tab_item(reader, n, el, v, font, False)
 
@@ -384,6 +397,62 @@ def _expander(reader, n, el, v, font) -> None:
         kids.append(_presenter(reader, font, _content(reader, el, font), pad, h, vv,
                                dock="Bottom"))  # fmt: skip
     n.children = [part(reader, L.DOCK, font, kids)]
+
+
+def _access_text(text: str) -> str:
+    """A MenuItem header as AccessText shows it at rest: the first lone ``_`` marks the access
+    key and is not shown (``__`` is one underscore)."""
+    out, i, marked = [], 0, False
+    while i < len(text):
+        c = text[i]
+        if c == "_" and i + 1 < len(text):
+            if text[i + 1] == "_":
+                out.append("_")
+                i += 2
+                continue
+            if not marked:
+                marked = True
+                i += 1
+                continue
+        out.append(c)
+        i += 1
+    return "".join(out)
+
+
+def _menu(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, _MENU_BAR, None)
+    n.padding = v.get("Padding", parse_thickness, (0.0,) * 4)
+    rows = []
+    for item in _elements(reader.content_of(el)):
+        local = qname(item.tag)[1] if is_presentation(qname(item.tag)[0]) else ""
+        if local in ("MenuItem", "Separator"):
+            k = reader.build(item, font)
+        else:  # WPF wraps any other item in a MenuItem, the item as its Header
+            if not local and len(item) == 0:
+                inner = [text_part(reader, el, _access_text(" ".join((item.text or "").split())),
+                                   font)]  # fmt: skip
+            else:
+                inner = _build_all(reader, [item], font)
+            header = _presenter(reader, font, inner, (6.0, 0.0) * 2, v="Center")
+            k = part(reader, L.BORDER, font, [header], border=(1.0,) * 4)
+        if k is not None:
+            rows.append(k)
+    n.children = [part(reader, L.STACK, font, rows, orientation="Horizontal")]
+
+
+def _menu_item(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, None, None)
+    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    n.padding = (0.0,) * 4
+    pad = v.get("Padding", parse_thickness, (6.0, 0.0, 6.0, 0.0))
+    header = _header(reader, el, font)
+    for k in header:  # the header's text is AccessText: its access-key marker is not shown
+        if k.type == TEXT_PART and k.drawing is not None:
+            text = _access_text(k.drawing.text)
+            w = text_width(text, font, *_font_style(el))
+            k.estimate = (w, k.estimate[1])
+            k.drawing = replace(k.drawing, text=text)
+    n.children = [_presenter(reader, font, header, pad, "Left", "Center")]
 
 
 def _toggle_circle(expanded: bool) -> DrawingGroup:

@@ -11,7 +11,7 @@ Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch No
 and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
 Background; wrapped and trimmed to its laid-out width), Label, Image, and Button, TextBox,
 CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed ComboBox, ListBox,
-TabControl, GroupBox and Expander (with the content they hold) in WPF's default Windows 10/11
+TabControl, GroupBox, Expander and Menu (with the content they hold) in WPF's default Windows 10/11
 look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
 RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect and
 their bitmap effects: ``picture_reader.element_layer``), apply to an element and its children as
