@@ -980,3 +980,52 @@ def test_menu_items_side_by_side_on_aero2s_bar(tmp_path):
     assert bar.geometry.rect == pytest.approx((0, 0, file_w + edit_w + help_w,
                                                line_height(12.0) + 2))  # fmt: skip
     assert bar.brush.color == (0xF0 / 255,) * 3 + (1.0,)  # Menu.Static.Background
+
+
+def test_tool_bar_items_grip_and_overflow_as_aero2s(tmp_path):
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<ToolBar><Button Content='Open'/><Separator/><Button Content='Save'/></ToolBar>",
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    open_w, save_w = (text_width(t, 12.0) + 6 for t in ("Open", "Save"))
+    # Grid Margin 3,1,1,1; the grip 10 px at Margin -3,-1; the items at Margin 0,1,2,2; the
+    # main panel 11 px short of the right edge, over the 15 px overflow button
+    width = 3 + 7 + open_w + 5 + save_w + 2 + 11 + 1
+    height = 1 + 1 + line_height(12.0) + 6 + 2 + 1
+    texts = _texts(drawing)
+    assert [t for t, _, _ in texts] == ["Open", "Save"]
+    assert [x for _, x, _ in texts] == pytest.approx([13.0, 10 + open_w + 5 + 3])
+    assert [y for _, _, y in texts] == pytest.approx([2 + 3 + baseline(12.0)] * 2)
+    shapes = _placed_rects(drawing)
+    bar = (0xEE / 255, 0xF5 / 255, 0xFD / 255, 1.0)
+    overflow, main = [(r, g) for r, g in shapes if getattr(g.brush, "color", None) == bar]
+    assert overflow[0] == pytest.approx((width - 16, 1, 15, height - 2))
+    assert main[0] == pytest.approx((3, 1, width - 15, height - 2))
+    assert main[1].geometry.radius_x == 3.0
+    # the separator: 1 px of #FFB6BDC5 across the bar at Margin 2
+    (line,) = [r for r, g in shapes if getattr(g.brush, "color", None) == _rgb("B6BDC5")]
+    assert line == pytest.approx((10 + open_w + 2, 4, 1, height - 2 - 3 - 4))
+    # the grip's dots every 4 px from 5 px down, 6 px in (ToolBarGripper #FF6D6D6D)
+    dots = [r for r, g in shapes if getattr(g.brush, "color", None) == _rgb("6D6D6D")]
+    assert [r[:2] for r in dots[:2]] == [(6.0, 5.0), (6.0, 9.0)]
+
+
+def _placed_rects(drawing, origin=(0.0, 0.0)) -> list:
+    """(absolute rect, drawing) of every RectangleGeometry fill in a drawing tree (the groups
+    here only translate)."""
+    if isinstance(drawing, DrawingGroup):
+        if drawing.transform is not None:
+            m = drawing.transform
+            origin = (origin[0] + m[0, 2], origin[1] + m[1, 2])
+        return [t for k in drawing.children for t in _placed_rects(k, origin)]
+    if isinstance(drawing, GeometryDrawing) and isinstance(drawing.geometry, RectangleGeometry):
+        x, y, w, h = drawing.geometry.rect
+        return [((origin[0] + x, origin[1] + y, w, h), drawing)]
+    return []
+
+
+def _rgb(hex6: str) -> tuple:
+    return tuple(int(hex6[i : i + 2], 16) / 255 for i in (0, 2, 4)) + (1.0,)

@@ -549,11 +549,12 @@ def test_markup_estimates_follow_font_size_padding_and_toolbar_items():
         400,
         300 - 2 * LINE - 8,
     )
-    # a ToolBarTray holding a ToolBar of Buttons: the items' height plus the bar's chrome
+    # a ToolBarTray holding a ToolBar of Buttons, laid out as Aero2's template: the Buttons
+    # in ToolBar.ButtonStyleKey (a 1 px border, Padding 2: 21.96 px), the bar's Grid Margin
+    # 3,1,1,1 and its items' panel Margin 0,1,2,2 (5 px more)
     tray = ("<ToolBarTray DockPanel.Dock='Top'><ToolBar><Button Content='Open'/><Separator/>"
             "<Button Content='Save'/></ToolBar></ToolBarTray>")  # fmt: skip
-    # (the Buttons measured: one line in Aero2's border and padding, 19.96 px; the bar's 10)
-    assert top(tray) == (400, 300 - (LINE + 4 + 10))
+    assert top(tray) == (400, 300 - (LINE + 6 + 5))
 
 
 def test_auto_row_sized_by_a_cell_in_a_star_column():

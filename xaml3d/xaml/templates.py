@@ -23,12 +23,23 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   around its Header at Padding 6,0 (TopLevelHeaderTemplate; the Icon and check glyph columns
   are collapsed), its sub-items in the closed Popup (not shown). Any other item is wrapped in a
   MenuItem, as WPF's ItemContainerGenerator does; a Separator stays one.
+- ToolBar (horizontal): the template's Grid at Margin 3,1,1,1; under the main panel the 15 px
+  overflow button (#FFEEF5FD, its arrow in the disabled ToolBarGripper colour: nothing
+  overflows), the main panel a #FFEEF5FD Border (CornerRadius 3) 11 px short of the right edge
+  holding the 10 px grip (Thumb, Margin -3,-1,0,0, its dots at Padding 6,5,1,6), the Header at
+  Margin 4,0,4,0 and the items side by side at Margin 0,1,2,2. Its Buttons (ToggleButton,
+  RepeatButton, CheckBox, RadioButton alike) take ToolBar.ButtonStyleKey: transparent, a 1 px
+  transparent border, Padding 2, centred; a checked one #400080FF in #80DADADA. A Separator
+  takes ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 line across the bar with Margin 2.
+- ToolBarTray: #FFEEF5FD, its ToolBars side by side on one band.
 - Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
   the content below when IsExpanded.
 
-Part nodes (type ``#text``, ``#part``, ``#tabs``) have no element of their own: a ``#text`` part
-carries its text's drawing, a ``#part`` its Background, BorderBrush and BorderThickness (painted as
-a Border's), ``#tabs`` is the header row whose selected tab is drawn last (Panel.ZIndex 1).
+Part nodes (type ``#text``, ``#part``, ``#tabs``, ``#grip``) have no element of their own: a
+``#text`` part carries its text's drawing, a ``#part`` its Background, BorderBrush,
+BorderThickness and CornerRadius (painted as a Border's), ``#tabs`` is the header row whose
+selected tab is drawn last (Panel.ZIndex 1), ``#grip`` a ToolBar's grip (its dots drawn once
+its height is known: ``after_layout``).
 """
 
 from __future__ import annotations
@@ -56,13 +67,14 @@ from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _inherited, _rgb
 
-TEXT_PART, PART, TABS_PART = "#text", "#part", "#tabs"
+TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _CONTENT_CONTROLS = {"Button", "ToggleButton", "RepeatButton", "Label"}
 _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
-TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS
+_BARS = {"ToolBar", "ToolBarTray"}
+TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
 
@@ -78,6 +90,15 @@ _TAB_FACE = LinearGradientBrush(
 )  # fmt: skip
 _WHITE = _rgb("FFFFFF")
 _MENU_BAR = _rgb("F0F0F0")  # Menu.Static.Background
+# Aero2's ToolBar brushes: ToolBarHorizontalBackground (and the tray's, the overflow button's),
+# ToolBarGripper (also the disabled overflow arrow), ToolBarSeparatorFill, ToolBarButtonChecked
+# and ToolBarButtonHoverBorder (a checked toggle's look)
+_TOOL_BAR = _rgb("EEF5FD")
+_GRIPPER = _rgb("6D6D6D")
+_TOOL_SEPARATOR = _rgb("B6BDC5")
+_TOOL_CHECKED = _rgb("0080FF", 0x40 / 255)
+_TOOL_CHECKED_BORDER = _rgb("DADADA", 0x80 / 255)
+_TOOL_BUTTONS = {"Button", "ToggleButton", "RepeatButton", "CheckBox", "RadioButton"}
 _GROUP_BORDER = _rgb("D5DFE5")
 _EXPANDER_INK = _rgb("333333")
 _CIRCLE = 19.0  # the Expander's toggle circle and its column
@@ -104,7 +125,7 @@ def expands(reader, el, local: str) -> bool:
         return False
     if local in _CONTENT_CONTROLS or local in _OPTIONS:
         return bool(rich_content(reader, el))
-    return local in _HEADERED or local in _MENUS
+    return local in _HEADERED or local in _MENUS or local in _BARS
 
 
 def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
@@ -127,6 +148,10 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _expander(reader, n, el, v, font)
     elif local == "Menu":
         _menu(reader, n, el, v, font)
+    elif local == "ToolBar":
+        _tool_bar(reader, n, el, v, font)
+    elif local == "ToolBarTray":
+        _tool_bar_tray(reader, n, el, v, font)
     elif local == "MenuItem":  # a top-level item (its sub-items are in a closed Popup)
         _menu_item(reader, n, el, v, font)
     else:  # a TabItem outside a TabControl: its header alone
@@ -469,6 +494,144 @@ def _toggle_circle(expanded: bool) -> DrawingGroup:
     m = np.array([[1.0, 0.0, dx], [0.0, 1.0, dy], [0.0, 0.0, 1.0]])
     chevron = GeometryDrawing(arrow, pen=Pen(brush=_EXPANDER_INK, thickness=2.0))
     return DrawingGroup(children=(ring, DrawingGroup(children=(chevron,), transform=m)))
+
+
+def _tool_bar(reader, n, el, v, font) -> None:
+    from xaml3d.xaml.panels_reader import PanelsReader
+
+    _chrome(reader, n, v, None, None)
+    n.border = (0.0,) * 4
+    n.padding = (3.0, 1.0, 1.0, 1.0)  # the template's Grid Margin
+    arrow = part(reader, L.CONTROL, font, estimate=(6.0, 7.0), margin=(7.0, 2.0, 2.0, 2.0),
+                 h_align="Right", v_align="Bottom")  # fmt: skip
+    arrow.drawing = _overflow_arrow()
+    overflow = part(reader, L.BORDER, font, [arrow], background=_TOOL_BAR, h_align="Right",
+                    corner_radius=(3.0,) * 4)  # fmt: skip
+    locked = _locked(el)
+    grip = part(
+        reader,
+        L.CONTROL,
+        font,
+        type=GRIP_PART,
+        estimate=(0.0, 11.0),
+        width=10.0,
+        margin=(-3.0, -1.0, 0.0, 0.0),
+        visibility="Collapsed" if locked else "Visible",
+    )
+    kids = [grip]
+    header = _header(reader, el, font)
+    if header:
+        kids.append(_presenter(reader, font, header, (4.0, 0.0, 4.0, 0.0), "Center", "Center"))
+    items = []
+    for item in _elements(reader.content_of(el)):
+        local = qname(item.tag)[1] if is_presentation(qname(item.tag)[0]) else ""
+        if local in _TOOL_BUTTONS:
+            k = PanelsReader.build(reader, item, font)  # restyled: ToolBar.ButtonStyleKey
+            if k is not None:
+                _tool_button(reader, k, item, font)
+        elif local == "Separator":
+            k = PanelsReader.build(reader, item, font)
+            if k is not None:
+                k.estimate = None
+                _tool_separator(reader, k, item)
+        else:
+            k = reader.build(item, font)
+        if k is not None:
+            items.append(k)
+    kids.append(part(reader, L.STACK, font, items, orientation="Horizontal",
+                     margin=(0.0, 1.0, 2.0, 2.0)))  # fmt: skip
+    main = part(reader, L.BORDER, font, [part(reader, L.DOCK, font, kids)],
+                background=_brush(reader.r, v, "Background", _TOOL_BAR),
+                border_brush=_brush(reader.r, v, "BorderBrush", None),
+                border=v.get("BorderThickness", parse_thickness, (0.0,) * 4),
+                padding=v.get("Padding", parse_thickness, (0.0,) * 4),
+                corner_radius=(3.0,) * 4, margin=(0.0, 0.0, 11.0, 0.0))  # fmt: skip
+    n.children = [part(reader, L.GRID, font, [overflow, main])]
+
+
+def _locked(el) -> bool:
+    """ToolBarTray.IsLocked, on the ToolBar or (inherited) on its tray: the grip is hidden."""
+    for e in (el, el.getparent()):
+        if e is not None and (e.get("ToolBarTray.IsLocked") or e.get("IsLocked")) == "True":
+            return True
+    return False
+
+
+def _tool_button(reader, k, el, font) -> None:
+    """A button on a ToolBar (ToolBar.ButtonStyleKey / ToggleButtonStyleKey): a transparent
+    1 px border at Padding 2 around its content, centred in the bar; checked: #400080FF."""
+    kv = ElementValues(reader.r, el, reader.style_setters(el, k.type))
+    checked = kv.get("IsChecked", V.parse_bool, False) if k.type != "Button" else False
+    k.estimate = None
+    k.kind = L.BORDER
+    k.background = _brush(reader.r, kv, "Background", _TOOL_CHECKED if checked else None)
+    k.border_brush = _brush(reader.r, kv, "BorderBrush",
+                            _TOOL_CHECKED_BORDER if checked else None)  # fmt: skip
+    k.border = kv.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    k.padding = kv.get("Padding", parse_thickness, (2.0,) * 4)
+    if el.get("HorizontalAlignment") is None:
+        k.h_align = "Center"
+    if el.get("VerticalAlignment") is None:
+        k.v_align = "Center"
+    h, vv = _align(kv, "Center", "Center")
+    k.children = [_presenter(reader, font, _content(reader, el, font), h=h, v=vv)]
+
+
+def _tool_separator(reader, k, el) -> None:
+    """ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 Border with Margin 2, across the bar."""
+    sv = ElementValues(reader.r, el, reader.style_setters(el, "Separator"))
+    k.kind = L.BORDER
+    k.type = PART  # drawn as its Border (not as a menu or panel Separator)
+    k.background = _brush(reader.r, sv, "Background", _TOOL_SEPARATOR)
+    k.margin = sv.get("Margin", parse_thickness, (2.0,) * 4)
+    k.min_width = max(k.min_width, 1.0)
+    k.min_height = max(k.min_height, 1.0)
+    reader.elements[id(k)] = (None, reader.elements.get(id(k), (None, 12.0))[1])
+
+
+def _tool_bar_tray(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, _TOOL_BAR, None)
+    n.border = (0.0,) * 4
+    bars = _build_all(reader, _elements(reader.content_of(el)), font)
+    n.children = [part(reader, L.STACK, font, bars, orientation="Horizontal")]
+
+
+def _overflow_arrow() -> DrawingGroup:
+    """The overflow button's 6 x 7 arrow (a bar over a triangle, each with a white copy 1 px
+    down and right), in ToolBarGripper's colour as the button is disabled at rest."""
+    white_bar = path_from_string("M 1 1.5 L 6 1.5")
+    bar = path_from_string("M 0 0.5 L 5 0.5")
+    return DrawingGroup(children=(
+        GeometryDrawing(white_bar, pen=Pen(brush=_WHITE, thickness=1.0)),
+        GeometryDrawing(bar, pen=Pen(brush=_GRIPPER, thickness=1.0)),
+        GeometryDrawing(path_from_string("M 0.5 4 L 6.5 4 L 3.5 7 Z"), brush=_WHITE),
+        GeometryDrawing(path_from_string("M -0.5 3 L 5.5 3 L 2.5 6 Z"), brush=_GRIPPER),
+    ))  # fmt: skip
+
+
+def _grip_dots(w: float, h: float) -> DrawingGroup:
+    """The ToolBar Thumb's Rectangle (at Padding 6,5,1,6) filled with its 4 x 4 tile: a
+    ToolBarGripper dot at 0,0 over a white one at 1,1, 2 px each, cut at the rectangle."""
+    x0, y0 = 6.0, 5.0
+    rw, rh = max(0.0, w - 7.0), max(0.0, h - 11.0)
+    out = []
+    for top in np.arange(0.0, rh, 4.0):  # one dot a tile: a few per bar, not per pixel
+        for dx, dy, brush in ((1.0, 1.0, _WHITE), (0.0, 0.0, _GRIPPER)):
+            x, y = dx, top + dy
+            cw, ch = min(2.0, rw - x), min(2.0, rh - y)
+            if cw > 0 and ch > 0:
+                out.append(GeometryDrawing(RectangleGeometry((x0 + x, y0 + y, cw, ch)),
+                                           brush=brush))  # fmt: skip
+    return DrawingGroup(children=tuple(out))
+
+
+def after_layout(root: L.Node) -> None:
+    """The template parts drawn from their laid-out size: the selected tabs raised, the grips'
+    dots."""
+    raise_selected_tabs(root)
+    for n in root.walk():
+        if n.type == GRIP_PART and n.arranged:
+            n.drawing = _grip_dots(*n.ink)
 
 
 def raise_selected_tabs(root: L.Node) -> None:
