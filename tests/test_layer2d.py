@@ -1029,3 +1029,37 @@ def _placed_rects(drawing, origin=(0.0, 0.0)) -> list:
 
 def _rgb(hex6: str) -> tuple:
     return tuple(int(hex6[i : i + 2], 16) / 255 for i in (0, 2, 4)) + (1.0,)
+
+
+def test_date_picker_shows_the_watermark_or_the_date(tmp_path):
+    from xaml3d.layout.text import baseline, text_width
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<StackPanel><DatePicker/><DatePicker SelectedDate='2024-01-05'/>"
+        "<DatePicker SelectedDate='2024-01-05' SelectedDateFormat='Long'/></StackPanel>",
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    row = 6 + 2724 / 2048 * 12 + 6  # 27.96 px each
+    texts = _texts(drawing)
+    assert [t for t, _, _ in texts] == ["Select a date", "1/5/2024", "Friday, January 5, 2024"]
+    # the watermark 1 + 2 px inside the text box (border 1, Padding 2 in): 6 px in, 6 down;
+    # a date 2 px inside the text view, at its top
+    assert [x for _, x, _ in texts] == pytest.approx([6.0, 5.0, 5.0])
+    assert [y for _, _, y in texts] == pytest.approx(
+        [6 + baseline(12.0), row + 3 + baseline(12.0), 2 * row + 3 + baseline(12.0)]
+    )
+    # the Style's Foreground, #FF333333
+    assert {t.brush.color for t in _text_drawings(drawing)} == {(0x33 / 255,) * 3 + (1.0,)}
+    # the text boxes (white, CornerRadius 1) as wide as the widest content: the long date in
+    # the text view, 2 px each side; the calendar button's column after them
+    boxes = [r for r, g in _placed_rects(drawing)
+             if g.geometry.radius_x == 1.0 and g.brush.color == (1.0, 1.0, 1.0, 1.0)]  # fmt: skip
+    widest = text_width("Friday, January 5, 2024", 12.0) + 4
+    assert boxes == [pytest.approx((3.0, 3 + i * row, widest, row - 6)) for i in range(3)]
+
+
+def _text_drawings(drawing) -> list:
+    if isinstance(drawing, DrawingGroup):
+        return [t for k in drawing.children for t in _text_drawings(k)]
+    return [drawing] if isinstance(drawing, TextDrawing) else []

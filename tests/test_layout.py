@@ -387,15 +387,32 @@ def test_markup_control_measured_and_estimate_is_info():
     assert not any(d.code == "LAY003" for d in s.diagnostics)
     # a control whose template xaml3d does not know is estimated (16 px line), and says so
     s = load(x.replace("<Button DockPanel.Dock='Top'>Go</Button>",
-                       "<DatePicker DockPanel.Dock='Top'/>"), text=True)  # fmt: skip
+                       "<TreeView DockPanel.Dock='Top'/>"), text=True)  # fmt: skip
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 16)
     # ... and as the viewport shares its DockPanel, the guess places the viewport: a warning
     (d,) = [d for d in s.diagnostics if d.code in ("LAY003", "LAY007")]
     assert (d.code, d.severity) == ("LAY007", "warning")
     assert d.message.startswith(
-        "DatePicker is not laid out by xaml3d: its content size is "
+        "TreeView is not laid out by xaml3d: its content size is "
         "estimated as 0 x 16, and a Viewport3D in the same panel"
     )
+
+
+def test_a_date_picker_beside_the_viewport_is_measured_as_aero2s():
+    from xaml3d.layout.text import line_height, text_width
+
+    # its 1 px border and Padding 2, the watermark "Select a date" in a 1 px border at Padding
+    # 2 (always measured), the 20 px calendar button at Margin 3,0,3,0: 27.96 px tall
+    s = load(f"<DockPanel {NS} Width='400' Height='200'><DatePicker DockPanel.Dock='Left'/>"
+             "<Viewport3D/></DockPanel>", text=True)  # fmt: skip
+    width = 3 + text_width("Select a date", 12.0) + 6 + 26 + 3
+    assert s.viewports[0].width == pytest.approx(400 - width)
+    assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+    # a long date wider than the watermark widens it; the height stays
+    s = load(f"<DockPanel {NS} Width='400' Height='200'><DatePicker DockPanel.Dock='Top' "
+             "SelectedDate='2024-01-05' SelectedDateFormat='Long'/><Viewport3D/></DockPanel>",
+             text=True)  # fmt: skip
+    assert s.viewports[0].height == pytest.approx(200 - (line_height(12.0) + 12))
 
 
 def test_a_menu_above_the_viewport_is_measured_as_aero2s():

@@ -32,6 +32,7 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   transparent border, Padding 2, centred; a checked one #400080FF in #80DADADA. A Separator
   takes ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 line across the bar with Margin 2.
 - ToolBarTray: #FFEEF5FD, its ToolBars side by side on one band.
+- DatePicker (closed): ``date_templates``.
 - Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
   the content below when IsExpanded.
 
@@ -60,6 +61,7 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
+from xaml3d.xaml import date_templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
@@ -74,7 +76,8 @@ _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
-TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS
+_DATES = {"DatePicker"}  # date_templates
+TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
 
@@ -125,7 +128,7 @@ def expands(reader, el, local: str) -> bool:
         return False
     if local in _CONTENT_CONTROLS or local in _OPTIONS:
         return bool(rich_content(reader, el))
-    return local in _HEADERED or local in _MENUS or local in _BARS
+    return local in _HEADERED or local in _MENUS or local in _BARS or local in _DATES
 
 
 def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
@@ -148,6 +151,8 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _expander(reader, n, el, v, font)
     elif local == "Menu":
         _menu(reader, n, el, v, font)
+    elif local == "DatePicker":
+        date_templates.date_picker(reader, n, el, v, font)
     elif local == "ToolBar":
         _tool_bar(reader, n, el, v, font)
     elif local == "ToolBarTray":

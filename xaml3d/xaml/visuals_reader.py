@@ -3,20 +3,20 @@
 WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
 xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
 measured with the package's font, shapes by their geometry: ``control_sizes``; the controls
-that hold content built as their template's parts: ``templates``), laid out by ``xaml3d.layout`` as
-WPF lays out a brush's visual (measured with infinite room, arranged at its desired size), and
-each element becomes the drawing WPF's would: panel and Border backgrounds and borders
-(BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
-Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
-and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
-Background; wrapped and trimmed to its laid-out width), Label, Image, and Button, TextBox,
-CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed ComboBox, ListBox,
-TabControl, GroupBox, Expander, Menu, ToolBar and ToolBarTray (with the content they hold) in
-WPF's default Windows 10/11 look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme
-files). Opacity, OpacityMask, and RenderTransform (about RenderTransformOrigin), Clip and
-Effect (BlurEffect, DropShadowEffect and their bitmap effects:
-``picture_reader.element_layer``), apply to an element and its children as one layer.
-Anything else is skipped with DRW002: the rest is drawn.
+that hold content built as their template's parts: ``templates``), laid out by
+``xaml3d.layout`` as WPF lays out a brush's visual (measured with infinite room, arranged at
+its desired size), and each element becomes the drawing WPF's would: panel and Border
+backgrounds and borders (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line,
+Polyline, Polygon and Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins;
+Stretch None), TextBlock and text content (Text, Foreground, FontSize, FontWeight, FontStyle,
+Padding, TextAlignment, Background; wrapped and trimmed to its laid-out width), Label, Image,
+and Button, TextBox, CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed
+ComboBox, ListBox, TabControl, GroupBox, Expander, Menu, ToolBar, ToolBarTray and a closed
+DatePicker (with the content they hold) in WPF's default Windows 10/11 look (the
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
+RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect
+and their bitmap effects: ``picture_reader.element_layer``), apply to an element and its
+children as one layer. Anything else is skipped with DRW002: the rest is drawn.
 """
 
 from __future__ import annotations
