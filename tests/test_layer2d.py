@@ -1063,3 +1063,25 @@ def _text_drawings(drawing) -> list:
     if isinstance(drawing, DrawingGroup):
         return [t for k in drawing.children for t in _text_drawings(k)]
     return [drawing] if isinstance(drawing, TextDrawing) else []
+
+
+def test_calendar_month_view_texts_and_marks(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path, "<Calendar DisplayDate='2024-01-05' SelectedDate='2024-01-17'/>"
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    texts = _text_drawings(drawing)
+    assert [t.text for t in texts[:8]] == ["January 2024", "Su", "Mo", "Tu", "We", "Th", "Fr", "Sa"]
+    days = [t.text for t in texts[8:]]
+    assert days[:2] == ["31", "1"] and days[-1] == "10" and len(days) == 42
+    grey, ink = (0x77 / 255,) * 3 + (1.0,), (0x33 / 255,) * 3 + (1.0,)
+    assert [t.brush.color for t in texts[8:10]] == [grey, ink]  # December's 31st, then the 1st
+    # the title 3 + 3 px in (Margin 0,3 and the borders), at Margin 1,4,1,9
+    (_, _, title_y) = _texts(drawing)[0]
+    assert title_y == pytest.approx(3 + 3 + 4 + baseline(10.5))
+    # the selected day's cell: #FFBADDE9 at Opacity .75, rounded 1 px
+    blue = (0xBA / 255, 0xDD / 255, 0xE9 / 255, 0.75)
+    (cell,) = [g for _, g in _placed_rects(drawing) if getattr(g.brush, "color", None) == blue]
+    assert cell.geometry.rect[3] == pytest.approx(line_height(10.0) + 2)

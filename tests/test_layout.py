@@ -426,10 +426,38 @@ def test_a_menu_above_the_viewport_is_measured_as_aero2s():
     assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
 
 
+def test_a_calendar_beside_the_viewport_is_measured_as_aero2s_month_view():
+    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.xaml.date_templates import month_days
+
+    s = load(f"<DockPanel {NS} Width='400' Height='300'><Calendar DockPanel.Dock='Left' "
+             "DisplayDate='2024-01-05'/><Viewport3D/></DockPanel>", text=True)  # fmt: skip
+    assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+    # the month grid: each column as wide as its day name (bold 9.5 px) or its widest day
+    # button (10 px text at Margin 5,1,5,1); 6 weeks from Sunday 31 December 2023
+    days = month_days(__import__("datetime").date(2024, 1, 5))
+    assert days[0].isoformat() == "2023-12-31" and len(days) == 42
+    names = ("Su", "Mo", "Tu", "We", "Th", "Fr", "Sa")
+    cols = [max([text_width(names[c], 9.5, 700)]
+                + [text_width(str(d.day), 10.0) + 10 for d in days[c::7]])
+            for c in range(7)]  # fmt: skip
+    header = 28 + text_width("January 2024", 10.5, 700) + 2 + 28
+    # the 1 px border and the 2 px white one each side, the grid's Margin 6,-1,6,6
+    width = 6 + max(header, sum(cols) + 12)
+    assert s.viewports[0].width == pytest.approx(400 - width)
+    # and docked at the top: CalendarItem's Margin 0,3,0,3, the header row (20 px buttons or
+    # the title at Margin 1,4,1,9), the day names at Margin 0,6,0,6, 6 rows of day buttons
+    s = load(f"<DockPanel {NS} Width='400' Height='300'><Calendar DockPanel.Dock='Top' "
+             "DisplayDate='2024-01-05'/><Viewport3D/></DockPanel>", text=True)  # fmt: skip
+    height = (3 + 3 + max(20, 4 + line_height(10.5) + 9) - 1 + 12 + line_height(9.5)
+              + 6 * (line_height(10.0) + 2) + 6 + 3 + 3)  # fmt: skip
+    assert s.viewports[0].height == pytest.approx(300 - height)
+
+
 def test_estimate_beside_viewport_is_a_warning_and_drawn_controls_say_so():
-    # a Calendar docked left of the viewport: its guessed width is the viewport's room
+    # a TreeView docked left of the viewport: its guessed width is the viewport's room
     x = (f"<DockPanel {NS} Width='400' Height='200'>"
-         "<Calendar DockPanel.Dock='Left'/><Viewport3D/></DockPanel>")  # fmt: skip
+         "<TreeView DockPanel.Dock='Left'/><Viewport3D/></DockPanel>")  # fmt: skip
     s = load(x, text=True)
     assert [(d.code, d.severity) for d in s.diagnostics if d.code.startswith("LAY")] == [
         ("LAY007", "warning")

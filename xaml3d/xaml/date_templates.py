@@ -9,7 +9,16 @@ the ``[[Aero.NormalColor, Aero2.NormalColor, ...]]`` section); ``templates.expan
   date is chosen; else the SelectedDate or Text as a short (M/d/yyyy) or long date, 2 px inside
   the text view) and the 20 px calendar button at Margin 3,0,3,0 (its 19 x 18 icon, drawn
   here). Text in the DatePicker's Foreground, #FF333333 by its Style.
-- Calendar: measured as CalendarItem lays out its month view (drawn: see ``calendar_look``).
+- Calendar (DisplayMode Month): CalendarItem at Margin 0,3,0,3, centred, in the Calendar's
+  1 px gradient border (#FFA3AEB9 at the top to #FF617584) on its gradient Background
+  (#FFE4EAF0, #FFECF0F4 to 0.16, then #FFFCFCFD to white) inside a 2 px white border; a row of
+  the 28 x 20 previous and next buttons around the month and year (bold, 10.5 px, at Margin
+  1,4,1,9), then the month grid at Margin 6,-1,6,6: the day names (Su..Sa, bold 9.5 px at
+  Margin 0,6,0,6) and 6 weeks of CalendarDayButtons (10 px, at Margin 5,1,5,1), each column
+  as wide as its widest. The month shown is DisplayDate's, else SelectedDate's, else today's
+  (as WPF); the weeks start on Sunday (en-US) with at least one day of the month before; days
+  of other months in #FF777777, SelectedDate on #FFBADDE9 (Opacity .75), today on #FFAAAAAA
+  in white when IsTodayHighlighted.
 """
 
 from __future__ import annotations
@@ -30,7 +39,7 @@ from xaml3d.scene.drawing import (
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
-from xaml3d.xaml.visual_text import _box_drawing, _rgb
+from xaml3d.xaml.visual_text import _box_drawing, _brush, _rgb
 
 WATERMARK = "Select a date"  # DatePicker_WatermarkText (en-US)
 _TEXT = _rgb("333333")  # the DatePicker Style's Foreground
@@ -182,3 +191,124 @@ def calendar_icon() -> tuple:
     drawn.append(GeometryDrawing(EllipseGeometry((_ICON_W / 2, row0 / 2), 1.5, 1.5),
                                  brush=_WHITE))  # fmt: skip
     return tuple(drawn)
+
+
+# ---------------------------------------------------------------------------- Calendar
+
+_CAL_BORDER = LinearGradientBrush(
+    stops=_stops(("A3AEB9", 0.0), ("8399A9", 0.375), ("718597", 0.375), ("617584", 1.0)),
+    start_point=(0.5, 0.0),
+    end_point=(0.5, 1.0),
+)
+_CAL_BACKGROUND = LinearGradientBrush(
+    stops=_stops(("E4EAF0", 0.0), ("ECF0F4", 0.16), ("FCFCFD", 0.16), ("FFFFFF", 1.0)),
+    start_point=(0.5, 0.0),
+    end_point=(0.5, 1.0),
+)
+_SHORTEST_DAYS = ("Su", "Mo", "Tu", "We", "Th", "Fr", "Sa")  # en-US, from Sunday
+_OTHER_MONTH = _rgb("777777")
+_SELECTED = _rgb("BADDE9", 0.75)
+_TODAY = _rgb("AAAAAA")
+_NAV = _rgb("E5EBF1", 0x11 / 255)
+# the previous and next buttons' triangles, their Paths stretched into 6 x 10 at (14, 2) and
+# (8, 2) of the 28 x 20 buttons (Margin 14,-6,0,0 / 0,-6,14,0, centred upright)
+_PREVIOUS = (((6.0, 0.0), (6.0, 10.0), (0.0, 10 * (236.625 - 232.25) / 8.375)), 14.0)
+_NEXT = (((0.0, 0.0), (0.0, 10.0), (6.0, 10 * (236.0 - 231.875) / 8.5)), 8.0)
+
+
+def _line(reader, owner, text: str, size: float, weight: int, brush, **fields) -> L.Node:
+    """One line of text in its own size and weight (the template's, not the element's)."""
+    from xaml3d.layout.text import baseline, line_height, text_width
+    from xaml3d.scene.drawing import TextDrawing
+    from xaml3d.xaml.templates import TEXT_PART, part
+
+    k = part(reader, L.CONTROL, size, type=TEXT_PART, **fields)
+    k.estimate = (text_width(text, size, weight), line_height(size))
+    k.drawing = TextDrawing(text=text, origin=(0.0, baseline(size)), font_size=size,
+                            weight=weight, brush=brush, **reader.r.ctx.position(owner))  # fmt: skip
+    return k
+
+
+def _date_of(el, prop: str) -> datetime.date | None:
+    raw = el.get(prop)
+    return parse_date(raw) if raw is not None and not raw.strip().startswith("{") else None
+
+
+def month_days(shown: datetime.date) -> list[datetime.date]:
+    """The 42 days of the month view: weeks from Sunday, at least one day of the month before
+    (CalendarItem's PreviousMonthDays is 7 when the month starts on a Sunday)."""
+    first = shown.replace(day=1)
+    lead = (first.weekday() + 1) % 7 or 7  # days since Sunday (Python's Monday is 0)
+    start = first - datetime.timedelta(days=lead)
+    return [start + datetime.timedelta(days=i) for i in range(42)]
+
+
+def calendar(reader, n, el, v, font) -> None:
+    from xaml3d.xaml.templates import _chrome, part
+
+    _chrome(reader, n, v, None, None)
+    n.border = (0.0,) * 4
+    selected = _date_of(el, "SelectedDate")
+    shown = _date_of(el, "DisplayDate") or selected or datetime.date.today()
+    today = datetime.date.today() if el.get("IsTodayHighlighted") != "False" else None
+    ink = _brush(reader.r, v, "Foreground", _TEXT)
+    nav = []
+    for (points, x), col, h in ((_PREVIOUS, 0, "Left"), (_NEXT, 2, "Right")):
+        k = part(reader, L.CONTROL, font, estimate=(28.0, 20.0), width=28.0, height=20.0,
+                 h_align=h, col=col)  # fmt: skip
+        tri = "M {} {} L {} {} L {} {} Z".format(*(c for p in points for c in p))
+        k.drawing = DrawingGroup(children=(
+            GeometryDrawing(RectangleGeometry((0.0, 0.0, 28.0, 20.0)), brush=_NAV),
+            DrawingGroup(children=(GeometryDrawing(path_from_string(tri), brush=_TEXT),),
+                         transform=_shift(x, 2.0)),
+        ))  # fmt: skip
+        nav.append(k)
+    title = f"{_MONTHS[shown.month - 1]} {shown.year}"
+    header = _line(reader, el, title, 10.5, 700, _TEXT, margin=(1.0, 4.0, 1.0, 9.0),
+                   h_align="Center", v_align="Center", col=1)  # fmt: skip
+    cells = [_line(reader, el, name, 9.5, 700, _TEXT, margin=(0.0, 6.0, 0.0, 6.0),
+                   h_align="Center", v_align="Center", col=i)
+             for i, name in enumerate(_SHORTEST_DAYS)]  # fmt: skip
+    for i, day in enumerate(month_days(shown)):
+        brush = ink if day.month == shown.month else _OTHER_MONTH
+        background = None
+        if day == today:
+            background, brush = _TODAY, _WHITE
+        if day == selected:
+            background = _SELECTED
+        text = _line(reader, el, str(day.day), 10.0, 400, brush, margin=(5.0, 1.0, 5.0, 1.0),
+                     h_align="Center", v_align="Center")  # fmt: skip
+        cells.append(part(reader, L.BORDER, font, [text], background=background,
+                          corner_radius=(1.0,) * 4, min_width=5.0, min_height=5.0,
+                          row=1 + i // 7, col=i % 7))  # fmt: skip
+    auto = L.Definition("auto")
+    month = part(
+        reader,
+        L.GRID,
+        font,
+        cells,
+        rows=(auto,) * 7,
+        columns=(auto,) * 7,
+        margin=(6.0, -1.0, 6.0, 6.0),
+        h_align="Center",
+        row=1,
+        col_span=3,
+    )
+    grid = part(reader, L.GRID, font, [*nav, header, month], rows=(auto, L.Definition("star")),
+                columns=(auto,) * 3)  # fmt: skip
+    inner = part(reader, L.BORDER, font, [grid], border_brush=_WHITE, border=(2.0,) * 4,
+                 corner_radius=(1.0,) * 4)  # fmt: skip
+    item = part(
+        reader,
+        L.BORDER,
+        font,
+        [inner],
+        background=_brush(reader.r, v, "Background", _CAL_BACKGROUND),
+        border_brush=_brush(reader.r, v, "BorderBrush", _CAL_BORDER),
+        border=v.get("BorderThickness", parse_thickness, (1.0,) * 4),
+        corner_radius=(1.0,) * 4,
+        margin=(0.0, 3.0, 0.0, 3.0),
+        h_align="Center",
+        v_align="Top",  # in the template's StackPanel: at its own height
+    )
+    n.children = [item]

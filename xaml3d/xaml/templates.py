@@ -32,7 +32,7 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   transparent border, Padding 2, centred; a checked one #400080FF in #80DADADA. A Separator
   takes ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 line across the bar with Margin 2.
 - ToolBarTray: #FFEEF5FD, its ToolBars side by side on one band.
-- DatePicker (closed): ``date_templates``.
+- DatePicker (closed) and Calendar (month view): ``date_templates``.
 - Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
   the content below when IsExpanded.
 
@@ -76,7 +76,7 @@ _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
-_DATES = {"DatePicker"}  # date_templates
+_DATES = {"DatePicker", "Calendar"}  # date_templates
 TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -153,6 +153,8 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _menu(reader, n, el, v, font)
     elif local == "DatePicker":
         date_templates.date_picker(reader, n, el, v, font)
+    elif local == "Calendar":
+        date_templates.calendar(reader, n, el, v, font)
     elif local == "ToolBar":
         _tool_bar(reader, n, el, v, font)
     elif local == "ToolBarTray":

@@ -11,8 +11,8 @@ Polyline, Polygon and Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps
 Stretch None), TextBlock and text content (Text, Foreground, FontSize, FontWeight, FontStyle,
 Padding, TextAlignment, Background; wrapped and trimmed to its laid-out width), Label, Image,
 and Button, TextBox, CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed
-ComboBox, ListBox, TabControl, GroupBox, Expander, Menu, ToolBar, ToolBarTray and a closed
-DatePicker (with the content they hold) in WPF's default Windows 10/11 look (the
+ComboBox, ListBox, TabControl, GroupBox, Expander, Menu, ToolBar, ToolBarTray, a closed
+DatePicker and a Calendar (with the content they hold) in WPF's default Windows 10/11 look (the
 [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
 RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect
 and their bitmap effects: ``picture_reader.element_layer``), apply to an element and its
