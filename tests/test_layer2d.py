@@ -980,6 +980,9 @@ def test_menu_items_side_by_side_on_aero2s_bar(tmp_path):
     assert bar.geometry.rect == pytest.approx((0, 0, file_w + edit_w + help_w,
                                                line_height(12.0) + 2))  # fmt: skip
     assert bar.brush.color == (0xF0 / 255,) * 3 + (1.0,)  # Menu.Static.Background
+    # Menu.Static.Foreground for the headers
+    inks = [t.brush.color for t in _text_drawings(drawing)]
+    assert inks[:2] == [(0x21 / 255,) * 3 + (1.0,)] * 2
 
 
 def test_tool_bar_items_grip_and_overflow_as_aero2s(tmp_path):

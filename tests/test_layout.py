@@ -424,6 +424,13 @@ def test_a_menu_above_the_viewport_is_measured_as_aero2s():
              "</DockPanel>", text=True)  # fmt: skip
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - (line_height(12.0) + 2))
     assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+    # the Menu's Style sets SystemFonts.MenuFontSize (12 px): a size set around it stays out,
+    # its own applies
+    for around, own, size in (("TextElement.FontSize='20'", "", 12.0), ("", "FontSize='20'", 20.0)):
+        s = load(f"<DockPanel {NS} Width='300' Height='200' {around}><Menu {own} "
+                 "DockPanel.Dock='Top'><MenuItem Header='File'/></Menu><Viewport3D/></DockPanel>",
+                 text=True)  # fmt: skip
+        assert s.viewports[0].height == 200 - (line_height(size) + 2)
 
 
 def test_a_calendar_beside_the_viewport_is_measured_as_aero2s_month_view():

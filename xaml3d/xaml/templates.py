@@ -18,7 +18,8 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   at Padding 2. SelectedIndex or IsSelected choose the tab; the first one otherwise.
 - GroupBox: the header at Padding 3,1,3,0 over a 1 px #FFD5DFE5 border (CornerRadius 3) that
   starts half the header's height down and leaves a gap for the header; the content 6 px inside.
-- Menu: a #FFF0F0F0 Border (Menu.Static.Background) at Padding, its items side by side (the
+- Menu: a #FFF0F0F0 Border (Menu.Static.Background) at Padding, its text #FF212121 at 12 px
+  (the Style's Foreground and MenuFontSize), its items side by side (the
   ItemsPanel, a WrapPanel, on one row); each top-level MenuItem a transparent 1 px Border
   around its Header at Padding 6,0 (TopLevelHeaderTemplate; the Icon and check glyph columns
   are collapsed), its sub-items in the closed Popup (not shown). Any other item is wrapped in a
@@ -93,6 +94,7 @@ _TAB_FACE = LinearGradientBrush(
 )  # fmt: skip
 _WHITE = _rgb("FFFFFF")
 _MENU_BAR = _rgb("F0F0F0")  # Menu.Static.Background
+_MENU_TEXT = _rgb("212121")  # Menu.Static.Foreground
 # Aero2's ToolBar brushes: ToolBarHorizontalBackground (and the tray's, the overflow button's),
 # ToolBarGripper (also the disabled overflow arrow), ToolBarSeparatorFill, ToolBarButtonChecked
 # and ToolBarButtonHoverBorder (a checked toggle's look)
@@ -452,6 +454,11 @@ def _access_text(text: str) -> str:
 
 
 def _menu(reader, n, el, v, font) -> None:
+    from xaml3d.xaml.panels_reader import FONT_SIZE, parse_length
+
+    # the Menu's Style sets FontSize to SystemFonts.MenuFontSize (12 px at 96 dpi): a size set
+    # around the Menu does not reach its items, its own does
+    font = v.get("FontSize", parse_length, FONT_SIZE)
     _chrome(reader, n, v, _MENU_BAR, None)
     n.padding = v.get("Padding", parse_thickness, (0.0,) * 4)
     rows = []
@@ -472,18 +479,35 @@ def _menu(reader, n, el, v, font) -> None:
     n.children = [part(reader, L.STACK, font, rows, orientation="Horizontal")]
 
 
+def _menu_ink(reader, el):
+    """A menu item's Foreground: its own or its Menu's (up to the Menu), else the Menu Style's
+    #FF212121, which a Foreground set around the Menu does not override."""
+    from xaml3d.xaml.visual_text import _foreground
+
+    node = el
+    while node is not None and isinstance(node.tag, str):
+        p = reader.r.props(node)
+        if any(k in p.attrs or k in p.elems for k in ("Foreground", "TextElement.Foreground")):
+            return _foreground(reader.r, node)
+        if qname(node.tag)[1] == "Menu":
+            break
+        node = node.getparent()
+    return _MENU_TEXT
+
+
 def _menu_item(reader, n, el, v, font) -> None:
     _chrome(reader, n, v, None, None)
     n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
     n.padding = (0.0,) * 4
     pad = v.get("Padding", parse_thickness, (6.0, 0.0, 6.0, 0.0))
     header = _header(reader, el, font)
+    ink = _menu_ink(reader, el)
     for k in header:  # the header's text is AccessText: its access-key marker is not shown
         if k.type == TEXT_PART and k.drawing is not None:
             text = _access_text(k.drawing.text)
             w = text_width(text, font, *_font_style(el))
             k.estimate = (w, k.estimate[1])
-            k.drawing = replace(k.drawing, text=text)
+            k.drawing = replace(k.drawing, text=text, brush=ink)
     n.children = [_presenter(reader, font, header, pad, "Left", "Center")]
 
 
