@@ -1,7 +1,8 @@
 """DatePicker (closed) and Calendar (month view) as their Aero2 templates build them (measure).
 
 Both share one template across the Aero themes in dotnet/wpf (DatePicker.xaml, Calendar.xaml,
-the ``[[Aero.NormalColor, Aero2.NormalColor, ...]]`` section); ``templates.expand`` calls here:
+the ``[[Aero.NormalColor, Aero2.NormalColor, ...]]`` section); the measuring reader
+(``control_sizes``) calls ``expand`` here, as it calls ``templates.expand`` for the others:
 
 - DatePicker: a 1 px Border (its gradient BorderBrush #FF617584 at the top to #FFA3AEB9 at the
   bottom) at Padding 2 around a Grid of two columns: the DatePickerTextBox (white, CornerRadius
@@ -29,18 +30,22 @@ from dataclasses import replace
 import numpy as np
 
 from xaml3d.layout import tree as L
+from xaml3d.layout.text import baseline, line_height, text_width
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
     GeometryDrawing,
     Pen,
     RectangleGeometry,
+    TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
+from xaml3d.xaml.templates import TEXT_PART, _chrome, _presenter, part, text_part
 from xaml3d.xaml.visual_text import _box_drawing, _brush, _rgb
 
+DATES = {"DatePicker", "Calendar"}
 WATERMARK = "Select a date"  # DatePicker_WatermarkText (en-US)
 _TEXT = _rgb("333333")  # the DatePicker Style's Foreground
 _WHITE = _rgb("FFFFFF")
@@ -61,6 +66,15 @@ _BORDER = LinearGradientBrush(
     start_point=(0.5, 1.0),
     end_point=(0.5, 0.0),
 )
+
+
+def expand(reader, n, el, v, font) -> None:
+    """Turn the DatePicker or Calendar node ``n`` into its template's tree."""
+    n.estimate = None
+    if n.type == "DatePicker":
+        date_picker(reader, n, el, v, font)
+    else:
+        calendar(reader, n, el, v, font)
 
 
 def parse_date(s: str) -> datetime.date | None:
@@ -103,8 +117,6 @@ def _shown_text(el) -> str | None:
 
 
 def date_picker(reader, n, el, v, font) -> None:
-    from xaml3d.xaml.templates import _chrome, _presenter, part, text_part
-
     _chrome(reader, n, v, None, _BORDER)
     n.padding = v.get("Padding", parse_thickness, (2.0,) * 4)
     own_ink = el.get("Foreground") is not None
@@ -218,9 +230,6 @@ _NEXT = (((0.0, 0.0), (0.0, 10.0), (6.0, 10 * (236.0 - 231.875) / 8.5)), 8.0)
 
 def _line(reader, owner, text: str, size: float, weight: int, brush, **fields) -> L.Node:
     """One line of text in its own size and weight (the template's, not the element's)."""
-    from xaml3d.layout.text import baseline, line_height, text_width
-    from xaml3d.scene.drawing import TextDrawing
-    from xaml3d.xaml.templates import TEXT_PART, part
 
     k = part(reader, L.CONTROL, size, type=TEXT_PART, **fields)
     k.estimate = (text_width(text, size, weight), line_height(size))
@@ -244,8 +253,6 @@ def month_days(shown: datetime.date) -> list[datetime.date]:
 
 
 def calendar(reader, n, el, v, font) -> None:
-    from xaml3d.xaml.templates import _chrome, part
-
     _chrome(reader, n, v, None, None)
     n.border = (0.0,) * 4
     selected = _date_of(el, "SelectedDate")

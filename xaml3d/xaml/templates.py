@@ -62,7 +62,6 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
-from xaml3d.xaml import date_templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
@@ -77,7 +76,7 @@ _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
-_DATES = {"DatePicker", "Calendar"}  # date_templates
+_DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
 TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -153,10 +152,6 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _expander(reader, n, el, v, font)
     elif local == "Menu":
         _menu(reader, n, el, v, font)
-    elif local == "DatePicker":
-        date_templates.date_picker(reader, n, el, v, font)
-    elif local == "Calendar":
-        date_templates.calendar(reader, n, el, v, font)
     elif local == "ToolBar":
         _tool_bar(reader, n, el, v, font)
     elif local == "ToolBarTray":
