@@ -956,3 +956,135 @@ def test_render_under_a_layout_transform_turns_the_buffers_with_the_picture():
     assert tuple(r.rgba[30, 30]) == (0, 0, 255, 255) and r.ids[30, 30] == 1
     assert r.ids[5, 5] == -1 and np.isinf(r.depth[5, 5]) and np.isnan(r.distance[5, 5])
     assert np.isfinite(r.distance[30, 30])
+
+
+def test_menu_items_side_by_side_on_aero2s_bar(tmp_path):
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<Menu><MenuItem Header='_File'><MenuItem Header='Open'/></MenuItem>"
+        "<MenuItem Header='Edit'/><TextBlock Text='Help'/></Menu>",
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    # each header at Padding 6,0 in a 1 px border; the access key's underscore not shown;
+    # the sub-item is in the closed Popup; a TextBlock is wrapped in a MenuItem
+    file_w = text_width("File", 12.0) + 12 + 2
+    edit_w = text_width("Edit", 12.0) + 12 + 2
+    texts = _texts(drawing)
+    assert [t for t, _, _ in texts] == ["File", "Edit", "Help"]
+    assert [x for _, x, _ in texts] == pytest.approx([7.0, file_w + 7, file_w + edit_w + 7])
+    assert [y for _, _, y in texts] == pytest.approx([1 + baseline(12.0)] * 3)
+    bar = _geometries(drawing)[0]
+    help_w = text_width("Help", 12.0) + 12 + 2
+    assert bar.geometry.rect == pytest.approx((0, 0, file_w + edit_w + help_w,
+                                               line_height(12.0) + 2))  # fmt: skip
+    assert bar.brush.color == (0xF0 / 255,) * 3 + (1.0,)  # Menu.Static.Background
+    # Menu.Static.Foreground for the headers
+    inks = [t.brush.color for t in _text_drawings(drawing)]
+    assert inks[:2] == [(0x21 / 255,) * 3 + (1.0,)] * 2
+
+
+def test_tool_bar_items_grip_and_overflow_as_aero2s(tmp_path):
+    from xaml3d.layout.text import baseline, line_height, text_width
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<ToolBar><Button Content='Open'/><Separator/><Button Content='Save'/></ToolBar>",
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    open_w, save_w = (text_width(t, 12.0) + 6 for t in ("Open", "Save"))
+    # Grid Margin 3,1,1,1; the grip 10 px at Margin -3,-1; the items at Margin 0,1,2,2; the
+    # main panel 11 px short of the right edge, over the 15 px overflow button
+    width = 3 + 7 + open_w + 5 + save_w + 2 + 11 + 1
+    height = 1 + 1 + line_height(12.0) + 6 + 2 + 1
+    texts = _texts(drawing)
+    assert [t for t, _, _ in texts] == ["Open", "Save"]
+    assert [x for _, x, _ in texts] == pytest.approx([13.0, 10 + open_w + 5 + 3])
+    assert [y for _, _, y in texts] == pytest.approx([2 + 3 + baseline(12.0)] * 2)
+    shapes = _placed_rects(drawing)
+    bar = (0xEE / 255, 0xF5 / 255, 0xFD / 255, 1.0)
+    overflow, main = [(r, g) for r, g in shapes if getattr(g.brush, "color", None) == bar]
+    assert overflow[0] == pytest.approx((width - 16, 1, 15, height - 2))
+    assert main[0] == pytest.approx((3, 1, width - 15, height - 2))
+    assert main[1].geometry.radius_x == 3.0
+    # the separator: 1 px of #FFB6BDC5 across the bar at Margin 2
+    (line,) = [r for r, g in shapes if getattr(g.brush, "color", None) == _rgb("B6BDC5")]
+    assert line == pytest.approx((10 + open_w + 2, 4, 1, height - 2 - 3 - 4))
+    # the grip's dots every 4 px from 5 px down, 6 px in (ToolBarGripper #FF6D6D6D)
+    dots = [r for r, g in shapes if getattr(g.brush, "color", None) == _rgb("6D6D6D")]
+    assert [r[:2] for r in dots[:2]] == [(6.0, 5.0), (6.0, 9.0)]
+
+
+def _placed_rects(drawing, origin=(0.0, 0.0)) -> list:
+    """(absolute rect, drawing) of every RectangleGeometry fill in a drawing tree (the groups
+    here only translate)."""
+    if isinstance(drawing, DrawingGroup):
+        if drawing.transform is not None:
+            m = drawing.transform
+            origin = (origin[0] + m[0, 2], origin[1] + m[1, 2])
+        return [t for k in drawing.children for t in _placed_rects(k, origin)]
+    if isinstance(drawing, GeometryDrawing) and isinstance(drawing.geometry, RectangleGeometry):
+        x, y, w, h = drawing.geometry.rect
+        return [((origin[0] + x, origin[1] + y, w, h), drawing)]
+    return []
+
+
+def _rgb(hex6: str) -> tuple:
+    return tuple(int(hex6[i : i + 2], 16) / 255 for i in (0, 2, 4)) + (1.0,)
+
+
+def test_date_picker_shows_the_watermark_or_the_date(tmp_path):
+    from xaml3d.layout.text import baseline, text_width
+
+    scene, drawing = _control_drawing(
+        tmp_path,
+        "<StackPanel><DatePicker/><DatePicker SelectedDate='2024-01-05'/>"
+        "<DatePicker SelectedDate='2024-01-05' SelectedDateFormat='Long'/></StackPanel>",
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    row = 6 + 2724 / 2048 * 12 + 6  # 27.96 px each
+    texts = _texts(drawing)
+    assert [t for t, _, _ in texts] == ["Select a date", "1/5/2024", "Friday, January 5, 2024"]
+    # the watermark 1 + 2 px inside the text box (border 1, Padding 2 in): 6 px in, 6 down;
+    # a date 2 px inside the text view, at its top
+    assert [x for _, x, _ in texts] == pytest.approx([6.0, 5.0, 5.0])
+    assert [y for _, _, y in texts] == pytest.approx(
+        [6 + baseline(12.0), row + 3 + baseline(12.0), 2 * row + 3 + baseline(12.0)]
+    )
+    # the Style's Foreground, #FF333333
+    assert {t.brush.color for t in _text_drawings(drawing)} == {(0x33 / 255,) * 3 + (1.0,)}
+    # the text boxes (white, CornerRadius 1) as wide as the widest content: the long date in
+    # the text view, 2 px each side; the calendar button's column after them
+    boxes = [r for r, g in _placed_rects(drawing)
+             if g.geometry.radius_x == 1.0 and g.brush.color == (1.0, 1.0, 1.0, 1.0)]  # fmt: skip
+    widest = text_width("Friday, January 5, 2024", 12.0) + 4
+    assert boxes == [pytest.approx((3.0, 3 + i * row, widest, row - 6)) for i in range(3)]
+
+
+def _text_drawings(drawing) -> list:
+    if isinstance(drawing, DrawingGroup):
+        return [t for k in drawing.children for t in _text_drawings(k)]
+    return [drawing] if isinstance(drawing, TextDrawing) else []
+
+
+def test_calendar_month_view_texts_and_marks(tmp_path):
+    from xaml3d.layout.text import baseline, line_height
+
+    scene, drawing = _control_drawing(
+        tmp_path, "<Calendar DisplayDate='2024-01-05' SelectedDate='2024-01-17'/>"
+    )
+    assert not [d for d in scene.diagnostics if d.code in ("DRW002", "LAY003")]
+    texts = _text_drawings(drawing)
+    assert [t.text for t in texts[:8]] == ["January 2024", "Su", "Mo", "Tu", "We", "Th", "Fr", "Sa"]
+    days = [t.text for t in texts[8:]]
+    assert days[:2] == ["31", "1"] and days[-1] == "10" and len(days) == 42
+    grey, ink = (0x77 / 255,) * 3 + (1.0,), (0x33 / 255,) * 3 + (1.0,)
+    assert [t.brush.color for t in texts[8:10]] == [grey, ink]  # December's 31st, then the 1st
+    # the title 3 + 3 px in (Margin 0,3 and the borders), at Margin 1,4,1,9
+    (_, _, title_y) = _texts(drawing)[0]
+    assert title_y == pytest.approx(3 + 3 + 4 + baseline(10.5))
+    # the selected day's cell: #FFBADDE9 at Opacity .75, rounded 1 px
+    blue = (0xBA / 255, 0xDD / 255, 0xE9 / 255, 0.75)
+    (cell,) = [g for _, g in _placed_rects(drawing) if getattr(g.brush, "color", None) == blue]
+    assert cell.geometry.rect[3] == pytest.approx(line_height(10.0) + 2)

@@ -387,21 +387,84 @@ def test_markup_control_measured_and_estimate_is_info():
     assert not any(d.code == "LAY003" for d in s.diagnostics)
     # a control whose template xaml3d does not know is estimated (16 px line), and says so
     s = load(x.replace("<Button DockPanel.Dock='Top'>Go</Button>",
-                       "<DatePicker DockPanel.Dock='Top'/>"), text=True)  # fmt: skip
+                       "<TreeView DockPanel.Dock='Top'/>"), text=True)  # fmt: skip
     assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - 16)
     # ... and as the viewport shares its DockPanel, the guess places the viewport: a warning
     (d,) = [d for d in s.diagnostics if d.code in ("LAY003", "LAY007")]
     assert (d.code, d.severity) == ("LAY007", "warning")
     assert d.message.startswith(
-        "DatePicker is not laid out by xaml3d: its content size is "
+        "TreeView is not laid out by xaml3d: its content size is "
         "estimated as 0 x 16, and a Viewport3D in the same panel"
     )
 
 
+def test_a_date_picker_beside_the_viewport_is_measured_as_aero2s():
+    from xaml3d.layout.text import line_height, text_width
+
+    # its 1 px border and Padding 2, the watermark "Select a date" in a 1 px border at Padding
+    # 2 (always measured), the 20 px calendar button at Margin 3,0,3,0: 27.96 px tall
+    s = load(f"<DockPanel {NS} Width='400' Height='200'><DatePicker DockPanel.Dock='Left'/>"
+             "<Viewport3D/></DockPanel>", text=True)  # fmt: skip
+    width = 3 + text_width("Select a date", 12.0) + 6 + 26 + 3
+    assert s.viewports[0].width == pytest.approx(400 - width)
+    assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+    # a long date wider than the watermark widens it; the height stays
+    s = load(f"<DockPanel {NS} Width='400' Height='200'><DatePicker DockPanel.Dock='Top' "
+             "SelectedDate='2024-01-05' SelectedDateFormat='Long'/><Viewport3D/></DockPanel>",
+             text=True)  # fmt: skip
+    assert s.viewports[0].height == pytest.approx(200 - (line_height(12.0) + 12))
+
+
+def test_a_menu_above_the_viewport_is_measured_as_aero2s():
+    from xaml3d.layout.text import line_height
+
+    # the bar is one line of menu text in the items' 1 px borders: 17.96 px, as WPF's
+    s = load(f"<DockPanel {NS} Width='300' Height='200'><Menu DockPanel.Dock='Top'>"
+             "<MenuItem Header='_File'/><MenuItem Header='Edit'/></Menu><Viewport3D/>"
+             "</DockPanel>", text=True)  # fmt: skip
+    assert (s.viewports[0].width, s.viewports[0].height) == (300, 200 - (line_height(12.0) + 2))
+    assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+    # the Menu's Style sets SystemFonts.MenuFontSize (12 px): a size set around it stays out,
+    # its own applies
+    for around, own, size in (("TextElement.FontSize='20'", "", 12.0), ("", "FontSize='20'", 20.0)):
+        s = load(f"<DockPanel {NS} Width='300' Height='200' {around}><Menu {own} "
+                 "DockPanel.Dock='Top'><MenuItem Header='File'/></Menu><Viewport3D/></DockPanel>",
+                 text=True)  # fmt: skip
+        assert s.viewports[0].height == 200 - (line_height(size) + 2)
+
+
+def test_a_calendar_beside_the_viewport_is_measured_as_aero2s_month_view():
+    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.xaml.date_templates import month_days
+
+    s = load(f"<DockPanel {NS} Width='400' Height='300'><Calendar DockPanel.Dock='Left' "
+             "DisplayDate='2024-01-05'/><Viewport3D/></DockPanel>", text=True)  # fmt: skip
+    assert not [d for d in s.diagnostics if d.code in ("LAY003", "LAY007", "DRW007")]
+    # the month grid: each column as wide as its day name (bold 9.5 px) or its widest day
+    # button (10 px text at Margin 5,1,5,1); 6 weeks from Sunday 31 December 2023
+    days = month_days(__import__("datetime").date(2024, 1, 5))
+    assert days[0].isoformat() == "2023-12-31" and len(days) == 42
+    names = ("Su", "Mo", "Tu", "We", "Th", "Fr", "Sa")
+    cols = [max([text_width(names[c], 9.5, 700)]
+                + [text_width(str(d.day), 10.0) + 10 for d in days[c::7]])
+            for c in range(7)]  # fmt: skip
+    header = 28 + text_width("January 2024", 10.5, 700) + 2 + 28
+    # the 1 px border and the 2 px white one each side, the grid's Margin 6,-1,6,6
+    width = 6 + max(header, sum(cols) + 12)
+    assert s.viewports[0].width == pytest.approx(400 - width)
+    # and docked at the top: CalendarItem's Margin 0,3,0,3, the header row (20 px buttons or
+    # the title at Margin 1,4,1,9), the day names at Margin 0,6,0,6, 6 rows of day buttons
+    s = load(f"<DockPanel {NS} Width='400' Height='300'><Calendar DockPanel.Dock='Top' "
+             "DisplayDate='2024-01-05'/><Viewport3D/></DockPanel>", text=True)  # fmt: skip
+    height = (3 + 3 + max(20, 4 + line_height(10.5) + 9) - 1 + 12 + line_height(9.5)
+              + 6 * (line_height(10.0) + 2) + 6 + 3 + 3)  # fmt: skip
+    assert s.viewports[0].height == pytest.approx(300 - height)
+
+
 def test_estimate_beside_viewport_is_a_warning_and_drawn_controls_say_so():
-    # a Calendar docked left of the viewport: its guessed width is the viewport's room
+    # a TreeView docked left of the viewport: its guessed width is the viewport's room
     x = (f"<DockPanel {NS} Width='400' Height='200'>"
-         "<Calendar DockPanel.Dock='Left'/><Viewport3D/></DockPanel>")  # fmt: skip
+         "<TreeView DockPanel.Dock='Left'/><Viewport3D/></DockPanel>")  # fmt: skip
     s = load(x, text=True)
     assert [(d.code, d.severity) for d in s.diagnostics if d.code.startswith("LAY")] == [
         ("LAY007", "warning")
@@ -538,11 +601,12 @@ def test_markup_estimates_follow_font_size_padding_and_toolbar_items():
         400,
         300 - 2 * LINE - 8,
     )
-    # a ToolBarTray holding a ToolBar of Buttons: the items' height plus the bar's chrome
+    # a ToolBarTray holding a ToolBar of Buttons, laid out as Aero2's template: the Buttons
+    # in ToolBar.ButtonStyleKey (a 1 px border, Padding 2: 21.96 px), the bar's Grid Margin
+    # 3,1,1,1 and its items' panel Margin 0,1,2,2 (5 px more)
     tray = ("<ToolBarTray DockPanel.Dock='Top'><ToolBar><Button Content='Open'/><Separator/>"
             "<Button Content='Save'/></ToolBar></ToolBarTray>")  # fmt: skip
-    # (the Buttons measured: one line in Aero2's border and padding, 19.96 px; the bar's 10)
-    assert top(tray) == (400, 300 - (LINE + 4 + 10))
+    assert top(tray) == (400, 300 - (LINE + 6 + 5))
 
 
 def test_auto_row_sized_by_a_cell_in_a_star_column():

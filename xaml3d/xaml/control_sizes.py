@@ -18,7 +18,7 @@ import numpy as np
 from xaml3d.layout import tree as L
 from xaml3d.layout.text import line_height, text_width
 from xaml3d.scene.drawing import EllipseGeometry, PathGeometry, RectangleGeometry
-from xaml3d.xaml import templates
+from xaml3d.xaml import date_templates, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
@@ -66,7 +66,11 @@ class MeasuringPanels(PanelsReader):
                 and templates.expands(self, el, n.type)):  # fmt: skip
             v = ElementValues(self.r, el, self.style_setters(el, n.type))
             if not _turns(_layout_transform(self.r, v)):
-                templates.expand(self, n, el, v, self.elements[id(n)][1])
+                font = self.elements[id(n)][1]
+                if n.type in date_templates.DATES:
+                    date_templates.expand(self, n, el, v, font)
+                else:
+                    templates.expand(self, n, el, v, font)
         return n
 
     _in_bar = False  # a ToolBar's items are only measured for the bar's estimate

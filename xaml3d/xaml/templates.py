@@ -18,15 +18,35 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   at Padding 2. SelectedIndex or IsSelected choose the tab; the first one otherwise.
 - GroupBox: the header at Padding 3,1,3,0 over a 1 px #FFD5DFE5 border (CornerRadius 3) that
   starts half the header's height down and leaves a gap for the header; the content 6 px inside.
+- Menu: a #FFF0F0F0 Border (Menu.Static.Background) at Padding, its text #FF212121 at 12 px
+  (the Style's Foreground and MenuFontSize), its items side by side (the
+  ItemsPanel, a WrapPanel, on one row); each top-level MenuItem a transparent 1 px Border
+  around its Header at Padding 6,0 (TopLevelHeaderTemplate; the Icon and check glyph columns
+  are collapsed), its sub-items in the closed Popup (not shown). Any other item is wrapped in a
+  MenuItem, as WPF's ItemContainerGenerator does; a Separator stays one.
+- ToolBar (horizontal): the template's Grid at Margin 3,1,1,1; under the main panel the 15 px
+  overflow button (#FFEEF5FD, its arrow in the disabled ToolBarGripper colour: nothing
+  overflows), the main panel a #FFEEF5FD Border (CornerRadius 3) 11 px short of the right edge
+  holding the 10 px grip (Thumb, Margin -3,-1,0,0, its dots at Padding 6,5,1,6), the Header at
+  Margin 4,0,4,0 and the items side by side at Margin 0,1,2,2. Its Buttons (ToggleButton,
+  RepeatButton, CheckBox, RadioButton alike) take ToolBar.ButtonStyleKey: transparent, a 1 px
+  transparent border, Padding 2, centred; a checked one #400080FF in #80DADADA. A Separator
+  takes ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 line across the bar with Margin 2.
+- ToolBarTray: #FFEEF5FD, its ToolBars side by side on one band.
+- DatePicker (closed) and Calendar (month view): ``date_templates``.
 - Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
   the content below when IsExpanded.
 
-Part nodes (type ``#text``, ``#part``, ``#tabs``) have no element of their own: a ``#text`` part
-carries its text's drawing, a ``#part`` its Background, BorderBrush and BorderThickness (painted as
-a Border's), ``#tabs`` is the header row whose selected tab is drawn last (Panel.ZIndex 1).
+Part nodes (type ``#text``, ``#part``, ``#tabs``, ``#grip``) have no element of their own: a
+``#text`` part carries its text's drawing, a ``#part`` its Background, BorderBrush,
+BorderThickness and CornerRadius (painted as a Border's), ``#tabs`` is the header row whose
+selected tab is drawn last (Panel.ZIndex 1), ``#grip`` a ToolBar's grip (its dots drawn once
+its height is known: ``after_layout``).
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
@@ -49,12 +69,15 @@ from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _inherited, _rgb
 
-TEXT_PART, PART, TABS_PART = "#text", "#part", "#tabs"
+TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _CONTENT_CONTROLS = {"Button", "ToggleButton", "RepeatButton", "Label"}
 _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
-TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED
+_MENUS = {"Menu", "MenuItem"}
+_BARS = {"ToolBar", "ToolBarTray"}
+_DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
+TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
 
@@ -69,6 +92,17 @@ _TAB_FACE = LinearGradientBrush(
     start_point=(0.0, 0.0), end_point=(0.0, 1.0),
 )  # fmt: skip
 _WHITE = _rgb("FFFFFF")
+_MENU_BAR = _rgb("F0F0F0")  # Menu.Static.Background
+_MENU_TEXT = _rgb("212121")  # Menu.Static.Foreground
+# Aero2's ToolBar brushes: ToolBarHorizontalBackground (and the tray's, the overflow button's),
+# ToolBarGripper (also the disabled overflow arrow), ToolBarSeparatorFill, ToolBarButtonChecked
+# and ToolBarButtonHoverBorder (a checked toggle's look)
+_TOOL_BAR = _rgb("EEF5FD")
+_GRIPPER = _rgb("6D6D6D")
+_TOOL_SEPARATOR = _rgb("B6BDC5")
+_TOOL_CHECKED = _rgb("0080FF", 0x40 / 255)
+_TOOL_CHECKED_BORDER = _rgb("DADADA", 0x80 / 255)
+_TOOL_BUTTONS = {"Button", "ToggleButton", "RepeatButton", "CheckBox", "RadioButton"}
 _GROUP_BORDER = _rgb("D5DFE5")
 _EXPANDER_INK = _rgb("333333")
 _CIRCLE = 19.0  # the Expander's toggle circle and its column
@@ -95,7 +129,7 @@ def expands(reader, el, local: str) -> bool:
         return False
     if local in _CONTENT_CONTROLS or local in _OPTIONS:
         return bool(rich_content(reader, el))
-    return local in _HEADERED
+    return local in _HEADERED or local in _MENUS or local in _BARS or local in _DATES
 
 
 def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
@@ -116,6 +150,14 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _group_box(reader, n, el, v, font)
     elif local == "Expander":
         _expander(reader, n, el, v, font)
+    elif local == "Menu":
+        _menu(reader, n, el, v, font)
+    elif local == "ToolBar":
+        _tool_bar(reader, n, el, v, font)
+    elif local == "ToolBarTray":
+        _tool_bar_tray(reader, n, el, v, font)
+    elif local == "MenuItem":  # a top-level item (its sub-items are in a closed Popup)
+        _menu_item(reader, n, el, v, font)
     else:  # a TabItem outside a TabControl: its header alone
         _tab_item(reader, n, el, v, font, False)
 
@@ -386,6 +428,84 @@ def _expander(reader, n, el, v, font) -> None:
     n.children = [part(reader, L.DOCK, font, kids)]
 
 
+def _access_text(text: str) -> str:
+    """A MenuItem header as AccessText shows it at rest: the first lone ``_`` marks the access
+    key and is not shown (``__`` is one underscore)."""
+    out, i, marked = [], 0, False
+    while i < len(text):
+        c = text[i]
+        if c == "_" and i + 1 < len(text):
+            if text[i + 1] == "_":
+                out.append("_")
+                i += 2
+                continue
+            if not marked:
+                marked = True
+                i += 1
+                continue
+        out.append(c)
+        i += 1
+    return "".join(out)
+
+
+def _menu(reader, n, el, v, font) -> None:
+    from xaml3d.xaml.panels_reader import FONT_SIZE, parse_length
+
+    # the Menu's Style sets FontSize to SystemFonts.MenuFontSize (12 px at 96 dpi): a size set
+    # around the Menu does not reach its items, its own does
+    font = v.get("FontSize", parse_length, FONT_SIZE)
+    _chrome(reader, n, v, _MENU_BAR, None)
+    n.padding = v.get("Padding", parse_thickness, (0.0,) * 4)
+    rows = []
+    for item in _elements(reader.content_of(el)):
+        local = qname(item.tag)[1] if is_presentation(qname(item.tag)[0]) else ""
+        if local in ("MenuItem", "Separator"):
+            k = reader.build(item, font)
+        else:  # WPF wraps any other item in a MenuItem, the item as its Header
+            if not local and len(item) == 0:
+                inner = [text_part(reader, el, _access_text(" ".join((item.text or "").split())),
+                                   font)]  # fmt: skip
+            else:
+                inner = _build_all(reader, [item], font)
+            header = _presenter(reader, font, inner, (6.0, 0.0) * 2, v="Center")
+            k = part(reader, L.BORDER, font, [header], border=(1.0,) * 4)
+        if k is not None:
+            rows.append(k)
+    n.children = [part(reader, L.STACK, font, rows, orientation="Horizontal")]
+
+
+def _menu_ink(reader, el):
+    """A menu item's Foreground: its own or its Menu's (up to the Menu), else the Menu Style's
+    #FF212121, which a Foreground set around the Menu does not override."""
+    from xaml3d.xaml.visual_text import _foreground
+
+    node = el
+    while node is not None and isinstance(node.tag, str):
+        p = reader.r.props(node)
+        if any(k in p.attrs or k in p.elems for k in ("Foreground", "TextElement.Foreground")):
+            return _foreground(reader.r, node)
+        if qname(node.tag)[1] == "Menu":
+            break
+        node = node.getparent()
+    return _MENU_TEXT
+
+
+def _menu_item(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, None, None)
+    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    n.padding = (0.0,) * 4
+    pad = v.get("Padding", parse_thickness, (6.0, 0.0, 6.0, 0.0))
+    header = _header(reader, el, font)
+    ink = _menu_ink(reader, el)
+    for k in header:  # the header's text is AccessText: its access-key marker is not shown
+        if k.type == TEXT_PART and k.drawing is not None:
+            text = _access_text(k.drawing.text)
+            w = text_width(text, font, *_font_style(el))
+            k.estimate = (w, k.estimate[1])
+            k.drawing = replace(k.drawing, text=text, brush=ink)
+    n.children = [_presenter(reader, font, header, pad, "Left", "Center")]
+
+
 def _toggle_circle(expanded: bool) -> DrawingGroup:
     """Aero2's Expander toggle: a 19 px white circle with a #FF333333 edge and the 2 px arrow
     (an 8 x 5 chevron, pointing down when collapsed) centred in it."""
@@ -400,6 +520,144 @@ def _toggle_circle(expanded: bool) -> DrawingGroup:
     m = np.array([[1.0, 0.0, dx], [0.0, 1.0, dy], [0.0, 0.0, 1.0]])
     chevron = GeometryDrawing(arrow, pen=Pen(brush=_EXPANDER_INK, thickness=2.0))
     return DrawingGroup(children=(ring, DrawingGroup(children=(chevron,), transform=m)))
+
+
+def _tool_bar(reader, n, el, v, font) -> None:
+    from xaml3d.xaml.panels_reader import PanelsReader
+
+    _chrome(reader, n, v, None, None)
+    n.border = (0.0,) * 4
+    n.padding = (3.0, 1.0, 1.0, 1.0)  # the template's Grid Margin
+    arrow = part(reader, L.CONTROL, font, estimate=(6.0, 7.0), margin=(7.0, 2.0, 2.0, 2.0),
+                 h_align="Right", v_align="Bottom")  # fmt: skip
+    arrow.drawing = _overflow_arrow()
+    overflow = part(reader, L.BORDER, font, [arrow], background=_TOOL_BAR, h_align="Right",
+                    corner_radius=(3.0,) * 4)  # fmt: skip
+    locked = _locked(el)
+    grip = part(
+        reader,
+        L.CONTROL,
+        font,
+        type=GRIP_PART,
+        estimate=(0.0, 11.0),
+        width=10.0,
+        margin=(-3.0, -1.0, 0.0, 0.0),
+        visibility="Collapsed" if locked else "Visible",
+    )
+    kids = [grip]
+    header = _header(reader, el, font)
+    if header:
+        kids.append(_presenter(reader, font, header, (4.0, 0.0, 4.0, 0.0), "Center", "Center"))
+    items = []
+    for item in _elements(reader.content_of(el)):
+        local = qname(item.tag)[1] if is_presentation(qname(item.tag)[0]) else ""
+        if local in _TOOL_BUTTONS:
+            k = PanelsReader.build(reader, item, font)  # restyled: ToolBar.ButtonStyleKey
+            if k is not None:
+                _tool_button(reader, k, item, font)
+        elif local == "Separator":
+            k = PanelsReader.build(reader, item, font)
+            if k is not None:
+                k.estimate = None
+                _tool_separator(reader, k, item)
+        else:
+            k = reader.build(item, font)
+        if k is not None:
+            items.append(k)
+    kids.append(part(reader, L.STACK, font, items, orientation="Horizontal",
+                     margin=(0.0, 1.0, 2.0, 2.0)))  # fmt: skip
+    main = part(reader, L.BORDER, font, [part(reader, L.DOCK, font, kids)],
+                background=_brush(reader.r, v, "Background", _TOOL_BAR),
+                border_brush=_brush(reader.r, v, "BorderBrush", None),
+                border=v.get("BorderThickness", parse_thickness, (0.0,) * 4),
+                padding=v.get("Padding", parse_thickness, (0.0,) * 4),
+                corner_radius=(3.0,) * 4, margin=(0.0, 0.0, 11.0, 0.0))  # fmt: skip
+    n.children = [part(reader, L.GRID, font, [overflow, main])]
+
+
+def _locked(el) -> bool:
+    """ToolBarTray.IsLocked, on the ToolBar or (inherited) on its tray: the grip is hidden."""
+    for e in (el, el.getparent()):
+        if e is not None and (e.get("ToolBarTray.IsLocked") or e.get("IsLocked")) == "True":
+            return True
+    return False
+
+
+def _tool_button(reader, k, el, font) -> None:
+    """A button on a ToolBar (ToolBar.ButtonStyleKey / ToggleButtonStyleKey): a transparent
+    1 px border at Padding 2 around its content, centred in the bar; checked: #400080FF."""
+    kv = ElementValues(reader.r, el, reader.style_setters(el, k.type))
+    checked = kv.get("IsChecked", V.parse_bool, False) if k.type != "Button" else False
+    k.estimate = None
+    k.kind = L.BORDER
+    k.background = _brush(reader.r, kv, "Background", _TOOL_CHECKED if checked else None)
+    k.border_brush = _brush(reader.r, kv, "BorderBrush",
+                            _TOOL_CHECKED_BORDER if checked else None)  # fmt: skip
+    k.border = kv.get("BorderThickness", parse_thickness, (1.0,) * 4)
+    k.padding = kv.get("Padding", parse_thickness, (2.0,) * 4)
+    if el.get("HorizontalAlignment") is None:
+        k.h_align = "Center"
+    if el.get("VerticalAlignment") is None:
+        k.v_align = "Center"
+    h, vv = _align(kv, "Center", "Center")
+    k.children = [_presenter(reader, font, _content(reader, el, font), h=h, v=vv)]
+
+
+def _tool_separator(reader, k, el) -> None:
+    """ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 Border with Margin 2, across the bar."""
+    sv = ElementValues(reader.r, el, reader.style_setters(el, "Separator"))
+    k.kind = L.BORDER
+    k.type = PART  # drawn as its Border (not as a menu or panel Separator)
+    k.background = _brush(reader.r, sv, "Background", _TOOL_SEPARATOR)
+    k.margin = sv.get("Margin", parse_thickness, (2.0,) * 4)
+    k.min_width = max(k.min_width, 1.0)
+    k.min_height = max(k.min_height, 1.0)
+    reader.elements[id(k)] = (None, reader.elements.get(id(k), (None, 12.0))[1])
+
+
+def _tool_bar_tray(reader, n, el, v, font) -> None:
+    _chrome(reader, n, v, _TOOL_BAR, None)
+    n.border = (0.0,) * 4
+    bars = _build_all(reader, _elements(reader.content_of(el)), font)
+    n.children = [part(reader, L.STACK, font, bars, orientation="Horizontal")]
+
+
+def _overflow_arrow() -> DrawingGroup:
+    """The overflow button's 6 x 7 arrow (a bar over a triangle, each with a white copy 1 px
+    down and right), in ToolBarGripper's colour as the button is disabled at rest."""
+    white_bar = path_from_string("M 1 1.5 L 6 1.5")
+    bar = path_from_string("M 0 0.5 L 5 0.5")
+    return DrawingGroup(children=(
+        GeometryDrawing(white_bar, pen=Pen(brush=_WHITE, thickness=1.0)),
+        GeometryDrawing(bar, pen=Pen(brush=_GRIPPER, thickness=1.0)),
+        GeometryDrawing(path_from_string("M 0.5 4 L 6.5 4 L 3.5 7 Z"), brush=_WHITE),
+        GeometryDrawing(path_from_string("M -0.5 3 L 5.5 3 L 2.5 6 Z"), brush=_GRIPPER),
+    ))  # fmt: skip
+
+
+def _grip_dots(w: float, h: float) -> DrawingGroup:
+    """The ToolBar Thumb's Rectangle (at Padding 6,5,1,6) filled with its 4 x 4 tile: a
+    ToolBarGripper dot at 0,0 over a white one at 1,1, 2 px each, cut at the rectangle."""
+    x0, y0 = 6.0, 5.0
+    rw, rh = max(0.0, w - 7.0), max(0.0, h - 11.0)
+    out = []
+    for top in np.arange(0.0, rh, 4.0):  # one dot a tile: a few per bar, not per pixel
+        for dx, dy, brush in ((1.0, 1.0, _WHITE), (0.0, 0.0, _GRIPPER)):
+            x, y = dx, top + dy
+            cw, ch = min(2.0, rw - x), min(2.0, rh - y)
+            if cw > 0 and ch > 0:
+                out.append(GeometryDrawing(RectangleGeometry((x0 + x, y0 + y, cw, ch)),
+                                           brush=brush))  # fmt: skip
+    return DrawingGroup(children=tuple(out))
+
+
+def after_layout(root: L.Node) -> None:
+    """The template parts drawn from their laid-out size: the selected tabs raised, the grips'
+    dots."""
+    raise_selected_tabs(root)
+    for n in root.walk():
+        if n.type == GRIP_PART and n.arranged:
+            n.drawing = _grip_dots(*n.ink)
 
 
 def raise_selected_tabs(root: L.Node) -> None:

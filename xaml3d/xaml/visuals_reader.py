@@ -3,19 +3,20 @@
 WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
 xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
 measured with the package's font, shapes by their geometry: ``control_sizes``; the controls
-that hold content built as their template's parts: ``templates``), laid out by ``xaml3d.layout`` as
-WPF lays out a brush's visual (measured with infinite room, arranged at its desired size), and
-each element becomes the drawing WPF's would: panel and Border backgrounds and borders
-(BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line, Polyline, Polygon and
-Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins; Stretch None), TextBlock
-and text content (Text, Foreground, FontSize, FontWeight, FontStyle, Padding, TextAlignment,
-Background; wrapped and trimmed to its laid-out width), Label, Image, and Button, TextBox,
-CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed ComboBox, ListBox,
-TabControl, GroupBox and Expander (with the content they hold) in WPF's default Windows 10/11
-look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
-RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect and
-their bitmap effects: ``picture_reader.element_layer``), apply to an element and its children as
-one layer. Anything else is skipped with DRW002: the rest is drawn.
+that hold content built as their template's parts: ``templates``), laid out by
+``xaml3d.layout`` as WPF lays out a brush's visual (measured with infinite room, arranged at
+its desired size), and each element becomes the drawing WPF's would: panel and Border
+backgrounds and borders (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line,
+Polyline, Polygon and Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins;
+Stretch None), TextBlock and text content (Text, Foreground, FontSize, FontWeight, FontStyle,
+Padding, TextAlignment, Background; wrapped and trimmed to its laid-out width), Label, Image,
+and Button, TextBox, CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed
+ComboBox, ListBox, TabControl, GroupBox, Expander, Menu, ToolBar, ToolBarTray, a closed
+DatePicker and a Calendar (with the content they hold) in WPF's default Windows 10/11 look (the
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
+RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect
+and their bitmap effects: ``picture_reader.element_layer``), apply to an element and its
+children as one layer. Anything else is skipped with DRW002: the rest is drawn.
 """
 
 from __future__ import annotations
@@ -79,7 +80,7 @@ def visual_drawing(r, el):
     # visual is measured with infinite room and arranged at its desired size
     size = getattr(r, "laid_out_sizes", {}).get(id(el))
     layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
-    templates.raise_selected_tabs(root)
+    templates.after_layout(root)
     out = []
     _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
     w, h = root.rect[2], root.rect[3]
@@ -150,7 +151,7 @@ def _layout_clip(n):
 
 def _part(n, w: float, h: float) -> list:
     """A template part's look: its own drawing, or its Border's Background and BorderBrush."""
-    out = _box_drawing(n.background, n.border_brush, n.border, 0.0, w, h)
+    out = _box_drawing(n.background, n.border_brush, n.border, n.corner_radius[0], w, h)
     if n.drawing is not None:
         out.append(n.drawing)
     return out
@@ -283,7 +284,7 @@ def attach_control_drawings(r, root, elements: dict) -> None:
     """``render --window``: each laid-out 2D control that the 2D layer draws gets its drawing
     (``Node.drawing``, in its own box). The others stay undrawn, and DRW007 says so (their
     space is kept: LAY003 says it is estimated)."""
-    templates.raise_selected_tabs(root)
+    templates.after_layout(root)
     for n in root.walk():
         if n.type == "GroupBox" and n.kind == L.GRID and n.arranged:
             el = elements.get(id(n), (None,))[0]
