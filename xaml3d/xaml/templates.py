@@ -140,24 +140,8 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
         _content_control(reader, n, el, v, font)
     elif local in _OPTIONS:
         _option(reader, n, el, v, font)
-    elif local == "ListBox":
-        _list_box(reader, n, el, v, font)
-    elif local == "ListBoxItem":
-        _list_item(reader, n, el, v, font)
-    elif local == "TabControl":
-        _tab_control(reader, n, el, v, font)
-    elif local == "GroupBox":
-        _group_box(reader, n, el, v, font)
-    elif local == "Expander":
-        _expander(reader, n, el, v, font)
-    elif local == "Menu":
-        _menu(reader, n, el, v, font)
-    elif local == "ToolBar":
-        _tool_bar(reader, n, el, v, font)
-    elif local == "ToolBarTray":
-        _tool_bar_tray(reader, n, el, v, font)
-    elif local == "MenuItem":  # a top-level item (its sub-items are in a closed Popup)
-        _menu_item(reader, n, el, v, font)
+    elif local in _TEMPLATES:
+        _TEMPLATES[local](reader, n, el, v, font)
     else:  # a TabItem outside a TabControl: its header alone
         _tab_item(reader, n, el, v, font, False)
 
@@ -677,3 +661,18 @@ def raise_selected_tabs(root: L.Node) -> None:
                     dx, dy, dw, dh = d.rect
                     d.rect = (dx, dy - 1.0, dw, dh)
         n.children.sort(key=lambda k: k.z_index)  # stable: document order otherwise
+
+
+# the controls whose template tree ``expand`` builds by name (a MenuItem here is a top-level
+# item: its sub-items are in a closed Popup)
+_TEMPLATES = {
+    "ListBox": _list_box,
+    "ListBoxItem": _list_item,
+    "TabControl": _tab_control,
+    "GroupBox": _group_box,
+    "Expander": _expander,
+    "Menu": _menu,
+    "ToolBar": _tool_bar,
+    "ToolBarTray": _tool_bar_tray,
+    "MenuItem": _menu_item,
+}
