@@ -73,3 +73,20 @@ def test_corpus_file_renders(path):
             assert m.drawn_pixels == 0, f"{m.mode}: {EXPECTED_EMPTY[prefix]}, yet drew pixels"
         else:
             assert m.drawn_pixels > 0, f"{m.mode}: empty image"
+
+
+@needs_corpus
+def test_a_specular_highlight_fading_over_transparency_renders_without_numpy_errors(monkeypatch):
+    """Corpus 023 at 3.75 s (its dictionary 008 given): the cube's specular pass adds light of
+    about 1e-36 over the transparent background at a few pixels; they resolve empty, with every
+    numpy error raising (the test suite's setting), on the numpy path."""
+    import numpy as np
+
+    import xaml3d
+
+    monkeypatch.setenv("XAML3D_KERNELS", "numpy")
+    scene = xaml3d.load(
+        next(CORPUS.glob("023_*.xaml")), resources=[next(CORPUS.glob("008_*.xaml"))]
+    )
+    rgba = np.asarray(xaml3d.render(xaml3d.scene_at(scene, 3.75), 160))
+    assert rgba[58, 80].tolist() == [0, 0, 0, 0] and rgba[61, 75].tolist() == [0, 0, 0, 0]

@@ -290,3 +290,33 @@ def test_a_camera_that_does_not_move_is_set_up_once(monkeypatch):
         assert all((b is None) == (count == 1) for b in calls)
         for t, rgba in zip(TIMES, kept, strict=True):
             assert np.array_equal(rgba, render_scene(scene_at(scene, t), settings).rgba)
+
+
+def test_vanishing_light_over_transparency_resolves_empty_on_every_path():
+    """A pixel holding only a specular power's 1e-36 of added light (alpha 0) resolves to
+    (0, 0, 0, 0) in ``frame.straight_uint8``, ``kernels.resolve`` and ``resolve_clear`` alike:
+    255 / a would overflow float32 (corpus 023 at 3.75 s had such pixels); light just above the
+    threshold keeps its colour."""
+    from xaml3d.render import frame
+
+    premul = np.zeros((1, 3, 4), np.float32)
+    premul[0, 0, :3] = 4.6631427e-38
+    premul[0, 1, :3] = np.float32(2.0**-64)
+    premul[0, 2, :3] = np.float32(2.0**-63)
+    with np.errstate(all="raise"):
+        got = frame.straight_uint8(premul)
+    assert got[0, :2].tolist() == [[0, 0, 0, 0], [0, 0, 0, 0]]
+    assert got[0, 2].tolist() == [255, 255, 255, 0]
+    pytest.importorskip("numba")
+    from xaml3d.render import kernels
+    from xaml3d.render.frame_kernels import resolve_clear
+
+    assert kernels._EMPTY == frame.ALPHA_EMPTY
+    color = premul.reshape(3, 4).copy()
+    zbuf = np.zeros(3)
+    rgba, depth = np.empty((1, 3, 4), np.uint8), np.empty((1, 3))
+    kernels.resolve(color, zbuf, 3, 1, False, rgba, depth)
+    assert np.array_equal(rgba, got)
+    rgba2 = np.empty_like(rgba)
+    resolve_clear(color, zbuf, 3, 1, rgba2, depth, False, np.zeros(4, np.float32), 0, 1)
+    assert np.array_equal(rgba2, got)

@@ -253,6 +253,9 @@ class Framebuffer:
         return straight_uint8(col), depth
 
 
+ALPHA_EMPTY = np.float32(2.0**-64)  # at or below: an empty pixel (kernels.resolve alike)
+
+
 def to_straight_uint8(premul: np.ndarray) -> np.ndarray:
     """Premultiplied float planes (4, H, W) -> straight-alpha uint8 (H, W, 4), rounded."""
     return straight_uint8(np.moveaxis(np.asarray(premul, dtype=np.float32), 0, -1))
@@ -272,7 +275,9 @@ def straight_uint8(premul: np.ndarray) -> np.ndarray:
     a = np.maximum(np.maximum(p[..., 0], p[..., 1]), np.maximum(p[..., 2], p[..., 3]))
     np.clip(a, 0.0, 1.0, out=a)
     scale = np.zeros_like(a)
-    np.divide(255.0, a, out=scale, where=a > 0.0)  # un-premultiply; empty pixels stay 0
+    # un-premultiply; empty pixels stay 0, and so do pixels of vanishing light (a specular
+    # power's 1e-36 added over transparency), for which 255 / a would overflow float32
+    np.divide(255.0, a, out=scale, where=a > ALPHA_EMPTY)
     v = premul * scale[..., None]  # one pass over all four channels, in place from here on
     v[..., 3] = a * 255.0
     np.clip(v, 0.0, 255.0, out=v)

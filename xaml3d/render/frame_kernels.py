@@ -15,7 +15,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from xaml3d.render.kernels import _max32, _min32
+from xaml3d.render.kernels import _EMPTY, _max32, _min32
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
@@ -89,7 +89,7 @@ def resolve_clear(color, zbuf, width, s, rgba, depth, want_depth, background, y0
                     c3 *= inv
                 al = _max32(_max32(c0, c1), _max32(c2, c3))
                 al = _min32(_max32(al, zero), one)
-                scale = c255 / al if al > zero else zero
+                scale = c255 / al if al > _EMPTY else zero  # frame.straight_uint8
                 p0 = np.uint8(_min32(_max32(c0 * scale, zero), c255) + half)
                 p1 = np.uint8(_min32(_max32(c1 * scale, zero), c255) + half)
                 p2 = np.uint8(_min32(_max32(c2 * scale, zero), c255) + half)

@@ -430,13 +430,14 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
             depth[y, x] = z + 2.0 if z < 0.0 else np.inf
             al = _max32(_max32(c0, c1), _max32(c2, c3))
             al = _min32(_max32(al, zero), one)
-            scale = c255 / al if al > zero else zero
+            scale = c255 / al if al > _EMPTY else zero  # frame.straight_uint8
             rgba[y, x, 0] = np.uint8(_min32(_max32(c0 * scale, zero), c255) + half)
             rgba[y, x, 1] = np.uint8(_min32(_max32(c1 * scale, zero), c255) + half)
             rgba[y, x, 2] = np.uint8(_min32(_max32(c2 * scale, zero), c255) + half)
             rgba[y, x, 3] = np.uint8(_min32(_max32(al * c255, zero), c255) + half)
 
 
+_EMPTY = np.float32(2.0**-64)  # frame.ALPHA_EMPTY: at or below, a pixel resolves empty
 DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
 
 
