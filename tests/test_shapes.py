@@ -135,3 +135,34 @@ def test_a_shape_larger_than_its_width_is_cut_at_it():
     blue = (rgba[..., 2] == 255) & (rgba[..., 0] == 0) & (rgba[..., 3] == 255)
     cols = np.nonzero(blue.any(axis=0))[0]
     assert (cols.min(), cols.max()) == (0, 39)
+
+
+def test_clip_to_bounds_cuts_a_shape_at_its_box():
+    # the line starts 20 px left of the shape's box (negative x is drawn, outside the box)
+    line = 'Canvas.Left="30" Data="M -20,10 L 40,10" Stroke="Blue" StrokeThickness="4"'
+    free, [b] = _boxes(f"<Path {line}/>", panel="Canvas")
+    cut, [_] = _boxes(f'<Path {line} ClipToBounds="True"/>', panel="Canvas")
+    assert b.rect == pytest.approx((30, 0, 40, 12))  # its natural size: right 40, bottom 12
+
+    def cols(scene):
+        rgba, _ = compose_window(scene)
+        blue = (rgba[..., 2] == 255) & (rgba[..., 0] < 100) & (rgba[..., 3] > 0)
+        found = np.nonzero(blue.any(axis=0))[0]
+        return int(found.min()), int(found.max())
+
+    assert cols(free) == (10, 69)  # all of it, from x 30 - 20
+    assert cols(cut) == (30, 69)  # cut at the box's left edge
+
+
+def test_a_shape_in_a_visual_brush_counts_all_of_its_curve():
+    from xaml3d.render.layer2d.paint import drawing_bounds
+
+    s = load(f"<Grid {NS} Width='40' Height='40'><Grid.Background><VisualBrush><VisualBrush."
+             "Visual><Canvas><Path Stroke='Black' StrokeThickness='2' "
+             "Data='M 0,10 C 10,90 30,90 40,10'/></Canvas></VisualBrush.Visual></VisualBrush>"
+             "</Grid.Background><Viewport3D Width='4' Height='4'/></Grid>", text=True)  # fmt: skip
+    [grid] = [b for b in s.layout.boxes if b.type == "Grid"]
+    brush = grid.background
+    box = drawing_bounds(brush.drawing)
+    # the visual's ink reaches the curve's lowest point (70) and the pen's half below it
+    assert box.bottom() == pytest.approx(71, abs=1e-3)
