@@ -166,3 +166,30 @@ def test_a_shape_in_a_visual_brush_counts_all_of_its_curve():
     box = drawing_bounds(brush.drawing)
     # the visual's ink reaches the curve's lowest point (70) and the pen's half below it
     assert box.bottom() == pytest.approx(71, abs=1e-3)
+
+
+def test_poly_segments_and_geometry_elements_by_their_extrema():
+    # a PolyBezierSegment's second curve dips to 0.75 * 80 + 0.25 * 20 = 65; a
+    # PolyQuadraticBezierSegment's second curve rises to 0.5 * -40 + 0.5 * 20 = -10 (outside,
+    # above the box: the size counts only the right and bottom)
+    poly = ('<Path Fill="Black"><Path.Data><PathGeometry><PathFigure StartPoint="0,20">'
+            '<PolyBezierSegment Points="5,20 15,20 20,20 25,80 35,80 40,20"/>'
+            '<PolyQuadraticBezierSegment Points="45,20 50,20 55,-40 60,20"/>'
+            "</PathFigure></PathGeometry></Path.Data></Path>")  # fmt: skip
+    assert _size(poly) == pytest.approx((60, 65), abs=1e-3)
+    # an EllipseGeometry and a turned RectangleGeometry: their own bounds, transform included
+    assert _size('<Path Fill="Black"><Path.Data><EllipseGeometry Center="30,20" RadiusX="10" '
+                 'RadiusY="5"/></Path.Data></Path>') == pytest.approx((40, 25))  # fmt: skip
+    turned = ('<Path Fill="Black"><Path.Data><RectangleGeometry Rect="0,0,10,10">'
+              '<RectangleGeometry.Transform><RotateTransform Angle="45"/>'
+              "</RectangleGeometry.Transform></RectangleGeometry></Path.Data></Path>")  # fmt: skip
+    assert _size(turned) == pytest.approx((10 / math.sqrt(2), 20 / math.sqrt(2)), abs=1e-3)
+
+
+def test_polygon_is_as_large_as_its_right_and_bottom():
+    # what lies left of or above the box's corner is not counted (Shape.GetNaturalSize)
+    assert _size('<Polygon Fill="Black" Points="-10,-5 30,0 30,20"/>') == pytest.approx((30, 20))
+    # a closed figure's corner at (30, 20) with a 2 px pen: a miter within the limit, its tip
+    # half the thickness / sin(half the angle) beyond the corner along the bisector
+    w, h = _size('<Polygon Stroke="Black" StrokeThickness="2" Points="0,20 30,20 30,0"/>')
+    assert (w, h) == pytest.approx((31, 21), abs=1e-3)  # a right angle: 1 px out each way
