@@ -224,7 +224,10 @@ def shape_drawing(r, v, n, local: str, w: float, h: float) -> GeometryDrawing | 
             xs, ys, dx, dy, _ = stretch_metrics(shape.mode, t, (w, h), shape.bounds)
             m = stretch_matrix(xs, ys, dx, dy, shape.bounds)
         own = g.transform
-        g = replace(g, transform=m if own is None else m @ own)
+        if own is not None:  # the geometry's own Transform first, then the stretch
+            m = m @ own
+            m.flags.writeable = False
+        g = replace(g, transform=m)
     if local == "Line":
         fill = None  # a Line is never filled
     return GeometryDrawing(g, brush=fill, pen=pen)
