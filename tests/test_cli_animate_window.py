@@ -140,3 +140,17 @@ def test_corpus_009_cube_follows_its_path_over_the_window(tmp_path):
         assert cols.size > 2000
         boxes.append((int(np.median(cols)), int(np.median(rows))))
     assert len(set(boxes)) == 3
+
+
+def test_picture_moves_by_its_own_or_an_ancestors_transform():
+    from xaml3d import load
+    from xaml3d.animation.moment import picture_moves
+
+    around = load(CASE.parent / "window-around-animated.xaml")  # a Border slides around it
+    track, own = picture_moves(around, 0, [0.0, 0.25, 0.5])
+    assert (track.target, own) == ("slide.X", False)
+    moves = load(CASE)
+    track, own = picture_moves(moves, 0, [0.0, 0.5])
+    assert (track.target, own) == ("slide.X", True)
+    assert picture_moves(moves, 0, [1.0, 1.5]) is None  # held at its end: nothing moves
+    assert picture_moves(moves, 0, [0.0]) is None  # one frame shows no motion

@@ -17,9 +17,8 @@ import math
 from pathlib import Path
 
 import click
-import numpy as np
 
-from xaml3d.animation.moment import scene_at
+from xaml3d.animation.moment import picture_moves, scene_at
 from xaml3d.cli_common import (
     FiniteFloat,
     ProgressLines,
@@ -286,32 +285,15 @@ def _moving_viewport(sc, index: int, times, storyboard, file: str) -> Diagnostic
     """ANIM016 when the frames move viewport ``index``'s picture by its own RenderTransform (or
     one of an element around it): WPF moves the viewport over the window, while the frames of
     one viewport are its box, which the picture then slides within and out of."""
-    tracks = sc.tracks.tracks if sc.tracks is not None else ()
-    moving = [t for t in tracks for p in (*t.paths, *t.moves)
-              if p.viewport == index and p.steps[:1] == (("picture", None),)
-              and p.field == "render_transform"]  # fmt: skip
-    if not moving:
+    found = picture_moves(sc, index, times, storyboard)
+    if found is None:
         return None
-    step = max(1, len(times) // 8)  # a few moments suffice to see it move
-
-    def matrix(t):
-        picture = scene_at(sc, t, storyboard).viewports[index].picture
-        return None if picture is None else picture.render_transform
-
-    first = matrix(times[0])
-    for t in times[step::step]:
-        m = matrix(t)
-        if (m is None) != (first is None) or (m is not None and not np.array_equal(m, first)):
-            break
-    else:
-        return None
-    own = any(p.steps == (("picture", None),) for t in moving for p in (*t.paths, *t.moves))
+    track, own = found
     whose = "its own RenderTransform" if own else "the RenderTransform of an element around it"
-    msg = (f"viewport {index} is moved by {whose} ({moving[0].target}): WPF moves it over the "
+    msg = (f"viewport {index} is moved by {whose} ({track.target}): WPF moves it over the "
            "window, but these frames are the viewport's own box, which its picture slides "
            "within and out of; --window draws the whole window in each frame")  # fmt: skip
-    return Diagnostic("ANIM016", ANIM_CODES["ANIM016"][0], msg, file, moving[0].line,
-                      moving[0].column)  # fmt: skip
+    return Diagnostic("ANIM016", ANIM_CODES["ANIM016"][0], msg, file, track.line, track.column)
 
 
 def _verdict(sc, moment, sizes, name: str, lenient: bool, diags, quiet: bool, verbose: bool):
