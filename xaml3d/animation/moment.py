@@ -58,14 +58,20 @@ def picture_moves(scene: Scene, index: int, times, storyboard: str | None = None
         return None
     step = max(1, len(times) // 8)  # a few moments suffice to see it move
 
-    def matrix(t):
+    def matrices(t) -> list:
+        """The picture's RenderTransform, then each surrounding element's."""
         picture = scene_at(scene, t, storyboard).viewports[index].picture
-        return None if picture is None else picture.render_transform
+        if picture is None:
+            return []
+        return [picture.render_transform, *(a.layer.render_transform for a in picture.around)]
 
-    first = matrix(times[0])
+    def same(a, b) -> bool:
+        return (a is None) == (b is None) and (a is None or np.array_equal(a, b))
+
+    first = matrices(times[0])
     for t in times[step::step]:
-        m = matrix(t)
-        if (m is None) != (first is None) or (m is not None and not np.array_equal(m, first)):
+        now = matrices(t)
+        if len(now) != len(first) or not all(map(same, now, first)):
             own = any(p.steps == (("picture", None),) and p.field == "render_transform"
                       for k in moving for p in (*k.paths, *k.moves))  # fmt: skip
             return moving[0], own
