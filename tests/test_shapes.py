@@ -193,3 +193,16 @@ def test_polygon_is_as_large_as_its_right_and_bottom():
     # half the thickness / sin(half the angle) beyond the corner along the bisector
     w, h = _size('<Polygon Stroke="Black" StrokeThickness="2" Points="0,20 30,20 30,0"/>')
     assert (w, h) == pytest.approx((31, 21), abs=1e-3)  # a right angle: 1 px out each way
+
+
+def test_a_moved_layer_brings_in_what_a_shape_draws_left_of_the_window():
+    # the line lies at x -150..-50, left of the window and of its own (empty) box; the Canvas's
+    # RenderTransform moves it 100 right: -50..50, of which 0..50 shows
+    s = load(f"<Grid {NS} Width='200' Height='60'><Canvas><Canvas.RenderTransform>"
+             "<TranslateTransform X='100'/></Canvas.RenderTransform>"
+             '<Path Data="M -150,10 L -50,10" Stroke="Blue" StrokeThickness="4"/></Canvas>'
+             "<Viewport3D Width='4' Height='4'/></Grid>", text=True)  # fmt: skip
+    rgba, _ = compose_window(s)
+    blue = (rgba[..., 2] == 255) & (rgba[..., 0] < 100) & (rgba[..., 3] > 0)
+    cols = np.nonzero(blue.any(axis=0))[0]
+    assert (cols.min(), cols.max()) == (0, 49)

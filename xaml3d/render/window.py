@@ -321,7 +321,7 @@ def _reach(boxes, W: int, H: int) -> tuple[int, int, int, int]:
         if not (moves and b.shown):
             continue
         for k in boxes[i : ends[i]]:
-            x, y, w, h = (float(v) for v in k.rect)
+            x, y, w, h = _drawn_rect(k)
             if k.shown and all(math.isfinite(v) for v in (x, y, w, h)):
                 x0, y0 = min(x0, x), min(y0, y)
                 x1, y1 = max(x1, x + w), max(y1, y + h)
@@ -332,6 +332,23 @@ def _reach(boxes, W: int, H: int) -> tuple[int, int, int, int]:
     if (W + left + right) * (H + top + bottom) > MAX_SUPERSAMPLED_PIXELS:
         return 0, 0, 0, 0
     return left, top, right, bottom
+
+
+def _drawn_rect(b: Box) -> tuple[float, float, float, float]:
+    """A box, grown by what its control's drawing reaches beyond it (a shape's curve or pen)."""
+    x, y, w, h = (float(v) for v in b.rect)
+    if b.drawing is None:
+        return x, y, w, h
+    from xaml3d.render.layer2d.paint import drawing_bounds
+
+    ink = drawing_bounds(b.drawing)
+    if ink is None:
+        return x, y, w, h
+    sx = w / b.ink[0] if b.ink[0] > 0 else 1.0
+    sy = h / b.ink[1] if b.ink[1] > 0 else 1.0
+    left, top = min(x, x + sx * ink.left()), min(y, y + sy * ink.top())
+    right, bottom = max(x + w, x + sx * ink.right()), max(y + h, y + sy * ink.bottom())
+    return left, top, right - left, bottom - top
 
 
 def _spread(effect) -> float:
