@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from itertools import repeat
 
 import numpy as np
 
@@ -97,8 +98,8 @@ def defining_geometry(r, v, local: str):
     pts = shape_points(v.p)
     if pts is None or pts.shape[0] < 1:
         return None
-    cmds = [("M", float(pts[0, 0]), float(pts[0, 1]))]
-    cmds += [("L", float(x), float(y)) for x, y in pts[1:]]
+    xs, ys = pts[:, 0].tolist(), pts[:, 1].tolist()  # Python floats, converted at once
+    cmds = [("M", xs[0], ys[0]), *zip(repeat("L"), xs[1:], ys[1:])]
     if local == "Polygon":
         cmds.append(("Z",))
     rule = v.get("FillRule", lambda s: V.parse_enum(s, ("EvenOdd", "Nonzero")), "EvenOdd")
