@@ -40,11 +40,21 @@ GIF_WIDTH, GIF_FPS, GIF_MAX_SECONDS = 160, 12, 4.0
 BACKDROP = (176, 196, 222)  # the contact sheet's blue-grey: shows what is transparent
 
 
+def _scaled(rgba):
+    """A window frame at the report's GIF width."""
+    import numpy as np
+
+    h, w = rgba.shape[:2]
+    size = (GIF_WIDTH, max(1, round(h * GIF_WIDTH / w)))
+    return np.asarray(Image.fromarray(rgba, "RGBA").resize(size, Image.LANCZOS))
+
+
 def animate_file(path: Path, out_dir: Path) -> str:
     """Write ``out_dir/<stem>.gif`` when the file animates; the table cell saying what runs."""
     import math
 
     from xaml3d import frame_times, load, render_frames, save_animation
+    from xaml3d.animation.moment import picture_moves
     from xaml3d.errors import XamlError
 
     try:
@@ -72,10 +82,16 @@ def animate_file(path: Path, out_dir: Path) -> str:
     length = min(length, GIF_MAX_SECONDS)
     try:
         times = frame_times(0.0, length, GIF_FPS)
+        # a viewport that its own RenderTransform moves is drawn as WPF shows it: the whole
+        # window (its box alone would show the picture sliding out of it), scaled to the width
+        window = picture_moves(scene, 0, times, named) is not None
         frames = [
-            r.rgba
-            for _, r in render_frames(scene, times, named, width=GIF_WIDTH, background=BACKDROP)
-        ]
+            _scaled(r.rgba) if window else r.rgba
+            for _, r in render_frames(
+                scene, times, named, width=None if window else GIF_WIDTH, background=BACKDROP,
+                window=window,
+            )
+        ]  # fmt: skip
         out_dir.mkdir(parents=True, exist_ok=True)
         save_animation(frames, out_dir / f"{path.stem}.gif", length)
     except XamlError as exc:
@@ -118,7 +134,8 @@ def report(results, corpus: Path, anims: dict) -> str:
         "running at load; a file whose storyboard only code-behind begins is animated with that "
         "storyboard begun by name (`--storyboard`). Each animated file has a GIF in "
         "`conformance-anim/` (one cycle, at most 4 s, 160 px wide, 12 frames per second, on "
-        "the contact sheet's blue-grey).",
+        "the contact sheet's blue-grey; the whole window, as `animate --window` draws it, "
+        "when the first viewport's own RenderTransform moves it).",
         "",
         "The status is the command line's verdict: `rendered with warnings` when `xaml3d "
         "validate` lists warnings (the diagnostics column counts its warnings and errors), "

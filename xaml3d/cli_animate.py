@@ -18,7 +18,7 @@ from pathlib import Path
 
 import click
 
-from xaml3d.animation.moment import scene_at
+from xaml3d.animation.moment import picture_moves, scene_at
 from xaml3d.cli_common import (
     FiniteFloat,
     ProgressLines,
@@ -39,6 +39,7 @@ from xaml3d.cli_common import (
     storyboard_option,
     time_callback,
     warn_option,
+    window_size_option,
     with_file,
 )
 from xaml3d.cli_outputs import (
@@ -90,6 +91,7 @@ Examples:
   xaml3d animate spin.xaml -o spin.png --fps 25 -W 320 --background White
   xaml3d animate spin.xaml -o frames/ --start 1 --end 3
   xaml3d animate menu.xaml -o click.webp --storyboard OnClick
+  xaml3d animate app.xaml -o app.gif --window      # the whole window, each frame
 
 \b
 Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 usage error.
@@ -122,6 +124,10 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("--ssaa", type=click.IntRange(1, 4), help="Supersampling factor per axis, 1..4.")
 @click.option("--msaa", type=click.IntRange(1, 4), help="Multisampling per axis, 1..4 (default 2).")
 @click.option("--viewport", metavar="INDEX|NAME", help="Which Viewport3D (default: the first).")
+@click.option("--window", is_flag=True, help="Draw the root's whole client area in each "
+              "frame (every viewport, the panels and controls), as render --window --time "
+              "T.")  # fmt: skip
+@window_size_option
 @resources_option
 @no_app_option
 @click.option("-j", "--jobs", type=click.IntRange(1),
@@ -133,9 +139,14 @@ Exit status: 0 written (warnings allowed), 1 the scene could not be animated, 2 
 @click.option("-v", "--verbose", is_flag=True, help="Also print informational diagnostics.")
 @animate_lens_options
 def animate_command(scene, output, fps, start, end, duration, loop, clean, storyboard, width,
-                    height, mode, background, ssaa, msaa, viewport, resources, no_app, jobs,
-                    lenient, quiet, verbose, extras) -> None:  # fmt: skip
-    check_request(extras, (scene,), output, mode)
+                    height, mode, background, ssaa, msaa, viewport, window, window_size,
+                    resources, no_app, jobs, lenient, quiet, verbose, extras) -> None:  # fmt: skip
+    if window and viewport is not None:
+        raise click.UsageError("--window draws every viewport: drop --viewport")
+    if window and (width is not None or height is not None):
+        raise click.UsageError("-W/-H size one viewport; with --window use --window-size "
+                               "(the root's client size)")  # fmt: skip
+    check_request(extras, (scene,), output, mode, window, window)
     to_dir = animation_target(output)  # the format, before anything is read (exit 2)
 
     bg = parse_background(None, None, background)
@@ -153,7 +164,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     with exit_on_input_error(name):
         if not to_dir and _refused(name, [Path(output)], inputs):  # before reading the scene
             ctx.exit(1)
-        sc = load_scene(scene, resources, discover_app=not no_app)
+        sc = load_scene(scene, resources, window_size, discover_app=not no_app)
     inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images
     file = sc.file or name
     diags = [with_file(d, file) for d in begun_by_name(sc.diagnostics, sc, storyboard)]
@@ -174,14 +185,19 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if Path(output).suffix.lower() == ".gif" and not to_dir and fps > 50:
             slow = f"--fps {fps:g}: GIF frames shorter than 20 ms are shown at 100 ms by most "
             diags.append(_note(file, slow + "viewers (use --fps 50 or less)", "ANIM012"))
-        vp = sc.viewport(viewport)
+        vp = sc.viewport(None if window else viewport)  # SCN001 when there is none
         check_lens_camera(extras, vp)
         # --aperture, --stereo, --line-*: every frame; the size is computed once
         settings = RenderSettings(viewport=vp.index, mode=mode, background=bg, ssaa=ssaa,
                                   msaa=msaa, time=None, **lens_arguments(extras))  # fmt: skip
-        size = sizes(vp)
-        settings = settings.replace(width=size.width, height=size.height, aspect=size.aspect)
+        if not window:  # --window: each viewport at its laid-out box
+            size = sizes(vp)
+            settings = settings.replace(width=size.width, height=size.height, aspect=size.aspect)
         times = frames_module.frame_times(start, end, fps)
+        if not window:
+            moved = _moving_viewport(sc, vp.index, times, storyboard, file)
+            if moved is not None:
+                diags.append(moved)
         # Every path this run writes, checked before the first frame is drawn.
         names = frame_names(len(times)) if to_dir else []
         if _refused(name, [Path(output) / n for n in names] if to_dir else [Path(output)], inputs):
@@ -200,7 +216,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             diags[:] = [d for d in diags if d.code != "RND002"]
             it = frames_module.render_frames(  # looked up at call time: it may be wrapped
                 sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder],
-                prepare=prepare, depth=False,
+                prepare=prepare, depth=False, window=window,
             )  # fmt: skip
             for r in _progress(it, len(times), name, quiet):
                 yield _keep(r, diags, file)
@@ -263,6 +279,21 @@ def _plan_line(name: str, sc, storyboard, count: int, fps: float, length: float)
         else:
             cycle = f"repeats for ever, one iteration: {once:g} s"
     return f"{name}: animating {count} frames ({length:g} s at {fps:g} fps; {cycle})"
+
+
+def _moving_viewport(sc, index: int, times, storyboard, file: str) -> Diagnostic | None:
+    """ANIM016 when the frames move viewport ``index``'s picture by its own RenderTransform (or
+    one of an element around it): WPF moves the viewport over the window, while the frames of
+    one viewport are its box, which the picture then slides within and out of."""
+    found = picture_moves(sc, index, times, storyboard)
+    if found is None:
+        return None
+    track, own = found
+    whose = "its own RenderTransform" if own else "the RenderTransform of an element around it"
+    msg = (f"viewport {index} is moved by {whose} ({track.target}): WPF moves it over the "
+           "window, but these frames are the viewport's own box, which its picture slides "
+           "within and out of; --window draws the whole window in each frame")  # fmt: skip
+    return Diagnostic("ANIM016", ANIM_CODES["ANIM016"][0], msg, file, track.line, track.column)
 
 
 def _verdict(sc, moment, sizes, name: str, lenient: bool, diags, quiet: bool, verbose: bool):

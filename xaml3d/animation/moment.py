@@ -4,10 +4,14 @@ Pipeline step: (Scene, t) -> Scene, before any render or export. The storyboards
 evaluated from the scene's typed tracks (``xaml3d.animation.timeline``); a frame of an
 animation is an ordinary render of the Scene this returns. ``scene_and_values_at`` also gives
 the exact animated values that made it, so that a frame already drawn for the same values need
-not be drawn again (``xaml3d.render.frames.FrameSession``).
+not be drawn again (``xaml3d.render.frames.FrameSession``). ``picture_moves`` tells whether a
+viewport's own RenderTransform (or an element's around it) moves its picture over a stretch of
+time: a picture of the viewport's box alone then shows it sliding out of that box.
 """
 
 from __future__ import annotations
+
+import numpy as np
 
 from xaml3d.animation import timeline
 from xaml3d.animation.timeline import scene_at as frame_at
@@ -39,3 +43,36 @@ def scene_and_values_at(
     if scene.tracks is None:
         return scene_at(scene, time, storyboard), ()
     return timeline.scene_and_values_at(scene, float(time), storyboard)
+
+
+def picture_moves(scene: Scene, index: int, times, storyboard: str | None = None):
+    """(the first track that moves it, whether it is the viewport's own RenderTransform) when
+    the RenderTransform of viewport ``index``'s picture, or of an element around it, differs
+    between the moments ``times`` (a few of them are compared); else None."""
+    tracks = scene.tracks.tracks if scene.tracks is not None else ()
+    moving = [t for t in tracks for p in (*t.paths, *t.moves)
+              if p.viewport == index and p.steps[:1] == (("picture", None),)
+              and p.field == "render_transform"]  # fmt: skip
+    times = list(times)
+    if not moving or len(times) < 2:
+        return None
+    step = max(1, len(times) // 8)  # a few moments suffice to see it move
+
+    def matrices(t) -> list:
+        """The picture's RenderTransform, then each surrounding element's."""
+        picture = scene_at(scene, t, storyboard).viewports[index].picture
+        if picture is None:
+            return []
+        return [picture.render_transform, *(a.layer.render_transform for a in picture.around)]
+
+    def same(a, b) -> bool:
+        return (a is None) == (b is None) and (a is None or np.array_equal(a, b))
+
+    first = matrices(times[0])
+    for t in times[step::step]:
+        now = matrices(t)
+        if len(now) != len(first) or not all(map(same, now, first)):
+            own = any(p.steps == (("picture", None),) and p.field == "render_transform"
+                      for k in moving for p in (*k.paths, *k.moves))  # fmt: skip
+            return moving[0], own
+    return None

@@ -51,6 +51,11 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         "animate: there is no cycle to draw (nothing animates at load, a Duration is Forever, "
         "or the animations take no time): a fixed length is drawn",
     ),
+    "ANIM016": (
+        WARNING,
+        "animate: the viewport is moved by its own RenderTransform (or an element's around it): "
+        "the frames show its box, which the picture slides out of (--window draws the window)",
+    ),  # fmt: skip
     "ANIM012": (
         WARNING,
         "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",

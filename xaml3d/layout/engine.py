@@ -239,6 +239,8 @@ class Engine:
         oy = _align(n.v_align, ch, bh, "Bottom") + y + mt
         if rounding:
             ox, oy = _round(ox), _round(oy)
+        fits = lt is not None or (bw <= cw + 1e-9 and bh <= ch + 1e-9)
+        n.slot_box = None if fits else (x + ml - ox, y + mt - oy, cw, ch)
         # the element's own box starts where its transformed bounds are aligned; the turn
         # (less the bounds' corner) is drawn about that point (scene Layer2D.layout_transform)
         n.offset = (ox, oy)
@@ -485,6 +487,8 @@ def _leaf_measure(e: Engine, n: Node, w: float, h: float):
 
 
 def _leaf_arrange(e: Engine, n: Node, w: float, h: float):
+    if n.arrange_size is not None:  # a stretched shape: its geometry's stretched size
+        return n.arrange_size(w, h)
     return w, h
 
 

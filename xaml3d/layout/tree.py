@@ -115,6 +115,9 @@ class Node:
     # a control whose size depends on the room offered (text wrapped to the width): a function
     # of the available (width, height) giving its content size; None: ``estimate`` stands
     measure: object = field(default=None, repr=False)
+    # a control whose RenderSize is not the box it is given (a stretched shape: the stretched
+    # geometry's size): a function of the final (width, height); None: the box given
+    arrange_size: object = field(default=None, repr=False)
     # what the picture needs (opaque to layout): brushes, the viewport's index
     background: object = None
     border_brush: object = None
@@ -137,6 +140,9 @@ class Node:
     rect: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # ink box in the root
     slot: str = ""  # how the parent placed it ("row 1 (Auto), column 0 (*)", "Dock=Top" ...)
     arranged: bool = False  # False: collapsed, or never reached by arrange
+    # the room arrange gave it (its slot less the margin) in its own coordinates, when that is
+    # smaller than its box: WPF's layout clip then cuts its drawing there (None: it fits)
+    slot_box: tuple[float, float, float, float] | None = None
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange
     measured_with: object = field(default=None, repr=False)  # (engine, available w, h)
 

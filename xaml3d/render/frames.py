@@ -20,7 +20,9 @@ from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's
 from xaml3d.render import accel
 from xaml3d.render.frame import FrameStore
 from xaml3d.render.pipeline import render_scene
+from xaml3d.render.rendering import Rendering
 from xaml3d.render.settings import settings_of
+from xaml3d.render.window import compose_window
 from xaml3d.render.workers import ordered, worker_pool
 
 
@@ -41,6 +43,7 @@ def render_frames(
     folders=(),
     prepare=None,
     depth: bool = True,
+    window: bool = False,
     **options,
 ) -> Iterator:
     """(time, Rendering) for each time, in time order: the render of ``scene_at(scene, t)``
@@ -58,18 +61,21 @@ def render_frames(
     Rendering where it was drawn (in the worker), whose result is yielded instead (e.g. the
     frame already encoded, so that less crosses between processes and the encoding runs in
     parallel too). ``depth=False``: the caller uses the pictures alone (the Renderings' depth
-    and distance are None, not computed).
+    and distance are None, not computed). ``window``: each frame is the root's whole client area
+    at that moment (``render.window.compose_window``: every viewport at its laid-out box, the
+    panels, controls and the layers around them), as ``render --window --time t`` draws it;
+    its Rendering has no depth.
 
     A process drawing many frames keeps a ``FrameSession``: one framebuffer for all its frames.
     The compiled kernels (``xaml3d.render.accel``) are chosen for the work of all the frames a
     process draws, not for one frame's."""
     chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
     if executor is not None:
-        items = [(scene, t, storyboard, chosen, prepare) for t in times]
+        items = [(scene, t, storyboard, chosen, prepare, window) for t in times]
         yield from ordered(executor, render_frame, items)
         return
     times = list(times)
-    session = FrameSession(scene, storyboard, chosen, prepare, depth)
+    session = FrameSession(scene, storyboard, chosen, prepare, depth, window)
     if jobs > 1 and len(times) > 2:
         workers = min(int(jobs), len(times) - 1)
         share = -(-len(times) // workers)
@@ -88,7 +94,7 @@ def render_frames(
         # hand-off costs nothing; runs of consecutive frames keep the output streaming.
         size = max(1, min(CHUNK, -(-len(rest) // (4 * workers))))
         runs = [(tuple(rest[i : i + size]),) for i in range(0, len(rest), size)]
-        kept = (scene, storyboard, chosen, share, prepare, depth)  # sent once per worker
+        kept = (scene, storyboard, chosen, share, prepare, depth, window)  # once per worker
         with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
             for run in ordered(pool, _kept_frames, runs):
                 yield from run
@@ -113,9 +119,11 @@ class FrameSession:
     a repeated cycle, a still) is not drawn again; a copy of the earlier result (sharing its
     arrays) is given. The renderer is deterministic, so the pictures are the same bits."""
 
-    def __init__(self, scene, storyboard, settings, prepare=None, depth: bool = True) -> None:
+    def __init__(
+        self, scene, storyboard, settings, prepare=None, depth: bool = True, window: bool = False
+    ) -> None:
         self.scene, self.storyboard, self.settings = scene, storyboard, settings
-        self.prepare, self.depth = prepare, depth
+        self.prepare, self.depth, self.window = prepare, depth, window
         self.store = FrameStore()
         self.memo: OrderedDict = OrderedDict()  # animated values -> (result, its bytes)
         self.memo_bytes = 0
@@ -129,7 +137,7 @@ class FrameSession:
             self.memo.move_to_end(values)
             self.repeated += 1
             return t, copy.copy(kept[0])
-        r = render_scene(frame, self.settings, store=self.store, depth=self.depth)
+        r = _draw(frame, self.settings, self.window, self.store, self.depth)
         result = r if self.prepare is None else self.prepare(r)
         self.drawn += 1
         size = _nbytes(result)
@@ -159,18 +167,29 @@ def _nbytes(result) -> int:
     return total
 
 
-def render_frame(scene, t: float, storyboard, settings, prepare=None) -> tuple:
-    """(t, the Rendering of ``scene_at(scene, t, storyboard)`` with ``settings``), the Rendering
-    passed through ``prepare`` when given."""
-    r = render_scene(scene_at(scene, t, storyboard), settings)
+def render_frame(scene, t: float, storyboard, settings, prepare=None, window=False) -> tuple:
+    """(t, the Rendering of ``scene_at(scene, t, storyboard)`` with ``settings``: its viewport,
+    or with ``window`` the whole client area), passed through ``prepare`` when given."""
+    r = _draw(scene_at(scene, t, storyboard), settings, window)
     return t, (r if prepare is None else prepare(r))
+
+
+def _draw(frame, settings, window: bool, store=None, depth: bool = True) -> Rendering:
+    """One frame's Rendering: the settings' viewport, or the whole window at the frame's moment
+    (its viewports drawn at their laid-out boxes: the settings' size is not used)."""
+    if not window:
+        return render_scene(frame, settings, store=store, depth=depth)
+    rgba, diagnostics = compose_window(frame, settings)
+    return Rendering(rgba, None, rgba.shape[1], rgba.shape[0], list(diagnostics))
 
 
 _KEPT: dict = {}  # a pool worker's FrameSession (sent once, not per frame)
 
 
-def _keep_scene(scene, storyboard, settings, share: int = 1, prepare=None, depth=True) -> None:
-    _KEPT["session"] = FrameSession(scene, storyboard, settings, prepare, depth)
+def _keep_scene(
+    scene, storyboard, settings, share: int = 1, prepare=None, depth=True, window=False
+) -> None:
+    _KEPT["session"] = FrameSession(scene, storyboard, settings, prepare, depth, window)
     accel.expect_frames(share)  # about this many frames each: they pay for the kernels together
 
 

@@ -11,7 +11,8 @@ visible Viewport3D rendered at its laid-out rectangle with its own camera and as
 (``render_scene``), composited over what lies beneath. The 2D controls the 2D layer draws
 (TextBlock, Label, Button, TextBox, CheckBox, RadioButton, ComboBox, Slider, ProgressBar,
 Separator, ScrollBar, shapes, Image, the parts of ListBox, TabControl, GroupBox, Expander and
-content controls: ``Box.drawing``, docs/layer2d.md) are drawn in their laid-out boxes;
+content controls: ``Box.drawing``, docs/layer2d.md) are drawn placed at their laid-out boxes
+(all of a drawing shows, a shape's beyond its box too: only its layout clip cuts it);
 ``outline_controls`` draws a one-pixel outline of each control's layout box. An element with
 Opacity, OpacityMask, Clip, RenderTransform or an Effect (``Box.layer``) is drawn with
 everything inside it into a layer of its own, which the 2D layer then transforms, clips, filters
@@ -194,17 +195,24 @@ def _outline(canvas: np.ndarray, rect) -> None:
 
 def _draw_control(canvas: np.ndarray, b: Box) -> None:
     """A control's drawing (the 2D layer, skia: imported only when a control is drawn) over
-    the canvas at its laid-out box."""
-    from xaml3d.render.layer2d.paint import rasterize
+    the canvas, placed at its laid-out box. What it draws beyond the box shows (a Path's curve
+    or a pen's half outside its layout size, in a Canvas): WPF cuts an element's drawing only
+    by its layout clip, which the drawing carries (``DrawingGroup.clip``)."""
+    from xaml3d.render.layer2d.paint import drawing_bounds, rasterize
 
     x, y, w, h = b.rect
-    H, W = canvas.shape[:2]
-    x0, y0 = max(0, math.floor(x)), max(0, math.floor(y))
-    x1, y1 = min(W, math.ceil(x + w)), min(H, math.ceil(y + h))
-    if x1 <= x0 or y1 <= y0:
-        return
     sx = w / b.ink[0] if b.ink[0] > 0 else 1.0
     sy = h / b.ink[1] if b.ink[1] > 0 else 1.0
+    ink = drawing_bounds(b.drawing)
+    if ink is None:
+        return
+    left, top = x + sx * ink.left(), y + sy * ink.top()
+    right, bottom = x + sx * ink.right(), y + sy * ink.bottom()
+    H, W = canvas.shape[:2]
+    x0, y0 = max(0, math.floor(_clamped(left, W))), max(0, math.floor(_clamped(top, H)))
+    x1, y1 = min(W, math.ceil(_clamped(right, W))), min(H, math.ceil(_clamped(bottom, H)))
+    if x1 <= x0 or y1 <= y0:
+        return
     m = np.array([[sx, 0.0, x - x0], [0.0, sy, y - y0], [0.0, 0.0, 1.0]])
     _over(canvas, y0, x0, rasterize(b.drawing, x1 - x0, y1 - y0, m))
 
@@ -313,7 +321,7 @@ def _reach(boxes, W: int, H: int) -> tuple[int, int, int, int]:
         if not (moves and b.shown):
             continue
         for k in boxes[i : ends[i]]:
-            x, y, w, h = (float(v) for v in k.rect)
+            x, y, w, h = _drawn_rect(k)
             if k.shown and all(math.isfinite(v) for v in (x, y, w, h)):
                 x0, y0 = min(x0, x), min(y0, y)
                 x1, y1 = max(x1, x + w), max(y1, y + h)
@@ -324,6 +332,23 @@ def _reach(boxes, W: int, H: int) -> tuple[int, int, int, int]:
     if (W + left + right) * (H + top + bottom) > MAX_SUPERSAMPLED_PIXELS:
         return 0, 0, 0, 0
     return left, top, right, bottom
+
+
+def _drawn_rect(b: Box) -> tuple[float, float, float, float]:
+    """A box, grown by what its control's drawing reaches beyond it (a shape's curve or pen)."""
+    x, y, w, h = (float(v) for v in b.rect)
+    if b.drawing is None:
+        return x, y, w, h
+    from xaml3d.render.layer2d.paint import drawing_bounds
+
+    ink = drawing_bounds(b.drawing)
+    if ink is None:
+        return x, y, w, h
+    sx = w / b.ink[0] if b.ink[0] > 0 else 1.0
+    sy = h / b.ink[1] if b.ink[1] > 0 else 1.0
+    left, top = min(x, x + sx * ink.left()), min(y, y + sy * ink.top())
+    right, bottom = max(x + w, x + sx * ink.right()), max(y + h, y + sy * ink.bottom())
+    return left, top, right - left, bottom - top
 
 
 def _spread(effect) -> float:

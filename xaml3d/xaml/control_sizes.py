@@ -5,19 +5,17 @@ beside the viewports (``render --window``): text by the package font's advance w
 Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
 Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox
 (a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
-and a Separator's thickness; a Stretch="None" shape's geometry (Line, Polyline, Polygon, Path).
-skia is imported only when there is text to measure.
+and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
+the geometry's render bounds, Stretch). skia is imported only when there is text or a shape
+to measure.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from xaml3d.layout import tree as L
 from xaml3d.layout.text import line_height, text_width
-from xaml3d.scene.drawing import EllipseGeometry, PathGeometry, RectangleGeometry
 from xaml3d.xaml import date_templates, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
@@ -28,7 +26,6 @@ from xaml3d.xaml.controls_reader import (
     _combo_items,
     scroll_bar_upright,
 )
-from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.inline_text import has_inlines, size_of
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
@@ -38,6 +35,7 @@ from xaml3d.xaml.panels_reader import (
     _turns,
     parse_thickness,
 )
+from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
 from xaml3d.xaml.visual_text import (
     _font_style,
     _lines,
@@ -50,7 +48,6 @@ from xaml3d.xaml.visual_text import (
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
                  "CheckBox", "RadioButton"}  # fmt: skip
-SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
 
 
 class MeasuringPanels(PanelsReader):
@@ -90,8 +87,8 @@ class MeasuringPanels(PanelsReader):
             return (17.0, 0.0) if scroll_bar_upright(v) else (0.0, 17.0)
         if local == "Separator":
             return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
-        if local in SHAPES:
-            return _shape_extent(self.r, v)
+        if local in SHAPES:  # measured and arranged as WPF's Shape (shapes_reader)
+            return attach_layout(self.r, v, n, local)
         if local == "Slider":
             # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
             return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
@@ -140,38 +137,3 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
     if local == "TextBox":
         w += 2 * _TEXT_BOX_INSET
     return w, h
-
-
-def _shape_extent(r, v) -> tuple[float, float]:
-    """A Stretch="None" shape's natural size: the right and bottom of its geometry."""
-    p = v.p
-    if p is None:
-        return (0.0, 0.0)
-    t = v.get("StrokeThickness", V.parse_double, 1.0) if p.has("Stroke") else 0.0
-    pts = shape_points(r, p)
-    if pts is None or pts.size == 0:
-        return (0.0, 0.0)
-    return (max(0.0, float(pts[:, 0].max()) + t / 2), max(0.0, float(pts[:, 1].max()) + t / 2))
-
-
-def shape_points(r, p) -> np.ndarray | None:
-    """The points of a Line, Polyline, Polygon or Path (its path's end points)."""
-    d = V.parse_double
-    if p.type == "Line":
-        x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
-        return np.array([[x1, y1], [x2, y2]])
-    if p.type in ("Polyline", "Polygon"):
-        text = p.string("Points")
-        return V.parse_point_collection(text).reshape(-1, 2) if text else None
-    if p.type == "Path":
-        g = geometry_property(r, p, "Data")
-        if isinstance(g, PathGeometry):
-            xy = [c[-2:] for c in g.commands if c[0] != "Z"]
-            return np.array(xy, dtype=float).reshape(-1, 2)
-        if isinstance(g, RectangleGeometry):
-            x, y, w, h = g.rect
-            return np.array([[x + w, y + h]])
-        if isinstance(g, EllipseGeometry):
-            (cx, cy), rx, ry = g.center, g.radius_x, g.radius_y
-            return np.array([[cx + rx, cy + ry]])
-    return None

@@ -8,15 +8,16 @@ that hold content built as their template's parts: ``templates``), laid out by
 its desired size), and each element becomes the drawing WPF's would: panel and Border
 backgrounds and borders (BorderThickness, CornerRadius), the shapes Rectangle, Ellipse, Line,
 Polyline, Polygon and Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins;
-Stretch None), TextBlock and text content (Text, Foreground, FontSize, FontWeight, FontStyle,
-Padding, TextAlignment, Background; wrapped and trimmed to its laid-out width), Label, Image,
-and Button, TextBox, CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, a closed
-ComboBox, ListBox, TabControl, GroupBox, Expander, Menu, ToolBar, ToolBarTray, a closed
-DatePicker and a Calendar (with the content they hold) in WPF's default Windows 10/11 look (the
-[[Aero2.NormalColor]] values of dotnet/wpf's theme files). Opacity, OpacityMask, and
-RenderTransform (about RenderTransformOrigin), Clip and Effect (BlurEffect, DropShadowEffect
-and their bitmap effects: ``picture_reader.element_layer``), apply to an element and its
-children as one layer. Anything else is skipped with DRW002: the rest is drawn.
+Stretch: ``shapes_reader``), TextBlock and text content (Text, Foreground, FontSize,
+FontWeight, FontStyle, Padding, TextAlignment, Background; wrapped and trimmed to its laid-out
+width), Label, Image, and Button, TextBox, CheckBox, RadioButton, ProgressBar, Slider,
+Separator, ScrollBar, a closed ComboBox, ListBox, TabControl, GroupBox, Expander, Menu,
+ToolBar, ToolBarTray, a closed DatePicker and a Calendar (with the content they hold) in WPF's
+default Windows 10/11 look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files).
+Opacity, OpacityMask, and RenderTransform (about RenderTransformOrigin), Clip and Effect
+(BlurEffect, DropShadowEffect and their bitmap effects: ``picture_reader.element_layer``),
+apply to an element and its children as one layer. Anything else is skipped with DRW002: the
+rest is drawn.
 """
 
 from __future__ import annotations
@@ -30,11 +31,8 @@ from xaml3d.layout import tree as L
 from xaml3d.layout.transform import placed_by_layout
 from xaml3d.scene.drawing import (
     DrawingGroup,
-    EllipseGeometry,
     GeometryDrawing,
     ImageDrawing,
-    PathGeometry,
-    Pen,
     RectangleGeometry,
 )
 from xaml3d.scene.types import placeholder_image
@@ -42,7 +40,7 @@ from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import load_image
 from xaml3d.xaml.context import qname
-from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels, shape_points
+from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels
 from xaml3d.xaml.controls_reader import (
     AERO2,
     _combo_box,
@@ -51,13 +49,13 @@ from xaml3d.xaml.controls_reader import (
     _scroll_bar,
     _slider,
 )
-from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
     parse_thickness,
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
+from xaml3d.xaml.shapes_reader import shape_drawing
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
@@ -111,7 +109,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     if not own:
         return
     opacity = v.get("Opacity", V.parse_double, 1.0) if v is not None else 1.0
-    clip = _layout_clip(n) if n.type in _TEXT_CONTROLS else None
+    clip = _layout_clip(n, v) if n.type in _TEXT_CONTROLS | _SHAPES else None
     if clip is not None:  # the clip is in the element's own coordinates, under its transform
         own = [DrawingGroup(children=tuple(own), clip=clip)]
     # RenderTransform (about RenderTransformOrigin), Clip and Effect act on the element and its
@@ -138,8 +136,14 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     )
 
 
-def _layout_clip(n):
-    """WPF's layout clip: a control given less room than its text needs is cut at its box."""
+def _layout_clip(n, v=None):
+    """WPF's layout clip: a control given less room than its text needs is cut at its box; a
+    shape (FrameworkElement.GetLayoutClip) is cut only when its own Width, Height or Max size
+    is below its size (at that size), when its slot is smaller than it (at the slot) or by
+    ClipToBounds (at its box): a shape in a Canvas, which gives it its desired size, draws
+    whatever its geometry and pen cover, inside its box or not."""
+    if n.type in _SHAPES:
+        return _shape_clip(n, v)
     if n.type not in _TEXT_CONTROLS or n.estimate is None:
         return None
     w, h = n.ink
@@ -147,6 +151,22 @@ def _layout_clip(n):
     if need[0] <= w + 1e-9 and need[1] <= h + 1e-9:
         return None
     return RectangleGeometry((0.0, 0.0, w, h))
+
+
+def _shape_clip(n, v):
+    rw, rh = n.size
+    iw, ih = n.ink
+    to_box = v is not None and v.get("ClipToBounds", V.parse_bool, False)
+    box = (0.0, 0.0, iw, ih) if to_box or iw < rw - 1e-9 or ih < rh - 1e-9 else None
+    if n.slot_box is not None:
+        sx, sy, sw, sh = n.slot_box
+        if box is None:
+            box = n.slot_box
+        else:  # both: what lies inside the box and the slot
+            x0, y0 = max(box[0], sx), max(box[1], sy)
+            x1, y1 = min(box[0] + box[2], sx + sw), min(box[1] + box[3], sy + sh)
+            box = (x0, y0, max(0.0, x1 - x0), max(0.0, y1 - y0))
+    return None if box is None else RectangleGeometry(box)
 
 
 def _part(n, w: float, h: float) -> list:
@@ -178,7 +198,7 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
                                 n.border, radius, w, h))  # fmt: skip
         return
     if local in _SHAPES:
-        _shape(r, v, local, w, h, out)
+        _shape(r, v, n, local, w, h, out)
         return
     if local == "TextBlock":
         out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
@@ -215,65 +235,10 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     r.ctx.diag("DRW002", f"{local} is not drawn by xaml3d in a visual: skipped", el)
 
 
-_CAPS = ("Flat", "Square", "Round", "Triangle")
-_JOINS = ("Miter", "Bevel", "Round")
-
-
-def _doubles(s: str) -> tuple[float, ...]:
-    return tuple(float(x) for x in V.parse_double_collection(s))
-
-
-def _pen(r, v):
-    stroke = _brush(r, v, "Stroke")
-    if stroke is None:
-        return None, 0.0
-    t = v.get("StrokeThickness", V.parse_double, 1.0)
-    dashes = v.get("StrokeDashArray", _doubles, ())
-    pen = Pen(
-        brush=stroke, thickness=t,
-        start_cap=v.get("StrokeStartLineCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
-        end_cap=v.get("StrokeEndLineCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
-        dash_cap=v.get("StrokeDashCap", lambda s: V.parse_enum(s, _CAPS), "Flat"),
-        line_join=v.get("StrokeLineJoin", lambda s: V.parse_enum(s, _JOINS), "Miter"),
-        miter_limit=v.get("StrokeMiterLimit", V.parse_double, 10.0),
-        dashes=dashes, dash_offset=v.get("StrokeDashOffset", V.parse_double, 0.0),
-    )  # fmt: skip
-    return pen, t
-
-
-def _shape(r, v, local: str, w: float, h: float, out: list) -> None:
-    if v.p is None:
-        return
-    fill = _brush(r, v, "Fill")
-    pen, t = _pen(r, v)
-    if local in ("Rectangle", "Ellipse"):
-        # WPF's Rectangle and Ellipse keep their stroke inside the element's box
-        x0, y0 = t / 2, t / 2
-        rw, rh = max(0.0, w - t), max(0.0, h - t)
-        if local == "Rectangle":
-            rx = v.get("RadiusX", V.parse_double, 0.0)
-            ry = v.get("RadiusY", V.parse_double, 0.0)
-            g = RectangleGeometry((x0, y0, rw, rh), rx, ry)
-        else:
-            g = EllipseGeometry((x0 + rw / 2, y0 + rh / 2), rw / 2, rh / 2)
-        out.append(GeometryDrawing(g, brush=fill, pen=pen))
-        return
-    if local == "Path":
-        g = geometry_property(r, v.p, "Data")
-    else:
-        pts = shape_points(r, v.p)
-        if pts is None or pts.shape[0] < 2:
-            return
-        cmds = [("M", *pts[0])] + [("L", *q) for q in pts[1:]]
-        if local == "Polygon":
-            cmds.append(("Z",))
-        rule = v.get("FillRule", lambda s: V.parse_enum(s, ("EvenOdd", "Nonzero")), "EvenOdd")
-        g = PathGeometry(tuple(tuple(float(c) if not isinstance(c, str) else c for c in cmd)
-                               for cmd in cmds), rule)  # fmt: skip
-        if local == "Line":
-            fill = None  # a Line is never filled
-    if g is not None:
-        out.append(GeometryDrawing(g, brush=fill, pen=pen))
+def _shape(r, v, n, local: str, w: float, h: float, out: list) -> None:
+    d = shape_drawing(r, v, n, local, *n.size) if n.arranged else None
+    if d is not None:
+        out.append(d)
 
 
 _WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
@@ -307,4 +272,4 @@ def attach_control_drawings(r, root, elements: dict) -> None:
         _element(r, v, n, el, font, n.ink[0], n.ink[1], out)
         if out:
             opacity = v.get("Opacity", V.parse_double, 1.0)
-            n.drawing = DrawingGroup(children=tuple(out), opacity=opacity, clip=_layout_clip(n))
+            n.drawing = DrawingGroup(children=tuple(out), opacity=opacity, clip=_layout_clip(n, v))

@@ -129,17 +129,10 @@ def drawing_bounds(d) -> skia.Rect | None:
     if d is None:
         return None
     if isinstance(d, GeometryDrawing):
-        path = path_of(d.geometry)
-        if path is None or (d.brush is None and d.pen is None):
+        if d.brush is None and d.pen is None:
             return None
-        r = path.computeTightBounds()
-        stroke = stroke_paint(d.pen, r, dashed=False)
-        if stroke is not None:
-            wide = skia.Path()
-            if stroke.getFillPath(path, wide):
-                r = skia.Rect(r.left(), r.top(), r.right(), r.bottom())
-                r.join(wide.computeTightBounds())
-        return r
+        b = render_bounds(d.geometry, d.pen)
+        return None if b is None else skia.Rect(*b)
     if isinstance(d, TextDrawing):
         return _text_box(d, _font(d)) if d.text else None
     if isinstance(d, ImageDrawing):
@@ -163,6 +156,36 @@ def drawing_bounds(d) -> skia.Rect | None:
             return None
         return matrix(d.transform).mapRect(out)
     return None
+
+
+def render_bounds(geometry, pen=None) -> tuple[float, float, float, float] | None:
+    """WPF's Geometry.GetRenderBounds(pen): (left, top, right, bottom) of what the geometry
+    covers drawn with ``pen`` (its dashes ignored: the whole line), curves and arcs at their
+    extrema rather than their control points, joins (miters) and both ends' caps counted;
+    without a pen, Geometry.Bounds. None for no geometry."""
+    path = path_of(geometry)
+    if path is None:
+        return None
+    r = path.computeTightBounds()
+    out = [r.left(), r.top(), r.right(), r.bottom()]
+    stroke = stroke_paint(pen, r, dashed=False)
+    if stroke is not None:
+        own_caps = pen.start_cap != pen.end_cap or "Triangle" in (pen.start_cap, pen.end_cap)
+        if own_caps:  # as drawn: flat ends, then each end's own cap
+            stroke.setStrokeCap(skia.Paint.Cap.kButt_Cap)
+        wide = skia.Path()
+        if stroke.getFillPath(path, wide):
+            _join(out, wide.computeTightBounds())
+        if own_caps:
+            _join(out, caps_path(path, pen).computeTightBounds())
+    return tuple(float(v) for v in out)
+
+
+def _join(out: list, r: skia.Rect) -> None:
+    if r.isEmpty():
+        return
+    out[0], out[1] = min(out[0], r.left()), min(out[1], r.top())
+    out[2], out[3] = max(out[2], r.right()), max(out[3], r.bottom())
 
 
 def _effect_bounds(r: skia.Rect, effect) -> skia.Rect:
