@@ -634,7 +634,10 @@ class Scene:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""
 
         if not self.viewports:
-            raise SceneError("the document holds no Viewport3D", code="SCN001", file=self.file)
+            # the reader's own words for it (SCN013 says how a dictionary is used: with -r)
+            said = [d.message for d in self.diagnostics if d.code in ("SCN013", "SCN001")]
+            msg = said[0] if said else "the document holds no Viewport3D"
+            raise SceneError(msg, code="SCN001", file=self.file)
         if which is None:
             return self.viewports[0]
         if isinstance(which, int) or (isinstance(which, str) and which.isdigit()):
