@@ -462,6 +462,9 @@ class Animation:
     # (line, column) of the Storyboard.TargetName attribute that names the target (its own, or
     # an enclosing timeline's), None when none is written
     target_name_at: tuple[int | None, int | None] | None = None
+    # (line, column) of the Storyboard.TargetProperty attribute that gives the path (its own,
+    # or an enclosing timeline's), None when none is written
+    target_property_at: tuple[int | None, int | None] | None = None
 
     @property
     def timing(self) -> Timing:

@@ -184,6 +184,8 @@ def _resolve(res: Resolution, r, names, a: Animation, host, library=False) -> Ta
         where = a
         if exc.code == "ANIM001" and a.target_name_at is not None:
             where = _At(*a.target_name_at)  # the Storyboard.TargetName attribute
+        elif exc.code == "ANIM002" and a.target_property_at is not None:
+            where = _At(*a.target_property_at)  # the Storyboard.TargetProperty attribute
         res.diag(exc.code, f"{what}: {exc.message}", where)
         return None
 
