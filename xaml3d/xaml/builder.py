@@ -436,7 +436,7 @@ def build_scene(
             storyboards.append(read_storyboard(r, entry, None, key))
     ns, root_type = qname(doc.root.tag)
     # a ResourceDictionary or Application file: what it holds is used by scenes (SCN013)
-    library = is_presentation(ns) and root_type in ("ResourceDictionary", "Application")
+    library = root_type in ("ResourceDictionary", "Application")
     resolution = None
     if storyboards:
         resolution = resolve_targets(
