@@ -17,6 +17,7 @@ DICTIONARY = """<ResourceDictionary xmlns="http://schemas.microsoft.com/winfx/20
   <DiffuseMaterial x:Key="mat" Brush="Rde"/>
   <RotateTransform3D x:Key="t"><RotateTransform3D.Rotation>
     <AxisAngleRotation3D Axis="0,1,0" Angel="3"/></RotateTransform3D.Rotation></RotateTransform3D>
+  <PerspectiveCamera x:Key="cam" Position="0,0,5" LookDirection="0,0,0"/>
   <Storyboard x:Key="spin">
     <DoubleAnimation Storyboard.TargetName="rot" Storyboard.TargetProperty="Angle" To="360"/>
   </Storyboard>
@@ -52,18 +53,20 @@ def test_validate_checks_each_resource_as_a_scene_using_it_would(tmp_path):
         ("dict.xaml", 3, 92, "MSH001"),  # at the index 7 (of 4 positions)
         ("dict.xaml", 4, 32, "VAL004"),  # Brush="Rde"
         ("dict.xaml", 6, 39, "XAML004"),  # Angel (did you mean Angle?)
+        ("dict.xaml", 7, 3, "CAM001"),  # the camera's own problem: LookDirection 0,0,0
     ]
     assert got == expected
     # the storyboards' targets are those of the scene that uses the dictionary: no ANIM001
     # (TargetName 'rot'), ANIM005 (no TargetName) or ANIM007 (no trigger) for the file alone
     assert not [c for *_, c in got if c.startswith("ANIM")]
     used = xaml3d("validate", "scene.xaml", "-r", "dict.xaml", "--format", "json", cwd=tmp_path)
-    for finding in expected[1:]:  # the same codes at the same places when a scene uses them
+    for finding in expected[1:4]:  # the same codes at the same places when a scene uses them
         assert finding in findings(used)
 
 
 def test_render_and_export_say_what_validate_says(tmp_path):
     text = DICTIONARY.replace('Brush="Rde"', 'Brush="Red"').replace("Angel", "Angle")
+    text = text.replace('LookDirection="0,0,0"', 'LookDirection="0,0,-1"')  # no errors left
     (tmp_path / "dict.xaml").write_text(text)
     hint = "a ResourceDictionary holds no Viewport3D: nothing to render (use it with -r)"
     v = xaml3d("validate", "dict.xaml", cwd=tmp_path)

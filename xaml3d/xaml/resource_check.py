@@ -5,15 +5,16 @@ that its problems are reported with the codes and positions a scene using it wou
 Covers the keyed entries of the file's own dictionaries (the root's, ``Application.Resources``,
 and merged dictionaries written inline; a merged dictionary read from another file is checked
 by validating that file): MeshGeometry3D (MSHxxx), materials, brushes, 2D and 3D transforms,
-rotations, cameras, Model3Ds and lights, Visual3Ds. Styles, templates and storyboards are not
-built here: a storyboard's targets are those of the scene that uses it (builder.py drops the
-target findings of a dictionary file).
+rotations, cameras (and their own problems: ``check_camera`` CAMxxx), Model3Ds and lights,
+Visual3Ds. Styles, templates and storyboards are not built here: a storyboard's targets are
+those of the scene that uses it (builder.py drops the target findings of a dictionary file).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
+from xaml3d.scene.camera_check import check_camera
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush, material, transform2d
 from xaml3d.xaml.context import is_presentation, qname
@@ -36,7 +37,7 @@ def check_dictionary(
         "transform3d": lambda e: transform3d(r, e),
         "transform2d": lambda e: transform2d(r, e),
         "rotation3d": lambda e: rotation(r, e),
-        "camera": lambda e: camera(r, e),
+        "camera": lambda e: _camera(r, e),
         "model3d": model,
         "light": model,
         "visual3d": visual,
@@ -52,6 +53,18 @@ def check_dictionary(
         if merged.assembly is None and merged.owner.get("Source") is None:
             built += check_dictionary(r, merged, model, visual)
     return built
+
+
+def _camera(r, el):
+    """A camera entry, built and checked for its own problems (``check_camera``, as
+    ``xaml3d validate`` checks a viewport's camera; not the viewport size's CAM010: the
+    scene using it gives the size)."""
+    cam = camera(r, el)
+    if cam is not None:
+        for d in check_camera(cam, 1.0, 1.0):
+            if d.code != "CAM010":
+                r.ctx.add(d, el)
+    return cam
 
 
 def _kind(el) -> str | None:
