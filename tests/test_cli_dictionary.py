@@ -84,3 +84,28 @@ def test_validate_finds_the_corpus_dictionary_mesh_problem():
     got = [(d["line"], d["column"], d["code"]) for d in json.loads(p.stdout)]
     assert (504, 36, "MSH001") in got and (1, 1, "SCN013") in got  # CubeSide06's indices
     assert p.returncode == 0  # warnings only
+
+
+def test_validate_checks_inline_merged_dictionaries_not_other_files(tmp_path):
+    ns = (
+        'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+    )
+    mesh = '<MeshGeometry3D x:Key="{}" Positions="0,0,0 1,0,0 0,1,0" TriangleIndices="0 1 {}"/>'
+    (tmp_path / "other.xaml").write_text(
+        f"<ResourceDictionary {ns}>\n{mesh.format('o', 9)}\n</ResourceDictionary>\n"
+    )
+    (tmp_path / "main.xaml").write_text(
+        f"<ResourceDictionary {ns}>\n<ResourceDictionary.MergedDictionaries>\n"
+        '<ResourceDictionary Source="other.xaml"/>\n'
+        f"<ResourceDictionary>\n{mesh.format('inline', 8)}\n</ResourceDictionary>\n"
+        f"</ResourceDictionary.MergedDictionaries>\n{mesh.format('own', 7)}\n"
+        "</ResourceDictionary>\n"
+    )
+    p = xaml3d("validate", "main.xaml", "--format", "json", cwd=tmp_path)
+    got = [(d["file"], d["line"], d["code"]) for d in json.loads(p.stdout)]
+    # other.xaml's mesh is checked by validating other.xaml
+    assert [g for g in got if g[2] == "MSH001"] == [
+        ("main.xaml", 5, "MSH001"),
+        ("main.xaml", 8, "MSH001"),
+    ]

@@ -48,9 +48,10 @@ def check_dictionary(
         if build is not None:
             r.build_resource(entry, build, None, entry)
             built += 1
+    root = d.owner.getroottree().getroot()
     for merged in d.merged:
         # only dictionaries written in this file: a Source= one is another file's to check
-        if merged.assembly is None and merged.owner.get("Source") is None:
+        if merged.assembly is None and merged.owner.getroottree().getroot() is root:
             built += check_dictionary(r, merged, model, visual)
     return built
 
