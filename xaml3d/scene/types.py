@@ -354,6 +354,9 @@ class ProjectionCamera:
     line: int | None = None
     column: int | None = None
     rejected: frozenset[str] = rejected_field()  # "Position"...: see rejected_field
+    # the file the camera is written in when not the scene's (a -r dictionary): its findings
+    # are located there
+    file: str | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)
@@ -379,6 +382,7 @@ class MatrixCamera:
     line: int | None = None
     column: int | None = None
     rejected: frozenset[str] = rejected_field()
+    file: str | None = field(default=None, compare=False)  # as ProjectionCamera.file
 
 
 Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
