@@ -104,3 +104,47 @@ def test_html_page_matches_render_and_camera(browser, path, tmp_path):
         assert np.abs(got - want).max() <= 1e-9 * max(1.0, np.abs(want).max()), key
     text = browser.execute_script("return document.getElementById('panel').textContent")
     assert "Mwind" in text and "world -> pixel" in text
+
+
+PANEL_CAMERAS = {
+    "perspective": ('<PerspectiveCamera Position="0,0,1.5" FieldOfView="60"/>', "Mwind Mpp Mper"),
+    "orthographic": ('<OrthographicCamera Position="0,0,1.5" Width="3"/>', "Mwind Morth"),
+    "matrix": ('<MatrixCamera ViewMatrix="1,0,0,0 0,1,0,0 0,0,1,0 0,0,-5,1" '
+               'ProjectionMatrix="2,0,0,0 0,2,0,0 0,0,-1,-1 0,0,-1,0"/>',
+               "Mwind diag(1,1,-1,1) ProjectionMatrix^T ViewMatrix^T"),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("kind", PANEL_CAMERAS)
+def test_html_panel_labels_and_numbers_as_xaml3d_camera(browser, kind, tmp_path):
+    # a fractional laid-out size and an effective far plane with many digits: the panel's
+    # header prints them with 6 significant digits, as `xaml3d camera` does, and labels the
+    # product with the camera's own matrices
+    camera, factors = PANEL_CAMERAS[kind]
+    size = 299.06542056074767
+    path = tmp_path / "s.xaml"
+    path.write_text(
+        '<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+        f'Width="{size!r}" Height="{size!r}"><Viewport3D.Camera>{camera}</Viewport3D.Camera>'
+        "<ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight/><GeometryModel3D>"
+        "<GeometryModel3D.Geometry><MeshGeometry3D "
+        'Positions="-0.4,-0.4,-0.3333333333 0.4,-0.4,0 0,0.4,0.44"'
+        ' TriangleIndices="0 1 2"/></GeometryModel3D.Geometry><GeometryModel3D.Material>'
+        '<DiffuseMaterial Brush="Red"/></GeometryModel3D.Material></GeometryModel3D>'
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+    page = tmp_path / "s.html"
+    xaml3d.export(xaml3d.load(str(path)), page)
+    open_page(browser, page)
+    text = browser.execute_script("return document.getElementById('panel').textContent")
+    lines = text.splitlines()
+    assert lines[0] == f"{kind} camera, 299.065 x 299.065 px (as in the XAML)"
+    expect = camera_json(path)
+    if kind != "matrix":
+        near_far = f"near {expect['near']:.6g}, far {expect['far']:.6g}"
+        if kind == "perspective":
+            near_far += f", c = {expect['c']:.6g}"
+        assert lines[1] == near_far
+        assert len(f"{expect['far']!r}") > 10  # the raw number would print with many digits
+    divide = "(w = 1: nothing to divide)" if kind == "orthographic" else "(divide by w)"
+    assert f"product, world -> pixel: {factors} {divide}" in lines

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 from conftest import CORPUS, needs_corpus
+from test_cli_subprocess import xaml3d as run_xaml3d
 
 from xaml3d.errors import ResourceError
 from xaml3d.xaml.loader import load
@@ -203,9 +204,12 @@ def test_missing_static_resource_suggests_the_closest_key_in_scope(tmp_path):
     ]
 
 
-def test_missing_key_hint_names_the_sibling_dictionary_that_defines_it(tmp_path):
+def test_missing_key_hint_names_the_sibling_dictionary_that_defines_it(tmp_path, monkeypatch):
     # RES001: a resource dictionary beside the scene defines the key -> "give it with -r ..."
+    # (the path as typed from the current directory: here the scene's folder)
     from xaml3d.xaml.loader import load
+
+    monkeypatch.chdir(tmp_path)
 
     ns = (
         'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -241,7 +245,10 @@ def test_missing_key_hint_names_the_sibling_dictionary_that_defines_it(tmp_path)
     ]
 
 
-def test_missing_keys_hint_suggests_the_dictionary_that_defines_most_of_them_once(tmp_path):
+def test_missing_keys_hint_suggests_the_dictionary_that_defines_most_of_them_once(
+    tmp_path, monkeypatch
+):
+    monkeypatch.chdir(tmp_path)  # the -r path is typed from the scene's folder
     # a.xaml defines the first missing key only, b.xaml (saved with a byte order mark, as
     # Visual Studio writes it) all three: b.xaml is suggested, once, with how many it resolves
     (tmp_path / "a.xaml").write_text(
@@ -278,7 +285,8 @@ def test_missing_keys_hint_suggests_the_dictionary_that_defines_most_of_them_onc
 
 
 @needs_corpus
-def test_the_corpus_cube_is_told_the_one_dictionary_that_defines_all_its_keys():
+def test_the_corpus_cube_is_told_the_one_dictionary_that_defines_all_its_keys(monkeypatch):
+    monkeypatch.chdir(CORPUS)  # the -r path is typed from the scene's folder
     scene = load(CORPUS / "007_wpfsamples-controllable-cube.xaml")
     msgs = [d.message for d in scene.diagnostics if d.code == "RES001"]
     name = "008_wpfsamples-animationexamples-app-resources.xaml"
@@ -288,3 +296,28 @@ def test_the_corpus_cube_is_told_the_one_dictionary_that_defines_all_its_keys():
     )
     assert all(m.endswith("(defined in the -r file suggested at line 36)") for m in msgs[1:])
     assert len(msgs) == 16
+
+
+def test_missing_key_hint_gives_the_path_as_typed_from_the_current_directory(tmp_path):
+    # the scene's folder is not the current directory: the file name alone would fail (RES009)
+    scenes = tmp_path / "scenes"
+    scenes.mkdir()
+    (scenes / "dict.xaml").write_text(
+        f'<ResourceDictionary {NS}><SolidColorBrush x:Key="K1" Color="Red"/></ResourceDictionary>'
+    )
+    (scenes / "s.xaml").write_text(
+        f'<Grid {NS}>\n<Viewport3D Tag="{{StaticResource K1}}"/>\n</Grid>'
+    )
+    deep = tmp_path.joinpath(*["d"] * 40)  # 40 x "../" is longer than the absolute path
+    deep.mkdir(parents=True)
+    for cwd, typed in (
+        (tmp_path, "scenes/dict.xaml"),  # shorter relative to the current directory
+        (deep, str(scenes / "dict.xaml")),  # ../../.. longer than the absolute path
+    ):
+        p = run_xaml3d("validate", scenes / "s.xaml" if cwd == deep else "scenes/s.xaml", cwd=cwd)
+        hint = f"give it with -r {typed})"
+        (line,) = [ln for ln in p.stdout.decode().splitlines() if "RES001" in ln]
+        assert line.endswith(hint), line
+        # and the command the hint gives works from there
+        again = run_xaml3d("validate", scenes / "s.xaml", "-r", typed, cwd=cwd)
+        assert again.returncode == 0 and b"RES001" not in again.stdout

@@ -147,6 +147,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         raise click.UsageError("-W/-H size one viewport; with --window use --window-size "
                                "(the root's client size)")  # fmt: skip
     check_request(extras, (scene,), output, mode, window, window)
+    if end is None and duration is not None and duration <= 0:
+        # said in the option the user gave (--end would be derived from it), before reading
+        raise click.BadParameter(f"--duration must be > 0 (it is {duration:g} s)")
     to_dir = animation_target(output)  # the format, before anything is read (exit 2)
 
     bg = parse_background(None, None, background)

@@ -30,7 +30,7 @@ from xaml3d.cli_common import (
 )
 from xaml3d.cli_render_extras import camera_lens_options, lens_report, lens_text
 from xaml3d.errors import XamlError
-from xaml3d.scene.camera_math import camera_pipeline
+from xaml3d.scene.camera_math import camera_pipeline, world_to_pixel_factors
 from xaml3d.scene.fit import fit_viewport
 from xaml3d.scene.types import MatrixCamera
 
@@ -56,7 +56,8 @@ MATRICES = (
     ("m_wind", "Mwind (column vectors): [-1,1]^2 -> pixels"),
     ("view_matrix", "view (column vectors): world -> camera space, Camera.Transform included"),
     ("clip_matrix", "clip (column vectors): world -> homogeneous parallel view volume"),
-    ("world_to_pixel", "world -> pixel (column vectors): Mwind Mpp Mper (divide by w)"),
+    # the factors depend on the camera (world_to_pixel_factors): filled in by _pipeline_text
+    ("world_to_pixel", "world -> pixel (column vectors): {factors} ({divide})"),
     ("wpf_view", "WPF view matrix (ROW vectors, p' = p M, as WPF reports it)"),
     ("wpf_projection", "WPF projection matrix (ROW vectors, Direct3D clip 0 <= z <= w)"),
 )
@@ -189,7 +190,18 @@ def locate_points(pipe, points) -> list[dict]:
     return out
 
 
-def _pipeline_text(pipe) -> list[str]:
+def product_label(pipe, camera) -> str:
+    """What the world -> pixel product is made of, for this camera (``Mwind Morth`` for an
+    OrthographicCamera, whose w stays 1)."""
+    return world_to_pixel_factors(pipe.kind, _transformed(camera))
+
+
+def _transformed(camera) -> bool:
+    t = getattr(camera, "transform", None)
+    return t is not None and not np.array_equal(np.asarray(t), np.eye(4))
+
+
+def _pipeline_text(pipe, camera=None) -> list[str]:
     lines = [
         f"Pipeline for a {_num(pipe.width)} x {_num(pipe.height)} image, "
         f"aspect {_num(pipe.aspect)}:"
@@ -208,9 +220,11 @@ def _pipeline_text(pipe) -> list[str]:
         lines.append(f"  near = {_num(pipe.near)}, far = {_num(pipe.far)}{eff}")
     if pipe.c is not None:
         lines.append(f"  c = -near/far = {_num(pipe.c)}")
+    divide = "w = 1: nothing to divide" if pipe.kind == "orthographic" else "divide by w"
     for name, label in MATRICES:
         m = getattr(pipe, name)
         if m is not None:
+            label = label.format(factors=product_label(pipe, camera), divide=divide)
             lines.append(f"  {label}:")
             lines.extend(_matrix_lines(m))
     return lines
@@ -302,6 +316,7 @@ def camera_command(
         report["error"] = error.as_diagnostic().to_dict()
     if pipe is not None:
         report["pipeline"] = _jsonable(pipe.as_dict())
+        report["pipeline"]["world_to_pixel_factors"] = product_label(pipe, cam)
         report["points"] = locate_points(pipe, points)
         with exit_on_input_error(name):
             lens_info = lens_report(vp, w, h, **lens)
@@ -339,7 +354,7 @@ def _camera_text(vp, cam, pipe, located) -> list[str]:
         lines.append("  (MatrixCamera: the aspect ratio is ignored, the projection used as given)")
     if pipe is not None:
         lines.append("")
-        lines.extend(_pipeline_text(pipe))
+        lines.extend(_pipeline_text(pipe, cam))
     for item in located:
         p = ",".join(_num(c) for c in item["point"])
         if item["visible"]:

@@ -19,6 +19,7 @@ import click
 
 from xaml3d.cli_common import (
     ProgressLines,
+    display_name,
     echo_diagnostics,
     exit_on_input_error,
     io_error,
@@ -184,7 +185,7 @@ def export_command(scenes, output, fmt, viewport, storyboard, lenient, quiet, ve
     opts = dict(resources=resources, window_size=window_size, discover_app=not no_app,
                 storyboard=storyboard, lenient=lenient, quiet=quiet, verbose=verbose,
                 viewport=viewport, fmt=fmt, progress=single and not quiet)  # fmt: skip
-    ok = True
+    failed: list[str] = []
     steps = plan
     bar = None
     if len(plan) > 1 and stderr_is_terminal() and not quiet:
@@ -193,15 +194,22 @@ def export_command(scenes, output, fmt, viewport, storyboard, lenient, quiet, ve
     try:
         for source, target in steps:
             try:
-                ok = _export_one(source, target, opts) and ok
+                done = _export_one(source, target, opts)
             except XamlError as exc:
                 click.echo(exc.with_location(file=source).format(), err=True)
-                ok = False
+                done = False
             except click.exceptions.Exit as exc:  # a scene that cannot be read: already said
                 if len(plan) == 1:
                     raise
-                ok = ok and exc.exit_code == 0
+                done = exc.exit_code == 0
+            if not done:
+                failed.append(display_name(source))
     finally:
         if bar is not None:
             bar.__exit__(None, None, None)
-    sys.exit(0 if ok else 1)
+    if len(plan) > 1:  # as render's batch ends
+        summary = f"xaml3d: exported {len(plan) - len(failed)} of {len(plan)} scenes"
+        if failed:
+            summary += f"; failed: {', '.join(failed)}"
+        click.echo(summary, err=True)
+    sys.exit(1 if failed else 0)

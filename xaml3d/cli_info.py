@@ -23,7 +23,7 @@ from xaml3d.cli_common import (
 )
 from xaml3d.errors import SEVERITIES, Diagnostic
 from xaml3d.findings import scene_findings
-from xaml3d.scene.types import Scene
+from xaml3d.scene.types import Scene, TimelineGroup, Timing
 
 
 def findings_of(scene: Scene, name: str | None = None) -> list[Diagnostic]:
@@ -85,29 +85,55 @@ def _seconds(v) -> float | str | None:
     return None if math.isinf(v) else float(v)
 
 
+def _timing_info(timing, natural: float) -> dict:
+    """begin, period (one iteration, forth and back with AutoReverse, in the parent's time:
+    "Forever" when it never ends) and repeat of one timeline's OWN timing."""
+    d = iteration_duration(timing, natural)
+    period = d * (2.0 if timing.auto_reverse else 1.0) / timing.speed_ratio
+    rb = timing.repeat_behavior
+    return {
+        "begin": timing.begin_time,
+        "period": _seconds(period) if not math.isinf(period) else "Forever",
+        "repeat": f"{rb[1]:g} s" if isinstance(rb, tuple) else rb,
+    }
+
+
+def _animation_entry(a, sb, tl) -> dict:
+    return {
+        "type": a.type,
+        # no TargetName: the element whose trigger begins it is the target, as in WPF
+        "target": f"{a.target_name or sb.owner}.{a.target_property}",
+        "resolves": tl is not None and tl.targets.get(id(a)) is not None,
+        **_timing_info(a.timing, natural_duration(a)),
+        "line": a.line,
+    }
+
+
+def _tree(node, entries: dict) -> dict:
+    """A TimelineGroup as {"type", its own timing, "children"}; an animation as its entry."""
+    if not isinstance(node, TimelineGroup):
+        return entries[id(node)]
+    return {
+        "type": node.type,
+        **_timing_info(node.timing, natural_duration(node)),
+        "sets_timing": node.timing != Timing(),  # False: every timing property its default
+        "line": node.line,
+        "children": [_tree(c, entries) for c in node.children],
+    }
+
+
 def animation_info(scene: Scene) -> dict:
-    """What runs at load, and every storyboard's animations: target, period, repeats."""
+    """What runs at load, and every storyboard: its animations (target, own period and
+    repeats) and its clock tree ("timeline": the Storyboard, its ParallelTimelines and
+    animations, nested as WPF times them: a group's repeat repeats all it holds)."""
     tl = scene.timeline
     out = []
     for sb in scene.storyboards:
-        anims = []
-        for a in sb.animations:
-            d = iteration_duration(a.timing, natural_duration(a))
-            period = d * (2.0 if a.auto_reverse else 1.0) / a.speed_ratio
-            rb = a.repeat_behavior
-            anims.append({
-                "type": a.type,
-                # no TargetName: the element whose trigger begins it is the target, as in WPF
-                "target": f"{a.target_name or sb.owner}.{a.target_property}",
-                "resolves": tl is not None and tl.targets.get(id(a)) is not None,
-                "begin": a.begin_time,
-                "period": _seconds(period) if not math.isinf(period) else "Forever",
-                "repeat": f"{rb[1]:g} s" if isinstance(rb, tuple) else rb,
-                "line": a.line,
-            })  # fmt: skip
+        entries = {id(a): _animation_entry(a, sb, tl) for a in sb.animations}
+        tree = None if sb.root is None else _tree(sb.root, entries)
         out.append({"name": sb.name, "also_named": list(sb.other_names), "trigger": sb.trigger,
-                    "at_load": sb.starts_at_load, "animations": anims,
-                    "line": sb.line})  # fmt: skip
+                    "at_load": sb.starts_at_load, "animations": list(entries.values()),
+                    "timeline": tree, "line": sb.line})  # fmt: skip
     cycle = 0.0 if tl is None else _seconds(tl.cycle())
     running = 0 if tl is None else len(tl.running_animations())
     return {"running_at_load": running, "cycle": cycle, "storyboards": out}
@@ -151,6 +177,24 @@ def _text(info: dict) -> list[str]:
     return lines
 
 
+def _when(node: dict) -> str:
+    period = node["period"] if isinstance(node["period"], str) else f"{node['period']:g} s"
+    begin = "never" if node["begin"] is None else f"{node['begin']:g} s"
+    rb = node["repeat"] if isinstance(node["repeat"], str) else f"{node['repeat']:g}x"
+    return f"begin {begin}, period {period}, repeat {rb}"
+
+
+def _node_text(node: dict, depth: int) -> list[str]:
+    pad = "  " * depth
+    if "children" not in node:
+        bad = "" if node["resolves"] else "  [target does not resolve]"
+        return [f"{pad}{node['type']} -> {node['target']}: {_when(node)}{bad}"]
+    lines = [f"{pad}{node['type']}: {_when(node)}"]
+    for child in node["children"]:
+        lines.extend(_node_text(child, depth + 1))
+    return lines
+
+
 def _animation_text(anim: dict) -> list[str]:
     if not anim["storyboards"]:
         return []
@@ -161,14 +205,13 @@ def _animation_text(anim: dict) -> list[str]:
         name = " or ".join(repr(n) for n in [sb["name"], *sb["also_named"]] if n) or "(unnamed)"
         start = "at load" if sb["at_load"] else (f"on {sb['trigger']}" if sb["trigger"]
                                                   else "never (no trigger)")  # fmt: skip
-        lines.append(f"    storyboard {name}: starts {start}")
-        for a in sb["animations"]:
-            period = a["period"] if isinstance(a["period"], str) else f"{a['period']:g} s"
-            begin = "never" if a["begin"] is None else f"{a['begin']:g} s"
-            rb = a["repeat"] if isinstance(a["repeat"], str) else f"{a['repeat']:g}x"
-            bad = "" if a["resolves"] else "  [target does not resolve]"
-            lines.append(f"      {a['type']} -> {a['target']}: begin {begin}, period {period}, "
-                         f"repeat {rb}{bad}")  # fmt: skip
+        tree = sb["timeline"]
+        # the Storyboard's own timing, then its children nested under it: a ParallelTimeline's
+        # RepeatBehavior="Forever" repeats the animations it holds (their own say 1x)
+        own = f" ({_when(tree)})" if tree is not None and tree["sets_timing"] else ""
+        lines.append(f"    storyboard {name}: starts {start}{own}")
+        for node in sb["animations"] if tree is None else tree["children"]:
+            lines.extend(_node_text(node, 3))
     return lines
 
 

@@ -20,6 +20,7 @@ from importlib import resources
 
 import numpy as np
 
+from xaml3d.scene.camera_math import world_to_pixel_factors
 from xaml3d.scene.types import MatrixCamera, PerspectiveCamera
 
 MODULES = (  # (id, file): the order the page links them in
@@ -45,6 +46,9 @@ def _num(x) -> float | None:
     return x if math.isfinite(x) else None
 
 
+KINDS = ("perspective", "orthographic", "matrix")  # CameraPipeline.kind
+
+
 def _config(scene, vp, exporter) -> dict:
     cam = vp.camera
     bounds = vp.bounds()
@@ -54,6 +58,8 @@ def _config(scene, vp, exporter) -> dict:
         "height": float(vp.height),
         "bounds": None if bounds is None else [[float(v) for v in b] for b in bounds],
         "camera": None,
+        # what the world -> pixel product multiplies, per camera kind (as `xaml3d camera`)
+        "factors": {k: world_to_pixel_factors(k) for k in KINDS},
     }
     if cam is None or exporter.camera_node is None:
         return conf

@@ -107,7 +107,7 @@ function mwind4(W, H) {
 function pipeline(c, W, H, bounds) {
   const aspect = W / H;
   const tInv = invert4(c.transform);
-  const out = { kind: c.kind, m_wind: mwind(W, H) };
+  const out = { kind: c.kind, transform: c.transform, m_wind: mwind(W, H) };
   if (c.kind === "matrix") {
     const viewRow = c.view, projRow = c.projection;
     const T = (m) => m[0].map((_, j) => m.map((row) => row[j]));
@@ -149,8 +149,19 @@ function pipeline(c, W, H, bounds) {
   return out;
 }
 
+// A number as `xaml3d camera` prints it: 6 significant digits, no trailing zeros (Python's %.6g).
+function num(x) {
+  if (!Number.isFinite(x)) return Number.isNaN(x) ? "NaN" : x > 0 ? "Infinity" : "-Infinity";
+  if (x === 0) return "0";
+  const e = Math.floor(Math.log10(Math.abs(Number(x.toPrecision(6)))));
+  const s = e < -4 || e >= 6 ? x.toExponential(5) : x.toPrecision(6);
+  // trailing zeros of the fraction only (100000 stays 100000), and a two-digit exponent
+  return s.replace(/(\.\d*?)0+(?=e|$)/, "$1").replace(/\.(?=e|$)/, "")
+    .replace(/e([+-])(\d)$/, (_, sign, d) => `e${sign}0${d}`);
+}
+
 function show(m) {
-  const fmt = (x) => (Math.abs(x) < 1e-12 ? "0" : x.toPrecision(6).replace(/\.?0+(e|$)/, "$1"));
+  const fmt = (x) => (Math.abs(x) < 1e-12 ? "0" : num(x));
   if (typeof m[0] === "number") return "  (" + m.map(fmt).join(", ") + ")";
   const cells = m.map((row) => row.map(fmt));
   const width = Math.max(...cells.flat().map((s) => s.length));
@@ -163,14 +174,24 @@ const LABELS = [
   ["m_pp", "Mpp: perspective -> parallel view volume (c = -near/far)"],
   ["m_ortho", "Morth: world -> standard parallel view volume"],
   ["m_wind", "Mwind: [-1,1]^2 -> pixels"],
-  ["world_to_pixel", "product, world -> pixel: Mwind Mpp Mper (divide by w)"],
+  ["world_to_pixel", "product, world -> pixel: "],  // + the factors this camera multiplies
 ];
 
+// The factors of the world -> pixel product: conf.factors (xaml3d's world_to_pixel_factors) for
+// the pipeline's camera kind, inverse(Camera.Transform) last when the camera has a transform.
+function productLabel(p) {
+  const t = p.transform;
+  const moved = t && t.some((row, i) => row.some((x, j) => x !== (i === j ? 1 : 0)));
+  return conf.factors[p.kind] + (moved ? " inverse(Camera.Transform)" : "") +
+         (p.kind === "orthographic" ? " (w = 1: nothing to divide)" : " (divide by w)");
+}
+
 function panelText(p, moved) {
-  const head = [`${p.kind} camera, ${conf.width} x ${conf.height} px` +
+  const head = [`${p.kind} camera, ${num(conf.width)} x ${num(conf.height)} px` +
                 (moved ? " (moved: Camera.Transform folded into the frame)" : " (as in the XAML)")];
-  if (p.near !== undefined) head.push(`near ${p.near}, far ${p.far}` + (p.c !== undefined ? `, c = ${p.c}` : ""));
-  const parts = LABELS.filter(([k]) => p[k] !== undefined).map(([k, label]) => `${label}\n${show(p[k])}`);
+  if (p.near !== undefined) head.push(`near ${num(p.near)}, far ${num(p.far)}` + (p.c !== undefined ? `, c = ${num(p.c)}` : ""));
+  const parts = LABELS.filter(([k]) => p[k] !== undefined).map(([k, label]) =>
+    `${k === "world_to_pixel" ? label + productLabel(p) : label}\n${show(p[k])}`);
   return head.join("\n") + "\n\n" + parts.join("\n\n");
 }
 

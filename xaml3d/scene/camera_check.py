@@ -33,6 +33,7 @@ from xaml3d.scene.camera_values import (  # noqa: F401 (the thresholds are docum
     Report,
     check_values,
     depth_ratio,
+    report_for,
 )
 from xaml3d.scene.transforms import transform_homogeneous, transform_points
 from xaml3d.scene.types import MatrixCamera, OrthographicCamera, PerspectiveCamera
@@ -53,10 +54,10 @@ def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagn
     "inside the scene" at the (0,0,0) that replaced an unreadable Position), not the markup.
     Only the viewport's size (CAM010) is still checked."""
     if getattr(camera, "rejected", None):
-        report = Report(getattr(camera, "line", None), getattr(camera, "column", None))
+        report = report_for(camera)
         check_values(None, width, height, report)
         return [d for d in report.items if d.code == "CAM010"]
-    report = Report(getattr(camera, "line", None), getattr(camera, "column", None))
+    report = report_for(camera)
     with np.errstate(all="ignore"):
         try:
             _check(camera, width, height, bounds, report)

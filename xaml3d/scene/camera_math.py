@@ -336,6 +336,23 @@ class CameraPipeline:
         return out
 
 
+# The factors of world_to_pixel for each camera kind, left to right as they multiply a column
+# vector (camera-pipeline.md sections 4-6, camera-math.md section 11 for the MatrixCamera: WPF's
+# row-form matrices transposed, the z row negated to turn Direct3D's 0 <= z <= w into ours).
+_FACTORS = {
+    "perspective": "Mwind Mpp Mper",
+    "orthographic": "Mwind Morth",
+    "matrix": "Mwind diag(1,1,-1,1) ProjectionMatrix^T ViewMatrix^T",
+}
+
+
+def world_to_pixel_factors(kind: str, transformed: bool = False) -> str:
+    """The product ``world_to_pixel`` is for a camera of ``kind`` ("perspective",
+    "orthographic", "matrix"), as text: ``Mwind Mpp Mper``, ``Mwind Morth``...; with
+    ``inverse(Camera.Transform)`` last when the camera has a transform (``transformed``)."""
+    return _FACTORS[kind] + (" inverse(Camera.Transform)" if transformed else "")
+
+
 def effective_far(view: np.ndarray, near: float, far: float, kind: str, bounds=None) -> float:
     """The finite far distance used for rendering (module docstring): ``far`` itself when finite,
     else just beyond the scene's farthest bounding-box corner, else a fixed fallback.

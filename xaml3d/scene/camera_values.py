@@ -39,14 +39,15 @@ def usable(x) -> bool:
 class Report:
     """Collects diagnostics with the camera's line."""
 
-    def __init__(self, line: int | None, column: int | None = None) -> None:
+    def __init__(self, line: int | None, column: int | None = None, file: str | None = None):
         self.line = line
         self.column = column
+        self.file = file  # None: the scene's (filled in by whoever reports the findings)
         self.items: list[Diagnostic] = []
 
     def __call__(self, code: str, message: str) -> None:
         self.items.append(
-            Diagnostic(code, CAMERA_CODES[code][0], message, None, self.line, self.column)
+            Diagnostic(code, CAMERA_CODES[code][0], message, self.file, self.line, self.column)
         )
 
     def error_count(self) -> int:
@@ -169,9 +170,18 @@ def depth_ratio(near: float, far: float, report: Report, narrowed: bool = False)
         )
 
 
+def report_for(camera) -> Report:
+    """A Report located where ``camera`` is written (its file when not the scene's)."""
+    return Report(
+        getattr(camera, "line", None),
+        getattr(camera, "column", None),
+        getattr(camera, "file", None),
+    )
+
+
 def value_problems(camera, width: float, height: float) -> list[Diagnostic]:
     """``check_values`` as diagnostics; never raises (a check that fails is CAM008)."""
-    report = Report(getattr(camera, "line", None), getattr(camera, "column", None))
+    report = report_for(camera)
     with np.errstate(all="ignore"):
         try:
             check_values(camera, width, height, report)

@@ -354,6 +354,9 @@ class ProjectionCamera:
     line: int | None = None
     column: int | None = None
     rejected: frozenset[str] = rejected_field()  # "Position"...: see rejected_field
+    # the file the camera is written in when not the scene's (a -r dictionary): its findings
+    # are located there
+    file: str | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)
@@ -379,6 +382,7 @@ class MatrixCamera:
     line: int | None = None
     column: int | None = None
     rejected: frozenset[str] = rejected_field()
+    file: str | None = field(default=None, compare=False)  # as ProjectionCamera.file
 
 
 Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
@@ -462,6 +466,9 @@ class Animation:
     # (line, column) of the Storyboard.TargetName attribute that names the target (its own, or
     # an enclosing timeline's), None when none is written
     target_name_at: tuple[int | None, int | None] | None = None
+    # (line, column) of the Storyboard.TargetProperty attribute that gives the path (its own,
+    # or an enclosing timeline's), None when none is written
+    target_property_at: tuple[int | None, int | None] | None = None
 
     @property
     def timing(self) -> Timing:
@@ -634,7 +641,10 @@ class Scene:
         """The viewport by index or x:Name (None: the first). Raises SceneError."""
 
         if not self.viewports:
-            raise SceneError("the document holds no Viewport3D", code="SCN001", file=self.file)
+            # the reader's own words for it (SCN013 says how a dictionary is used: with -r)
+            said = [d.message for d in self.diagnostics if d.code in ("SCN013", "SCN001")]
+            msg = said[0] if said else "the document holds no Viewport3D"
+            raise SceneError(msg, code="SCN001", file=self.file)
         if which is None:
             return self.viewports[0]
         if isinstance(which, int) or (isinstance(which, str) and which.isdigit()):

@@ -140,10 +140,13 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
     # clock tree walk; a Target of this timeline wins over its own TargetName
     key = p.attached_keys.get("Storyboard.TargetName")  # as written (maybe without "Storyboard.")
     own = key is not None and not inherited.get("object")
+    prop_key = p.attached_keys.get("Storyboard.TargetProperty")
     target = {
         "name": p.attached.get("Storyboard.TargetName") if own else inherited.get("name"),
         "prop": p.attached.get("Storyboard.TargetProperty", inherited.get("prop")),
         "name_at": r.ctx.locate(el, key) if own else inherited.get("name_at"),
+        # where the path is written: ANIM002 (a path that does not resolve) points there
+        "prop_at": r.ctx.locate(el, prop_key) if prop_key else inherited.get("prop_at"),
         "object": inherited.get("object", False),
         "unread": inherited.get("unread", False),
     }
@@ -215,6 +218,7 @@ def _node(r, el, inherited: dict, out: list, top: bool = False):
         and (path is not None or not t.endswith("UsingPath"))
         and not target["unread"],
         target_name_at=target["name_at"],
+        target_property_at=target["prop_at"],
         **r.ctx.position(el),
     )
     out.append(anim)

@@ -181,7 +181,8 @@ def resolve(
         )
     el = names.get(target_name) if target_name else host
     if el is None:
-        raise TargetError("ANIM001", f"Storyboard.TargetName {target_name!r} names no object")
+        hint = voc.did_you_mean(target_name, names) if target_name else ""
+        raise TargetError("ANIM001", f"Storyboard.TargetName {target_name!r} names no object{hint}")
     steps = parse_path(path)
     for n, (prop, _owner, indices) in enumerate(steps):
         if not is_presentation(qname(el.tag)[0]):
@@ -193,7 +194,8 @@ def resolve(
         et = voc.lookup(qname(el.tag)[1])
         tname = qname(el.tag)[1]
         if et is None or (not et.open and prop not in et.properties):
-            raise TargetError("ANIM002", f"{tname} has no property {prop!r} (path {path!r})")
+            hint = "" if et is None else voc.did_you_mean(prop, et.properties)
+            raise TargetError("ANIM002", f"{tname} has no property {prop!r}{hint} (path {path!r})")
         last = n == len(steps) - 1
         if last and not indices:
             kind = et.property_kind(prop)

@@ -136,22 +136,26 @@ class Resolution:
 
 
 def resolve_targets(
-    r, root, storyboards: list[Storyboard], file, hosts: dict | None = None
+    r, root, storyboards: list[Storyboard], file, hosts: dict | None = None, *, library=False
 ) -> Resolution:
     """Resolve every animation's target with the reader ``r`` (a reader of its own: what its
     lookups report is reported again, or was already, by the build). ``hosts``: id(storyboard)
-    -> the element whose trigger begins it, the target of animations that name none."""
+    -> the element whose trigger begins it, the target of animations that name none.
+    ``library``: the document is a resource dictionary (or an Application) read on its own:
+    its storyboards are begun by the scenes that use it, on their elements, so a name it does
+    not hold, a missing TargetName and no trigger are not findings (ANIM001, ANIM005, ANIM007)."""
     res = Resolution(file)
     names = name_map(root)
     ctx = r.ctx
     with ctx.muted():  # lookups repeat what the build reports
         for sb in storyboards:
-            _check_start(res, sb)
+            if not library:
+                _check_start(res, sb)
             host = (hosts or {}).get(id(sb))
             for a in sb.animations:
                 if sb.owner is not None and not a.target_name:
                     res.owners[id(a)] = sb.owner
-                target = _resolve(res, r, names, a, host)
+                target = _resolve(res, r, names, a, host, library)
                 if target is not None:
                     res.slots.add(target, a)
                 if a.begin_time is None:
@@ -168,16 +172,20 @@ def _check_start(res: Resolution, sb: Storyboard) -> None:
         res.diag("ANIM007", f"{label} has BeginTime {{x:Null}}: it never starts", sb)
 
 
-def _resolve(res: Resolution, r, names, a: Animation, host) -> Target | None:
+def _resolve(res: Resolution, r, names, a: Animation, host, library=False) -> Target | None:
     if not a.evaluated:
         return None
     try:
         return resolve(r, names, a.target_name, a.target_property, a.value_type, host)
     except TargetError as exc:
+        if library and (exc.code == "ANIM001" or (exc.code == "ANIM005" and a.target_property)):
+            return None  # the target is in the scene that will use the dictionary
         what = f"{a.type} -> {res.label(a)}"
         where = a
         if exc.code == "ANIM001" and a.target_name_at is not None:
             where = _At(*a.target_name_at)  # the Storyboard.TargetName attribute
+        elif exc.code == "ANIM002" and a.target_property_at is not None:
+            where = _At(*a.target_property_at)  # the Storyboard.TargetProperty attribute
         res.diag(exc.code, f"{what}: {exc.message}", where)
         return None
 

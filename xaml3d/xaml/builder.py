@@ -46,6 +46,7 @@ from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
 from xaml3d.xaml.parser import PRESENTATION_NS, XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
+from xaml3d.xaml.resource_check import check_dictionary
 from xaml3d.xaml.resources import Resources
 from xaml3d.xaml.styles_check import check_styles
 from xaml3d.xaml.values import parse_bool
@@ -433,18 +434,28 @@ def build_scene(
     for key, entry in d.entries.items() if d else ():
         if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
+    ns, root_type = qname(doc.root.tag)
+    # a ResourceDictionary or Application file: what it holds is used by scenes (SCN013)
+    library = root_type in ("ResourceDictionary", "Application")
     resolution = None
     if storyboards:
-        resolution = resolve_targets(Reader(ctx, resources), doc.root, storyboards, doc.file, hosts)
+        resolution = resolve_targets(
+            Reader(ctx, resources), doc.root, storyboards, doc.file, hosts, library=library
+        )
         r.slots = resolution.slots
 
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
     viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
-        ns, root = qname(doc.root.tag)
-        if root in ("ResourceDictionary", "Application"):  # a valid WPF file, not a scene
-            msg = f"{a_an(root)} holds no Viewport3D: nothing to render (use it with -r)"
+        if library:  # a valid WPF file, not a scene: its resources are checked one by one
+            msg = f"{a_an(root_type)} holds no Viewport3D: nothing to render (use it with -r)"
             ctx.diag("SCN013", msg, doc.root)
+            check_dictionary(
+                r,
+                resources.dictionary_of(doc.root),
+                lambda e: walk_model3d(r, e, T.identity(), _Acc()),
+                lambda e: walk_visual3d(r, e, T.identity(), _Acc()),
+            )
         elif ns is not None:  # else XAML021 says why nothing could be read
             msg = "the document holds no Viewport3D: nothing to render"
             other = _foreign_viewport(doc.root)

@@ -110,6 +110,15 @@ class ReadContext:
         doc = self.doc_of(el)
         return doc.file if doc else None
 
+    def file_elsewhere(self, el: etree._Element) -> str | None:
+        """The file of ``el``'s document when it is not the scene's (the first document read:
+        a ``-r`` dictionary, App.xaml, a merged dictionary), else None: what the scene builds
+        from it is reported in that file, not in the scene's."""
+        first = next(iter(self._docs.values()), None)
+        if first is None or first[0] is el.getroottree().getroot():
+            return None
+        return self.file_of(el)
+
     def path_allowed(self, path: Path) -> bool:
         if self.allow_outside:
             return True

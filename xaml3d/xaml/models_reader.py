@@ -164,7 +164,9 @@ _LIGHT_FIELDS = {"Color": "color", "Direction": "direction", "Position": "positi
 
 def _camera(r, p, transform):
     el, t, d = p.el, p.type, V.parse_double
-    common = dict(transform=transform, name=element_name(el), **r.ctx.position(el))
+    # the file it is written in: a camera of a -r dictionary is reported there
+    common = dict(transform=transform, name=element_name(el), file=r.ctx.file_elsewhere(el),
+                  **r.ctx.position(el))  # fmt: skip
     if t in ("PerspectiveCamera", "OrthographicCamera"):
         frame = dict(
             position=p.value("Position", V.parse_point3d, (0.0, 0.0, 0.0)),

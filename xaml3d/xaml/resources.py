@@ -18,6 +18,7 @@ from __future__ import annotations
 import difflib
 import os
 import re
+import shlex
 from dataclasses import replace
 from pathlib import Path
 
@@ -183,8 +184,9 @@ class Resources:
         self._orders: dict[int, tuple] = {}  # id(root) -> (root, its elements, id -> index)
         self.scene_folder: Path | None = None  # the scene file's folder (the sibling hints')
         # RES001 reports whose hint names a dictionary beside the scene: (report, sibling files
-        # that define the key), completed once every key is looked up (``finish_hints``)
-        self._sibling_hints: list[tuple[Diagnostic, list[str]]] = []
+        # that define the key, their folder), completed once every key is looked up
+        # (``finish_hints``)
+        self._sibling_hints: list[tuple[Diagnostic, list[str], Path]] = []
 
     # ----------------------------------------------------------------- dictionaries
     def dictionary_of(self, owner: etree._Element) -> Dictionary | None:
@@ -457,10 +459,10 @@ class Resources:
             near = difflib.get_close_matches(key, sorted(self._keys_in_scope(from_el)), 1, 0.8)
             hint = f" (did you mean {near[0]}?)" if near else ""
             # a near key in scope is the likelier cause than an application resource
-            siblings = [] if hint else self._siblings(key, from_el)
+            siblings, folder = ([], None) if hint else self._siblings(key, from_el)
             if siblings:  # the hint is chosen among all the missing keys: finish_hints
                 self.ctx.diag("RES001", f"StaticResource {key!r} not found", from_el, attr=attr)
-                self._sibling_hints.append((self.ctx.diagnostics[-1], siblings))
+                self._sibling_hints.append((self.ctx.diagnostics[-1], siblings, folder))
                 return None
             msg = f"StaticResource {key!r} not found{hint or self._app_hint()}"
             self.ctx.diag("RES001", msg, from_el, attr=attr)
@@ -480,13 +482,13 @@ class Resources:
             keys.update(d.keys())
         return {k for k in keys if not k.startswith("{")}
 
-    def _siblings(self, key: str, from_el: etree._Element) -> list[str]:
+    def _siblings(self, key: str, from_el: etree._Element) -> tuple[list[str], Path | None]:
         """The resource dictionaries beside the scene (or the document holding ``from_el``)
-        that define ``key``."""
+        that define ``key``, and that folder."""
         doc = self.ctx.doc_of(from_el)
         folder = doc.path.parent if doc is not None and doc.path is not None else None
         folder = folder or self.scene_folder
-        return siblings_defining(folder, key) if folder is not None else []
+        return (siblings_defining(folder, key) if folder is not None else []), folder
 
     def _app_hint(self) -> str:
         """For a key no dictionary defines, none beside the scene either: the application's
@@ -505,7 +507,9 @@ class Resources:
         pending = [p for p in pending if id(p[0]) in at]  # (a muted read's are gone)
         pending.sort(key=lambda p: (p[0].file or "", p[0].line or 0, p[0].column or 0))
         first: dict[str, Diagnostic] = {}
-        for i, (name, count) in sorted(best_siblings(pending).items()):
+        for i, (name, count) in sorted(
+            best_siblings([(d, names) for d, names, _ in pending]).items()
+        ):
             d = pending[i][0]
             total = len(pending)
             if name not in first:
@@ -516,7 +520,8 @@ class Resources:
                     what = f"defines all {total} missing keys, this one included"
                 else:
                     what = f"defines it and {count - 1} more of the {total} missing keys"
-                hint = f"{name} beside the scene {what}: give it with -r {name}"
+                typed = typable_path(pending[i][2] / name)
+                hint = f"{name} beside the scene {what}: give it with -r {typed}"
             else:
                 hint = f"defined in the -r file suggested at line {first[name].line}"
             self.ctx.diagnostics[at[id(d)]] = replace(d, message=f"{d.message} ({hint})")
@@ -594,6 +599,18 @@ def type_key(target: str) -> str:
 def is_type_key(key: str) -> bool:
     """Whether a resource key is written as a type (``{x:Type Border}``)."""
     return key.replace(" ", "").startswith(("{x:Type", "{Type"))
+
+
+def typable_path(path: Path) -> str:
+    """``path`` as a user types it in a shell from the current directory: relative to it when
+    that is not longer than the absolute path, else absolute (quoted when the shell needs it).
+    A hint's file name alone would not be found from another folder (RES009)."""
+    absolute = os.path.abspath(path)
+    try:
+        relative = os.path.relpath(absolute)
+    except ValueError:  # another drive (Windows): no relative path
+        relative = absolute
+    return shlex.quote(relative if len(relative) <= len(absolute) else absolute)
 
 
 def _found_where(app: Path, scene: Path) -> str:
