@@ -4,6 +4,7 @@ and what xaml3d cannot draw is said as a warning or info with WPF's reason."""
 
 from __future__ import annotations
 
+from xaml3d.findings import scene_findings
 from xaml3d.xaml.loader import load
 
 NS = (
@@ -55,3 +56,26 @@ def test_a_toolkit_viewport_is_named_in_the_no_viewport_error():
         "the document holds no Viewport3D: nothing to render (h:HelixViewport3D is a control "
         "of another assembly; xaml3d draws WPF's own Viewport3D only)"
     )
+
+
+def test_a_zero_near_plane_in_a_scene_with_no_models_is_no_camera_error():
+    # WPF accepts NearPlaneDistance="0" (it narrows near/far to the scene's depth span); with
+    # no model to narrow to (a mesh only code-behind or App.xaml supplies) the far/near ratio
+    # was divided by zero and reported as CAM008, an error that refused the render
+    scene = load(
+        f"""<Window {NS}>
+  <Viewport3D>
+    <Viewport3D.Camera>
+      <PerspectiveCamera FarPlaneDistance="20" LookDirection="5,-2,-3" NearPlaneDistance="0"
+                         Position="-5,2,3"/>
+    </Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content>
+      <DirectionalLight Color="White" Direction="-3,-4,-5"/>
+    </ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Window>""",
+        text=True,
+    )
+    found = scene_findings(scene)
+    assert [d.code for d in found if d.severity == "error"] == []
+    assert [d.code for d in found if d.code.startswith("CAM")] == []
