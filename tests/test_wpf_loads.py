@@ -4,6 +4,8 @@ and what xaml3d cannot draw is said as a warning or info with WPF's reason."""
 
 from __future__ import annotations
 
+import pytest
+
 from xaml3d.findings import scene_findings
 from xaml3d.xaml.loader import load
 
@@ -79,3 +81,42 @@ def test_a_zero_near_plane_in_a_scene_with_no_models_is_no_camera_error():
     found = scene_findings(scene)
     assert [d.code for d in found if d.severity == "error"] == []
     assert [d.code for d in found if d.code.startswith("CAM")] == []
+
+
+def test_a_visual_host_material_from_a_resource_shows_the_visual():
+    # the host flag is on the dictionary's entry: Material="{StaticResource host}" (one host
+    # material shared by several Viewport2DVisual3Ds) and a <StaticResource/> element in a
+    # MaterialGroup both carry it, as in WPF; xaml3d saw neither (DRW005, nothing drawn)
+    scene = load(
+        f"""<Window {NS}>
+  <Window.Resources>
+    <MeshGeometry3D x:Key="quad" Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+                    TriangleIndices="0 1 2 0 2 3" TextureCoordinates="0,1 1,1 1,0 0,0"/>
+    <DiffuseMaterial x:Key="host" Brush="White" Viewport2DVisual3D.IsVisualHostMaterial="True"/>
+    <DiffuseMaterial x:Key="plain" Brush="Red"/>
+  </Window.Resources>
+  <Viewport3D>
+    <Viewport2DVisual3D Geometry="{{StaticResource quad}}" Material="{{StaticResource host}}">
+      <Button Content="A"/>
+    </Viewport2DVisual3D>
+    <Viewport2DVisual3D Geometry="{{StaticResource quad}}">
+      <Viewport2DVisual3D.Material>
+        <MaterialGroup>
+          <StaticResource ResourceKey="plain"/>
+          <StaticResource ResourceKey="host"/>
+        </MaterialGroup>
+      </Viewport2DVisual3D.Material>
+      <Button Content="B"/>
+    </Viewport2DVisual3D>
+    <ModelVisual3D><ModelVisual3D.Content><AmbientLight/></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Window>""",
+        text=True,
+    )
+    assert _errors(scene) == []
+    assert "DRW005" not in [d.code for d in scene.diagnostics]
+    first, second = scene.viewports[0].models
+    assert first.material[0].brush is not None  # the visual's brush replaced White
+    plain, host = second.material
+    assert host.brush is not None and host.brush is not plain.brush
+    assert plain.brush.color[:3] == pytest.approx((1.0, 0.0, 0.0))  # Red stays Red

@@ -36,6 +36,7 @@ from xaml3d.xaml.context import (
     a_an,
     element_name,
     is_presentation,
+    markup_key,
     namespace_typo,
     qname,
     split_markup,
@@ -258,6 +259,9 @@ def _host_flags(r: Reader, p: Props) -> list[bool]:
     out: list[bool] = []
 
     def walk(el) -> None:
+        el = _referenced(r, el)
+        if el is None or not is_presentation(qname(el.tag)[0]):
+            return
         q = r.props(el)
         if q.type == "MaterialGroup":
             for k in q.items("Children"):
@@ -269,9 +273,35 @@ def _host_flags(r: Reader, p: Props) -> list[bool]:
         except Exception:  # a markup extension or a bad value: not the host
             out.append(False)
 
+    if "Material" in p.attrs:
+        # Material="{StaticResource key}": the flag is on the dictionary's entry (a host
+        # material is commonly shared by several Viewport2DVisual3Ds this way)
+        kind, entry = _reference_in(r, p, p.attrs["Material"])
+        if kind == "element":
+            walk(entry)
     for k in p.elems.get("Material", ()):
         walk(k)
     return out
+
+
+def _reference_in(r: Reader, p: Props, value: str):
+    """("element", entry) when ``value`` is {StaticResource key} / {DynamicResource key} whose
+    entry is in scope, else (None, None); silent: the material's own reading reported any miss."""
+    m = split_markup(value)
+    if m is None or m[0] not in _REFERENCE:
+        return None, None
+    entry = r.resources.find(markup_key(m[1]), p.el)
+    return ("element", entry) if entry is not None else (None, None)
+
+
+def _referenced(r: Reader, el):
+    """``el``, or the entry a ``<StaticResource ResourceKey=.../>`` element names (None when
+    it names nothing in scope; the material's own reading reported that)."""
+    ns, local = qname(el.tag)
+    if is_presentation(ns) and local in _REFERENCE:
+        key = el.get("ResourceKey")
+        return r.resources.find(key, el) if key is not None else None
+    return el
 
 
 # --------------------------------------------------------------------------- viewports
