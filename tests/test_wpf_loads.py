@@ -120,3 +120,55 @@ def test_a_visual_host_material_from_a_resource_shows_the_visual():
     plain, host = second.material
     assert host.brush is not None and host.brush is not plain.brush
     assert plain.brush.color[:3] == pytest.approx((1.0, 0.0, 0.0))  # Red stays Red
+
+
+def test_a_styles_foreground_and_background_are_drawn(tmp_path):
+    # a TextBlock styled with Foreground="White" (and a Background) by a keyed Style, and one
+    # that inherits the Foreground its styled parent sets: WPF draws white text on the Style's
+    # background; xaml3d used the Style for sizes only and drew black text, no background
+    import xaml3d
+    from xaml3d.scene.drawing import DrawingGroup, GeometryDrawing, TextDrawing
+
+    path = tmp_path / "styled.xaml"
+    path.write_text(
+        f"""<Grid {NS}>
+  <Grid.Resources>
+    <Style x:Key="face" TargetType="{{x:Type TextBlock}}">
+      <Setter Property="Foreground" Value="White"/>
+      <Setter Property="Background" Value="#FF0000FF"/>
+      <Setter Property="FontSize" Value="20"/>
+    </Style>
+    <Style TargetType="Label"><Setter Property="Foreground" Value="#FFFF0000"/></Style>
+  </Grid.Resources>
+  <StackPanel x:Name="faces">
+    <TextBlock Style="{{DynamicResource face}}" Text="1"/>
+    <Label><TextBlock Text="2"/></Label>
+  </StackPanel>
+  <Viewport3D Width="64" Height="48">
+    <Viewport3D.Camera><OrthographicCamera Position="0,0,10" Width="64"/></Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-16,-16,0 16,-16,0 16,16,0 -16,16,0"
+            TriangleIndices="0 1 2 0 2 3" TextureCoordinates="0,1 1,1 1,0 0,0"/>
+      </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial>
+        <DiffuseMaterial.Brush><VisualBrush Visual="{{Binding ElementName=faces}}"/>
+        </DiffuseMaterial.Brush>
+      </DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Grid>"""
+    )
+    scene = xaml3d.load(path)
+
+    def leaves(d):
+        if isinstance(d, DrawingGroup):
+            return [x for k in d.children for x in leaves(k)]
+        return [d]
+
+    drawn = leaves(scene.viewports[0].models[0].material[0].brush.drawing)
+    texts = {t.text: t for t in drawn if isinstance(t, TextDrawing)}
+    assert texts["1"].brush.color == (1.0, 1.0, 1.0, 1.0)  # the Style's, not black
+    assert texts["1"].font_size == 20.0
+    assert texts["2"].brush.color == (1.0, 0.0, 0.0, 1.0)  # inherited from the Label's Style
+    fills = [g.brush.color for g in drawn if isinstance(g, GeometryDrawing) and g.brush]
+    assert (0.0, 0.0, 1.0, 1.0) in fills  # the Style's Background behind the "1"

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from xaml3d.errors import ValueSyntaxError
 from xaml3d.fonts import WEIGHTS
 from xaml3d.layout.text import baseline, line_height, text_width
 from xaml3d.scene.drawing import (
@@ -26,7 +27,7 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
-from xaml3d.xaml.panels_reader import _content_text
+from xaml3d.xaml.panels_reader import _content_text, element_style
 
 
 def _rgb(hex6: str, a: float = 1.0) -> SolidColorBrush:
@@ -67,8 +68,16 @@ def _font_style(el) -> tuple[int, bool]:
 
 
 def _brush(r, v, prop: str, default=None):
+    """The element's brush ``prop``: its own, else its Style's Setter (a colour), else
+    ``default``."""
     if v.p is not None and v.p.has(prop):
         return brush_property(r, v.p, prop)
+    raw = v.style.get(prop) if v.p is not None else None
+    if raw is not None and split_markup(raw) is None:
+        try:
+            return SolidColorBrush(color=V.parse_color(raw))
+        except ValueSyntaxError:
+            pass  # not a colour (a brush resource, a bad value): not drawn from here
     return default
 
 
@@ -99,6 +108,8 @@ def _box_drawing(background, border, thickness, radius, w: float, h: float) -> l
 
 
 def _foreground(r, el):
+    """The Foreground in effect at ``el``: its own, else its Style's, else inherited from the
+    nearest ancestor that sets one (locally or by its Style), as WPF's value precedence has it."""
     node = el
     while node is not None:
         if isinstance(node.tag, str):
@@ -110,6 +121,12 @@ def _foreground(r, el):
                     raw = p.attached[prop]
                     if split_markup(raw) is None:
                         return SolidColorBrush(color=V.parse_color(raw))
+            raw = element_style(r, node).get("Foreground")
+            if raw is not None and split_markup(raw) is None:
+                try:
+                    return SolidColorBrush(color=V.parse_color(raw))
+                except ValueSyntaxError:
+                    pass  # not a colour (a brush resource, a bad value): not drawn from here
         node = node.getparent()
     return BLACK
 

@@ -55,6 +55,7 @@ from xaml3d.xaml.geometry_reader import geometry_property
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
+    element_style,
     parse_thickness,
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
@@ -104,7 +105,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
         v = None
         own.extend(_part(n, ink_w, ink_h))
     else:
-        v = ElementValues(r, el)
+        v = ElementValues(r, el, element_style(r, el))
         _element(r, v, n, el, font, ink_w, ink_h, own)
     for k in n.children:
         _compile(r, reader, k, own, (x, y, sx, sy))
@@ -303,7 +304,7 @@ def attach_control_drawings(r, root, elements: dict) -> None:
         if el is None:
             continue
         out: list = []
-        v = ElementValues(r, el)
+        v = ElementValues(r, el, element_style(r, el))
         _element(r, v, n, el, font, n.ink[0], n.ink[1], out)
         if out:
             opacity = v.get("Opacity", V.parse_double, 1.0)
