@@ -172,3 +172,30 @@ def test_a_styles_foreground_and_background_are_drawn(tmp_path):
     assert texts["2"].brush.color == (1.0, 0.0, 0.0, 1.0)  # inherited from the Label's Style
     fills = [g.brush.color for g in drawn if isinstance(g, GeometryDrawing) and g.brush]
     assert (0.0, 0.0, 1.0, 1.0) in fills  # the Style's Background behind the "1"
+
+
+def test_a_modelvisual3d_component_file_is_3d_content_not_an_error():
+    # a ModelVisual3D with x:Class as the root (a component that code adds to a Viewport3D):
+    # WPF loads it; like a ResourceDictionary it holds no scene (SCN013, info), it is not the
+    # error SCN001 that a Window without a viewport is
+    scene = load(
+        f"""<ModelVisual3D x:Class="App.SpriteVisual" {NS}>
+  <ModelVisual3D.Content>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-1,1,0 -1,-1,0 1,-1,0" TriangleIndices="0 1 2"/>
+      </GeometryModel3D.Geometry>
+      <GeometryModel3D.Material>
+        <DiffuseMaterial Color="White" AmbientColor="White"/>
+      </GeometryModel3D.Material>
+    </GeometryModel3D>
+  </ModelVisual3D.Content>
+</ModelVisual3D>""",
+        text=True,
+    )
+    assert _errors(scene) == []
+    (scn,) = [d for d in scene.diagnostics if d.code.startswith("SCN")]
+    assert (scn.code, scn.severity) == ("SCN013", "info")
+    assert scn.message.startswith("a ModelVisual3D holds no Viewport3D: nothing to render")
+    window = load(f"<Window {NS}><Grid/></Window>", text=True)
+    assert "SCN001" in _errors(window)

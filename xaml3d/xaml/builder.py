@@ -54,6 +54,8 @@ from xaml3d.xaml.values import parse_bool
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
 _REFERENCE = {"StaticResource", "DynamicResource"}
+# the root types of a file of 3D content without a viewport (SCN013, not SCN001)
+_FRAGMENT_KINDS = {"visual3d", "model3d", "light", "geometry", "material", "transform3d"}
 
 
 def no_namespace(local: str) -> str:
@@ -472,8 +474,16 @@ def build_scene(
     viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
         ns, root = qname(doc.root.tag)
+        et = voc.lookup(root) if is_presentation(ns) else None
         if root in ("ResourceDictionary", "Application"):  # a valid WPF file, not a scene
             msg = f"{a_an(root)} holds no Viewport3D: nothing to render (use it with -r)"
+            ctx.diag("SCN013", msg, doc.root)
+        elif et is not None and et.kind in _FRAGMENT_KINDS:
+            # 3D content as the root (a ModelVisual3D component with x:Class, a model or mesh
+            # loaded by XamlReader.Load): WPF loads it; it is drawn in the Viewport3D that the
+            # application's code puts it in, so there is no scene here either
+            msg = (f"{a_an(root)} holds no Viewport3D: nothing to render (3D content that "
+                   "code adds to a Viewport3D)")  # fmt: skip
             ctx.diag("SCN013", msg, doc.root)
         elif ns is not None:  # else XAML021 says why nothing could be read
             msg = "the document holds no Viewport3D: nothing to render"
