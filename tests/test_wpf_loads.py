@@ -199,3 +199,25 @@ def test_a_modelvisual3d_component_file_is_3d_content_not_an_error():
     assert scn.message.startswith("a ModelVisual3D holds no Viewport3D: nothing to render")
     window = load(f"<Window {NS}><Grid/></Window>", text=True)
     assert "SCN001" in _errors(window)
+
+
+def test_a_namespace_name_that_is_not_a_uri_is_read_as_wpf_reads_it():
+    # "clr-namespace:Pages.立方体" (non-ASCII) and "clr-namespace:App; assembly=Lib" (a space)
+    # are not URIs: libxml2 refuses them, .NET's XML reader (WPF's) takes any string
+    from xaml3d.errors import XamlSyntaxError
+
+    for ns in ("clr-namespace:Pages._3D立方体", "clr-namespace:App.Controls; assembly=App"):
+        scene = load(
+            f"""<UserControl {NS} xmlns:local="{ns}">
+  <Viewport3D><local:Gizmo/></Viewport3D>
+</UserControl>""",
+            text=True,
+        )
+        assert _errors(scene) == []
+        (skipped,) = [d for d in scene.diagnostics if d.code == "XAML001"]
+        assert skipped.line == 2 and ns in skipped.message
+    # a document with such a name and a real error still fails there, as before
+    with pytest.raises(XamlSyntaxError) as info:
+        load(f'<Grid {NS} xmlns:l="clr-namespace:A 样">\n  <Viewport3D></Grid>', text=True)
+    assert (info.value.code, info.value.line) == ("XML001", 2)
+    assert "mismatch" in info.value.message
