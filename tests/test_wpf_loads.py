@@ -221,3 +221,26 @@ def test_a_namespace_name_that_is_not_a_uri_is_read_as_wpf_reads_it():
         load(f'<Grid {NS} xmlns:l="clr-namespace:A 样">\n  <Viewport3D></Grid>', text=True)
     assert (info.value.code, info.value.line) == ("XML001", 2)
     assert "mismatch" in info.value.message
+
+
+def test_a_viewport_in_a_data_template_is_named_in_the_no_viewport_error():
+    # an ItemsControl whose DataTemplate holds the Viewport3D: WPF draws one per item; xaml3d
+    # does not instantiate templates, and says where the viewport is instead of "none"
+    scene = load(
+        f"""<Page {NS}>
+  <Page.Resources>
+    <DataTemplate x:Key="card">
+      <Grid Width="200" Height="200">
+        <Viewport3D/>
+      </Grid>
+    </DataTemplate>
+  </Page.Resources>
+  <ItemsControl ItemTemplate="{{StaticResource card}}"/>
+</Page>""",
+        text=True,
+    )
+    (scn,) = [d for d in scene.diagnostics if d.code == "SCN001"]
+    assert scn.message == (
+        "the document holds no Viewport3D outside templates: nothing to render (the "
+        "Viewport3D at line 5 is inside a DataTemplate, which xaml3d does not instantiate)"
+    )

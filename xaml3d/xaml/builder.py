@@ -432,6 +432,18 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
+def _templated_viewport(root):
+    """(the template's type, the Viewport3D element) of the first WPF Viewport3D inside a
+    template or Style (in resources or in the tree), or None."""
+    for el in root.iter("{*}Viewport3D"):
+        if not is_presentation(qname(el.tag)[0]):
+            continue
+        for up in el.iterancestors():
+            if isinstance(up.tag, str) and qname(up.tag)[1] in _TEMPLATES:
+                return qname(up.tag)[1], el
+    return None
+
+
 def _foreign_viewport(root) -> str | None:
     """The prefixed name of the first element of a non-WPF namespace whose name ends in
     Viewport3D (h:HelixViewport3D), or None."""
@@ -488,7 +500,17 @@ def build_scene(
         elif ns is not None:  # else XAML021 says why nothing could be read
             msg = "the document holds no Viewport3D: nothing to render"
             other = _foreign_viewport(doc.root)
-            if other is not None:
+            templated = _templated_viewport(doc.root)
+            if templated is not None:
+                # a DataTemplate's Viewport3D (an ItemsControl's items) is in the document,
+                # and WPF draws it once per item; say where it is rather than that it is absent
+                where, el = templated
+                msg = (
+                    "the document holds no Viewport3D outside templates: nothing to render "
+                    f"(the Viewport3D at line {ctx.locate(el)[0]} is inside {a_an(where)}, "
+                    "which xaml3d does not instantiate)"
+                )
+            elif other is not None:
                 # a toolkit's viewport control (Helix Toolkit's HelixViewport3D ...): WPF loads
                 # it with that assembly; its own visuals are that toolkit's, not WPF's
                 msg += (
