@@ -244,3 +244,50 @@ def test_a_viewport_in_a_data_template_is_named_in_the_no_viewport_error():
         "the document holds no Viewport3D outside templates: nothing to render (the "
         "Viewport3D at line 5 is inside a DataTemplate, which xaml3d does not instantiate)"
     )
+
+
+def test_an_image_source_given_as_a_bitmapimage_is_loaded(tmp_path):
+    # ImageSource="{StaticResource photo}" naming a BitmapImage resource, and a BitmapImage as
+    # the property's element: WPF reads UriSource (relative to the markup); xaml3d read only a
+    # plain string, so the surface had no texture and nothing said so
+    import numpy as np
+    from PIL import Image
+
+    import xaml3d
+
+    Image.new("RGBA", (2, 2), (255, 0, 0, 255)).save(tmp_path / "red.png")
+    mesh = (
+        '<MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2" '
+        'TextureCoordinates="0,1 1,1 1,0"/>'
+    )
+    (tmp_path / "s.xaml").write_text(
+        f"""<Grid {NS}>
+  <Grid.Resources><BitmapImage x:Key="photo" UriSource="red.png"/></Grid.Resources>
+  <Viewport3D>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+      <GeometryModel3D><GeometryModel3D.Geometry>{mesh}</GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><DiffuseMaterial><DiffuseMaterial.Brush>
+          <ImageBrush ImageSource="{{StaticResource photo}}"/>
+        </DiffuseMaterial.Brush></DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+      <GeometryModel3D><GeometryModel3D.Geometry>{mesh}</GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><DiffuseMaterial><DiffuseMaterial.Brush>
+          <ImageBrush><ImageBrush.ImageSource><BitmapImage UriSource="red.png"/>
+          </ImageBrush.ImageSource></ImageBrush>
+        </DiffuseMaterial.Brush></DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+      <GeometryModel3D><GeometryModel3D.Geometry>{mesh}</GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><DiffuseMaterial><DiffuseMaterial.Brush>
+          <ImageBrush><ImageBrush.ImageSource><BitmapImage UriSource="lost.png"/>
+          </ImageBrush.ImageSource></ImageBrush>
+        </DiffuseMaterial.Brush></DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Grid>"""
+    )
+    scene = xaml3d.load(tmp_path / "s.xaml")
+    first, second, third = (m.material[0].brush for m in scene.viewports[0].models)
+    for brush in (first, second):
+        assert not brush.is_placeholder
+        assert np.array_equal(brush.image[0, 0], [255, 0, 0, 255])
+    assert third.is_placeholder  # a missing file: the grey checker, and a warning saying so
+    (lost,) = [d for d in scene.diagnostics if d.code == "BRU002"]
+    assert "lost.png" in lost.message and (lost.line, lost.column) == (16, 60)  # UriSource

@@ -40,7 +40,7 @@ from xaml3d.scene.drawing import (
 from xaml3d.scene.types import placeholder_image
 from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
-from xaml3d.xaml.brushes_reader import load_image
+from xaml3d.xaml.brushes_reader import image_source, load_image
 from xaml3d.xaml.context import qname
 from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels, shape_points
 from xaml3d.xaml.controls_reader import (
@@ -204,9 +204,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         _scroll_bar(r, v, w, h, out)
         return
     if local == "Image" and v.p is not None:
-        source = v.p.string("Source")
+        source, where, attr = image_source(r, v.p, "Source")
         if source:
-            image = load_image(r, source, el, v.p.attr_keys.get("Source"))[1]
+            image = load_image(r, source, where, attr)[1]
             if image is None:  # the diagnostic says a grey checker stands in
                 image = placeholder_image()
             if image is not None:
