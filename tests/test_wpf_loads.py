@@ -291,3 +291,59 @@ def test_an_image_source_given_as_a_bitmapimage_is_loaded(tmp_path):
     assert third.is_placeholder  # a missing file: the grey checker, and a warning saying so
     (lost,) = [d for d in scene.diagnostics if d.code == "BRU002"]
     assert "lost.png" in lost.message and (lost.line, lost.column) == (16, 60)  # UriSource
+
+
+def test_a_styles_font_weight_and_style_are_measured_and_drawn(tmp_path):
+    # an implicit Style setting FontWeight and FontStyle (and a Button's Style, which the text
+    # inside inherits): WPF measures and draws the text bold and italic; xaml3d used only local
+    # values, so the text was drawn regular in a box measured for regular
+    import xaml3d
+    from xaml3d.layout.text import text_width
+    from xaml3d.scene.drawing import DrawingGroup, TextDrawing
+
+    path = tmp_path / "fonts.xaml"
+    path.write_text(
+        f"""<Grid {NS}>
+  <Grid.Resources>
+    <Style TargetType="TextBlock">
+      <Setter Property="FontWeight" Value="Bold"/><Setter Property="FontStyle" Value="Italic"/>
+    </Style>
+    <Style TargetType="Button"><Setter Property="TextElement.FontWeight" Value="Bold"/></Style>
+  </Grid.Resources>
+  <StackPanel x:Name="panel">
+    <StackPanel Orientation="Horizontal">
+      <TextBlock Text="Bold italic"/><Label Content="after" Padding="0"/>
+    </StackPanel>
+    <Button><Label Content="Inherited"/></Button>
+  </StackPanel>
+  <Viewport3D Width="64" Height="48">
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight/>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2"
+                        TextureCoordinates="0,1 1,1 1,0"/>
+      </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial>
+        <DiffuseMaterial.Brush><VisualBrush Visual="{{Binding ElementName=panel}}"/>
+        </DiffuseMaterial.Brush>
+      </DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Grid>"""
+    )
+    scene = xaml3d.load(path)
+
+    def texts(d, x=0.0):  # (TextDrawing, x of its origin in the visual); translations only
+        if isinstance(d, DrawingGroup):
+            x += d.transform[0, 2] if d.transform is not None else 0.0
+            return [t for k in d.children for t in texts(k, x)]
+        return [(d, x + d.origin[0])] if isinstance(d, TextDrawing) else []
+
+    drawing = scene.viewports[0].models[0].material[0].brush.drawing
+    found = {t.text: (t, x) for t, x in texts(drawing)}
+    (styled, _), (after, after_x), (inherited, _) = (
+        found[k] for k in ("Bold italic", "after", "Inherited")
+    )
+    assert (styled.weight, styled.italic) == (700, True)
+    assert (after.weight, after.italic) == (400, False)  # a Label: no TextBlock Style
+    assert (inherited.weight, inherited.italic) == (700, False)  # from the Button's Style
+    # the Label starts where the TextBlock ends: the TextBlock measured in bold italic
+    assert after_x == pytest.approx(text_width("Bold italic", 12.0, 700, True))

@@ -48,21 +48,29 @@ def _text_of(el) -> str:
     return _content_text(el)
 
 
-def _inherited(el, names: tuple[str, ...]) -> str | None:
-    """An inherited text property as written on ``el`` or its nearest ancestor."""
+def _inherited(el, names: tuple[str, ...], r=None) -> str | None:
+    """An inherited text property as written on ``el`` or its nearest ancestor, or (with the
+    reader ``r``) set there by that element's Style: WPF's precedence, local value first."""
     node = el
     while node is not None:
         for name in names:
             raw = node.get(name)
             if raw is not None and split_markup(raw) is None:
                 return raw
+        if r is not None and isinstance(node.tag, str):
+            setters = element_style(r, node)
+            for name in names:
+                raw = setters.get(name.rpartition(".")[2])
+                if raw is not None and split_markup(raw) is None:
+                    return raw
         node = node.getparent()
     return None
 
 
-def _font_style(el) -> tuple[int, bool]:
-    w = _inherited(el, ("FontWeight", "TextElement.FontWeight")) or "Normal"
-    s = _inherited(el, ("FontStyle", "TextElement.FontStyle")) or "Normal"
+def _font_style(el, r=None) -> tuple[int, bool]:
+    """(weight, italic) in effect at ``el`` (``_inherited``; its Styles too when ``r``)."""
+    w = _inherited(el, ("FontWeight", "TextElement.FontWeight"), r) or "Normal"
+    s = _inherited(el, ("FontStyle", "TextElement.FontStyle"), r) or "Normal"
     weight = WEIGHTS.get(w.strip(), int(w) if w.strip().isdigit() else 400)
     return weight, s.strip() in ("Italic", "Oblique")
 
@@ -200,12 +208,12 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     text = _text_of(el)
     if not text:
         return None
-    weight, italic = _font_style(el)
+    weight, italic = _font_style(el, r)
     width = w + _SLACK if block and wraps(v) else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip
-    family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+    family = _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or "Segoe UI"
     brush = _foreground(r, el)
     out = []
     for i, line in enumerate(_lines(text, font, weight, italic, width)):
@@ -231,7 +239,7 @@ def _alignment(v) -> str:
 
 def base_format(r, el, font: float) -> Format:
     """The TextBlock's own text format, that its inlines start from."""
-    weight, italic = _font_style(el)
+    weight, italic = _font_style(el, r)
     return Format(size=font, weight=weight, italic=italic, brush=_foreground(r, el))
 
 
@@ -240,7 +248,7 @@ def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_cent
     line's shared baseline, an underlined run over a bar at the font's underline metrics."""
     from xaml3d.layout.text import underline
 
-    family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+    family = _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or "Segoe UI"
     alignment = _alignment(v)
     width = w + _SLACK if wraps(v) else math.inf
     out = []
