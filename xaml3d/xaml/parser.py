@@ -185,7 +185,8 @@ def _iterate(data: bytes, file: str, limits: Limits, recover: bool):
         failure = _syntax_failure(data, file, line, col, exc.msg or str(exc))
     if recover and failure is None:
         for entry in events.error_log:
-            if entry.type != _WAR_NS_URI:
+            # warnings pass, as they do when not recovering; errors other than the name fail
+            if entry.type != _WAR_NS_URI and entry.level >= etree.ErrorLevels.ERROR:
                 failure = _syntax_failure(data, file, entry.line, entry.column, entry.message)
                 break
         if failure is None and root is None:
