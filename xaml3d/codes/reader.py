@@ -60,7 +60,11 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "resource key not found while a dictionary of another assembly is in scope",
     ),
     "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
-    "SCN013": (INFO, "a ResourceDictionary or Application file: no scene to render"),
+    "SCN013": (
+        INFO,
+        "a ResourceDictionary, Application or 3D-content file (a ModelVisual3D, model or mesh as "
+        "the root): no scene to render",
+    ),
     "SCN003": (INFO, "viewport size and how the layout derived it (docs/layout.md)"),
     "SCN004": (INFO, "no camera given: WPF's default PerspectiveCamera is used"),
     "SCN005": (WARNING, "GeometryModel3D without a Geometry skipped"),

@@ -75,8 +75,14 @@ def _check(camera, width, height, bounds, report: Report) -> None:
         return
     if bounds is not None:
         _check_bounds(camera, width, height, bounds, report)
-    elif isinstance(camera, PerspectiveCamera) and math.isfinite(camera.far_plane_distance):
-        # Without bounds the user's own near/far are the best guess at WPF's depth range.
+    elif (
+        isinstance(camera, PerspectiveCamera)
+        and math.isfinite(camera.far_plane_distance)
+        and camera.near_plane_distance > 0.0
+    ):
+        # Without bounds the user's own near/far are the best guess at WPF's depth range; a
+        # near plane of 0 (which WPF accepts: it narrows near/far to the scene's depth span)
+        # has no ratio to judge, and an empty scene has no span to narrow to.
         depth_ratio(float(camera.near_plane_distance), float(camera.far_plane_distance), report)
 
 

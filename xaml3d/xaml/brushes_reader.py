@@ -35,7 +35,7 @@ from xaml3d.scene.types import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.animation_tracks import built, group_of, node_of
-from xaml3d.xaml.context import as_written
+from xaml3d.xaml.context import as_written, qname, split_markup
 from xaml3d.xaml.resources import reduce_uri
 
 _MAPPING = ("RelativeToBoundingBox", "Absolute")
@@ -194,12 +194,46 @@ def _brush(r, el, nodes: list):
     return None
 
 
+def image_source(r, p, prop: str) -> tuple[str | None, object, str | None]:
+    """(URI, element, attribute) of the image an ImageSource-typed property names: a plain
+    string, or a BitmapImage's UriSource, the BitmapImage given as a property element or as a
+    resource (``ImageSource="{StaticResource photo}"``). The element and attribute locate the
+    diagnostics, and a relative URI is resolved against the element's own document, as WPF
+    resolves it against the markup that holds it. (None, ...) when there is no such URI."""
+    if prop in p.attrs:
+        kind, payload = p.markup(prop, p.attrs[prop])
+        if kind == "plain":
+            return payload, p.el, p.attr_keys.get(prop)
+        if kind == "element":
+            return _bitmap_uri(r, payload)
+        return None, p.el, None
+    kids = p.items(prop)
+    if kids:
+        return _bitmap_uri(r, kids[-1])
+    return p.elem_text.get(prop), p.el, None
+
+
+def _bitmap_uri(r, el) -> tuple[str | None, object, str | None]:
+    """The UriSource of a BitmapImage element (through a <StaticResource/> element)."""
+    if isinstance(el.tag, str) and qname(el.tag)[1] in ("StaticResource", "DynamicResource"):
+        key = el.get("ResourceKey")
+        found = r.resources.lookup(key, el, attr="ResourceKey") if key else None
+        if found is None:
+            return None, el, None
+        el = found
+    if not isinstance(el.tag, str) or qname(el.tag)[1] != "BitmapImage":
+        return None, el, None  # a DrawingImage, a BitmapSource of code: not a file to read
+    uri = el.get("UriSource")
+    if uri is None or split_markup(uri) is not None:
+        return None, el, None
+    return uri, el, "UriSource"
+
+
 def _image_brush(r, p, nodes: list) -> ImageBrush:
-    el = p.el
-    source = p.string("ImageSource")
+    source, where, attr = image_source(r, p, "ImageSource")
     path = image = None
     if source:
-        path, image = load_image(r, source, el, p.attr_keys.get("ImageSource"))
+        path, image = load_image(r, source, where, attr)
     # A missing picture would make the surface vanish; a grey checker keeps the model visible.
     is_placeholder = bool(source) and image is None
     if is_placeholder:

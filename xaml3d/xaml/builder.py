@@ -36,6 +36,7 @@ from xaml3d.xaml.context import (
     a_an,
     element_name,
     is_presentation,
+    markup_key,
     namespace_typo,
     qname,
     split_markup,
@@ -54,6 +55,8 @@ from xaml3d.xaml.values import parse_bool
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
 _REFERENCE = {"StaticResource", "DynamicResource"}
+# the root types of a file of 3D content without a viewport (SCN013, not SCN001)
+_FRAGMENT_KINDS = {"visual3d", "model3d", "light", "geometry", "material", "transform3d"}
 
 
 def no_namespace(local: str) -> str:
@@ -259,6 +262,9 @@ def _host_flags(r: Reader, p: Props) -> list[bool]:
     out: list[bool] = []
 
     def walk(el) -> None:
+        el = _referenced(r, el)
+        if el is None or not is_presentation(qname(el.tag)[0]):
+            return
         q = r.props(el)
         if q.type == "MaterialGroup":
             for k in q.items("Children"):
@@ -270,9 +276,35 @@ def _host_flags(r: Reader, p: Props) -> list[bool]:
         except Exception:  # a markup extension or a bad value: not the host
             out.append(False)
 
+    if "Material" in p.attrs:
+        # Material="{StaticResource key}": the flag is on the dictionary's entry (a host
+        # material is commonly shared by several Viewport2DVisual3Ds this way)
+        kind, entry = _reference_in(r, p, p.attrs["Material"])
+        if kind == "element":
+            walk(entry)
     for k in p.elems.get("Material", ()):
         walk(k)
     return out
+
+
+def _reference_in(r: Reader, p: Props, value: str):
+    """("element", entry) when ``value`` is {StaticResource key} / {DynamicResource key} whose
+    entry is in scope, else (None, None); silent: the material's own reading reported any miss."""
+    m = split_markup(value)
+    if m is None or m[0] not in _REFERENCE:
+        return None, None
+    entry = r.resources.find(markup_key(m[1]), p.el)
+    return ("element", entry) if entry is not None else (None, None)
+
+
+def _referenced(r: Reader, el):
+    """``el``, or the entry a ``<StaticResource ResourceKey=.../>`` element names (None when
+    it names nothing in scope; the material's own reading reported that)."""
+    ns, local = qname(el.tag)
+    if is_presentation(ns) and local in _REFERENCE:
+        key = el.get("ResourceKey")
+        return r.resources.find(key, el) if key is not None else None
+    return el
 
 
 # --------------------------------------------------------------------------- viewports
@@ -401,6 +433,18 @@ class _Walk:
                 self.triggers.extend(k for k in child if isinstance(k.tag, str))
 
 
+def _templated_viewport(root):
+    """(the template's type, the Viewport3D element) of the first WPF Viewport3D inside a
+    template or Style (in resources or in the tree), or None."""
+    for el in root.iter("{*}Viewport3D"):
+        if not is_presentation(qname(el.tag)[0]):
+            continue
+        for up in el.iterancestors():
+            if isinstance(up.tag, str) and qname(up.tag)[1] in _TEMPLATES:
+                return qname(up.tag)[1], el
+    return None
+
+
 def _foreign_viewport(root) -> str | None:
     """The prefixed name of the first element of a non-WPF namespace whose name ends in
     Viewport3D (h:HelixViewport3D), or None."""
@@ -447,6 +491,7 @@ def build_scene(
     lays, laid_out = lay_out(r, doc.root, walk.viewports, window_size)
     viewports = tuple(build_viewport(r, el, i, lays[i]) for i, el in enumerate(walk.viewports))
     if not viewports:
+        et = voc.lookup(root_type) if is_presentation(ns) else None
         if library:  # a valid WPF file, not a scene: its resources are checked one by one
             msg = f"{a_an(root_type)} holds no Viewport3D: nothing to render (use it with -r)"
             ctx.diag("SCN013", msg, doc.root)
@@ -456,10 +501,27 @@ def build_scene(
                 lambda e: walk_model3d(r, e, T.identity(), _Acc()),
                 lambda e: walk_visual3d(r, e, T.identity(), _Acc()),
             )
+        elif et is not None and et.kind in _FRAGMENT_KINDS:
+            # 3D content as the root (a ModelVisual3D component with x:Class, a model or mesh
+            # loaded by XamlReader.Load): WPF loads it; it is drawn in the Viewport3D that the
+            # application's code puts it in, so there is no scene here either
+            msg = (f"{a_an(root_type)} holds no Viewport3D: nothing to render (3D content that "
+                   "code adds to a Viewport3D)")  # fmt: skip
+            ctx.diag("SCN013", msg, doc.root)
         elif ns is not None:  # else XAML021 says why nothing could be read
             msg = "the document holds no Viewport3D: nothing to render"
             other = _foreign_viewport(doc.root)
-            if other is not None:
+            templated = _templated_viewport(doc.root)
+            if templated is not None:
+                # a DataTemplate's Viewport3D (an ItemsControl's items) is in the document,
+                # and WPF draws it once per item; say where it is rather than that it is absent
+                where, el = templated
+                msg = (
+                    "the document holds no Viewport3D outside templates: nothing to render "
+                    f"(the Viewport3D at line {ctx.locate(el)[0]} is inside {a_an(where)}, "
+                    "which xaml3d does not instantiate)"
+                )
+            elif other is not None:
                 # a toolkit's viewport control (Helix Toolkit's HelixViewport3D ...): WPF loads
                 # it with that assembly; its own visuals are that toolkit's, not WPF's
                 msg += (

@@ -94,7 +94,7 @@ class MeasuringPanels(PanelsReader):
             return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
         if local == "ComboBox":
             items = [_text_of(k) for k in _combo_items(el)] or [""]
-            widest = max(text_width(t, font, *_font_style(el)) for t in items)
+            widest = max(text_width(t, font, *_font_style(el, self.r)) for t in items)
             # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
             return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
         if local in TEXT_CONTROLS:
@@ -121,7 +121,7 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
         w, h = size_of(v.r, el, base_format(v.r, el, font), inner if wraps(v) else math.inf)
         return w + pad[0] + pad[2], max(h, line_height(font)) + pad[1] + pad[3]
     text = _text_of(el)
-    weight, italic = _font_style(el)
+    weight, italic = _font_style(el, v.r)
     lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf)
     if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
         mode = trimming(v)

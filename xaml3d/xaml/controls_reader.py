@@ -173,7 +173,7 @@ def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
         (k for k in items if k.get("IsSelected") == "True"), None)  # fmt: skip
     text = _text_of(chosen) if chosen is not None else (el.get("Text") or "")
     if text:
-        weight, italic = _font_style(el)
+        weight, italic = _font_style(el, r)
         box = (7.0, 4.0, max(0.0, w - 13.0 - _COMBO_BUTTON), max(0.0, h - 8.0))
         line = TextDrawing(
             text=text, origin=(7.0, (h - line_height(font)) / 2 + baseline(font)),

@@ -98,12 +98,12 @@ def drawing(r, el):
             **pos,
         )
     if t == "ImageDrawing":
-        from xaml3d.xaml.brushes_reader import load_image
+        from xaml3d.xaml.brushes_reader import image_source, load_image
 
-        source = p.string("ImageSource")
+        source, where, attr = image_source(r, p, "ImageSource")
         image = None
         if source:
-            image = load_image(r, source, el, p.attr_keys.get("ImageSource"))[1]
+            image = load_image(r, source, where, attr)[1]
             if image is None:  # the diagnostic says a grey checker stands in, as for ImageBrush
                 image = placeholder_image()
         return ImageDrawing(

@@ -256,6 +256,72 @@ def _enum(allowed):
     return lambda s: V.parse_enum(s, allowed)
 
 
+def style_setters(r, el, local: str, report: bool = True) -> dict[str, str]:
+    """Property -> value text of the Setters of ``el``'s Style: ``Style="{StaticResource
+    k}"`` (or DynamicResource), else the implicit Style keyed by the element's type in
+    scope; BasedOn styles first, so the derived Setters win. Setter values that are
+    property elements or markup are left out (the property keeps its default). ``report``:
+    say (XAML022) that a Style of another TargetType is not applied."""
+    res = r.resources
+    ref = el.get("Style")
+    if ref is not None:
+        m = split_markup(ref)
+        if m is None or m[0] not in ("StaticResource", "DynamicResource"):
+            return {}
+        entry = res.find(markup_key(m[1]), el)
+        if entry is not None and qname(entry.tag)[1] == "Style":
+            target = type_name(entry.get("TargetType") or "")
+            if is_presentation(qname(el.tag)[0]) and _mismatched(target, local):
+                if not report:
+                    return {}
+                r.ctx.diag("XAML022", f"the Style's TargetType {target} does not match "
+                                f"this {local}: WPF refuses to apply it", el,
+                                attr="Style")  # fmt: skip
+                return {}
+    else:
+        # (every dictionary of the document is read by now: the walk before layout reads
+        # each element's resources, so a type no implicit Style names needs no search)
+        key = type_key(local)
+        entry = res.find(key, el) if key in res.type_keys else None
+    chain = []
+    while entry is not None and qname(entry.tag)[1] == "Style" and len(chain) < _STYLE_DEPTH:
+        chain.append(entry)
+        based = entry.get("BasedOn")
+        m = split_markup(based) if based else None
+        if m is None:
+            break
+        if m[0] in ("StaticResource", "DynamicResource"):
+            entry = res.find(markup_key(m[1]), entry)
+        elif m[0] == "Type":
+            entry = res.find(type_key(based), entry)
+        else:
+            break
+    setters: dict[str, str] = {}
+    for style in reversed(chain):
+        for child in _style_setter_elements(style):
+            prop, value = child.get("Property"), _setter_value(child)
+            if not prop or value is None or child.get("TargetName"):
+                continue
+            owner, _, short = prop.rpartition(".")
+            owner = owner.split(":")[-1]
+            # attached properties keep their owner (Grid.Row); others their own name
+            setters[f"{owner}.{short}" if owner in _ATTACHED_OWNERS else short] = value
+    return setters
+
+
+def element_style(r, el) -> dict[str, str]:
+    """``style_setters`` of ``el`` (a presentation element) for drawing it, silently (the
+    layout reported any mismatch) and once per element: the values a Style sets that the
+    element does not (Foreground, Background, TextAlignment...) are drawn as WPF draws them."""
+    cache = r.__dict__.setdefault("_element_styles", {})
+    hit = cache.get(id(el))
+    if hit is None or hit[0] is not el:
+        ns, local = qname(el.tag)
+        setters = style_setters(r, el, local, report=False) if is_presentation(ns) else {}
+        hit = cache[id(el)] = (el, setters)
+    return hit[1]
+
+
 class PanelsReader:
     def __init__(self, r, viewport_elements: list) -> None:
         self.r = r
@@ -346,53 +412,8 @@ class PanelsReader:
         return n
 
     def style_setters(self, el, local: str) -> dict[str, str]:
-        """Property -> value text of the Setters of ``el``'s Style: ``Style="{StaticResource
-        k}"`` (or DynamicResource), else the implicit Style keyed by the element's type in
-        scope; BasedOn styles first, so the derived Setters win. Setter values that are
-        property elements or markup are left out (the property keeps its default)."""
-        res = self.r.resources
-        ref = el.get("Style")
-        if ref is not None:
-            m = split_markup(ref)
-            if m is None or m[0] not in ("StaticResource", "DynamicResource"):
-                return {}
-            entry = res.find(markup_key(m[1]), el)
-            if entry is not None and qname(entry.tag)[1] == "Style":
-                target = type_name(entry.get("TargetType") or "")
-                if is_presentation(qname(el.tag)[0]) and _mismatched(target, local):
-                    self.r.ctx.diag("XAML022", f"the Style's TargetType {target} does not match "
-                                    f"this {local}: WPF refuses to apply it", el,
-                                    attr="Style")  # fmt: skip
-                    return {}
-        else:
-            # (every dictionary of the document is read by now: the walk before layout reads
-            # each element's resources, so a type no implicit Style names needs no search)
-            key = type_key(local)
-            entry = res.find(key, el) if key in res.type_keys else None
-        chain = []
-        while entry is not None and qname(entry.tag)[1] == "Style" and len(chain) < _STYLE_DEPTH:
-            chain.append(entry)
-            based = entry.get("BasedOn")
-            m = split_markup(based) if based else None
-            if m is None:
-                break
-            if m[0] in ("StaticResource", "DynamicResource"):
-                entry = res.find(markup_key(m[1]), entry)
-            elif m[0] == "Type":
-                entry = res.find(type_key(based), entry)
-            else:
-                break
-        setters: dict[str, str] = {}
-        for style in reversed(chain):
-            for child in _style_setter_elements(style):
-                prop, value = child.get("Property"), _setter_value(child)
-                if not prop or value is None or child.get("TargetName"):
-                    continue
-                owner, _, short = prop.rpartition(".")
-                owner = owner.split(":")[-1]
-                # attached properties keep their owner (Grid.Row); others their own name
-                setters[f"{owner}.{short}" if owner in _ATTACHED_OWNERS else short] = value
-        return setters
+        """Property -> value text of the Setters of ``el``'s Style (``style_setters``)."""
+        return style_setters(self.r, el, local)
 
     def _framework(self, n: L.Node, v: ElementValues) -> None:
         for prop in ("Width", "Height"):

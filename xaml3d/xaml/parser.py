@@ -9,7 +9,8 @@ a hostile document is stopped early with bounded memory.
 
 Fatal problems raise :class:`~xaml3d.errors.XamlSyntaxError`:
 
-- XML001 not well-formed (lxml's line and column), XML002 DTD/entity declaration refused,
+- XML001 not well-formed (lxml's line and column; a namespace name that is not a URI is not
+  an error, as .NET's XML reader takes any string), XML002 DTD/entity declaration refused,
 - XML003 document too large, XML004 too many elements, XML005 nesting too deep,
 - XML006 file unreadable.
 """
@@ -119,16 +120,18 @@ def _refuse_doctype(data: bytes, file: str) -> None:
         )
 
 
-def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = None):
-    """Parse XAML bytes safely; returns the root element. Raises XamlSyntaxError."""
-    limits = limits or DEFAULT_LIMITS
-    if len(data) > limits.max_bytes:
-        raise XamlSyntaxError(
-            f"document is {len(data)} bytes, above the limit of {limits.max_bytes}",
-            code="XML003",
-            file=file,
-        )
-    _refuse_doctype(data, file)
+class _NamespaceName(Exception):
+    """libxml2 stopped at a namespace name that is not a URI (XML_WAR_NS_URI), and only there."""
+
+
+_WAR_NS_URI = 99  # libxml2's XML_WAR_NS_URI: "xmlns:p: '...' is not a valid URI"
+
+
+def _iterate(data: bytes, file: str, limits: Limits, recover: bool):
+    """(root, XamlSyntaxError or None): one reading of ``data`` with the limits checked as it
+    goes. Not ``recover``: libxml2's first error ends it (_NamespaceName when that error is a
+    namespace name that is not a URI). ``recover``: namespace-name errors are let through and
+    the first other error libxml2 logged is the failure."""
     events = etree.iterparse(
         io.BytesIO(data),
         events=("start", "end"),
@@ -140,6 +143,7 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
         huge_tree=True,
         remove_comments=True,
         remove_pis=True,
+        recover=recover,
     )
     depth = 0
     count = 0
@@ -173,17 +177,54 @@ def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = Non
             else:
                 depth -= 1
     except etree.XMLSyntaxError as exc:
+        if not recover and exc.code == _WAR_NS_URI:
+            raise _NamespaceName() from None
         # lxml's column is 1-based and counts characters of the decoded text (a tab is one, a
         # BOM none); it is 0 only when nothing at all could be read (an empty document)
         line, col = exc.position if exc.position else (exc.lineno, None)
-        line, col = max(line or 1, 1), max(col or 1, 1)
-        msg = exc.msg or str(exc)
-        col = _error_column(data, line, col, msg)
-        msg = re.sub(r", line \d+, column \d+$", "", msg)  # the diagnostic gives the place
-        code = "XML002" if ("entity" in msg.lower() or "doctype" in msg.lower()) else "XML001"
-        failure = XamlSyntaxError(
-            f"not well-formed XML: {msg}", code=code, file=file, line=line, column=col
+        failure = _syntax_failure(data, file, line, col, exc.msg or str(exc))
+    if recover and failure is None:
+        for entry in events.error_log:
+            # warnings pass, as they do when not recovering; errors other than the name fail
+            if entry.type != _WAR_NS_URI and entry.level >= etree.ErrorLevels.ERROR:
+                failure = _syntax_failure(data, file, entry.line, entry.column, entry.message)
+                break
+        if failure is None and root is None:
+            root = events.root
+    return root, failure
+
+
+def _syntax_failure(data: bytes, file: str, line, col, msg: str) -> XamlSyntaxError:
+    """XML001 (XML002 for an entity or DOCTYPE) at libxml2's place of the error."""
+    line, col = max(line or 1, 1), max(col or 1, 1)
+    col = _error_column(data, line, col, msg)
+    msg = re.sub(r", line \d+, column \d+$", "", msg)  # the diagnostic gives the place
+    code = "XML002" if ("entity" in msg.lower() or "doctype" in msg.lower()) else "XML001"
+    return XamlSyntaxError(
+        f"not well-formed XML: {msg}", code=code, file=file, line=line, column=col
+    )
+
+
+def parse_bytes(data: bytes, file: str = "<string>", limits: Limits | None = None):
+    """Parse XAML bytes safely; returns the root element. Raises XamlSyntaxError."""
+    limits = limits or DEFAULT_LIMITS
+    if len(data) > limits.max_bytes:
+        raise XamlSyntaxError(
+            f"document is {len(data)} bytes, above the limit of {limits.max_bytes}",
+            code="XML003",
+            file=file,
         )
+    _refuse_doctype(data, file)
+    try:
+        root, failure = _iterate(data, file, limits, recover=False)
+        lenient = False
+    except _NamespaceName:
+        lenient = True
+    if lenient:
+        # libxml2 refuses a namespace name that is not a valid URI (non-ASCII characters,
+        # "clr-namespace:App; assembly=Lib" with its space); .NET's XML reader, and so WPF,
+        # takes any string. Read again letting only that through: any other error still fails
+        root, failure = _iterate(data, file, limits, recover=True)
     if failure is not None:
         # raised outside the handler so that lxml's exception is not its context: that one
         # holds lxml's error log, which does not pickle, and a worker (a process pool, a Dask

@@ -158,11 +158,11 @@ def part(reader, kind: str, font: float, children=(), type: str = PART, **fields
 
 def text_part(reader, owner, text: str, font: float) -> L.Node:
     """One line of ``text`` in the owner's font and Foreground, sized by the font's metrics."""
-    weight, italic = _font_style(owner)
+    weight, italic = _font_style(owner, reader.r)
     n = part(reader, L.CONTROL, font, type=TEXT_PART)
     n.estimate = (text_width(text, font, weight, italic), line_height(font))
     if text:
-        family = _inherited(owner, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+        family = _inherited(owner, ("FontFamily", "TextElement.FontFamily"), reader.r) or "Segoe UI"
         n.drawing = TextDrawing(
             text=text, origin=(0.0, baseline(font)), font_size=font, weight=weight,
             italic=italic, family=family, brush=_foreground(reader.r, owner),
@@ -484,7 +484,7 @@ def _menu_item(reader, n, el, v, font) -> None:
     for k in header:  # the header's text is AccessText: its access-key marker is not shown
         if k.type == TEXT_PART and k.drawing is not None:
             text = _access_text(k.drawing.text)
-            w = text_width(text, font, *_font_style(el))
+            w = text_width(text, font, *_font_style(el, reader.r))
             k.estimate = (w, k.estimate[1])
             k.drawing = replace(k.drawing, text=text, brush=ink)
     n.children = [_presenter(reader, font, header, pad, "Left", "Center")]

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from xaml3d.errors import ValueSyntaxError
 from xaml3d.fonts import WEIGHTS
 from xaml3d.layout.text import baseline, line_height, text_width
 from xaml3d.scene.drawing import (
@@ -26,7 +27,7 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
-from xaml3d.xaml.panels_reader import _content_text
+from xaml3d.xaml.panels_reader import _content_text, element_style
 
 
 def _rgb(hex6: str, a: float = 1.0) -> SolidColorBrush:
@@ -47,28 +48,44 @@ def _text_of(el) -> str:
     return _content_text(el)
 
 
-def _inherited(el, names: tuple[str, ...]) -> str | None:
-    """An inherited text property as written on ``el`` or its nearest ancestor."""
+def _inherited(el, names: tuple[str, ...], r=None) -> str | None:
+    """An inherited text property as written on ``el`` or its nearest ancestor, or (with the
+    reader ``r``) set there by that element's Style: WPF's precedence, local value first."""
     node = el
     while node is not None:
         for name in names:
             raw = node.get(name)
             if raw is not None and split_markup(raw) is None:
                 return raw
+        if r is not None and isinstance(node.tag, str):
+            setters = element_style(r, node)
+            for name in names:
+                raw = setters.get(name.rpartition(".")[2])
+                if raw is not None and split_markup(raw) is None:
+                    return raw
         node = node.getparent()
     return None
 
 
-def _font_style(el) -> tuple[int, bool]:
-    w = _inherited(el, ("FontWeight", "TextElement.FontWeight")) or "Normal"
-    s = _inherited(el, ("FontStyle", "TextElement.FontStyle")) or "Normal"
+def _font_style(el, r=None) -> tuple[int, bool]:
+    """(weight, italic) in effect at ``el`` (``_inherited``; its Styles too when ``r``)."""
+    w = _inherited(el, ("FontWeight", "TextElement.FontWeight"), r) or "Normal"
+    s = _inherited(el, ("FontStyle", "TextElement.FontStyle"), r) or "Normal"
     weight = WEIGHTS.get(w.strip(), int(w) if w.strip().isdigit() else 400)
     return weight, s.strip() in ("Italic", "Oblique")
 
 
 def _brush(r, v, prop: str, default=None):
+    """The element's brush ``prop``: its own, else its Style's Setter (a colour), else
+    ``default``."""
     if v.p is not None and v.p.has(prop):
         return brush_property(r, v.p, prop)
+    raw = v.style.get(prop) if v.p is not None else None
+    if raw is not None and split_markup(raw) is None:
+        try:
+            return SolidColorBrush(color=V.parse_color(raw))
+        except ValueSyntaxError:
+            pass  # not a colour (a brush resource, a bad value): not drawn from here
     return default
 
 
@@ -99,6 +116,8 @@ def _box_drawing(background, border, thickness, radius, w: float, h: float) -> l
 
 
 def _foreground(r, el):
+    """The Foreground in effect at ``el``: its own, else its Style's, else inherited from the
+    nearest ancestor that sets one (locally or by its Style), as WPF's value precedence has it."""
     node = el
     while node is not None:
         if isinstance(node.tag, str):
@@ -110,6 +129,12 @@ def _foreground(r, el):
                     raw = p.attached[prop]
                     if split_markup(raw) is None:
                         return SolidColorBrush(color=V.parse_color(raw))
+            raw = element_style(r, node).get("Foreground")
+            if raw is not None and split_markup(raw) is None:
+                try:
+                    return SolidColorBrush(color=V.parse_color(raw))
+                except ValueSyntaxError:
+                    pass  # not a colour (a brush resource, a bad value): not drawn from here
         node = node.getparent()
     return BLACK
 
@@ -183,12 +208,12 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     text = _text_of(el)
     if not text:
         return None
-    weight, italic = _font_style(el)
+    weight, italic = _font_style(el, r)
     width = w + _SLACK if block and wraps(v) else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip
-    family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+    family = _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or "Segoe UI"
     brush = _foreground(r, el)
     out = []
     for i, line in enumerate(_lines(text, font, weight, italic, width)):
@@ -214,7 +239,7 @@ def _alignment(v) -> str:
 
 def base_format(r, el, font: float) -> Format:
     """The TextBlock's own text format, that its inlines start from."""
-    weight, italic = _font_style(el)
+    weight, italic = _font_style(el, r)
     return Format(size=font, weight=weight, italic=italic, brush=_foreground(r, el))
 
 
@@ -223,7 +248,7 @@ def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_cent
     line's shared baseline, an underlined run over a bar at the font's underline metrics."""
     from xaml3d.layout.text import underline
 
-    family = _inherited(el, ("FontFamily", "TextElement.FontFamily")) or "Segoe UI"
+    family = _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or "Segoe UI"
     alignment = _alignment(v)
     width = w + _SLACK if wraps(v) else math.inf
     out = []

@@ -38,7 +38,7 @@ from xaml3d.scene.drawing import (
 from xaml3d.scene.types import placeholder_image
 from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
-from xaml3d.xaml.brushes_reader import load_image
+from xaml3d.xaml.brushes_reader import image_source, load_image
 from xaml3d.xaml.context import qname
 from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels
 from xaml3d.xaml.controls_reader import (
@@ -52,6 +52,7 @@ from xaml3d.xaml.controls_reader import (
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
+    element_style,
     parse_thickness,
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
@@ -102,7 +103,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
         v = None
         own.extend(_part(n, ink_w, ink_h))
     else:
-        v = ElementValues(r, el)
+        v = ElementValues(r, el, element_style(r, el))
         _element(r, v, n, el, font, ink_w, ink_h, own)
     for k in n.children:
         _compile(r, reader, k, own, (x, y, sx, sy))
@@ -223,9 +224,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         _scroll_bar(r, v, w, h, out)
         return
     if local == "Image" and v.p is not None:
-        source = v.p.string("Source")
+        source, where, attr = image_source(r, v.p, "Source")
         if source:
-            image = load_image(r, source, el, v.p.attr_keys.get("Source"))[1]
+            image = load_image(r, source, where, attr)[1]
             if image is None:  # the diagnostic says a grey checker stands in
                 image = placeholder_image()
             if image is not None:
@@ -268,7 +269,7 @@ def attach_control_drawings(r, root, elements: dict) -> None:
         if el is None:
             continue
         out: list = []
-        v = ElementValues(r, el)
+        v = ElementValues(r, el, element_style(r, el))
         _element(r, v, n, el, font, n.ink[0], n.ink[1], out)
         if out:
             opacity = v.get("Opacity", V.parse_double, 1.0)
