@@ -22,6 +22,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from xaml3d.numba_env import load_cached_lightly
+
 SUBPIXEL = 256
 HALF = 128
 
@@ -666,42 +668,5 @@ def draw_pass(
     return drawn, tag + 1
 
 
-# numba versions whose cache internals _load_cached_lightly was checked against
-LIGHT_LOAD_CHECKED = {(0, 68)}
-
-
-def _load_cached_lightly(dispatcher) -> None:
-    """Load ``dispatcher``'s cached machine code without refreshing numba's whole typing and
-    lowering registries first.
-
-    numba's cache refreshes the target context before every load (``FunctionCache.
-    load_overload``): it imports and installs every registry numba has (typed lists and dicts,
-    random, polynomials, jitclass...), about 60 ms of CPU on the first load of a process, which
-    cached machine code does not need: it needs the runtime (``rtsys``, for the arrays passed
-    in) and the codegen only. Compiling still refreshes (``compiler.compile_extra`` does it
-    itself), so a cache miss costs what it did. The code loaded is the same, so are pictures.
-    Left as numba made it when its cache's private methods are not there, and on numba
-    versions this was not checked against (``LIGHT_LOAD_CHECKED``): it leans on private
-    methods, so a new numba takes its ordinary (slower, always right) path."""
-    if tuple(int(x) for x in numba.__version__.split(".")[:2]) not in LIGHT_LOAD_CHECKED:
-        return
-    cache = getattr(dispatcher, "_cache", None)
-    guard = getattr(cache, "_guard_against_spurious_io_errors", None)
-    load = getattr(cache, "_load_overload", None)
-    if guard is None or load is None:
-        return
-    from numba.core.runtime import rtsys
-
-    def load_overload(sig, target_context):
-        rtsys.initialize(target_context)
-        with guard():
-            return load(sig, target_context)
-        return None  # the guard swallowed a spurious I/O error: compile instead
-
-    cache.load_overload = load_overload
-
-
-for _kernel in list(globals().values()):
-    if isinstance(_kernel, numba.core.registry.CPUDispatcher):
-        _load_cached_lightly(_kernel)
-del _kernel
+# cached machine code loaded without refreshing numba's registries (``numba_env``)
+load_cached_lightly(globals())
