@@ -50,7 +50,7 @@ from xaml3d.render.brushes import (
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import DEPTH_OFFSET, Framebuffer
 from xaml3d.render.lighting import PreparedLights, prepare_lights, shade_vertices
-from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
+from xaml3d.render.raster import MAX_COORD, NEEDS_CLIPPING, Fragments, rasterize, set_up_side
 from xaml3d.scene.checks import unmapped
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.transforms import normal_matrix
@@ -182,47 +182,59 @@ def _vertex_screen(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext):
     """The vertex indices of the triangles ``tris``, which of them lie inside every clip plane
     (``tin``, per triangle), and per-vertex screen x, y, depth and 1/w (valid for the vertices
     inside)."""
-    clip = pm.clip
     idx = pm.model.mesh.indices[tris]
+    vin, sx, sy, dv, qv = _screen_vertices(pm, ctx)
+    tv = vin[idx]
+    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
+    return idx, tin, sx, sy, dv, qv
+
+
+def _screen_vertices(pm: PreparedModel, ctx: DrawContext):
+    """Per vertex: inside every clip plane (``vin``), and screen x, y, depth and 1/w (valid for
+    the vertices inside)."""
+    clip = pm.clip
     planes = np.stack(ctx.clip_planes)
     vin = clip[:, 3] > 0.0
     for dist in (clip @ planes.T).T:  # one plane at a time: faster than all(axis=1)
         vin &= dist <= 0.0
-    tv = vin[idx]
-    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
     # Per-vertex screen coordinates of the vertices that need no clipping.
     wv = np.where(vin, clip[:, 3], 1.0)
     qv = 1.0 / wv
     sx = (clip[:, 0] * qv + 1.0) * (ctx.width / 2.0)
     sy = (1.0 - clip[:, 1] * qv) * (ctx.height / 2.0)
     dv = -clip[:, 2] * qv
-    return idx, tin, sx, sy, dv, qv
+    return vin, sx, sy, dv, qv
 
 
 def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) -> bool:
     """Draw a side with one compiled loop per pass (``pass_loop``) when the kernels are loaded
-    and the side allows it (no triangle to clip, weights to interpolate); passes whose brush is
-    sampled outside the kernels (gradients, drawn tiles) take the fragment path in their turn.
-    False when the side does not allow it, and nothing was drawn."""
+    and the side allows it (no triangle to clip; solid colours, flat or Gouraud, and image
+    brushes); passes whose brush is sampled outside the kernels (gradients, drawn tiles) take
+    the fragment path in their turn. False when the side does not allow it, and nothing was
+    drawn."""
     kernels = accel.active()
-    # flat solid colours need no weights: blended straight from the per-triangle table
-    if kernels is None or (shaders[0].flat and all(sh.uniform for sh in shaders)):
+    if kernels is None:
         return False
     passes = [sh.loop_args(kernels) for sh in shaders]
     if all(p is None for p in passes):
         return False
-    idx, tin, sx, sy, dv, qv = _vertex_screen(pm, tris, ctx)
-    if not tin.all():
+    vin, sx, sy, dv, qv = _screen_vertices(pm, ctx)
+    indices = _read_only(shaders[0].indices)
+    # one compiled loop sets the side's triangles up (raster.set_up's arithmetic), gathering
+    # their vertices itself: no (T, 3) arrays for a million triangles
+    s = set_up_side(indices, tris, sx, sy, dv, qv, vin, fb.width, fb.height)
+    if s is NEEDS_CLIPPING:
         return False
     from xaml3d.render.pass_loop import SideLoop  # with the kernels only
 
-    xy = np.stack([sx[idx], sy[idx]], axis=-1)
-    side = SideLoop(fb, xy, dv[idx], qv[idx], tris, _read_only(shaders[0].indices), ctx.msaa)
+    side = SideLoop.of_set_up(fb, s, indices, ctx.msaa) if s is not None else None
     for shader, args in zip(shaders, passes, strict=True):
         # A kept framebuffer draws opaque/over passes band by band when it resolves
         # (``frame.FrameStore``). Additive passes clamp where the rasterizer's chunks end,
         # which bands would move: they, and the fragment path, are drawn now, after the passes
         # kept before them.
+        if side is None and args is not None:
+            continue  # no triangle covers a sample
         if args is not None and fb.deferred is not None and not args[-1]:
             fb.deferred.append((side, kernels, args))
             continue

@@ -485,6 +485,8 @@ def draw_pass(
     returned.
 
     ``mtri``: each set-up triangle's index in the mesh (``indices``, per-triangle ``colors``).
+    Per-triangle colours with a uniform brush (flat mode's solid colours) are taken once per
+    row of the triangle, not shaded per sample or image pixel (they need no weights).
     Additive passes clamp at 1 at the end of each of the rasterizer's chunks (``cap``
     fragments, whole rows), where ``blend_rows`` clamps: the same picture even for the rare
     negative colour (weights extrapolated at an edge). ``touched`` (scratch of ``cap`` +
@@ -492,7 +494,9 @@ def draw_pass(
     Returns (how many samples passed the depth test, the next free tag)."""
     tcount = A.shape[1]
     one = np.float32(1.0)
-    per_pixel = msaa > 1
+    # a solid colour per triangle (flat mode): the colour is the triangle's, at every sample
+    per_triangle = source == COLOR_PER_TRIANGLE and brush == BRUSH_UNIFORM
+    per_pixel = msaa > 1 and not per_triangle
     n = 0  # fragments of the rasterizer's current chunk
     nt = 0  # samples an additive pass touched in that chunk
     drawn = 0
@@ -551,6 +555,9 @@ def draw_pass(
             sub = 0
             last = -1  # the image pixel whose colour r0..r3 hold (this row)
             r0 = r1 = r2 = r3 = np.float32(0.0)
+            if per_triangle:
+                r0, r1, r2, r3 = _shade(0.0, 0.0, 0.0, vi0, vi1, vi2, mt, source, colors, brush,
+                                        uvp, lay, img)  # fmt: skip
             if per_pixel:
                 pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
                 if j // msaa != tag_row or t != tag_t:
@@ -620,7 +627,7 @@ def draw_pass(
                         r1 = cache[pp, 1]
                         r2 = cache[pp, 2]
                         r3 = cache[pp, 3]
-                elif not per_pixel:
+                elif not per_pixel and not per_triangle:
                     w0 = s0 + g0 * k
                     w1 = s1 + g1 * k
                     w2 = s2 + g2 * k
