@@ -142,11 +142,25 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             )  # fmt: skip
         )
         return None
+    mirror = bool(np.linalg.det(world[:3, :3]) < 0.0)
+    ccw, cw = _facing(clip, mesh.indices, mirror)
+    sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
+    return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
+
+
+def _facing(clip: np.ndarray, idx: np.ndarray, mirror: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Per triangle: front (counter-clockwise as seen, clockwise when ``mirror``) and back;
+    edge-on triangles are neither. A big mesh, once numba is loaded, takes the compiled loop
+    (``setup_kernels.facing``: the same expressions)."""
+    if accel.for_set_up(idx.shape[0]) is not None:
+        from xaml3d.render.setup_kernels import facing  # with the kernels only
+
+        c = np.ascontiguousarray
+        return facing(c(clip, dtype=np.float64), c(idx, dtype=np.int64), mirror)
     # det [x y w] of the three vertices, expanded by the first column. Only its sign is used:
     # each vertex's (x, y, w) is first divided by its largest magnitude (a positive factor per
     # row keeps the sign), so coordinates near 1e308 cannot overflow the products, and a
     # product too small for a double is 0 (harmless).
-    idx = mesh.indices
     xyw = clip[:, [0, 1, 3]]
     scale = np.max(np.abs(xyw), axis=1, keepdims=True)
     with np.errstate(under="ignore"):
@@ -157,11 +171,9 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             - y[:, 0] * (x[:, 1] * w[:, 2] - x[:, 2] * w[:, 1])
             + w[:, 0] * (x[:, 1] * y[:, 2] - x[:, 2] * y[:, 1])
         )
-    mirror = np.linalg.det(world[:3, :3]) < 0.0
     ccw = det < 0.0 if mirror else det > 0.0
     cw = det > 0.0 if mirror else det < 0.0
-    sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
-    return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
+    return ccw, cw
 
 
 SINGLE_MAX = float(np.finfo(np.float32).max)

@@ -1,17 +1,19 @@
 """Compiled triangle set-up (numba) for the rasterizer's loops (camera-pipeline.md section 6,
-step 6): ``raster.set_up``'s snapping to 1/256 pixel, candidate pixel boxes, integer edge
-functions with the top-left bias and depth planes, in ONE loop over the triangles, reading the
-per-vertex screen coordinates through the mesh's indices.
+steps 2 and 6): ``raster.set_up``'s snapping to 1/256 pixel, candidate pixel boxes, integer
+edge functions with the top-left bias and depth planes, in ONE loop over the triangles, reading
+the per-vertex screen coordinates through the mesh's indices; and ``draw.prepare_model``'s
+facing test (``draw._facing``: the homogeneous orientation det [x y w]) the same way.
 
 Why: in numpy the same set-up of a million triangles is a few dozen passes over (T, 3)
 arrays: gathers of the vertices, a sort per triangle for the depth planes' canonical corner,
 hundreds of MB of temporaries. Here each triangle is set up in registers and only what the
 loops read is written.
 
-Every value is computed with the expressions of ``raster._snap``, ``raster._edges`` and
-``raster._depth_planes``, in the same order and types (no fastmath: no reassociation, no fused
-multiply-adds), so the arrays are bit-identical to numpy's, and so are the pictures
-(``tests/test_raster.py``). Imported only with the renderer's kernels (``accel.active``).
+Every value is computed with the expressions of ``raster._snap``, ``raster._edges``,
+``raster._depth_planes`` and ``draw._facing``, in the same order and types (no fastmath: no
+reassociation, no fused multiply-adds), so the arrays are bit-identical to numpy's, and so are
+the pictures (``tests/test_raster.py``, ``tests/test_facing.py``). Imported only with the
+renderer's kernels (``accel.active``, ``accel.for_set_up``).
 """
 
 from __future__ import annotations
@@ -181,6 +183,41 @@ def _depth_plane(X, Y, z):
     gx = (dz1 * dy2 - dz2 * dy1) / area
     gy = (dz2 * dx1 - dz1 * dx2) / area
     return gx, gy, z[a], float(X[a]), float(Y[a])
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def facing(clip, indices, mirror):
+    """``draw._facing``: the facing of every triangle of ``indices`` (T, 3) from the
+    homogeneous clip coordinates ``clip`` (N, 4), finite: each vertex's (x, y, w) divided by
+    its largest magnitude, then the sign of det [x y w] expanded by the first column, the
+    same expressions in the same order. Returns (front, back) (T,) bool: counter-clockwise
+    (clockwise when ``mirror``) and the opposite; edge-on triangles (det 0) are neither."""
+    t_count = indices.shape[0]
+    front = np.empty(t_count, dtype=np.bool_)
+    back = np.empty(t_count, dtype=np.bool_)
+    x = np.empty(3)
+    y = np.empty(3)
+    w = np.empty(3)
+    for t in range(t_count):
+        for v in range(3):
+            i = indices[t, v]
+            cx = clip[i, 0]
+            cy = clip[i, 1]
+            cw = clip[i, 3]
+            scale = max(max(abs(cx), abs(cy)), abs(cw))
+            if not scale > 0.0:
+                scale = 1.0
+            x[v] = cx / scale
+            y[v] = cy / scale
+            w[v] = cw / scale
+        det = (
+            x[0] * (y[1] * w[2] - y[2] * w[1])
+            - y[0] * (x[1] * w[2] - x[2] * w[1])
+            + w[0] * (x[1] * y[2] - x[2] * y[1])
+        )
+        front[t] = det < 0.0 if mirror else det > 0.0
+        back[t] = det > 0.0 if mirror else det < 0.0
+    return front, back
 
 
 # cached machine code loaded without refreshing numba's registries (``numba_env``)
