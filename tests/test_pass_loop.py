@@ -131,14 +131,19 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
         assert 0 < np.count_nonzero(a.rgba[..., 3]) < a.rgba[..., 3].size  # a picture drawn
 
 
+@pytest.mark.parametrize("compiled_set_up", [False, True])
 @pytest.mark.parametrize("view", sorted(VIEWS))
-def test_flat_solid_colours_loop_like_the_other_paths(view, tmp_path, monkeypatch):
+def test_flat_solid_colours_loop_like_the_other_paths(view, compiled_set_up, tmp_path,
+                                                       monkeypatch):  # fmt: skip
     """Flat mode with solid colours only (translucent diffuse, specular and emissive passes on
     both sides): each pass is one compiled loop with the triangle's colour (``draw_pass``'s
-    per-triangle colours), the same picture as the numpy path and the fragment path."""
+    per-triangle colours), the same picture as the numpy path and the fragment path, with the
+    sides set up by numpy or by the compiled set-up (``raster.set_up_side``, big meshes)."""
     import re
 
     from xaml3d.render import kernels
+
+    monkeypatch.setattr(accel, "SET_UP_WORTH", 0 if compiled_set_up else 10**9)
 
     path = Path(_scene(tmp_path, "None", view).file)
     text = re.sub(r"<ImageBrush[^>]*/>", '<SolidColorBrush Color="#B080C040" />',

@@ -41,9 +41,10 @@ TRIANGLES_WORTH = 2_000_000
 # Once numba is imported and running (the reader's number scanner loads it for big files), the
 # kernels cost only their cached machine code, about 0.02 s: far less work pays.
 IMPORTED_WORTH = 500_000
-# A mesh this big has its facing computed by the compiled set-up once numba is imported: numpy
-# takes about 0.1 s for a million triangles (gathers and products of (T, 3) arrays), the
-# compiled loop a few ms.
+# From this many triangles a side is set up (``raster.set_up``) and a mesh's facing computed by
+# the compiled set-up (``setup_kernels``), the latter as soon as numba is imported: numpy takes
+# about 0.1 s each for a million triangles (gathers, products and sorts of (T, 3) arrays), the
+# compiled loops a few ms, and loading one of them from numba's cache about 0.03 s.
 SET_UP_WORTH = 200_000
 
 _kernels = None

@@ -230,16 +230,23 @@ def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) 
     passes = [sh.loop_args(kernels) for sh in shaders]
     if all(p is None for p in passes):
         return False
-    vin, sx, sy, dv, qv = _screen_vertices(pm, ctx)
-    indices = _read_only(shaders[0].indices)
-    # one compiled loop sets the side's triangles up (raster.set_up's arithmetic), gathering
-    # their vertices itself: no (T, 3) arrays for a million triangles
-    s = set_up_side(indices, tris, sx, sy, dv, qv, vin, fb.width, fb.height)
-    if s is NEEDS_CLIPPING:
-        return False
     from xaml3d.render.pass_loop import SideLoop  # with the kernels only
 
-    side = SideLoop.of_set_up(fb, s, indices, ctx.msaa) if s is not None else None
+    indices = _read_only(shaders[0].indices)
+    if tris.size >= accel.SET_UP_WORTH:
+        # one compiled loop sets the side's triangles up (raster.set_up's arithmetic),
+        # gathering their vertices itself: no (T, 3) arrays for a million triangles
+        vin, sx, sy, dv, qv = _screen_vertices(pm, ctx)
+        s = set_up_side(indices, tris, sx, sy, dv, qv, vin, fb.width, fb.height)
+        if s is NEEDS_CLIPPING:
+            return False
+        side = SideLoop.of_set_up(fb, s, indices, ctx.msaa) if s is not None else None
+    else:  # numpy's set-up: quicker than loading the compiled one's machine code
+        idx, tin, sx, sy, dv, qv = _vertex_screen(pm, tris, ctx)
+        if not tin.all():
+            return False
+        xy = np.stack([sx[idx], sy[idx]], axis=-1)
+        side = SideLoop(fb, xy, dv[idx], qv[idx], tris, indices, ctx.msaa)
     for shader, args in zip(shaders, passes, strict=True):
         # A kept framebuffer draws opaque/over passes band by band when it resolves
         # (``frame.FrameStore``). Additive passes clamp where the rasterizer's chunks end,
@@ -378,19 +385,15 @@ class PassShader:
         self.uniform = brush_is_uniform(brush)
         self.density = None  # screen pixels per texture unit, for drawn tiles (draw_model)
         self.indices = np.ascontiguousarray(self.indices, dtype=np.int64)
-        if self.uniform:
+        if self.uniform and flat:  # the table is this shader's own: scaled in place
+            self.colors *= brush_average(brush)[None, :]
+        elif self.uniform:
             self.colors = self.colors * brush_average(brush)[None, :]
         else:
             self.texcoords = pm.model.mesh.texcoords
             self.bounds = brush_bounds(self.texcoords)
             self._uv_planes = np.ascontiguousarray(self.texcoords.T, dtype=np.float64)
-        if flat and self.uniform:
-            # The final float32 colour per triangle, gathered 16 bytes at a time as one
-            # complex128 element (the framebuffer blends float32; see frame.py).
-            with np.errstate(under="ignore"):  # specular powers can fall below float32's range
-                c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
-            self._c16 = c32.view(np.complex128).reshape(-1)
-        elif not flat:
+        if not flat:
             self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)
         self._layout = None
         if isinstance(brush, ImageBrush):
@@ -398,6 +401,15 @@ class PassShader:
         self._image = _NO_IMAGE
         if self._layout is not None:
             self._image = np.ascontiguousarray(premultiplied_image(brush.image), np.float64)
+
+    @cached_property
+    def _c16(self) -> np.ndarray:
+        """Flat solid colours: the final float32 colour per triangle, gathered 16 bytes at a
+        time as one complex128 element (the framebuffer blends float32; see frame.py). Made
+        when the fragment path first asks (the compiled pass loop reads ``colors`` itself)."""
+        with np.errstate(under="ignore"):  # specular powers can fall below float32's range
+            c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
+        return c32.view(np.complex128).reshape(-1)
 
     def draw(self, fb: Framebuffer, frag: Fragments) -> None:
         """Shade ``frag`` and blend it into ``fb``: with the compiled kernels loaded, one

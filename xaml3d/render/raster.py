@@ -181,8 +181,10 @@ def set_up(xy, depth, width: int, height: int, inv_w=None) -> SetUp | None:
     """``rasterize``'s set-up of triangles ``xy`` (T, 3, 2), without rasterizing them: the same
     snapping, boxes, edge functions and depth planes, so a loop over them finds exactly the
     fragments ``rasterize`` yields, in the same order. None when no triangle can cover a pixel.
-    With the kernels loaded, one compiled loop (``setup_kernels``) computes the same arrays."""
-    if accel.active() is not None:
+    With the kernels loaded, one compiled loop (``setup_kernels``) computes the same arrays
+    for ``accel.SET_UP_WORTH`` triangles or more (loading its machine code costs more than
+    numpy's set-up of fewer)."""
+    if accel.active() is not None and len(xy) >= accel.SET_UP_WORTH:
         xy = np.asarray(xy, dtype=np.float64)
         t = xy.shape[0]
         persp = inv_w is not None
