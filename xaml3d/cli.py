@@ -71,37 +71,9 @@ def main(ctx: click.Context) -> None:
     pass
 
 
-# glibc's mallopt parameters
-_M_TRIM_THRESHOLD = -1
-_M_MMAP_MAX = -4
-
-
-def _keep_freed_memory() -> None:
-    """Big blocks from the process's heap, and freed memory kept there for the next ones
-    (glibc; elsewhere nothing changes).
-
-    By default glibc maps every block above a few MB afresh and unmaps it when freed, so
-    each of numpy's big temporaries, and the framebuffer, is memory never touched before:
-    on the VMs this runs on, the first touch of a fresh page costs 0.4-3 ms per MB, which
-    made up a third of a 1M-triangle render (the set-up's temporaries, the 200 MB sample
-    buffers). From the heap, a block reuses the memory the reader and the earlier steps
-    freed (already mapped), and only the peak is ever touched fresh; the process's peak
-    memory grows by a few percent (freed blocks are not given back while it runs, and it
-    ends right after the command). Threads keep their own arenas, which map as before."""
-    try:
-        import ctypes
-
-        mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError, ImportError):  # not glibc (macOS, Windows)
-        return
-    mallopt(_M_MMAP_MAX, 0)
-    mallopt(_M_TRIM_THRESHOLD, 2**31 - 1)
-
-
 def run() -> None:
     """The process's entry point (the ``xaml3d`` script, ``python -m xaml3d``): ``main``, then
-    the process ends at once with its exit status, its output flushed; its big blocks come
-    from the heap (``_keep_freed_memory``).
+    the process ends at once with its exit status, its output flushed.
 
     A normal interpreter shutdown tears down every module and object one by one: with a
     million-triangle scene and numba loaded that took 0.2-0.45 s (measured on a loaded 2-core
@@ -109,7 +81,6 @@ def run() -> None:
     commands write is closed before they return, so nothing is lost by skipping it. When a
     thread or a child process is still running (not the case after any command), or stdout
     cannot be flushed (a closed pipe), the usual shutdown runs instead, as before."""
-    _keep_freed_memory()
     try:
         main()
     except SystemExit as exc:
