@@ -205,3 +205,51 @@ def test_camera_viewport_all_is_a_usage_error(tmp_path):
         "x:Name (the scene has 1 viewport)"
     )
     assert xaml3d("camera", "s.xaml", "--viewport", "0", cwd=tmp_path).returncode == 0
+
+
+def test_command_line_keeps_freed_memory_for_its_next_blocks():
+    """For a big file the command line's big blocks come from its heap and freed ones stay
+    there (``cli_common.keep_freed_memory``, glibc): a freed 160 MB array is not given back to
+    the system, and the next one of that size reuses it instead of touching fresh memory."""
+    import ctypes
+
+    import pytest
+
+    try:
+        ctypes.CDLL(None).mallopt  # noqa: B018 (glibc's)
+    except AttributeError:
+        pytest.skip("no mallopt (not glibc)")
+    code = (
+        "import numpy as np; from xaml3d import cli_common\n"
+        "def rss(): return int(open('/proc/self/statm').read().split()[1]) * 4096 >> 20\n"
+        "if KEEP: cli_common.keep_freed_memory()\n"
+        "a = np.ones(20_000_000); before = rss(); del a; freed = rss()\n"
+        "b = np.ones(20_000_000); again = rss()\n"
+        "print(before - freed, again - freed)"
+    )
+    drops = {}
+    for keep in (False, True):
+        out = subprocess.run([sys.executable, "-c", f"KEEP = {keep}\n" + code],
+                             capture_output=True, text=True)  # fmt: skip
+        assert out.returncode == 0, out.stderr
+        drops[keep] = [int(x) for x in out.stdout.split()]
+    assert drops[False][0] > 120 and drops[False][1] > 120  # given back, then touched afresh
+    assert drops[True][0] < 10 and drops[True][1] < 10  # kept, then reused
+
+
+def test_only_big_files_keep_freed_memory(tmp_path, monkeypatch):
+    """``load_scene`` keeps freed memory for files of BIG_INPUT bytes or more only: a small
+    scene's supersampled buffers are cheaper as fresh mappings."""
+    from xaml3d import cli_common
+
+    calls = []
+    monkeypatch.setattr(cli_common, "keep_freed_memory", lambda: calls.append(1))
+    small = tmp_path / "small.xaml"
+    small.write_text(SQUARE, encoding="utf-8")
+    cli_common.load_scene(str(small))
+    assert calls == []
+    big = tmp_path / "big.xaml"
+    pad = "<!-- " + "x" * 1000 + " -->\n"
+    big.write_text(SQUARE + pad * (cli_common.BIG_INPUT // len(pad) + 1), encoding="utf-8")
+    cli_common.load_scene(str(big))
+    assert calls == [1]

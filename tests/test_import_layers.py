@@ -54,3 +54,13 @@ def test_every_command_line_module_is_in_the_contracts():
     forbidden = set(no_cli["forbidden_modules"])
     modules = {f"xaml3d.{p.stem}" for p in (ROOT / "xaml3d").glob("cli*.py")}
     assert modules <= cli_layer and modules <= forbidden, modules - (cli_layer & forbidden)
+
+
+def test_a_png_render_does_not_import_the_svg_writer():
+    """The SVG writer's escaping imports urllib.request, http.client and email (15-35 ms of
+    start-up): the render command's modules import it only when an SVG is written."""
+    mods = _modules_after(
+        "import xaml3d.cli, xaml3d.cli_render, xaml3d.cli_batch, xaml3d.cli_render_extras"
+    )
+    assert "xaml3d.cli_render_extras" in mods
+    assert not {"xaml3d.render.svg", "xml.sax.saxutils", "urllib.request"} & mods

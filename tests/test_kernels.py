@@ -374,9 +374,10 @@ def test_cached_kernels_load_without_numba_registries():
     assert int(hits) > 0
     import numba
 
-    from xaml3d.render import kernels
+    from xaml3d import numba_env
 
     # on a numba this was not checked against, the ordinary loading (registries) is kept
-    checked = tuple(int(x) for x in numba.__version__.split(".")[:2]) in kernels.LIGHT_LOAD_CHECKED
+    version = tuple(int(x) for x in numba.__version__.split(".")[:2])
+    checked = version in numba_env.LIGHT_LOAD_CHECKED
     assert registries == str(not checked)
     assert run("numpy")[0] == digest

@@ -219,3 +219,34 @@ def test_small_scenes_do_not_import_numba():
     )
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "False"
+
+
+def test_cached_scanner_loads_without_numba_registries():
+    """The scanner is often the first compiled code a process loads (a big file): found in
+    numba's cache, its machine code loads without numba's typing registries (typed lists among
+    them), as the renderer's kernels do (``numba_env.load_cached_lightly``), and converts the
+    same values."""
+    code = (
+        "import sys, hashlib; from xaml3d.xaml import values, number_scan; "
+        "a = values.number_array(' '.join(['1.5', '-2e-3', '7'] * 70_000), 'X'); "
+        "hits = sum(number_scan.scan.stats.cache_hits.values()); "
+        "print(hashlib.sha256(a.tobytes()).hexdigest(), hits, "
+        "'numba.typed.typedlist' in sys.modules)"
+    )
+
+    def run(kernels):
+        env = dict(os.environ, **{numba_env.ENV: kernels})
+        out = subprocess.run(
+            [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True
+        )
+        assert out.returncode == 0, out.stderr
+        return out.stdout.split()
+
+    run("numba")  # fills numba's cache when it is cold
+    digest, hits, registries = run("numba")
+    assert int(hits) > 0
+    import numba
+
+    version = tuple(int(x) for x in numba.__version__.split(".")[:2])
+    assert registries == str(version not in numba_env.LIGHT_LOAD_CHECKED)
+    assert run("numpy")[0] == digest

@@ -131,12 +131,63 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
         assert 0 < np.count_nonzero(a.rgba[..., 3]) < a.rgba[..., 3].size  # a picture drawn
 
 
+@pytest.mark.parametrize("compiled_set_up", [False, True])
+@pytest.mark.parametrize("view", sorted(VIEWS))
+def test_flat_solid_colours_loop_like_the_other_paths(view, compiled_set_up, tmp_path,
+                                                       monkeypatch):  # fmt: skip
+    """Flat mode with solid colours only (translucent diffuse, specular and emissive passes on
+    both sides): each pass is one compiled loop with the triangle's colour (``draw_pass``'s
+    per-triangle colours), the same picture as the numpy path and the fragment path, with the
+    sides set up by numpy or by the compiled set-up (``raster.set_up_side``, big meshes)."""
+    import re
+
+    from xaml3d.render import kernels
+
+    monkeypatch.setattr(accel, "SET_UP_WORTH", 0 if compiled_set_up else 10**9)
+
+    path = Path(_scene(tmp_path, "None", view).file)
+    text = re.sub(r"<ImageBrush[^>]*/>", '<SolidColorBrush Color="#B080C040" />',
+                  path.read_text(encoding="utf-8"))  # fmt: skip
+    path.write_text(text, encoding="utf-8")
+    scene = load(path)
+    loops = []
+    draw_pass = kernels.draw_pass
+
+    def counting(*args):
+        loops.append((args[19], args[21]))  # colour source, brush kind
+        return draw_pass(*args)
+
+    monkeypatch.setattr(kernels, "draw_pass", counting)
+    compiled = draw._draw_side_compiled
+    for opts in ({"mode": "flat"}, {"mode": "flat", "ssaa": 1}, {"mode": "flat", "msaa": 3}):
+        monkeypatch.setenv(accel.ENV, "numpy")
+        a = render_arrays(scene, **opts)
+        monkeypatch.setenv(accel.ENV, "numba")
+        monkeypatch.setattr(draw, "_draw_side_compiled", lambda *args: False)
+        b = render_arrays(scene, **opts)
+        monkeypatch.setattr(draw, "_draw_side_compiled", compiled)
+        loops.clear()
+        c = render_arrays(scene, **opts)
+        assert set(loops) == {(kernels.COLOR_PER_TRIANGLE, kernels.BRUSH_UNIFORM)}
+        if view == "outside":  # every pass of both sides in its loop
+            assert len(loops) == 6, opts
+        else:  # the clipped side takes the fragment path; the other still loops
+            assert 0 < len(loops) < 6, opts
+        for x in (b, c):
+            assert np.array_equal(a.rgba, x.rgba), opts
+            assert np.array_equal(a.depth, x.depth), opts
+        assert 0 < np.count_nonzero(a.rgba[..., 3]) < a.rgba[..., 3].size  # a picture drawn
+
+
+@pytest.mark.parametrize("per_triangle", [False, True])
 @pytest.mark.parametrize("msaa", [1, 2])
 @pytest.mark.parametrize("additive", [False, True])
-def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
+def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, per_triangle, monkeypatch):
     """Overlapping triangles, colours below 0 and above 1, depths beyond the far plane, tiny
     chunks: the one loop against ``raster_chunk`` + ``shade_rows`` + ``blend_rows`` chunk by
-    chunk (an additive pass clamps at 1 at the end of each chunk, not after each addition)."""
+    chunk (an additive pass clamps at 1 at the end of each chunk, not after each addition).
+    ``per_triangle``: flat solid colours, one per triangle, against the fragment path's
+    weightless fragments blended from the float32 table (``PassShader.draw``)."""
     monkeypatch.setenv(accel.ENV, "numba")
     from xaml3d.render.frame import Framebuffer
     from xaml3d.render.raster import rasterize, set_up
@@ -156,11 +207,20 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
     for a in (planes, no_uv, no_lay, no_img):
         a.flags.writeable = False
 
+    table = rng.uniform(-0.6, 1.4, size=(t, 4))  # flat colours, per triangle
+    table[::3, 3] = 1.0  # opaque ones too: replaced, not blended
+    table.flags.writeable = False
     want = Framebuffer(w, h)
-    for frag in rasterize(xy, depth, w, h, q, budget=cap, msaa=msaa):
+    for frag in rasterize(xy, depth, w, h, q, budget=cap, msaa=msaa, weights=not per_triangle):
         keep = frag.depth <= 1.0
         frag = frag.select(keep)
         if len(frag) == 0:
+            continue
+        if per_triangle:
+            want.fragments_drawn += kernels.blend_rows(
+                want.zbuf, want.color, frag.pixel, frag.depth - 2.0, frag.tri,
+                table.astype(np.float32), additive,
+            )  # fmt: skip
             continue
         rtri = frag.tri if frag.inverse is None else frag.wtri
         inverse = np.zeros(0, np.int64) if frag.inverse is None else frag.inverse
@@ -177,9 +237,12 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
     owner = np.full(w, -1, dtype=np.int64)
     cache = np.empty((owner.size, 4), np.float32)
     touched = np.empty(cap + w, dtype=np.int64)
+    source, colors = kernels.COLOR_PLANES, planes
+    if per_triangle:
+        source, colors = kernels.COLOR_PER_TRIANGLE, table
     got.fragments_drawn, tag = kernels.draw_pass(
         *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w, s.tris.astype(np.int64),
-        indices, kernels.COLOR_PLANES, planes, kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img,
+        indices, source, colors, kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img,
         additive, got.zbuf, got.color, owner, cache, 0, cap, touched,
     )  # fmt: skip
     assert got.fragments_drawn == want.fragments_drawn > 1000

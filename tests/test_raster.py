@@ -146,3 +146,93 @@ def test_row_budget_split_gives_the_same_fragments(monkeypatch):
     split = collect()
     for a, b in zip(whole, split, strict=True):
         assert np.array_equal(a, b)
+
+
+def _same(a, b) -> bool:
+    """Equal bit for bit, with the same dtype, shape and C layout."""
+    a, b = np.asarray(a), np.asarray(b)
+    return (
+        a.dtype == b.dtype
+        and a.shape == b.shape
+        and a.flags.c_contiguous
+        and b.flags.c_contiguous
+        and np.array_equal(a.view(np.uint8), b.view(np.uint8))
+    )
+
+
+def _awkward_triangles(t=6000, w=320, h=200, seed=5):
+    """Triangles of every kind the set-up sorts out: on and off the grid, both windings,
+    vertices on pixel centres and edges (ties of the fill rule and of the depth planes'
+    canonical corner), degenerate ones, NaN and coordinates beyond MAX_COORD."""
+    from xaml3d.render.raster import MAX_COORD
+
+    rng = np.random.default_rng(seed)
+    xy = rng.uniform(-40, w + 40, size=(t, 3, 2))
+    xy[::5] = np.round(xy[::5] * 2) / 2  # on pixel centres and edges
+    xy[1::7, :, 0] = xy[1::7, :1, 0]  # same x: vertical edges, zero area
+    xy[2::11, 1] = xy[2::11, 0]  # a repeated vertex
+    xy[3::13, :, 1] += 5000.0  # below the grid
+    xy[4::17] *= 1e-3  # tiny: zero snapped area
+    xy[6, 2, 1] = np.nan
+    xy[8, 0, 0] = MAX_COORD * 1.5
+    xy[10, 1, 1] = -np.inf
+    depth = rng.uniform(-0.2, 1.4, size=(t, 3))
+    depth[::9] = 0.5  # constant depth: gradient exactly 0
+    q = rng.uniform(0.3, 3.0, size=(t, 3))
+    return xy, depth, q, w, h
+
+
+def test_compiled_set_up_is_bit_identical(monkeypatch):
+    """The compiled set-up (``setup_kernels``) gives numpy's arrays bit for bit: snapping,
+    boxes, edge functions with the top-left bias, depth planes, 1/area, 1/w."""
+    from xaml3d.render import accel
+    from xaml3d.render.raster import set_up
+
+    xy, depth, q, w, h = _awkward_triangles()
+    monkeypatch.setenv(accel.ENV, "numpy")
+    want = [set_up(xy, depth, w, h, q), set_up(xy, depth, w, h)]
+    monkeypatch.setenv(accel.ENV, "numba")
+    monkeypatch.setattr(accel, "SET_UP_WORTH", 0)  # compiled for any count
+    accel.plan(0.0, 0)  # loads the kernels
+    got = [set_up(xy, depth, w, h, q), set_up(xy, depth, w, h)]
+    for a, b in zip(want, got, strict=True):
+        assert 1000 < a.tris.size < xy.shape[0]  # some triangles were dropped, most kept
+        assert _same(a.tris.astype(np.int64), b.tris)
+        for x, y in zip((*a.edges, *a.box, *a.plane), (*b.edges, *b.box, *b.plane), strict=True):
+            assert _same(x, y)
+        assert _same(a.inv_area, b.inv_area)
+        assert _same(a.q, b.q) and a.persp == b.persp
+        assert a.estimate == b.estimate
+    assert set_up(xy[:0], depth[:0], w, h, q[:0]) is None
+    assert set_up(xy + 1e4, depth, w, h, q) is None  # nothing on the grid
+
+
+def test_set_up_side_reads_vertices_through_the_indices(monkeypatch):
+    """``set_up_side`` of mesh triangles (per-vertex arrays and indices, a subset of the
+    triangles) equals ``set_up`` of their gathered coordinates, its ``tris`` naming mesh
+    triangles; a vertex outside a clip plane asks for the fragment path."""
+    from xaml3d.render import accel
+    from xaml3d.render.raster import NEEDS_CLIPPING, set_up, set_up_side
+
+    xy, depth, q, w, h = _awkward_triangles(t=3000, seed=8)
+    # shared vertices: a mesh of 3000 random triangles over 1500 vertices
+    rng = np.random.default_rng(2)
+    nv = 1500
+    sx, sy = xy[:500].reshape(-1, 2).T
+    dv, qv = depth[:500].ravel(), q[:500].ravel()
+    indices = rng.integers(0, nv, size=(3000, 3)).astype(np.int64)
+    tris = np.flatnonzero(rng.random(3000) < 0.6)
+    vin = np.ones(nv, dtype=bool)
+    monkeypatch.setenv(accel.ENV, "numba")
+    accel.plan(0.0, 0)
+    idx = indices[tris]
+    want = set_up(np.stack([sx[idx], sy[idx]], axis=-1), dv[idx], w, h, qv[idx])
+    got = set_up_side(indices, tris, sx, sy, dv, qv, vin, w, h)
+    assert _same(tris[want.tris], got.tris)
+    a = (*want.edges, *want.box, *want.plane, want.inv_area, want.q)
+    b = (*got.edges, *got.box, *got.plane, got.inv_area, got.q)
+    for x, y in zip(a, b, strict=True):
+        assert _same(x, y)
+    vin[indices[tris[-1], 2]] = False
+    assert set_up_side(indices, tris, sx, sy, dv, qv, vin, w, h) is NEEDS_CLIPPING
+    assert set_up_side(indices, tris[:0], sx, sy, dv, qv, vin, w, h) is None

@@ -27,7 +27,6 @@ from xaml3d.cli_common import (
 from xaml3d.cli_outputs import _resolved
 from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
 from xaml3d.output.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
-from xaml3d.render.svg import wireframe_svg
 from xaml3d.scene.lens import (
     MAX_LENS_SAMPLES,
     STEREO_FRACTION,
@@ -381,6 +380,10 @@ def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diag
 def write_svg(scene, vp, size, settings, target) -> list:
     """Render the SVG wireframe of viewport ``vp`` at ``size``; write it to ``target`` (a Path,
     or '-' for stdout)."""
+    # imported here: the SVG writer's XML escaping pulls in urllib.request, http.client and
+    # email (about 15-35 ms), which a PNG render does not need
+    from xaml3d.render.svg import wireframe_svg
+
     text, diags = wireframe_svg(scene, settings=settings.replace(viewport=vp.index), size=size)
     if not any(d.severity == "error" for d in diags):
         if target == "-":

@@ -188,7 +188,9 @@ def _render_viewport(
     progress = Progress(f"{file}: lens samples", ex.progress and terminal,
                         log=ex.progress and not terminal and not opts.quiet)  # fmt: skip
     try:
-        result = render_scene(scene, settings, size=size, progress=progress)
+        # the depth and distance images only when a --depth/--ids file is written
+        result = render_scene(scene, settings, size=size, progress=progress,
+                              depth=bool(ex.depth or ex.ids))  # fmt: skip
     finally:
         progress.close()
     image = _checked(result.diagnostics, result.image, file, opts, diags)

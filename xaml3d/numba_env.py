@@ -3,6 +3,9 @@
 Shared by the renderer's kernels (``xaml3d.render.accel``) and the reader's number scanner
 (``xaml3d.xaml.numbers``): both load numba lazily, only when the work pays for its start-up.
 
+``load_cached_lightly``: every compiled module (the renderer's kernels, the reader's scanners)
+loads its cached machine code without numba's registry refresh, whichever is loaded first.
+
 ``XAML3D_KERNELS`` chooses: ``auto`` (default: each user decides by its own work estimate),
 ``numba`` (always; an error when numba cannot be imported) or ``numpy`` (never).
 
@@ -47,3 +50,48 @@ def set_cache_dir(environ=None) -> str:
     folder = tempfile.mkdtemp(prefix="xaml3d-numba-")  # last resort: a fresh private folder
     env["NUMBA_CACHE_DIR"] = folder
     return folder
+
+
+# numba versions whose cache internals ``load_cached_lightly`` was checked against
+LIGHT_LOAD_CHECKED = {(0, 68)}
+
+
+def load_cached_lightly(namespace: dict) -> None:
+    """Let every compiled function (numba dispatcher) in ``namespace`` (a module's globals)
+    load its cached machine code without refreshing numba's whole typing and lowering
+    registries first.
+
+    numba's cache refreshes the target context before every load (``FunctionCache.
+    load_overload``): it imports and installs every registry numba has (typed lists and dicts,
+    random, polynomials, jitclass...), about 60 ms of CPU on the first load of a process, which
+    cached machine code does not need: it needs the runtime (``rtsys``, for the arrays passed
+    in) and the codegen only. Compiling still refreshes (``compiler.compile_extra`` does it
+    itself), so a cache miss costs what it did. The code loaded is the same, so are the
+    results. Left as numba made it when its cache's private methods are not there, and on
+    numba versions this was not checked against (``LIGHT_LOAD_CHECKED``): it leans on private
+    methods, so a new numba takes its ordinary (slower, always right) path. Called by a module
+    that has imported numba already."""
+    import numba
+
+    if tuple(int(x) for x in numba.__version__.split(".")[:2]) not in LIGHT_LOAD_CHECKED:
+        return
+    for dispatcher in list(namespace.values()):
+        if isinstance(dispatcher, numba.core.registry.CPUDispatcher):
+            _load_lightly(dispatcher)
+
+
+def _load_lightly(dispatcher) -> None:
+    cache = getattr(dispatcher, "_cache", None)
+    guard = getattr(cache, "_guard_against_spurious_io_errors", None)
+    load = getattr(cache, "_load_overload", None)
+    if guard is None or load is None:
+        return
+    from numba.core.runtime import rtsys
+
+    def load_overload(sig, target_context):
+        rtsys.initialize(target_context)
+        with guard():
+            return load(sig, target_context)
+        return None  # the guard swallowed a spurious I/O error: compile instead
+
+    cache.load_overload = load_overload

@@ -22,7 +22,8 @@ import sys
 from xaml3d.numba_env import ENV, MODES, mode, set_cache_dir
 
 __all__ = [
-    "ENV", "MODES", "active", "begin_frame", "for_work", "mode", "plan", "set_cache_dir",
+    "ENV", "MODES", "active", "begin_frame", "for_set_up", "for_work", "mode", "plan",
+    "set_cache_dir",
 ]  # fmt: skip
 
 # The work estimate is the bounding boxes' half area in samples, times the passes, times 2 when
@@ -40,6 +41,11 @@ TRIANGLES_WORTH = 2_000_000
 # Once numba is imported and running (the reader's number scanner loads it for big files), the
 # kernels cost only their cached machine code, about 0.02 s: far less work pays.
 IMPORTED_WORTH = 500_000
+# From this many triangles a side is set up (``raster.set_up``) and a mesh's facing computed by
+# the compiled set-up (``setup_kernels``), the latter as soon as numba is imported: numpy takes
+# about 0.1 s each for a million triangles (gathers, products and sorts of (T, 3) arrays), the
+# compiled loops a few ms, and loading one of them from numba's cache about 0.03 s.
+SET_UP_WORTH = 200_000
 
 _kernels = None
 _failed = False
@@ -96,6 +102,19 @@ def plan(fragments: float, triangles: int) -> None:
         work, tris = 2.0 * fragments * _frames, triangles * _frames
         if m == "numba" or work >= _worth() or tris >= TRIANGLES_WORTH:
             _load(required=m == "numba")
+
+
+def for_set_up(triangles: int):
+    """The kernels for a per-triangle step that comes before the frame's ``plan`` (a model's
+    facing, ``draw.prepare_model``): when they are loaded, or when numba is imported already
+    (the reader's scanner, for a big file: the kernels then cost their cached machine code
+    alone) and the mesh has SET_UP_WORTH triangles or more; else None (numpy)."""
+    m = mode()
+    if m == "numpy":
+        return None
+    if _kernels is None and "numba" in sys.modules and triangles >= SET_UP_WORTH:
+        _load(required=m == "numba")
+    return _kernels
 
 
 def _worth() -> float:

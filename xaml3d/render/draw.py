@@ -50,7 +50,7 @@ from xaml3d.render.brushes import (
 from xaml3d.render.clip import NEAR_PLANE, clip_triangles, guard_planes
 from xaml3d.render.frame import DEPTH_OFFSET, Framebuffer
 from xaml3d.render.lighting import PreparedLights, prepare_lights, shade_vertices
-from xaml3d.render.raster import MAX_COORD, Fragments, rasterize
+from xaml3d.render.raster import MAX_COORD, NEEDS_CLIPPING, Fragments, rasterize, set_up_side
 from xaml3d.scene.checks import unmapped
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.transforms import normal_matrix
@@ -142,11 +142,25 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             )  # fmt: skip
         )
         return None
+    mirror = bool(np.linalg.det(world[:3, :3]) < 0.0)
+    ccw, cw = _facing(clip, mesh.indices, mirror)
+    sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
+    return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
+
+
+def _facing(clip: np.ndarray, idx: np.ndarray, mirror: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Per triangle: front (counter-clockwise as seen, clockwise when ``mirror``) and back;
+    edge-on triangles are neither. A big mesh, once numba is loaded, takes the compiled loop
+    (``setup_kernels.facing``: the same expressions)."""
+    if accel.for_set_up(idx.shape[0]) is not None:
+        from xaml3d.render.setup_kernels import facing  # with the kernels only
+
+        c = np.ascontiguousarray
+        return facing(c(clip, dtype=np.float64), c(idx, dtype=np.int64), mirror)
     # det [x y w] of the three vertices, expanded by the first column. Only its sign is used:
     # each vertex's (x, y, w) is first divided by its largest magnitude (a positive factor per
     # row keeps the sign), so coordinates near 1e308 cannot overflow the products, and a
     # product too small for a double is 0 (harmless).
-    idx = mesh.indices
     xyw = clip[:, [0, 1, 3]]
     scale = np.max(np.abs(xyw), axis=1, keepdims=True)
     with np.errstate(under="ignore"):
@@ -157,11 +171,9 @@ def prepare_model(model: Model, pipeline, ctx: DrawContext) -> PreparedModel | N
             - y[:, 0] * (x[:, 1] * w[:, 2] - x[:, 2] * w[:, 1])
             + w[:, 0] * (x[:, 1] * y[:, 2] - x[:, 2] * y[:, 1])
         )
-    mirror = np.linalg.det(world[:3, :3]) < 0.0
     ccw = det < 0.0 if mirror else det > 0.0
     cw = det > 0.0 if mirror else det < 0.0
-    sign = -1.0 if np.linalg.det(mv[:3, :3]) < 0.0 else 1.0
-    return PreparedModel(model, clip, vpos, nm, ccw, cw, sign)
+    return ccw, cw
 
 
 SINGLE_MAX = float(np.finfo(np.float32).max)
@@ -182,47 +194,66 @@ def _vertex_screen(pm: PreparedModel, tris: np.ndarray, ctx: DrawContext):
     """The vertex indices of the triangles ``tris``, which of them lie inside every clip plane
     (``tin``, per triangle), and per-vertex screen x, y, depth and 1/w (valid for the vertices
     inside)."""
-    clip = pm.clip
     idx = pm.model.mesh.indices[tris]
+    vin, sx, sy, dv, qv = _screen_vertices(pm, ctx)
+    tv = vin[idx]
+    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
+    return idx, tin, sx, sy, dv, qv
+
+
+def _screen_vertices(pm: PreparedModel, ctx: DrawContext):
+    """Per vertex: inside every clip plane (``vin``), and screen x, y, depth and 1/w (valid for
+    the vertices inside)."""
+    clip = pm.clip
     planes = np.stack(ctx.clip_planes)
     vin = clip[:, 3] > 0.0
     for dist in (clip @ planes.T).T:  # one plane at a time: faster than all(axis=1)
         vin &= dist <= 0.0
-    tv = vin[idx]
-    tin = tv[:, 0] & tv[:, 1] & tv[:, 2]
     # Per-vertex screen coordinates of the vertices that need no clipping.
     wv = np.where(vin, clip[:, 3], 1.0)
     qv = 1.0 / wv
     sx = (clip[:, 0] * qv + 1.0) * (ctx.width / 2.0)
     sy = (1.0 - clip[:, 1] * qv) * (ctx.height / 2.0)
     dv = -clip[:, 2] * qv
-    return idx, tin, sx, sy, dv, qv
+    return vin, sx, sy, dv, qv
 
 
 def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) -> bool:
     """Draw a side with one compiled loop per pass (``pass_loop``) when the kernels are loaded
-    and the side allows it (no triangle to clip, weights to interpolate); passes whose brush is
-    sampled outside the kernels (gradients, drawn tiles) take the fragment path in their turn.
-    False when the side does not allow it, and nothing was drawn."""
+    and the side allows it (no triangle to clip; solid colours, flat or Gouraud, and image
+    brushes); passes whose brush is sampled outside the kernels (gradients, drawn tiles) take
+    the fragment path in their turn. False when the side does not allow it, and nothing was
+    drawn."""
     kernels = accel.active()
-    # flat solid colours need no weights: blended straight from the per-triangle table
-    if kernels is None or (shaders[0].flat and all(sh.uniform for sh in shaders)):
+    if kernels is None:
         return False
     passes = [sh.loop_args(kernels) for sh in shaders]
     if all(p is None for p in passes):
         return False
-    idx, tin, sx, sy, dv, qv = _vertex_screen(pm, tris, ctx)
-    if not tin.all():
-        return False
     from xaml3d.render.pass_loop import SideLoop  # with the kernels only
 
-    xy = np.stack([sx[idx], sy[idx]], axis=-1)
-    side = SideLoop(fb, xy, dv[idx], qv[idx], tris, _read_only(shaders[0].indices), ctx.msaa)
+    indices = _read_only(shaders[0].indices)
+    if tris.size >= accel.SET_UP_WORTH:
+        # one compiled loop sets the side's triangles up (raster.set_up's arithmetic),
+        # gathering their vertices itself: no (T, 3) arrays for a million triangles
+        vin, sx, sy, dv, qv = _screen_vertices(pm, ctx)
+        s = set_up_side(indices, tris, sx, sy, dv, qv, vin, fb.width, fb.height)
+        if s is NEEDS_CLIPPING:
+            return False
+        side = SideLoop.of_set_up(fb, s, indices, ctx.msaa) if s is not None else None
+    else:  # numpy's set-up: quicker than loading the compiled one's machine code
+        idx, tin, sx, sy, dv, qv = _vertex_screen(pm, tris, ctx)
+        if not tin.all():
+            return False
+        xy = np.stack([sx[idx], sy[idx]], axis=-1)
+        side = SideLoop(fb, xy, dv[idx], qv[idx], tris, indices, ctx.msaa)
     for shader, args in zip(shaders, passes, strict=True):
         # A kept framebuffer draws opaque/over passes band by band when it resolves
         # (``frame.FrameStore``). Additive passes clamp where the rasterizer's chunks end,
         # which bands would move: they, and the fragment path, are drawn now, after the passes
         # kept before them.
+        if side is None and args is not None:
+            continue  # no triangle covers a sample
         if args is not None and fb.deferred is not None and not args[-1]:
             fb.deferred.append((side, kernels, args))
             continue
@@ -354,19 +385,15 @@ class PassShader:
         self.uniform = brush_is_uniform(brush)
         self.density = None  # screen pixels per texture unit, for drawn tiles (draw_model)
         self.indices = np.ascontiguousarray(self.indices, dtype=np.int64)
-        if self.uniform:
+        if self.uniform and flat:  # the table is this shader's own: scaled in place
+            self.colors *= brush_average(brush)[None, :]
+        elif self.uniform:
             self.colors = self.colors * brush_average(brush)[None, :]
         else:
             self.texcoords = pm.model.mesh.texcoords
             self.bounds = brush_bounds(self.texcoords)
             self._uv_planes = np.ascontiguousarray(self.texcoords.T, dtype=np.float64)
-        if flat and self.uniform:
-            # The final float32 colour per triangle, gathered 16 bytes at a time as one
-            # complex128 element (the framebuffer blends float32; see frame.py).
-            with np.errstate(under="ignore"):  # specular powers can fall below float32's range
-                c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
-            self._c16 = c32.view(np.complex128).reshape(-1)
-        elif not flat:
+        if not flat:
             self._planes = np.ascontiguousarray(self.colors.T, dtype=np.float64)  # (4, N)
         self._layout = None
         if isinstance(brush, ImageBrush):
@@ -374,6 +401,15 @@ class PassShader:
         self._image = _NO_IMAGE
         if self._layout is not None:
             self._image = np.ascontiguousarray(premultiplied_image(brush.image), np.float64)
+
+    @cached_property
+    def _c16(self) -> np.ndarray:
+        """Flat solid colours: the final float32 colour per triangle, gathered 16 bytes at a
+        time as one complex128 element (the framebuffer blends float32; see frame.py). Made
+        when the fragment path first asks (the compiled pass loop reads ``colors`` itself)."""
+        with np.errstate(under="ignore"):  # specular powers can fall below float32's range
+            c32 = np.ascontiguousarray(self.colors, dtype=np.float32)
+        return c32.view(np.complex128).reshape(-1)
 
     def draw(self, fb: Framebuffer, frag: Fragments) -> None:
         """Shade ``frag`` and blend it into ``fb``: with the compiled kernels loaded, one

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from xaml3d.numba_env import load_cached_lightly
 from xaml3d.render.kernels import _EMPTY, _max32, _min32
 
 
@@ -103,3 +104,7 @@ def resolve_clear(color, zbuf, width, s, rgba, depth, want_depth, background, y0
             elif uniform and (p0 != f0 or p1 != f1 or p2 != f2 or p3 != f3):
                 uniform = False
     return uniform
+
+
+# cached machine code loaded without refreshing numba's registries (``numba_env``)
+load_cached_lightly(globals())

@@ -22,6 +22,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from xaml3d.numba_env import load_cached_lightly
+
 SUBPIXEL = 256
 HALF = 128
 
@@ -484,6 +486,8 @@ def draw_pass(
     returned.
 
     ``mtri``: each set-up triangle's index in the mesh (``indices``, per-triangle ``colors``).
+    Per-triangle colours with a uniform brush (flat mode's solid colours) are taken once per
+    row of the triangle, not shaded per sample or image pixel (they need no weights).
     Additive passes clamp at 1 at the end of each of the rasterizer's chunks (``cap``
     fragments, whole rows), where ``blend_rows`` clamps: the same picture even for the rare
     negative colour (weights extrapolated at an edge). ``touched`` (scratch of ``cap`` +
@@ -491,7 +495,9 @@ def draw_pass(
     Returns (how many samples passed the depth test, the next free tag)."""
     tcount = A.shape[1]
     one = np.float32(1.0)
-    per_pixel = msaa > 1
+    # a solid colour per triangle (flat mode): the colour is the triangle's, at every sample
+    per_triangle = source == COLOR_PER_TRIANGLE and brush == BRUSH_UNIFORM
+    per_pixel = msaa > 1 and not per_triangle
     n = 0  # fragments of the rasterizer's current chunk
     nt = 0  # samples an additive pass touched in that chunk
     drawn = 0
@@ -550,6 +556,9 @@ def draw_pass(
             sub = 0
             last = -1  # the image pixel whose colour r0..r3 hold (this row)
             r0 = r1 = r2 = r3 = np.float32(0.0)
+            if per_triangle:
+                r0, r1, r2, r3 = _shade(0.0, 0.0, 0.0, vi0, vi1, vi2, mt, source, colors, brush,
+                                        uvp, lay, img)  # fmt: skip
             if per_pixel:
                 pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
                 if j // msaa != tag_row or t != tag_t:
@@ -619,7 +628,7 @@ def draw_pass(
                         r1 = cache[pp, 1]
                         r2 = cache[pp, 2]
                         r3 = cache[pp, 3]
-                elif not per_pixel:
+                elif not per_pixel and not per_triangle:
                     w0 = s0 + g0 * k
                     w1 = s1 + g1 * k
                     w2 = s2 + g2 * k
@@ -667,42 +676,5 @@ def draw_pass(
     return drawn, tag + 1
 
 
-# numba versions whose cache internals _load_cached_lightly was checked against
-LIGHT_LOAD_CHECKED = {(0, 68)}
-
-
-def _load_cached_lightly(dispatcher) -> None:
-    """Load ``dispatcher``'s cached machine code without refreshing numba's whole typing and
-    lowering registries first.
-
-    numba's cache refreshes the target context before every load (``FunctionCache.
-    load_overload``): it imports and installs every registry numba has (typed lists and dicts,
-    random, polynomials, jitclass...), about 60 ms of CPU on the first load of a process, which
-    cached machine code does not need: it needs the runtime (``rtsys``, for the arrays passed
-    in) and the codegen only. Compiling still refreshes (``compiler.compile_extra`` does it
-    itself), so a cache miss costs what it did. The code loaded is the same, so are pictures.
-    Left as numba made it when its cache's private methods are not there, and on numba
-    versions this was not checked against (``LIGHT_LOAD_CHECKED``): it leans on private
-    methods, so a new numba takes its ordinary (slower, always right) path."""
-    if tuple(int(x) for x in numba.__version__.split(".")[:2]) not in LIGHT_LOAD_CHECKED:
-        return
-    cache = getattr(dispatcher, "_cache", None)
-    guard = getattr(cache, "_guard_against_spurious_io_errors", None)
-    load = getattr(cache, "_load_overload", None)
-    if guard is None or load is None:
-        return
-    from numba.core.runtime import rtsys
-
-    def load_overload(sig, target_context):
-        rtsys.initialize(target_context)
-        with guard():
-            return load(sig, target_context)
-        return None  # the guard swallowed a spurious I/O error: compile instead
-
-    cache.load_overload = load_overload
-
-
-for _kernel in list(globals().values()):
-    if isinstance(_kernel, numba.core.registry.CPUDispatcher):
-        _load_cached_lightly(_kernel)
-del _kernel
+# cached machine code loaded without refreshing numba's registries (``numba_env``)
+load_cached_lightly(globals())

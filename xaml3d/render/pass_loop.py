@@ -9,8 +9,12 @@ sample is touched once per pass and no fragment arrays are written and read back
 is exactly the one the fragment path (``draw.side_fragments``, ``PassShader.draw``) gives: the
 same expressions in the same order, the same clamping points of additive passes.
 
-Other sides (near-plane or guard-band clipping, gradient and drawn brushes, flat solid colours
-per triangle) take the fragment path.
+The side's set-up is one compiled loop too (``raster.set_up_side``, ``setup_kernels``): the
+vertices are read through the mesh's indices, so a million triangles make no (T, 3) arrays.
+Flat solid colours (one per triangle) are a pass like the others, with no per-sample shading.
+
+Other sides (near-plane or guard-band clipping, gradient and drawn brushes) take the fragment
+path.
 """
 
 from __future__ import annotations
@@ -54,6 +58,16 @@ class SideLoop:
             self.first_row, self.last_row = int(self.s.box[2].min()), int(self.s.box[3].max())
         self.indices = indices
         self.msaa = max(int(msaa), 1)
+
+    @classmethod
+    def of_set_up(cls, fb: Framebuffer, s, indices, msaa: int) -> SideLoop:
+        """A side set up already by ``raster.set_up_side`` (``s.tris``: mesh triangles; not
+        None)."""
+        side = cls.__new__(cls)
+        side.fb, side.s, side.indices, side.msaa = fb, s, indices, max(int(msaa), 1)
+        side.mtri = s.tris
+        side.first_row, side.last_row = int(s.box[2].min()), int(s.box[3].max())
+        return side
 
     def draw(self, kernels, args, rows=None) -> None:
         """One pass with its loop arguments (``PassShader.loop_args``); ``rows``: only the

@@ -164,7 +164,8 @@ def _edges(X: np.ndarray, Y: np.ndarray, area: np.ndarray):
 class SetUp:
     """Triangles set up for a compiled loop that rasterizes them itself (``kernels.draw_pass``):
     the arrays ``kernels.raster_chunk`` takes, each C-contiguous in its one dtype, and ``tris``,
-    the input triangles they are (in order). ``estimate``: half the boxes' samples."""
+    the input triangles they are (in order): positions in ``set_up``'s input, mesh triangles
+    for ``set_up_side``. ``estimate``: half the boxes' samples."""
 
     tris: np.ndarray
     edges: tuple  # A, B, C
@@ -179,7 +180,21 @@ class SetUp:
 def set_up(xy, depth, width: int, height: int, inv_w=None) -> SetUp | None:
     """``rasterize``'s set-up of triangles ``xy`` (T, 3, 2), without rasterizing them: the same
     snapping, boxes, edge functions and depth planes, so a loop over them finds exactly the
-    fragments ``rasterize`` yields, in the same order. None when no triangle can cover a pixel."""
+    fragments ``rasterize`` yields, in the same order. None when no triangle can cover a pixel.
+    With the kernels loaded, one compiled loop (``setup_kernels``) computes the same arrays
+    for ``accel.SET_UP_WORTH`` triangles or more (loading its machine code costs more than
+    numpy's set-up of fewer)."""
+    if accel.active() is not None and len(xy) >= accel.SET_UP_WORTH:
+        xy = np.asarray(xy, dtype=np.float64)
+        t = xy.shape[0]
+        persp = inv_w is not None
+        q = np.asarray(inv_w, dtype=np.float64) if persp else np.zeros((t, 3))
+        verts = np.arange(3 * t, dtype=np.int64).reshape(t, 3)
+        return _set_up_compiled(
+            verts, np.arange(t, dtype=np.int64), xy[..., 0].ravel(), xy[..., 1].ravel(),
+            np.asarray(depth, dtype=np.float64).ravel(), q.ravel(), np.ones(3 * t, dtype=bool),
+            width, height, persp,
+        )  # fmt: skip
     snapped = _snap(xy, width, height)
     if snapped is None:
         return None
@@ -202,6 +217,42 @@ def set_up(xy, depth, width: int, height: int, inv_w=None) -> SetUp | None:
         persp,
         estimate,
     )
+
+
+NEEDS_CLIPPING = "needs clipping"
+
+
+def set_up_side(indices, tris, sx, sy, dv, qv, vin, width: int, height: int):
+    """``set_up`` of the mesh triangles ``tris`` (``indices`` (M, 3) int64) from per-vertex
+    screen x ``sx``, y ``sy``, depth ``dv`` and 1/w ``qv`` (N,) float64: one compiled loop
+    (``setup_kernels``, the kernels must be loaded) that gathers each triangle's vertices
+    itself, so no (T, 3) array is made. ``SetUp.tris`` holds mesh triangle indices. None when
+    no triangle can cover a pixel; NEEDS_CLIPPING when a vertex of one of them is outside a
+    clip plane (``vin`` (N,) bool false), and nothing was set up."""
+    tris = np.ascontiguousarray(tris, dtype=np.int64)
+    s = _set_up_compiled(indices, tris, sx, sy, dv, qv, vin, width, height, True)
+    if s is NEEDS_CLIPPING or s is None:
+        return s
+    s.tris = tris[s.tris]
+    return s
+
+
+def _set_up_compiled(indices, tris, vx, vy, vz, vq, vin, width, height, persp):
+    from xaml3d.render.setup_kernels import CLIPPED, set_up_triangles  # with the kernels only
+
+    f64 = [np.ascontiguousarray(a, dtype=np.float64) for a in (vx, vy, vz, vq)]
+    verts = np.ascontiguousarray(indices, dtype=np.int64)
+    out = set_up_triangles(verts, tris, *f64, np.ascontiguousarray(vin, dtype=np.bool_),
+                           int(width), int(height))  # fmt: skip
+    status, A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, src, estimate = out
+    if status == CLIPPED:
+        return NEEDS_CLIPPING
+    if status == 0:
+        return None
+    if not persp:
+        q = np.zeros((1, 3))
+    return SetUp(src, (A, B, C), (i0, i1, j0, j1), (gx, gy, zr, xr, yr), inv_area, q, persp,
+                 estimate)  # fmt: skip
 
 
 def rasterize(

@@ -14,6 +14,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from xaml3d.numba_env import load_cached_lightly
+
 
 @numba.njit(cache=True, nogil=True)
 def _degenerate(p, tri, out):
@@ -47,3 +49,7 @@ def degenerate_faces(positions: np.ndarray, indices: np.ndarray) -> np.ndarray:
     out = np.empty(tri.shape[0], dtype=np.bool_)
     _degenerate(p, tri, out)
     return out
+
+
+# cached machine code loaded without refreshing numba's registries (``numba_env``)
+load_cached_lightly(globals())

@@ -18,6 +18,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from xaml3d.numba_env import load_cached_lightly
+
 OK = 0
 BAD = 1  # a grammar or separator error, or an Int32 out of range: the exact path words it
 
@@ -216,3 +218,7 @@ def convert(raw: bytes, integer: bool) -> np.ndarray | None:
     # and a fresh big allocation is mapped page by page as it is first written, so it mostly
     # holds no memory, while a copy would write the 12 MB of half a million points again.
     return values[:count]
+
+
+# cached machine code loaded without refreshing numba's registries (``numba_env``)
+load_cached_lightly(globals())
