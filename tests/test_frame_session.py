@@ -107,6 +107,7 @@ def test_frames_drawn_band_by_band_give_the_fresh_renders(case, monkeypatch):
 
     monkeypatch.setenv("XAML3D_KERNELS", "numba")
     monkeypatch.setattr(frame, "BAND_BYTES", 1)
+    monkeypatch.setattr(frame, "_blocks_apply", lambda *args: False)  # the full buffers' bands
     bands = []
     draw = pass_loop.SideLoop.draw
 
@@ -138,6 +139,94 @@ def test_frames_drawn_band_by_band_give_the_fresh_renders(case, monkeypatch):
         elif case.startswith("translucent"):
             # the diffuse pass was kept, then drawn whole before the additive passes
             assert bands and all(r is None for r in bands)
+
+
+OVERLAP = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="40" Height="30">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,4" LookDirection="0,0,-1"
+      FieldOfView="60"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#808080"/><DirectionalLight Color="White" Direction="-1,-1,-2"/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+          TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Orange"/></GeometryModel3D.Material>
+      <GeometryModel3D.BackMaterial><DiffuseMaterial Brush="#C0408000"/>
+      </GeometryModel3D.BackMaterial>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="turn" Axis="0,1,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-0.5,-1.5,0.3 1.5,-0.5,0.3 0,1.2,0.6"
+          TriangleIndices="0 1 2"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="#8000C0FF"/></GeometryModel3D.Material>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="tilt" Axis="1,0,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-0.3,-0.3,-0.2 0.3,-0.3,0.2 0,0.4,0"
+          TriangleIndices="0 1 2"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Lime"/></GeometryModel3D.Material>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+    <Storyboard>
+      <DoubleAnimation Storyboard.TargetName="turn" Storyboard.TargetProperty="Angle"
+          From="-170" To="170" Duration="0:0:3"/>
+      <DoubleAnimation Storyboard.TargetName="tilt" Storyboard.TargetProperty="Angle"
+          From="-40" To="40" Duration="0:0:3"/>
+    </Storyboard>
+  </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+</Viewport3D>"""
+
+
+@pytest.mark.parametrize("rows", [1, None])
+@pytest.mark.parametrize("background", [None, (0.2, 0.4, 0.6, 0.5)])
+@pytest.mark.parametrize("msaa", [2, 3, 4])
+def test_frames_drawn_into_colour_blocks_give_the_fresh_renders(
+    msaa, background, rows, monkeypatch
+):
+    """With the kernels and multisampling, a frame whose passes are all opaque or over is
+    drawn into per-pixel colour blocks (``frame_kernels.draw_blocks``: one colour for a pixel
+    a triangle covers whole, samples only where a pixel is split), band by band (here also
+    one image row a band): the pictures, depth and diagnostics of fresh renders, frame after
+    frame (an opaque face, a translucent one over it and over the background, back faces, a
+    third face through the first), and every buffer left clean."""
+    pytest.importorskip("numba")
+    from xaml3d.render import frame, frame_kernels
+
+    monkeypatch.setenv("XAML3D_KERNELS", "numba")
+    if rows is not None:
+        monkeypatch.setattr(frame, "BLOCK_BAND_BYTES", 1)
+    calls = []
+    real = frame_kernels.draw_blocks
+
+    def counted(*args):
+        calls.append(args[-5:-3])  # its sample rows
+        return real(*args)
+
+    monkeypatch.setattr(frame_kernels, "draw_blocks", counted)
+    scene = load(OVERLAP)
+    settings = RenderSettings(msaa=msaa, background=background)
+    session = FrameSession(scene, None, settings)
+    for t in (0.0, 0.7, 1.2, 1.5, 1.9, 2.4, 2.99):
+        fresh = render_scene(scene_at(scene, t), settings)
+        del calls[:]
+        _, kept = session.frame(t)
+        assert calls, t  # drawn into colour blocks
+        if rows is not None:
+            assert {r1 - r0 for r0, r1 in calls} == {msaa}  # one image row a band
+        assert np.array_equal(kept.rgba, fresh.rgba), t
+        assert np.array_equal(kept.depth, fresh.depth)
+        assert kept.diagnostics == fresh.diagnostics
+    fb = session.store.take(40 * msaa, 30 * msaa, settings.fill)  # the kept one
+    band, zbuf, color, state, _ = fb.blocks
+    bg = np.asarray(settings.fill, dtype=np.float64)
+    premul = np.array([*(bg[:3] * bg[3]), bg[3]], dtype=np.float32)
+    assert (state == 0).all() and (zbuf == 0.0).all() and (color == premul).all()
+    assert (fb.zbuf == 0.0).all() and (fb.color == premul).all()  # never drawn into
 
 
 @pytest.mark.parametrize("kernels", ["numpy", "numba"])

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from xaml3d.render.kernels import _max32, _min32
+from xaml3d.render.kernels import DEPTH_OFFSET, HALF, SUBPIXEL, _max32, _min32, _shade
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
@@ -87,6 +87,339 @@ def resolve_clear(color, zbuf, width, s, rgba, depth, want_depth, background, y0
                     c1 *= inv
                     c2 *= inv
                     c3 *= inv
+                al = _max32(_max32(c0, c1), _max32(c2, c3))
+                al = _min32(_max32(al, zero), one)
+                scale = c255 / al if al > zero else zero
+                p0 = np.uint8(_min32(_max32(c0 * scale, zero), c255) + half)
+                p1 = np.uint8(_min32(_max32(c1 * scale, zero), c255) + half)
+                p2 = np.uint8(_min32(_max32(c2 * scale, zero), c255) + half)
+                p3 = np.uint8(_min32(_max32(al * c255, zero), c255) + half)
+            rgba[y, x, 0] = p0
+            rgba[y, x, 1] = p1
+            rgba[y, x, 2] = p2
+            rgba[y, x, 3] = p3
+            if y == 0 and x == 0:
+                f0, f1, f2, f3 = p0, p1, p2, p3
+            elif uniform and (p0 != f0 or p1 != f1 or p2 != f2 or p3 != f3):
+                uniform = False
+    return uniform
+
+
+# States of an image pixel in a kept framebuffer's colour blocks (``draw_blocks``).
+UNTOUCHED = 0  # every sample holds the background (the colour buffer's samples do)
+ONE_COLOUR = 1  # every sample holds the pixel's colour in ``pcol`` (its samples are stale)
+PER_SAMPLE = 2  # the samples hold their own colours in the colour buffer
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def draw_blocks(
+    A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, s, width,
+    mtri, indices, source, colors, brush, uvp, lay, img,
+    zbuf, color, state, pcol, background, row0, row1, lo, hi, ds,
+):  # fmt: skip
+    """``kernels.draw_pass`` of an opaque or over pass with multisampling (``s`` x ``s``
+    samples a pixel, ``s`` > 1) over the sample rows [row0, row1) (whole image rows), into a
+    colour buffer compressed per image pixel, as a GPU compresses a multisampled target:
+    ``state`` (one byte a pixel: ``UNTOUCHED``, ``ONE_COLOUR``, ``PER_SAMPLE``) and ``pcol``
+    (one float32 colour a pixel). A triangle that covers all the samples of a pixel and passes
+    the depth test at all of them writes ONE colour (the pixel's shading is one colour for all
+    its samples: the same blend gives every sample the same result); a pixel is spread to its
+    samples (``color``) only when a write leaves its samples different. Depth stays per sample.
+
+    Every sample gets the value ``draw_pass`` gives it: the same spans, depths (computed from
+    the same start of each sample row's span), depth test, shading at the pixel's centre and
+    blend, triangle after triangle (within a triangle each sample is written once, so the order
+    of its samples does not matter). ``lo``, ``hi`` (int64) and ``ds`` (float64): scratch of
+    ``s`` entries. Returns how many samples passed the depth test."""
+    tcount = A.shape[1]
+    one = np.float32(1.0)
+    pw = width // s
+    prow = row0 // s  # the buffers' first image row
+    drawn = 0
+    g0, g1, g2, g3 = background[0], background[1], background[2], background[3]
+    for t in range(tcount):
+        ja = max(j0[t], row0)
+        jb = min(j1[t], row1 - 1)
+        if ja > jb:
+            continue
+        ia = inv_area[t]
+        mt = mtri[t]
+        vi0 = indices[mt, 0]
+        vi1 = indices[mt, 1]
+        vi2 = indices[mt, 2]
+        tl0 = 1 if (A[0, t] > 0 or (A[0, t] == 0 and B[0, t] > 0)) else 0
+        tl1 = 1 if (A[1, t] > 0 or (A[1, t] == 0 and B[1, t] > 0)) else 0
+        tl2 = 1 if (A[2, t] > 0 or (A[2, t] == 0 and B[2, t] > 0)) else 0
+        d_g = gx[t] * SUBPIXEL
+        for Y in range(ja // s, jb // s + 1):
+            left = width  # the samples any row covers: [left, right]
+            right = -1
+            full_lo = -1  # the samples every row covers: [full_lo, full_hi]
+            full_hi = width
+            for a in range(s):
+                j = Y * s + a
+                first = 1  # an empty span unless the row is the triangle's
+                last = 0
+                if ja <= j <= jb:
+                    py = j * SUBPIXEL + HALF
+                    first = i0[t]
+                    last = i1[t]
+                    for e in range(3):
+                        ae = A[e, t]
+                        kk = B[e, t] * py + C[e, t]
+                        if ae > 0:
+                            lim = (kk - 1) // ae
+                            v = -((lim + HALF) // SUBPIXEL)
+                            if v > first:
+                                first = v
+                        elif ae < 0:
+                            lim = (kk - 1) // (-ae)
+                            v = (lim - HALF) // SUBPIXEL
+                            if v < last:
+                                last = v
+                        elif kk <= 0:
+                            last = -1
+                lo[a] = first
+                hi[a] = last
+                if last >= first:
+                    px0 = first * SUBPIXEL + HALF
+                    ds[a] = zr[t] + gy[t] * (py - yr[t]) + gx[t] * (px0 - xr[t])
+                    left = min(left, first)
+                    right = max(right, last)
+                    full_lo = max(full_lo, first)
+                    full_hi = min(full_hi, last)
+                else:
+                    full_lo = width
+                    full_hi = -1
+            if right < left:
+                continue
+            pcy = Y * (s * SUBPIXEL) + s * HALF
+            # 2 x 2 samples (the default): the two rows' values in registers
+            lo0, lo1, ds0, ds1 = lo[0], lo[1], ds[0], ds[1]
+            for X in range(left // s, right // s + 1):
+                x0 = X * s
+                P = (Y - prow) * pw + X
+                base = (Y * s - row0) * width + x0
+                st = state[P]
+                if st != PER_SAMPLE and x0 >= full_lo and x0 + s - 1 <= full_hi:
+                    if s == 2:
+                        da = ds0 + d_g * (x0 - lo0)
+                        db = ds0 + d_g * (x0 + 1 - lo0)
+                        dc = ds1 + d_g * (x0 - lo1)
+                        dd = ds1 + d_g * (x0 + 1 - lo1)
+                        ok = (
+                            da <= 1.0 and db <= 1.0 and dc <= 1.0 and dd <= 1.0
+                            and da - DEPTH_OFFSET <= zbuf[base]
+                            and db - DEPTH_OFFSET <= zbuf[base + 1]
+                            and dc - DEPTH_OFFSET <= zbuf[base + width]
+                            and dd - DEPTH_OFFSET <= zbuf[base + width + 1]
+                        )  # fmt: skip
+                    else:
+                        ok = True
+                        for a in range(s):
+                            for b in range(s):
+                                d = ds[a] + d_g * (x0 + b - lo[a])
+                                if not (
+                                    d <= 1.0 and d - DEPTH_OFFSET <= zbuf[base + a * width + b]
+                                ):
+                                    ok = False
+                                    break
+                            if not ok:
+                                break
+                    if ok:  # every sample passes: one colour for the pixel
+                        r0, r1, r2, r3 = _pixel_shade(
+                            A, B, C, t, X, s, pcy, tl0, tl1, tl2, ia, q, persp,
+                            vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img,
+                        )  # fmt: skip
+                        if r3 >= one:
+                            pcol[P, 0] = r0
+                            pcol[P, 1] = r1
+                            pcol[P, 2] = r2
+                            pcol[P, 3] = r3
+                        else:
+                            if st == ONE_COLOUR:
+                                c0, c1, c2, c3 = pcol[P, 0], pcol[P, 1], pcol[P, 2], pcol[P, 3]
+                            else:
+                                c0, c1, c2, c3 = g0, g1, g2, g3
+                            f = one - r3
+                            pcol[P, 0] = r0 + f * c0
+                            pcol[P, 1] = r1 + f * c1
+                            pcol[P, 2] = r2 + f * c2
+                            pcol[P, 3] = r3 + f * c3
+                        state[P] = ONE_COLOUR
+                        if s == 2:
+                            zbuf[base] = da - DEPTH_OFFSET
+                            zbuf[base + 1] = db - DEPTH_OFFSET
+                            zbuf[base + width] = dc - DEPTH_OFFSET
+                            zbuf[base + width + 1] = dd - DEPTH_OFFSET
+                        else:
+                            for a in range(s):
+                                for b in range(s):
+                                    d = ds[a] + d_g * (x0 + b - lo[a])
+                                    zbuf[base + a * width + b] = d - DEPTH_OFFSET
+                        drawn += s * s
+                        continue
+                shaded = False
+                r0 = r1 = r2 = r3 = np.float32(0.0)
+                for a in range(s):
+                    first = lo[a]
+                    last = hi[a]
+                    for b in range(s):
+                        x = x0 + b
+                        if x < first or x > last:
+                            continue
+                        d = ds[a] + d_g * (x - first)
+                        if not d <= 1.0:
+                            continue
+                        z = d - DEPTH_OFFSET
+                        p = base + a * width + b
+                        if not z <= zbuf[p]:
+                            continue
+                        if not shaded:
+                            shaded = True
+                            r0, r1, r2, r3 = _pixel_shade(
+                                A, B, C, t, X, s, pcy, tl0, tl1, tl2, ia, q, persp,
+                                vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img,
+                            )  # fmt: skip
+                        if state[P] != PER_SAMPLE:
+                            if state[P] == ONE_COLOUR:  # its colour to every sample first
+                                for a2 in range(s):
+                                    for b2 in range(s):
+                                        p2 = base + a2 * width + b2
+                                        for c in range(4):
+                                            color[p2, c] = pcol[P, c]
+                            state[P] = PER_SAMPLE
+                        drawn += 1
+                        if r3 >= one:
+                            color[p, 0] = r0
+                            color[p, 1] = r1
+                            color[p, 2] = r2
+                            color[p, 3] = r3
+                        else:
+                            f = one - r3
+                            color[p, 0] = r0 + f * color[p, 0]
+                            color[p, 1] = r1 + f * color[p, 1]
+                            color[p, 2] = r2 + f * color[p, 2]
+                            color[p, 3] = r3 + f * color[p, 3]
+                        zbuf[p] = z
+    return drawn
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _pixel_shade(
+    A, B, C, t, X, s, pcy, tl0, tl1, tl2, ia, q, persp,
+    vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img,
+):  # fmt: skip
+    """The colour of triangle ``t`` at the centre of image pixel column ``X`` (``pcy``: the
+    centre's row in subpixels): ``draw_pass``'s multisampled weights and ``_shade``."""
+    cx = X * (s * SUBPIXEL) + s * HALF
+    e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
+    e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
+    e1 = A[2, t] * cx + (B[2, t] * pcy + (C[2, t] - tl2))
+    if persp:
+        w0 = e0 * (q[t, 0] * ia)
+        w1 = e1 * (q[t, 1] * ia)
+        w2 = e2 * (q[t, 2] * ia)
+        tot = w0 + w1 + w2
+        w0 = w0 / tot
+        w1 = w1 / tot
+        w2 = w2 / tot
+    else:
+        w0 = e0 * ia
+        w1 = e1 * ia
+        w2 = e2 * ia
+    return _shade(w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img)
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def resolve_blocks(
+    color, zbuf, state, pcol, width, s, rgba, depth, want_depth, background, y0, y1
+):  # fmt: skip
+    """``resolve_clear`` of the image rows [y0, y1) of a buffer drawn by ``draw_blocks``: a
+    pixel of one colour (or untouched: the background) reads that colour once, and its sums
+    are made as ``kernels.resolve`` makes them from s*s equal samples (the first, then each
+    other one added, in float32): the same bits. Its depth samples are reset to empty, its
+    state to ``UNTOUCHED``; a pixel spread to its samples is resolved and cleared as
+    ``resolve_clear`` does. Returns whether every pixel is the colour of ``rgba[0, 0]``."""
+    w = rgba.shape[1]
+    inv = np.float32(1.0 / (s * s))
+    zero = np.float32(0.0)
+    one = np.float32(1.0)
+    c255 = np.float32(255.0)
+    half = np.float32(0.5)
+    b0, b1, b2, b3 = background[0], background[1], background[2], background[3]
+    ss = s * s
+    uniform = True
+    f0 = np.uint8(0)
+    f1 = np.uint8(0)
+    f2 = np.uint8(0)
+    f3 = np.uint8(0)
+    if y0 > 0:
+        f0, f1, f2, f3 = rgba[0, 0, 0], rgba[0, 0, 1], rgba[0, 0, 2], rgba[0, 0, 3]
+    last = False
+    l0 = l1 = l2 = l3 = zero
+    p0 = p1 = p2 = p3 = np.uint8(0)
+    for y in range(y0, y1):
+        for x in range(w):
+            P = (y - y0) * w + x
+            base = (y - y0) * s * width + x * s
+            st = state[P]
+            z = 0.0
+            if st == PER_SAMPLE:
+                c0 = c1 = c2 = c3 = zero
+                z = zbuf[base]
+                for a in range(s):
+                    for b in range(s):
+                        qi = base + a * width + b
+                        v0 = color[qi, 0]
+                        v1 = color[qi, 1]
+                        v2 = color[qi, 2]
+                        v3 = color[qi, 3]
+                        zq = zbuf[qi]
+                        if a == 0 and b == 0:
+                            c0, c1, c2, c3 = v0, v1, v2, v3
+                        else:
+                            c0 += v0
+                            c1 += v1
+                            c2 += v2
+                            c3 += v3
+                            if zq < z:
+                                z = zq
+                        if zq != 0.0 or v0 != b0 or v1 != b1 or v2 != b2 or v3 != b3:
+                            zbuf[qi] = 0.0
+                            color[qi, 0] = b0
+                            color[qi, 1] = b1
+                            color[qi, 2] = b2
+                            color[qi, 3] = b3
+                state[P] = UNTOUCHED
+            else:
+                if st == ONE_COLOUR:
+                    v0, v1, v2, v3 = pcol[P, 0], pcol[P, 1], pcol[P, 2], pcol[P, 3]
+                    z = zbuf[base]
+                    for a in range(s):
+                        for b in range(s):
+                            qi = base + a * width + b
+                            if want_depth and zbuf[qi] < z:
+                                z = zbuf[qi]
+                            zbuf[qi] = 0.0
+                    state[P] = UNTOUCHED
+                else:
+                    v0, v1, v2, v3 = b0, b1, b2, b3
+                c0, c1, c2, c3 = v0, v1, v2, v3
+                for _ in range(ss - 1):
+                    c0 += v0
+                    c1 += v1
+                    c2 += v2
+                    c3 += v3
+            if want_depth:
+                depth[y, x] = z + 2.0 if z < 0.0 else np.inf
+            if not (last and c0 == l0 and c1 == l1 and c2 == l2 and c3 == l3):
+                last = True
+                l0, l1, l2, l3 = c0, c1, c2, c3
+                c0 *= inv
+                c1 *= inv
+                c2 *= inv
+                c3 *= inv
                 al = _max32(_max32(c0, c1), _max32(c2, c3))
                 al = _min32(_max32(al, zero), one)
                 scale = c255 / al if al > zero else zero
