@@ -4,6 +4,8 @@ and the buffers left clean for the next frame."""
 
 from __future__ import annotations
 
+import sys
+
 import numpy as np
 import pytest
 from conftest import ROOT
@@ -222,7 +224,7 @@ def test_frames_drawn_into_colour_blocks_give_the_fresh_renders(
         assert np.array_equal(kept.depth, fresh.depth)
         assert kept.diagnostics == fresh.diagnostics
     fb = session.store.take(40 * msaa, 30 * msaa, settings.fill)  # the kept one
-    band, zbuf, color, state, _ = fb.blocks
+    band, zbuf, color, state, _, _ = fb.blocks
     bg = np.asarray(settings.fill, dtype=np.float64)
     premul = np.array([*(bg[:3] * bg[3]), bg[3]], dtype=np.float32)
     assert (state == 0).all() and (zbuf == 0.0).all() and (color == premul).all()
@@ -351,6 +353,65 @@ def test_the_resolve_of_kept_buffers_band_by_band_is_the_fresh_resolve():
     assert np.array_equal(got, rgba) and np.array_equal(got_depth, depth)
     assert not uniform
     assert (zbuf == 0.0).all() and (color == background).all()
+
+
+@pytest.mark.parametrize("s", [2, 3])
+def test_the_resolve_of_colour_blocks_is_the_fresh_resolve(s):
+    """``frame_kernels.resolve_blocks`` over bands of a buffer in colour blocks (pixels
+    untouched, of one colour, or spread to their samples; NaN and negative colours among them)
+    gives ``kernels.resolve``'s pixels and depth for the same samples, says whether the
+    picture is one colour, and leaves the band clean."""
+    pytest.importorskip("numba")
+    from xaml3d.render import frame_kernels as fk
+    from xaml3d.render import kernels
+
+    rng = np.random.default_rng(11)
+    w, h = 9, 7
+    width = w * s
+    background = np.array([0.1, 0.2, 0.3, 0.4], np.float32)
+    state = rng.integers(0, 3, h * w).astype(np.uint8)
+    pcol = rng.uniform(-0.2, 1.2, (4, h * w)).astype(np.float32)
+    pcol[:, 5] = np.nan
+    color = rng.uniform(-0.2, 1.2, (width * h * s, 4)).astype(np.float32)
+    color[7, 2] = np.nan
+    zbuf = -rng.random(width * h * s) - 1.0
+    # the samples kernels.resolve reads: each pixel's, as its state says
+    samples, zfull = color.copy(), zbuf.copy()
+    for i in range(h * w):
+        rows = [(i // w * s + a) * width + i % w * s for a in range(s)]
+        for r in rows:
+            if state[i] == fk.UNTOUCHED:
+                samples[r : r + s], zfull[r : r + s] = background, 0.0
+            elif state[i] == fk.ONE_COLOUR:
+                samples[r : r + s] = pcol[:, i]
+    # only a pixel spread to its samples holds colours there; the others' hold the background
+    spread = state.reshape(h, 1, w, 1).repeat(s, 1).repeat(s, 3).reshape(-1) == fk.PER_SAMPLE
+    color[~spread] = background
+    untouched = state.reshape(h, 1, w, 1).repeat(s, 1).repeat(s, 3).reshape(-1) == fk.UNTOUCHED
+    zbuf[untouched] = 0.0  # nothing drawn there
+    want, want_depth = np.empty((h, w, 4), np.uint8), np.empty((h, w))
+    kernels.resolve(samples, zfull, width, s, False, want, want_depth)
+    got, got_depth = np.empty_like(want), np.empty_like(want_depth)
+    words = got.reshape(-1).view(np.uint32)
+    shifts = np.array([0, 8, 16, 24] if sys.byteorder == "little" else [24, 16, 8, 0], np.uint32)
+    sums = [np.empty(3 * w, np.float32) for _ in range(4)]
+    for y0, y1 in ((0, 3), (3, 4), (4, 7)):
+        band = slice(y0 * s * width, y1 * s * width)
+        c, z = color[band].copy(), zbuf[band].copy()
+        st, pc = state[y0 * w : y1 * w].copy(), pcol[:, y0 * w : y1 * w].copy()
+        one = fk.resolve_blocks(c, z, st, pc, width, s, words, got_depth, True, background,
+                                y0, y1, *sums, shifts)  # fmt: skip
+        assert not one
+        assert (st == 0).all() and (z == 0.0).all() and (c == background).all()
+    assert np.array_equal(got, want) and np.array_equal(got_depth, want_depth)
+    st = np.full(2 * w, fk.ONE_COLOUR, np.uint8)  # a picture of one colour
+    pc = np.repeat(np.array([[0.5], [0.25], [0.0], [0.5]], np.float32), 2 * w, axis=1)
+    c = np.empty((2 * s * width, 4), np.float32)
+    c[:] = background
+    z = np.zeros(2 * s * width)
+    assert fk.resolve_blocks(c, z, st, pc, width, s, words, got_depth, False, background,
+                             0, 2, *sums, shifts)  # fmt: skip
+    assert (got[:2] == (255, 128, 0, 128)).all()
 
 
 def test_a_camera_that_does_not_move_is_set_up_once(monkeypatch):

@@ -34,6 +34,8 @@ same as clamping after every single addition, as an 8-bit render target does.
 
 from __future__ import annotations
 
+import sys
+
 import numpy as np
 
 from xaml3d.render import accel
@@ -398,8 +400,11 @@ def _draw_blocks(fb: Framebuffer, sides: list, s: int, rgba, z, depth, premul) -
         color = np.empty((n, 4), dtype=np.float32)
         color[:] = premul
         state = np.zeros(band * w, dtype=np.uint8)
-        fb.blocks = (band, np.zeros(n), color, state, np.empty((band * w, 4), dtype=np.float32))
-    _, zbuf, color, state, pcol = fb.blocks
+        pcol = np.empty((4, band * w), dtype=np.float32)  # one plane a channel
+        sums = tuple(np.empty(band * w, dtype=np.float32) for _ in range(4))
+        fb.blocks = (band, np.zeros(n), color, state, pcol, sums)
+    _, zbuf, color, state, pcol, sums = fb.blocks
+    words = rgba.reshape(-1).view(np.uint32)
     lo, hi, ds = np.empty(s, dtype=np.int64), np.empty(s, dtype=np.int64), np.empty(s)
     uniform = True
     for y0 in range(0, h, band):
@@ -418,9 +423,13 @@ def _draw_blocks(fb: Framebuffer, sides: list, s: int, rgba, z, depth, premul) -
                 zbuf, color, state, pcol, premul, y0 * s, y1 * s, lo, hi, ds,
             )  # fmt: skip
         uniform &= resolve_blocks(
-            color, zbuf, state, pcol, fb.width, s, rgba, z, depth, premul, y0, y1
+            color, zbuf, state, pcol, fb.width, s, words, z, depth, premul, y0, y1, *sums, _SHIFTS
         )
     return uniform
+
+
+# Each channel's bit position in a pixel's 32-bit word (the rgba bytes in memory order)
+_SHIFTS = np.array([0, 8, 16, 24] if sys.byteorder == "little" else [24, 16, 8, 0], np.uint32)
 
 
 # Depth samples of a band drawn into colour blocks: with the band's colours and blocks, about

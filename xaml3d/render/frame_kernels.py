@@ -232,20 +232,20 @@ def draw_blocks(
                             vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img,
                         )  # fmt: skip
                         if r3 >= one:
-                            pcol[P, 0] = r0
-                            pcol[P, 1] = r1
-                            pcol[P, 2] = r2
-                            pcol[P, 3] = r3
+                            pcol[0, P] = r0
+                            pcol[1, P] = r1
+                            pcol[2, P] = r2
+                            pcol[3, P] = r3
                         else:
                             if st == ONE_COLOUR:
-                                c0, c1, c2, c3 = pcol[P, 0], pcol[P, 1], pcol[P, 2], pcol[P, 3]
+                                c0, c1, c2, c3 = pcol[0, P], pcol[1, P], pcol[2, P], pcol[3, P]
                             else:
                                 c0, c1, c2, c3 = g0, g1, g2, g3
                             f = one - r3
-                            pcol[P, 0] = r0 + f * c0
-                            pcol[P, 1] = r1 + f * c1
-                            pcol[P, 2] = r2 + f * c2
-                            pcol[P, 3] = r3 + f * c3
+                            pcol[0, P] = r0 + f * c0
+                            pcol[1, P] = r1 + f * c1
+                            pcol[2, P] = r2 + f * c2
+                            pcol[3, P] = r3 + f * c3
                         state[P] = ONE_COLOUR
                         if s == 2:
                             zbuf[base] = da - DEPTH_OFFSET
@@ -287,7 +287,7 @@ def draw_blocks(
                                     for b2 in range(s):
                                         p2 = base + a2 * width + b2
                                         for c in range(4):
-                                            color[p2, c] = pcol[P, c]
+                                            color[p2, c] = pcol[c, P]
                             state[P] = PER_SAMPLE
                         drawn += 1
                         if r3 >= one:
@@ -333,106 +333,154 @@ def _pixel_shade(
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def resolve_blocks(
-    color, zbuf, state, pcol, width, s, rgba, depth, want_depth, background, y0, y1
+    color, zbuf, state, pcol, width, s, words, depth, want_depth, background, y0, y1,
+    s0, s1, s2, s3, shifts,
 ):  # fmt: skip
-    """``resolve_clear`` of the image rows [y0, y1) of a buffer drawn by ``draw_blocks``: a
-    pixel of one colour (or untouched: the background) reads that colour once, and its sums
-    are made as ``kernels.resolve`` makes them from s*s equal samples (the first, then each
-    other one added, in float32): the same bits. Its depth samples are reset to empty, its
-    state to ``UNTOUCHED``; a pixel spread to its samples is resolved and cleared as
-    ``resolve_clear`` does. Returns whether every pixel is the colour of ``rgba[0, 0]``."""
-    w = rgba.shape[1]
-    inv = np.float32(1.0 / (s * s))
-    zero = np.float32(0.0)
-    one = np.float32(1.0)
-    c255 = np.float32(255.0)
-    half = np.float32(0.5)
-    b0, b1, b2, b3 = background[0], background[1], background[2], background[3]
+    """``resolve_clear`` of the image rows [y0, y1) of a band drawn by ``draw_blocks`` (its
+    buffers hold these rows only) into ``words`` (the image's pixels as uint32, the rgba bytes
+    in memory order): the same pixels, in passes the compiler runs on several pixels at once.
+    The sums of ``kernels.resolve`` go to ``s0``..``s3`` (a plane a channel, the band's
+    pixels): a pixel of one colour, or untouched (the background), adds that colour to itself
+    s*s - 1 times in float32, the same bits as s*s equal samples; a pixel spread to its
+    samples adds them in ``kernels.resolve``'s order and its samples are cleared as
+    ``resolve_clear`` clears them. The sums then become straight-alpha bytes with
+    ``kernels.resolve``'s expressions (a pixel with a NaN sum one at a time, as there). The
+    band's depth samples are reset to empty and its states to ``UNTOUCHED``. Returns whether
+    every pixel is the colour of ``words[0]`` (resolved by the first band)."""
+    w = width // s
+    n = (y1 - y0) * w
     ss = s * s
-    uniform = True
-    f0 = np.uint8(0)
-    f1 = np.uint8(0)
-    f2 = np.uint8(0)
-    f3 = np.uint8(0)
-    if y0 > 0:
-        f0, f1, f2, f3 = rgba[0, 0, 0], rgba[0, 0, 1], rgba[0, 0, 2], rgba[0, 0, 3]
-    last = False
-    l0 = l1 = l2 = l3 = zero
-    p0 = p1 = p2 = p3 = np.uint8(0)
-    for y in range(y0, y1):
-        for x in range(w):
-            P = (y - y0) * w + x
-            base = (y - y0) * s * width + x * s
-            st = state[P]
-            z = 0.0
-            if st == PER_SAMPLE:
-                c0 = c1 = c2 = c3 = zero
+    b0, b1, b2, b3 = background[0], background[1], background[2], background[3]
+    if want_depth:  # the nearest sample of each block, before the clear
+        for y in range(y0, y1):
+            for x in range(w):
+                base = (y - y0) * s * width + x * s
                 z = zbuf[base]
                 for a in range(s):
                     for b in range(s):
-                        qi = base + a * width + b
-                        v0 = color[qi, 0]
-                        v1 = color[qi, 1]
-                        v2 = color[qi, 2]
-                        v3 = color[qi, 3]
-                        zq = zbuf[qi]
-                        if a == 0 and b == 0:
-                            c0, c1, c2, c3 = v0, v1, v2, v3
-                        else:
-                            c0 += v0
-                            c1 += v1
-                            c2 += v2
-                            c3 += v3
-                            if zq < z:
-                                z = zq
-                        if zq != 0.0 or v0 != b0 or v1 != b1 or v2 != b2 or v3 != b3:
-                            zbuf[qi] = 0.0
-                            color[qi, 0] = b0
-                            color[qi, 1] = b1
-                            color[qi, 2] = b2
-                            color[qi, 3] = b3
-                state[P] = UNTOUCHED
-            else:
-                if st == ONE_COLOUR:
-                    v0, v1, v2, v3 = pcol[P, 0], pcol[P, 1], pcol[P, 2], pcol[P, 3]
-                    z = zbuf[base]
-                    for a in range(s):
-                        for b in range(s):
-                            qi = base + a * width + b
-                            if want_depth and zbuf[qi] < z:
-                                z = zbuf[qi]
-                            zbuf[qi] = 0.0
-                    state[P] = UNTOUCHED
+                        zq = zbuf[base + a * width + b]
+                        if zq < z:
+                            z = zq
+                depth[y, x] = z + 2.0 if z < 0.0 else np.inf
+    if ss == 4:
+        for i in range(n):
+            one_colour = state[i] == ONE_COLOUR
+            v0 = pcol[0, i] if one_colour else b0
+            v1 = pcol[1, i] if one_colour else b1
+            v2 = pcol[2, i] if one_colour else b2
+            v3 = pcol[3, i] if one_colour else b3
+            c0 = v0 + v0
+            c1 = v1 + v1
+            c2 = v2 + v2
+            c3 = v3 + v3
+            c0 += v0
+            c1 += v1
+            c2 += v2
+            c3 += v3
+            s0[i] = c0 + v0
+            s1[i] = c1 + v1
+            s2[i] = c2 + v2
+            s3[i] = c3 + v3
+    else:
+        for i in range(n):
+            one_colour = state[i] == ONE_COLOUR
+            v0 = pcol[0, i] if one_colour else b0
+            v1 = pcol[1, i] if one_colour else b1
+            v2 = pcol[2, i] if one_colour else b2
+            v3 = pcol[3, i] if one_colour else b3
+            c0, c1, c2, c3 = v0, v1, v2, v3
+            for _ in range(ss - 1):
+                c0 += v0
+                c1 += v1
+                c2 += v2
+                c3 += v3
+            s0[i] = c0
+            s1[i] = c1
+            s2[i] = c2
+            s3[i] = c3
+    for i in range(n):  # pixels spread to their samples: few, along edges
+        if state[i] != PER_SAMPLE:
+            continue
+        base = (i // w) * s * width + (i % w) * s
+        c0 = c1 = c2 = c3 = np.float32(0.0)
+        for a in range(s):
+            for b in range(s):
+                qi = base + a * width + b
+                v0 = color[qi, 0]
+                v1 = color[qi, 1]
+                v2 = color[qi, 2]
+                v3 = color[qi, 3]
+                if a == 0 and b == 0:
+                    c0, c1, c2, c3 = v0, v1, v2, v3
                 else:
-                    v0, v1, v2, v3 = b0, b1, b2, b3
-                c0, c1, c2, c3 = v0, v1, v2, v3
-                for _ in range(ss - 1):
                     c0 += v0
                     c1 += v1
                     c2 += v2
                     c3 += v3
-            if want_depth:
-                depth[y, x] = z + 2.0 if z < 0.0 else np.inf
-            if not (last and c0 == l0 and c1 == l1 and c2 == l2 and c3 == l3):
-                last = True
-                l0, l1, l2, l3 = c0, c1, c2, c3
-                c0 *= inv
-                c1 *= inv
-                c2 *= inv
-                c3 *= inv
-                al = _max32(_max32(c0, c1), _max32(c2, c3))
-                al = _min32(_max32(al, zero), one)
-                scale = c255 / al if al > zero else zero
-                p0 = np.uint8(_min32(_max32(c0 * scale, zero), c255) + half)
-                p1 = np.uint8(_min32(_max32(c1 * scale, zero), c255) + half)
-                p2 = np.uint8(_min32(_max32(c2 * scale, zero), c255) + half)
-                p3 = np.uint8(_min32(_max32(al * c255, zero), c255) + half)
-            rgba[y, x, 0] = p0
-            rgba[y, x, 1] = p1
-            rgba[y, x, 2] = p2
-            rgba[y, x, 3] = p3
-            if y == 0 and x == 0:
-                f0, f1, f2, f3 = p0, p1, p2, p3
-            elif uniform and (p0 != f0 or p1 != f1 or p2 != f2 or p3 != f3):
-                uniform = False
-    return uniform
+                if v0 != b0 or v1 != b1 or v2 != b2 or v3 != b3:
+                    color[qi, 0] = b0
+                    color[qi, 1] = b1
+                    color[qi, 2] = b2
+                    color[qi, 3] = b3
+        s0[i] = c0
+        s1[i] = c1
+        s2[i] = c2
+        s3[i] = c3
+    for i in range(n * s * s):
+        zbuf[i] = 0.0
+    for i in range(n):
+        state[i] = UNTOUCHED
+    inv = np.float32(1.0 / ss)
+    zero = np.float32(0.0)
+    one = np.float32(1.0)
+    c255 = np.float32(255.0)
+    half = np.float32(0.5)
+    h0, h1, h2, h3 = shifts[0], shifts[1], shifts[2], shifts[3]
+    out = words[y0 * w : y1 * w]
+    nan = 0
+    for i in range(n):  # no branches: several pixels at a time
+        c0 = s0[i] * inv
+        c1 = s1[i] * inv
+        c2 = s2[i] * inv
+        c3 = s3[i] * inv
+        nan += (c0 != c0) | (c1 != c1) | (c2 != c2) | (c3 != c3)
+        al = _max32(_max32(c0, c1), _max32(c2, c3))
+        al = _min32(_max32(al, zero), one)
+        scale = c255 / al if al > zero else zero
+        p0 = np.uint32(np.uint8(_min32(_max32(c0 * scale, zero), c255) + half))
+        p1 = np.uint32(np.uint8(_min32(_max32(c1 * scale, zero), c255) + half))
+        p2 = np.uint32(np.uint8(_min32(_max32(c2 * scale, zero), c255) + half))
+        p3 = np.uint32(np.uint8(_min32(_max32(al * c255, zero), c255) + half))
+        out[i] = (p0 << h0) | (p1 << h1) | (p2 << h2) | (p3 << h3)
+    if nan:  # NaN: one pixel at a time, as kernels.resolve converts it
+        for i in range(n):
+            c0, c1, c2, c3 = s0[i], s1[i], s2[i], s3[i]
+            if c0 != c0 or c1 != c1 or c2 != c2 or c3 != c3:
+                out[i] = _word_of(c0, c1, c2, c3, inv, h0, h1, h2, h3)
+    first = words[0]
+    same = 0
+    for i in range(n):
+        same += out[i] == first
+    return same == n
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _word_of(c0, c1, c2, c3, inv, h0, h1, h2, h3):
+    """One pixel's sums as straight-alpha bytes in a word (``kernels.resolve``'s arithmetic;
+    not inlined: a scalar conversion, as there)."""
+    zero = np.float32(0.0)
+    one = np.float32(1.0)
+    c255 = np.float32(255.0)
+    half = np.float32(0.5)
+    c0 *= inv
+    c1 *= inv
+    c2 *= inv
+    c3 *= inv
+    al = _max32(_max32(c0, c1), _max32(c2, c3))
+    al = _min32(_max32(al, zero), one)
+    scale = c255 / al if al > zero else zero
+    p0 = np.uint32(np.uint8(_min32(_max32(c0 * scale, zero), c255) + half))
+    p1 = np.uint32(np.uint8(_min32(_max32(c1 * scale, zero), c255) + half))
+    p2 = np.uint32(np.uint8(_min32(_max32(c2 * scale, zero), c255) + half))
+    p3 = np.uint32(np.uint8(_min32(_max32(al * c255, zero), c255) + half))
+    return (p0 << h0) | (p1 << h1) | (p2 << h2) | (p3 << h3)
