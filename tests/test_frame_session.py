@@ -184,11 +184,15 @@ OVERLAP = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/pre
 </Viewport3D>"""
 
 
+ORTHOGRAPHIC = '<OrthographicCamera Position="0,0,4" LookDirection="0,0,-1" Width="3"/>'
+
+
+@pytest.mark.parametrize("camera", ["perspective", "orthographic"])
 @pytest.mark.parametrize("rows", [1, None])
 @pytest.mark.parametrize("background", [None, (0.2, 0.4, 0.6, 0.5)])
 @pytest.mark.parametrize("msaa", [2, 3, 4])
 def test_frames_drawn_into_colour_blocks_give_the_fresh_renders(
-    msaa, background, rows, monkeypatch
+    msaa, background, rows, camera, monkeypatch
 ):
     """With the kernels and multisampling, a frame whose passes are all opaque or over is
     drawn into per-pixel colour blocks (``frame_kernels.draw_blocks``: one colour for a pixel
@@ -206,11 +210,15 @@ def test_frames_drawn_into_colour_blocks_give_the_fresh_renders(
     real = frame_kernels.draw_blocks
 
     def counted(*args):
-        calls.append(args[-5:-3])  # its sample rows
+        calls.append(args[-7:-5])  # its sample rows
         return real(*args)
 
     monkeypatch.setattr(frame_kernels, "draw_blocks", counted)
-    scene = load(OVERLAP)
+    source = OVERLAP
+    if camera == "orthographic":  # weights without perspective
+        perspective = source[source.index("<PerspectiveCamera") : source.index("</Viewport3D.C")]
+        source = source.replace(perspective, ORTHOGRAPHIC)
+    scene = load(source)
     settings = RenderSettings(msaa=msaa, background=background)
     session = FrameSession(scene, None, settings)
     for t in (0.0, 0.7, 1.2, 1.5, 1.9, 2.4, 2.99):

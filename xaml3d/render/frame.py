@@ -406,6 +406,7 @@ def _draw_blocks(fb: Framebuffer, sides: list, s: int, rgba, z, depth, premul) -
     _, zbuf, color, state, pcol, sums = fb.blocks
     words = rgba.reshape(-1).view(np.uint32)
     lo, hi, ds = np.empty(s, dtype=np.int64), np.empty(s, dtype=np.int64), np.empty(s)
+    okm, shade = np.empty(w, dtype=np.uint8), np.empty((4, w), dtype=np.float32)
     uniform = True
     for y0 in range(0, h, band):
         y1 = min(y0 + band, h)
@@ -420,7 +421,7 @@ def _draw_blocks(fb: Framebuffer, sides: list, s: int, rgba, z, depth, premul) -
             fb.fragments_drawn += draw_blocks(
                 A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, st.inv_area, st.q, st.persp, s,
                 fb.width, side.mtri, side.indices, source, colors, brush, uvp, lay, img,
-                zbuf, color, state, pcol, premul, y0 * s, y1 * s, lo, hi, ds,
+                zbuf, color, state, pcol, premul, y0 * s, y1 * s, lo, hi, ds, okm, shade,
             )  # fmt: skip
         uniform &= resolve_blocks(
             color, zbuf, state, pcol, fb.width, s, words, z, depth, premul, y0, y1, *sums, _SHIFTS

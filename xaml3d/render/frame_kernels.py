@@ -15,7 +15,16 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from xaml3d.render.kernels import DEPTH_OFFSET, HALF, SUBPIXEL, _max32, _min32, _shade
+from xaml3d.render.kernels import (
+    BRUSH_UNIFORM,
+    COLOR_PLANES,
+    DEPTH_OFFSET,
+    HALF,
+    SUBPIXEL,
+    _max32,
+    _min32,
+    _shade,
+)
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
@@ -115,7 +124,7 @@ PER_SAMPLE = 2  # the samples hold their own colours in the colour buffer
 def draw_blocks(
     A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, s, width,
     mtri, indices, source, colors, brush, uvp, lay, img,
-    zbuf, color, state, pcol, background, row0, row1, lo, hi, ds,
+    zbuf, color, state, pcol, background, row0, row1, lo, hi, ds, okm, shade,
 ):  # fmt: skip
     """``kernels.draw_pass`` of an opaque or over pass with multisampling (``s`` x ``s``
     samples a pixel, ``s`` > 1) over the sample rows [row0, row1) (whole image rows), into a
@@ -130,7 +139,8 @@ def draw_blocks(
     the same start of each sample row's span), depth test, shading at the pixel's centre and
     blend, triangle after triangle (within a triangle each sample is written once, so the order
     of its samples does not matter). ``lo``, ``hi`` (int64) and ``ds`` (float64): scratch of
-    ``s`` entries. Returns how many samples passed the depth test."""
+    ``s`` entries; ``okm`` (uint8) and ``shade`` (float32, 4 planes): of one entry per image
+    column. Returns how many samples passed the depth test."""
     tcount = A.shape[1]
     one = np.float32(1.0)
     pw = width // s
@@ -151,6 +161,16 @@ def draw_blocks(
         tl1 = 1 if (A[1, t] > 0 or (A[1, t] == 0 and B[1, t] > 0)) else 0
         tl2 = 1 if (A[2, t] > 0 or (A[2, t] == 0 and B[2, t] > 0)) else 0
         d_g = gx[t] * SUBPIXEL
+        planes = source == COLOR_PLANES
+        k00 = k01 = k02 = k10 = k11 = k12 = k20 = k21 = k22 = k30 = k31 = k32 = 0.0
+        if planes:  # the corners' colours (``_shade``)
+            k00, k01, k02 = colors[0, vi0], colors[0, vi1], colors[0, vi2]
+            k10, k11, k12 = colors[1, vi0], colors[1, vi1], colors[1, vi2]
+            k20, k21, k22 = colors[2, vi0], colors[2, vi1], colors[2, vi2]
+            k30, k31, k32 = colors[3, vi0], colors[3, vi1], colors[3, vi2]
+        qa0 = q[t, 0] * ia if persp else 0.0
+        qa1 = q[t, 1] * ia if persp else 0.0
+        qa2 = q[t, 2] * ia if persp else 0.0
         for Y in range(ja // s, jb // s + 1):
             left = width  # the samples any row covers: [left, right]
             right = -1
@@ -196,12 +216,76 @@ def draw_blocks(
             pcy = Y * (s * SUBPIXEL) + s * HALF
             # 2 x 2 samples (the default): the two rows' values in registers
             lo0, lo1, ds0, ds1 = lo[0], lo[1], ds[0], ds[1]
-            for X in range(left // s, right // s + 1):
+            rowbase = (Y * s - row0) * width
+            prowbase = (Y - prow) * pw
+            # The pixels every sample row covers whole, with 2 x 2 samples and a uniform brush:
+            # their depth tests and Gouraud colours are computed first, each in a loop the
+            # compiler runs on several pixels at once (``okm``, ``shade``: per image column).
+            fx0 = max((full_lo + s - 1) // s, left // s)
+            fx1 = min((full_hi + 1) // s - 1, right // s)
+            vec = s == 2 and brush == BRUSH_UNIFORM and fx1 >= fx0
+            if vec:
+                for X in range(fx0, fx1 + 1):
+                    x0 = X * 2
+                    base = rowbase + x0
+                    da = ds0 + d_g * (x0 - lo0)
+                    db = ds0 + d_g * (x0 + 1 - lo0)
+                    dc = ds1 + d_g * (x0 - lo1)
+                    dd = ds1 + d_g * (x0 + 1 - lo1)
+                    okm[X] = (
+                        (da <= 1.0) & (db <= 1.0) & (dc <= 1.0) & (dd <= 1.0)
+                        & (da - DEPTH_OFFSET <= zbuf[base])
+                        & (db - DEPTH_OFFSET <= zbuf[base + 1])
+                        & (dc - DEPTH_OFFSET <= zbuf[base + width])
+                        & (dd - DEPTH_OFFSET <= zbuf[base + width + 1])
+                        & (state[prowbase + X] != PER_SAMPLE)
+                    )  # fmt: skip
+                if planes:
+                    ey2 = B[0, t] * pcy + (C[0, t] - tl0)
+                    ey0 = B[1, t] * pcy + (C[1, t] - tl1)
+                    ey1 = B[2, t] * pcy + (C[2, t] - tl2)
+                    sh0, sh1, sh2, sh3 = shade[0], shade[1], shade[2], shade[3]
+                    if persp:
+                        _planes_persp(
+                            A[0, t], A[1, t], A[2, t], ey0, ey1, ey2, qa0, qa1, qa2, fx0, fx1,
+                            k00, k01, k02, k10, k11, k12, k20, k21, k22, k30, k31, k32,
+                            sh0, sh1, sh2, sh3,
+                        )  # fmt: skip
+                    else:
+                        _planes_affine(
+                            A[0, t], A[1, t], A[2, t], ey0, ey1, ey2, ia, fx0, fx1,
+                            k00, k01, k02, k10, k11, k12, k20, k21, k22, k30, k31, k32,
+                            sh0, sh1, sh2, sh3,
+                        )  # fmt: skip
+                    # the pixels that passed: written in one more such loop
+                    drawn += 4 * _write_whole(
+                        fx0, fx1, okm, sh0, sh1, sh2, sh3, pcol[0], pcol[1], pcol[2], pcol[3],
+                        state[prowbase : prowbase + pw], zbuf[rowbase : rowbase + width],
+                        zbuf[rowbase + width : rowbase + 2 * width], ds0, ds1, lo0, lo1, d_g,
+                        g0, g1, g2, g3, prowbase,
+                    )  # fmt: skip
+            skip = vec and planes  # the pixels ``_write_whole`` wrote are passed over
+            X = left // s - 1
+            while X < right // s:
+                X += 1
+                if skip and fx0 <= X <= fx1 and okm[X] != 0:
+                    while X < fx1 and okm[X + 1] != 0:
+                        X += 1
+                    continue
                 x0 = X * s
-                P = (Y - prow) * pw + X
-                base = (Y * s - row0) * width + x0
+                P = prowbase + X
+                base = rowbase + x0
                 st = state[P]
-                if st != PER_SAMPLE and x0 >= full_lo and x0 + s - 1 <= full_hi:
+                ok = False
+                da = db = dc = dd = 0.0
+                if vec and fx0 <= X <= fx1:
+                    ok = okm[X] != 0
+                    if ok:
+                        da = ds0 + d_g * (x0 - lo0)
+                        db = ds0 + d_g * (x0 + 1 - lo0)
+                        dc = ds1 + d_g * (x0 - lo1)
+                        dd = ds1 + d_g * (x0 + 1 - lo1)
+                elif st != PER_SAMPLE and x0 >= full_lo and x0 + s - 1 <= full_hi:
                     if s == 2:
                         da = ds0 + d_g * (x0 - lo0)
                         db = ds0 + d_g * (x0 + 1 - lo0)
@@ -226,39 +310,42 @@ def draw_blocks(
                                     break
                             if not ok:
                                 break
-                    if ok:  # every sample passes: one colour for the pixel
+                if ok:  # every sample passes: one colour for the pixel
+                    if vec and planes and fx0 <= X <= fx1:
+                        r0, r1, r2, r3 = shade[0, X], shade[1, X], shade[2, X], shade[3, X]
+                    else:
                         r0, r1, r2, r3 = _pixel_shade(
                             A, B, C, t, X, s, pcy, tl0, tl1, tl2, ia, q, persp,
                             vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img,
                         )  # fmt: skip
-                        if r3 >= one:
-                            pcol[0, P] = r0
-                            pcol[1, P] = r1
-                            pcol[2, P] = r2
-                            pcol[3, P] = r3
+                    if r3 >= one:
+                        pcol[0, P] = r0
+                        pcol[1, P] = r1
+                        pcol[2, P] = r2
+                        pcol[3, P] = r3
+                    else:
+                        if st == ONE_COLOUR:
+                            c0, c1, c2, c3 = pcol[0, P], pcol[1, P], pcol[2, P], pcol[3, P]
                         else:
-                            if st == ONE_COLOUR:
-                                c0, c1, c2, c3 = pcol[0, P], pcol[1, P], pcol[2, P], pcol[3, P]
-                            else:
-                                c0, c1, c2, c3 = g0, g1, g2, g3
-                            f = one - r3
-                            pcol[0, P] = r0 + f * c0
-                            pcol[1, P] = r1 + f * c1
-                            pcol[2, P] = r2 + f * c2
-                            pcol[3, P] = r3 + f * c3
-                        state[P] = ONE_COLOUR
-                        if s == 2:
-                            zbuf[base] = da - DEPTH_OFFSET
-                            zbuf[base + 1] = db - DEPTH_OFFSET
-                            zbuf[base + width] = dc - DEPTH_OFFSET
-                            zbuf[base + width + 1] = dd - DEPTH_OFFSET
-                        else:
-                            for a in range(s):
-                                for b in range(s):
-                                    d = ds[a] + d_g * (x0 + b - lo[a])
-                                    zbuf[base + a * width + b] = d - DEPTH_OFFSET
-                        drawn += s * s
-                        continue
+                            c0, c1, c2, c3 = g0, g1, g2, g3
+                        f = one - r3
+                        pcol[0, P] = r0 + f * c0
+                        pcol[1, P] = r1 + f * c1
+                        pcol[2, P] = r2 + f * c2
+                        pcol[3, P] = r3 + f * c3
+                    state[P] = ONE_COLOUR
+                    if s == 2:
+                        zbuf[base] = da - DEPTH_OFFSET
+                        zbuf[base + 1] = db - DEPTH_OFFSET
+                        zbuf[base + width] = dc - DEPTH_OFFSET
+                        zbuf[base + width + 1] = dd - DEPTH_OFFSET
+                    else:
+                        for a in range(s):
+                            for b in range(s):
+                                d = ds[a] + d_g * (x0 + b - lo[a])
+                                zbuf[base + a * width + b] = d - DEPTH_OFFSET
+                    drawn += s * s
+                    continue
                 shaded = False
                 r0 = r1 = r2 = r3 = np.float32(0.0)
                 for a in range(s):
@@ -303,6 +390,90 @@ def draw_blocks(
                             color[p, 3] = r3 + f * color[p, 3]
                         zbuf[p] = z
     return drawn
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _planes_persp(
+    a2, a0, a1, ey0, ey1, ey2, qa0, qa1, qa2, fx0, fx1,
+    k00, k01, k02, k10, k11, k12, k20, k21, k22, k30, k31, k32, sh0, sh1, sh2, sh3,
+):  # fmt: skip
+    """The Gouraud colours of image columns [fx0, fx1] of a pixel row of one triangle, with
+    perspective: ``_pixel_shade``'s arithmetic (its edge values ``a * cx + ey``, the weights
+    divided by their sum, ``_shade``'s sums), in a loop of its own that the compiler runs on
+    several columns at once."""
+    for i in range(fx1 - fx0 + 1):
+        X = fx0 + i
+        cx = X * (2 * SUBPIXEL) + 2 * HALF
+        w0 = (a0 * cx + ey0) * qa0
+        w1 = (a1 * cx + ey1) * qa1
+        w2 = (a2 * cx + ey2) * qa2
+        tot = w0 + w1 + w2
+        w0 = w0 / tot
+        w1 = w1 / tot
+        w2 = w2 / tot
+        sh0[X] = np.float32(w0 * k00 + w1 * k01 + w2 * k02)
+        sh1[X] = np.float32(w0 * k10 + w1 * k11 + w2 * k12)
+        sh2[X] = np.float32(w0 * k20 + w1 * k21 + w2 * k22)
+        sh3[X] = np.float32(w0 * k30 + w1 * k31 + w2 * k32)
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _planes_affine(
+    a2, a0, a1, ey0, ey1, ey2, ia, fx0, fx1,
+    k00, k01, k02, k10, k11, k12, k20, k21, k22, k30, k31, k32, sh0, sh1, sh2, sh3,
+):  # fmt: skip
+    """``_planes_persp`` without perspective: the weights are the edge values times 1 / area."""
+    for i in range(fx1 - fx0 + 1):
+        X = fx0 + i
+        cx = X * (2 * SUBPIXEL) + 2 * HALF
+        w0 = (a0 * cx + ey0) * ia
+        w1 = (a1 * cx + ey1) * ia
+        w2 = (a2 * cx + ey2) * ia
+        sh0[X] = np.float32(w0 * k00 + w1 * k01 + w2 * k02)
+        sh1[X] = np.float32(w0 * k10 + w1 * k11 + w2 * k12)
+        sh2[X] = np.float32(w0 * k20 + w1 * k21 + w2 * k22)
+        sh3[X] = np.float32(w0 * k30 + w1 * k31 + w2 * k32)
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def _write_whole(
+    fx0, fx1, okm, sh0, sh1, sh2, sh3, pc0, pc1, pc2, pc3, state, z0, z1, ds0, ds1, lo0, lo1,
+    d_g, g0, g1, g2, g3, first,
+):  # fmt: skip
+    """``draw_blocks``' write of the 2 x 2-sample pixels of image columns [fx0, fx1] of one
+    pixel row whose samples all passed (``okm``): the colour ``sh*`` (over the pixel's one
+    colour, or the background, when translucent) as the pixel's one colour (``pc*``, from
+    pixel ``first`` of the row on), its state, and the depth of its samples (``z0``, ``z1``:
+    the row's two sample rows), computed as ``draw_blocks`` computes them. Without branches
+    but the stores' masks: the compiler runs it on several pixels at once. Returns how many
+    pixels it wrote."""
+    one = np.float32(1.0)
+    count = 0
+    for i in range(fx1 - fx0 + 1):
+        X = fx0 + i
+        P = first + X
+        ok = okm[X] != 0
+        r0, r1, r2, r3 = sh0[X], sh1[X], sh2[X], sh3[X]
+        was = state[X] == ONE_COLOUR
+        f = one - r3
+        opaque = r3 >= one
+        n0 = r0 if opaque else r0 + f * (pc0[P] if was else g0)
+        n1 = r1 if opaque else r1 + f * (pc1[P] if was else g1)
+        n2 = r2 if opaque else r2 + f * (pc2[P] if was else g2)
+        n3 = r3 if opaque else r3 + f * (pc3[P] if was else g3)
+        x0 = 2 * X
+        if ok:
+            pc0[P] = n0
+            pc1[P] = n1
+            pc2[P] = n2
+            pc3[P] = n3
+            state[X] = ONE_COLOUR
+            z0[x0] = (ds0 + d_g * (x0 - lo0)) - DEPTH_OFFSET
+            z0[x0 + 1] = (ds0 + d_g * (x0 + 1 - lo0)) - DEPTH_OFFSET
+            z1[x0] = (ds1 + d_g * (x0 - lo1)) - DEPTH_OFFSET
+            z1[x0 + 1] = (ds1 + d_g * (x0 + 1 - lo1)) - DEPTH_OFFSET
+            count += 1
+    return count
 
 
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
