@@ -57,20 +57,27 @@ def _gif_frame(rgba: np.ndarray, reserve: bool = False, clear: bool | None = Non
     so translucent surfaces stay visible; only empty pixels become transparent. A frame without
     empty pixels gets 256 colours, unless ``reserve``: index 255 is then kept free (the file's
     transparent index) all the same. ``clear``: whether the frame has empty pixels, when the
-    caller knows already."""
+    caller knows already. Returns (the image, its transparent index or None)."""
+    return _gif_frame_parts(rgba, reserve, clear)[:2]
+
+
+def _gif_frame_parts(rgba: np.ndarray, reserve: bool = False, clear: bool | None = None):
+    """``_gif_frame``'s (image, transparent index or None), and the box (x0, y0, x1, y1) of
+    the pixels that are not transparent when the compiled palette pass found it, else None."""
     alpha = rgba[..., 3]
     if clear is None:
         clear = bool((alpha == 0).any())
     opaque = not clear and not reserve
     exact = _exact_palette(rgba, 256 if opaque else 255)
     if exact is not None:
-        idx, pal = exact
+        idx, pal, box = exact
         out = Image.fromarray(idx, mode="P")
         out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
-        return out, (None if opaque else 255)
+        return out, (None if opaque else 255), box
     rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     if opaque:
-        return rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), None
+        q = rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+        return q, None, None
     # the colours of visible pixels only choose the palette
     q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
     idx = np.array(q, dtype=np.uint8)
@@ -78,25 +85,26 @@ def _gif_frame(rgba: np.ndarray, reserve: bool = False, clear: bool | None = Non
     out = Image.fromarray(idx, mode="P")
     pal = q.getpalette()[: 255 * 3]
     out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
-    return out, 255
+    return out, 255, None
 
 
 def _exact_palette(rgba: np.ndarray, limit: int):
-    """(indices, palette) of a frame with at most ``limit`` distinct colours (empty pixels at
-    index 255), else None. The median cut gives such a frame its exact colours too (every
-    colour a box of its own), at several times the cost; here the palette is the colours in
-    ascending order, so the file's bytes differ from the median cut's while every decoded pixel
-    is the same. With numba loaded, ``gif_pass.exact_palette`` gives the same indices and
-    palette in two compiled passes."""
+    """(indices, palette, box) of a frame with at most ``limit`` distinct colours (empty pixels
+    at index 255; ``box``: see ``_gif_frame_parts``), else None. The median cut gives such a
+    frame its exact colours too (every colour a box of its own), at several times the cost;
+    here the palette is the colours in ascending order, so the file's bytes differ from the
+    median cut's while every decoded pixel is the same. With numba loaded,
+    ``gif_pass.exact_palette`` gives the same indices and palette in two compiled passes."""
     if _compiled():
         from xaml3d.output import gif_pass
 
         idx = np.empty(rgba.shape[:2], dtype=np.uint8)
         keys = np.empty(256, dtype=np.int64)
-        n = gif_pass.exact_palette(np.ascontiguousarray(rgba), limit, idx, keys)
+        box = np.empty(4, dtype=np.int64)
+        n = gif_pass.exact_palette(np.ascontiguousarray(rgba), limit, idx, keys, box)
         if n < 0:
             return None
-        return idx, [int(k >> s) & 255 for k in keys[:n] for s in (16, 8, 0)]
+        return idx, [int(k >> s) & 255 for k in keys[:n] for s in (16, 8, 0)], tuple(box)
     rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
     found = rgb.getcolors(limit)
     if found is None:
@@ -107,7 +115,7 @@ def _exact_palette(rgba: np.ndarray, limit: int):
     idx = np.searchsorted(keys, (px[..., 0] << 16) | (px[..., 1] << 8) | px[..., 2])
     idx = idx.astype(np.uint8)
     idx[rgba[..., 3] == 0] = 255
-    return idx, [v for c in colours for v in c]
+    return idx, [v for c in colours for v in c], None
 
 
 @dataclass
@@ -169,31 +177,36 @@ def gif_frame(rgba: np.ndarray, plan: GifPlan | None = None) -> GifFrame:
         rgba, clear_now = flatten([rgba], plan.matte)[0], False
     else:
         clear_now = clear
-    image, transparent = _gif_frame(
+    image, transparent, drawn = _gif_frame_parts(
         rgba, reserve=bool(plan.reserve) and not plan.flatten, clear=clear_now
     )
-    box, palette, data = _gif_block(image, transparent)
+    box, palette, data = _gif_block(image, transparent, drawn)
     w, h = image.size
     return GifFrame(w, h, box, palette, data, transparent, clear and not plan.flatten, marks,
                     plan.flatten, bool(plan.reserve))  # fmt: skip
 
 
-def _gif_block(image: Image.Image, transparent: int | None) -> tuple[tuple, bytes, bytes]:
+def _gif_block(
+    image: Image.Image, transparent: int | None, drawn: tuple | None = None
+) -> tuple[tuple, bytes, bytes]:
     """(box, local colour table, LZW image data) of a palette image: with a transparent index,
     only the box around its other pixels is written (the rest shows the cleared background:
-    the writer disposes every frame to it), else the whole frame. The compression is Pillow's
-    GIF encoder (``GifImagePlugin.getdata``, whose image descriptor and code size byte are
-    left out: the writer writes its own)."""
+    the writer disposes every frame to it; ``drawn``: that box's first and last column and
+    row when known), else the whole frame. The compression is Pillow's GIF encoder
+    (``GifImagePlugin.getdata``, whose image descriptor and code size byte are left out: the
+    writer writes its own)."""
     w, h = image.size
     box = (0, 0, w, h)
     if transparent is not None:
-        seen = np.asarray(image) != transparent
-        rows, cols = np.flatnonzero(seen.any(axis=1)), np.flatnonzero(seen.any(axis=0))
-        if rows.size == 0:  # nothing drawn: one transparent pixel
+        if drawn is None:
+            seen = np.asarray(image) != transparent
+            rows, cols = np.flatnonzero(seen.any(axis=1)), np.flatnonzero(seen.any(axis=0))
+            drawn = (cols[0], rows[0], cols[-1], rows[-1]) if rows.size else (0, 0, -1, -1)
+        x0, y0, x1, y1 = (int(v) for v in drawn)
+        if x1 < 0:  # nothing drawn: one transparent pixel
             box = (0, 0, 1, 1)
         else:
-            box = (int(cols[0]), int(rows[0]), int(cols[-1] - cols[0] + 1),
-                   int(rows[-1] - rows[0] + 1))  # fmt: skip
+            box = (x0, y0, x1 - x0 + 1, y1 - y0 + 1)
         if box != (0, 0, w, h):
             image = image.crop((box[0], box[1], box[0] + box[2], box[1] + box[3]))
     pal = bytes(image.getpalette() or [])[:768]
