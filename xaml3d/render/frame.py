@@ -298,7 +298,10 @@ class FrameStore:
     as much as drawing a small scene. ``take`` gives a clean framebuffer, ``finish`` resolves it
     and leaves it clean for the next ``take``: with the compiled kernels in the resolve's own
     pass (``frame_kernels.resolve_clear``), which also says whether the picture is one colour,
-    else by filling the buffers. Only the ordinary resolve (not ``nearest``) is offered."""
+    else by filling the buffers. A multisampled frame whose passes were all kept for the
+    compiled loop is drawn into a band's colour blocks instead (``_draw_blocks``), the
+    framebuffer's own buffers left untouched. Only the ordinary resolve (not ``nearest``) is
+    offered."""
 
     def __init__(self) -> None:
         self._fb: Framebuffer | None = None

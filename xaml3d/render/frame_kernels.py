@@ -1,13 +1,23 @@
-"""Compiled pass (numba) that ends a frame drawn into a kept framebuffer (``frame.FrameStore``):
-the resolve of ``kernels.resolve`` (camera-pipeline.md section 6, step 8: box filter of the
-sample grid, straight-alpha uint8) and, in the same pass over the samples, the clear for the
-next frame, so that an animation's frames neither allocate nor fill their sample buffers. It
-runs over a band of image rows at a time (``FrameStore.finish`` draws and resolves a frame band
-by band), and a block whose sums repeat the block before it takes that block's pixel.
+"""Compiled passes (numba) of frames drawn into a kept framebuffer (``frame.FrameStore``;
+camera-pipeline.md section 6, steps 6-8; wpf3d.md sections 6-7).
+
+``resolve_clear`` ends a frame: the resolve of ``kernels.resolve`` (box filter of the sample
+grid, straight-alpha uint8) and, in the same pass over the samples, the clear for the next
+frame, so that an animation's frames neither allocate nor fill their sample buffers. It runs
+over a band of image rows at a time (``FrameStore.finish`` draws and resolves a frame band by
+band), and a block whose sums repeat the block before it takes that block's pixel.
+
+``draw_blocks`` and ``resolve_blocks`` draw and resolve a multisampled frame whose passes are all
+opaque or over passes of the compiled loop into COLOUR BLOCKS, as GPUs compress a multisampled
+target: per image pixel a state byte and one colour, spread to the pixel's samples only where a
+write leaves them different (a triangle's edge, a failed depth test); depth stays per sample. A
+frame's samples are thus mostly written and read once a pixel instead of once a sample, and a
+band's buffers stay in one core's cache.
 
 Imported only when the renderer's kernels are loaded (``accel.active``): numba is then paid
-for already. The colours are computed with the very expressions of ``kernels.resolve``, so the
-pictures are identical.
+for already. Every sample gets the value ``kernels.draw_pass`` gives it and every pixel the
+value of ``kernels.resolve``: the same expressions in the same order, so the pictures are
+identical (``tests/test_frame_session.py``).
 """
 
 from __future__ import annotations
