@@ -4,6 +4,7 @@ and the buffers left clean for the next frame."""
 
 from __future__ import annotations
 
+import os
 import sys
 
 import numpy as np
@@ -448,3 +449,40 @@ def test_a_camera_that_does_not_move_is_set_up_once(monkeypatch):
         assert all((b is None) == (count == 1) for b in calls)
         for t, rgba in zip(TIMES, kept, strict=True):
             assert np.array_equal(rgba, render_scene(scene_at(scene, t), settings).rgba)
+
+
+def test_frame_passes_and_gif_passes_load_without_numba_registries():
+    """A process drawing an animation's frames with the kernels (colour blocks, the GIF frame
+    passes) from numba's cache loads them as the renderer's kernels are loaded: without
+    refreshing numba's typing registries (typed lists among them), on the numba versions the
+    light loading was checked against."""
+    pytest.importorskip("numba")
+    import subprocess
+
+    import numba
+
+    from xaml3d.render import kernels
+
+    code = (
+        "import sys; from xaml3d.render.frames import FrameSession; "
+        "from xaml3d.render.settings import RenderSettings; import xaml3d; "
+        "from xaml3d.output.animation import GifPlan, gif_frame; "
+        "s = FrameSession(xaml3d.load('samples/spinning-cube.xaml'), None, "
+        "RenderSettings(width=64, height=48, time=None), depth=False); "
+        "from xaml3d.render import accel, frame_kernels as fk; "
+        "r = s.frame(0.5)[1]; g = gif_frame(r.rgba, GifPlan()); "
+        "hits = sum(sum(f.stats.cache_hits.values()) for f in (fk.draw_blocks, "
+        "fk.resolve_blocks)); print(hits, 'numba.typed.typedlist' in sys.modules)"
+    )
+    env = dict(os.environ, XAML3D_KERNELS="numba")
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True
+        )  # fmt: skip
+        for _ in range(2)  # the first fills numba's cache when it is cold
+    ]
+    assert runs[1].returncode == 0, runs[1].stderr
+    hits, registries = runs[1].stdout.split()
+    assert int(hits) > 0
+    checked = tuple(int(x) for x in numba.__version__.split(".")[:2]) in kernels.LIGHT_LOAD_CHECKED
+    assert registries == str(not checked)

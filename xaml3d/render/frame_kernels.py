@@ -25,12 +25,14 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from xaml3d.output import gif_pass
 from xaml3d.render.kernels import (
     BRUSH_UNIFORM,
     COLOR_PLANES,
     DEPTH_OFFSET,
     HALF,
     SUBPIXEL,
+    _load_cached_lightly,
     _max32,
     _min32,
     _shade,
@@ -665,3 +667,13 @@ def _word_of(c0, c1, c2, c3, inv, h0, h1, h2, h3):
     p2 = np.uint32(np.uint8(_min32(_max32(c2 * scale, zero), c255) + half))
     p3 = np.uint32(np.uint8(_min32(_max32(al * c255, zero), c255) + half))
     return (p0 << h0) | (p1 << h1) | (p2 << h2) | (p3 << h3)
+
+
+# Loaded without refreshing numba's registries (``kernels._load_cached_lightly``), as the
+# renderer's kernels are, and so are the GIF frame passes of ``output.gif_pass``, which the
+# processes drawing an animation's frames call next: one kernel loaded the ordinary way costs
+# the refresh (about 0.1 s of CPU) to a whole process, before the first frame of an animation.
+for _kernel in [*list(globals().values()), *vars(gif_pass).values()]:
+    if isinstance(_kernel, numba.core.registry.CPUDispatcher):
+        _load_cached_lightly(_kernel)
+del _kernel
