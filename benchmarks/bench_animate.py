@@ -1,7 +1,7 @@
 """Frames per second of an animation, and whole ``animate`` processes against ``render``.
 
     python benchmarks/bench_animate.py [--frames 30] [--runs 5] [--triangles 10000] [--ssaa 2]
-    python benchmarks/bench_animate.py --whole [--runs 3] [FILE ...]
+    python benchmarks/bench_animate.py --whole [--runs 3] [--base TREE] [FILE ...]
 
 ``--whole``: for each FILE (default: the shared corpus's 005 spinning cubes, 543 frames at
 600x600; ``samples/spinning-cube.xaml``; the corpus's textured 001), whole processes of
@@ -10,7 +10,9 @@ x.png``, run by run interleaved; printed: the animate/render ratio of each run (
 both wall times, and animate's peak RSS (``os.wait4``: on Linux the largest of the process
 and of its worker processes); then the same ratio of CPU seconds (user + system, the workers
 included), which the other jobs of a shared machine disturb far less than wall times, and the
-load average at the end. Targets: 005 within 12x one render, under 500 MB.
+load average during the runs. ``--base TREE``: the xaml3d of another source tree (``git archive
+main | tar -x -C /tmp/before``) is timed too, interleaved run by run, so that a before/after is
+measured in the same minutes. Targets: 005 within 12x one render, under 500 MB.
 
 Without ``--whole``:
 The scene is a UV sphere of about 10k triangles (a DiffuseMaterial, a DirectionalLight), turned
@@ -84,12 +86,17 @@ WHOLE = [CORPUS / "005_wpfsamples-spinningcube.xaml", ROOT / "samples" / "spinni
          CORPUS / "001_wpfsamples-cubeanimation.xaml"]  # fmt: skip
 
 
-def process(cmd: list[str]) -> tuple[float, float, float]:
+def process(cmd: list[str], tree: Path | None = None) -> tuple[float, float, float]:
     """Wall seconds, peak RSS (MiB: the process, or the largest of its workers) and CPU
-    seconds (user + system, the workers included) of one run."""
+    seconds (user + system, the workers included) of one run; ``tree``: a source tree whose
+    ``xaml3d`` runs instead of the installed one."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    if tree is not None:
+        env["PYTHONPATH"] = str(tree)
     t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
+    # run from the temporary folder: the current folder would come first on the module path
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env,
+                            cwd=tempfile.gettempdir())  # fmt: skip
     err = proc.stderr.read()
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - t0
@@ -100,31 +107,46 @@ def process(cmd: list[str]) -> tuple[float, float, float]:
     return wall, usage.ru_maxrss / 1024.0, usage.ru_utime + usage.ru_stime
 
 
-def whole(files: list[Path], runs: int) -> int:
+def whole(files: list[Path], runs: int, base: Path | None = None) -> int:
+    """Whole ``animate`` and ``render`` processes of each file, run by run interleaved (with
+    ``base``: the same of that source tree too, in the same minutes)."""
     xaml3d_cmd = [sys.executable, "-m", "xaml3d"]
+    trees = [("now", None)] + ([("base", base)] if base is not None else [])
     with tempfile.TemporaryDirectory() as tmp:
         for f in files:
             if not f.is_file():
                 print(f"{f.name}: not found (the shared corpus is absent)")
                 continue
-            anim, rend, ratio, peak = [], [], [], 0.0
-            anim_cpu, rend_cpu, cpu_ratio = [], [], []
-            process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])  # caches warm
+            got = {name: ([], [], [], [], [], [], [0.0]) for name, _ in trees}
+            loads = []
+            for _, tree in trees:  # caches warm (bytecode, numba's kernels)
+                process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"], tree)
+                process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"], tree)
             for _ in range(runs):
-                r, _, rc = process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"])
-                a, m, ac = process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"])
-                anim.append(a)
-                rend.append(r)
-                ratio.append(a / r)
-                anim_cpu.append(ac)
-                rend_cpu.append(rc)
-                cpu_ratio.append(ac / rc)
-                peak = max(peak, m)
-            print(f"{f.name}: animate / render {_span(ratio, 'x')}; animate {_span(anim, 's')}, "
-                  f"render {_span(rend, 's')}; animate peak RSS {peak:.0f} MiB")  # fmt: skip
-            print(f"{f.name}: CPU (user + system, workers included): animate / render "
-                  f"{_span(cpu_ratio, 'x')}; animate {_span(anim_cpu, 's')}, "
-                  f"render {_span(rend_cpu, 's')}; load {os.getloadavg()[0]:.1f}")  # fmt: skip
+                for name, tree in trees:
+                    anim, rend, ratio, anim_cpu, rend_cpu, cpu_ratio, peak = got[name]
+                    r, _, rc = process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"], tree)
+                    a, m, ac = process(
+                        [*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"], tree
+                    )
+                    anim.append(a)
+                    rend.append(r)
+                    ratio.append(a / r)
+                    anim_cpu.append(ac)
+                    rend_cpu.append(rc)
+                    cpu_ratio.append(ac / rc)
+                    peak[0] = max(peak[0], m)
+                    loads.append(os.getloadavg()[0])
+            for name, _ in trees:
+                anim, rend, ratio, anim_cpu, rend_cpu, cpu_ratio, peak = got[name]
+                print(f"{f.name} [{name}]: animate / render {_span(ratio, 'x')}; animate "
+                      f"{_span(anim, 's')}, render {_span(rend, 's')}; animate peak RSS "
+                      f"{peak[0]:.0f} MiB")  # fmt: skip
+                print(f"{f.name} [{name}]: CPU (user + system, workers included): animate / "
+                      f"render {_span(cpu_ratio, 'x')}; animate {_span(anim_cpu, 's')}, "
+                      f"render {_span(rend_cpu, 's')}")  # fmt: skip
+            print(f"{f.name}: load average (1 min) during the runs {min(loads):.1f}.."
+                  f"{max(loads):.1f}")  # fmt: skip
     return 0
 
 
@@ -140,9 +162,12 @@ def main(argv=None) -> int:
     ap.add_argument("--ssaa", type=int, default=None, help="supersampling (default: msaa 2)")
     ap.add_argument("--whole", action="store_true", help="whole animate vs render processes")
     ap.add_argument("files", nargs="*", type=Path, help="with --whole (default: see above)")
+    ap.add_argument("--base", type=Path, help="with --whole: a source tree to time as well "
+                    "(git archive main | tar -x -C /tmp/before)")  # fmt: skip
     args = ap.parse_args(argv)
     if args.whole:
-        return whole(args.files or WHOLE, args.runs)
+        files = [f.resolve() for f in args.files] or WHOLE
+        return whole(files, args.runs, args.base.resolve() if args.base else None)
     scene = xaml3d.load(sphere_xaml(args.triangles), text=True)
     tris = scene.viewports[0].triangle_count
     times = xaml3d.frame_times(0.0, args.frames / 30.0, 30.0)

@@ -4,6 +4,9 @@ and the buffers left clean for the next frame."""
 
 from __future__ import annotations
 
+import os
+import sys
+
 import numpy as np
 import pytest
 from conftest import ROOT
@@ -65,6 +68,7 @@ CASES = {
     ),  # fmt: skip
     "spin wireframe": (SPIN, {"width": 40, "height": 30, "mode": "wireframe"}),
     "spin flat no aa": (SPIN, {"width": 40, "height": 30, "mode": "flat", "msaa": 1}),
+    "spin flat": (SPIN, {"width": 40, "height": 30, "mode": "flat"}),  # colour blocks, flat
     "translucent, added light": (GLOW, {"width": 40, "height": 30}),
     "translucent on white": (GLOW, {"width": 40, "height": 30, "background": (1, 1, 1, 1)}),
 }
@@ -107,6 +111,7 @@ def test_frames_drawn_band_by_band_give_the_fresh_renders(case, monkeypatch):
 
     monkeypatch.setenv("XAML3D_KERNELS", "numba")
     monkeypatch.setattr(frame, "BAND_BYTES", 1)
+    monkeypatch.setattr(frame, "_blocks_apply", lambda *args: False)  # the full buffers' bands
     bands = []
     draw = pass_loop.SideLoop.draw
 
@@ -138,6 +143,102 @@ def test_frames_drawn_band_by_band_give_the_fresh_renders(case, monkeypatch):
         elif case.startswith("translucent"):
             # the diffuse pass was kept, then drawn whole before the additive passes
             assert bands and all(r is None for r in bands)
+
+
+OVERLAP = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="40" Height="30">
+  <Viewport3D.Camera><PerspectiveCamera Position="0,0,4" LookDirection="0,0,-1"
+      FieldOfView="60"/></Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+    <AmbientLight Color="#808080"/><DirectionalLight Color="White" Direction="-1,-1,-2"/>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0"
+          TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Orange"/></GeometryModel3D.Material>
+      <GeometryModel3D.BackMaterial><DiffuseMaterial Brush="#C0408000"/>
+      </GeometryModel3D.BackMaterial>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="turn" Axis="0,1,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-0.5,-1.5,0.3 1.5,-0.5,0.3 0,1.2,0.6"
+          TriangleIndices="0 1 2"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="#8000C0FF"/></GeometryModel3D.Material>
+      <GeometryModel3D.Transform><RotateTransform3D><RotateTransform3D.Rotation>
+        <AxisAngleRotation3D x:Name="tilt" Axis="1,0,0"/>
+      </RotateTransform3D.Rotation></RotateTransform3D></GeometryModel3D.Transform>
+    </GeometryModel3D>
+    <GeometryModel3D>
+      <GeometryModel3D.Geometry><MeshGeometry3D Positions="-0.3,-0.3,-0.2 0.3,-0.3,0.2 0,0.4,0"
+          TriangleIndices="0 1 2"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial Brush="Lime"/></GeometryModel3D.Material>
+    </GeometryModel3D>
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  <Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded"><BeginStoryboard>
+    <Storyboard>
+      <DoubleAnimation Storyboard.TargetName="turn" Storyboard.TargetProperty="Angle"
+          From="-170" To="170" Duration="0:0:3"/>
+      <DoubleAnimation Storyboard.TargetName="tilt" Storyboard.TargetProperty="Angle"
+          From="-40" To="40" Duration="0:0:3"/>
+    </Storyboard>
+  </BeginStoryboard></EventTrigger></Viewport3D.Triggers>
+</Viewport3D>"""
+
+
+ORTHOGRAPHIC = '<OrthographicCamera Position="0,0,4" LookDirection="0,0,-1" Width="3"/>'
+
+
+@pytest.mark.parametrize("camera", ["perspective", "orthographic"])
+@pytest.mark.parametrize("rows", [1, None])
+@pytest.mark.parametrize("background", [None, (0.2, 0.4, 0.6, 0.5)])
+@pytest.mark.parametrize("msaa", [2, 3, 4])
+def test_frames_drawn_into_colour_blocks_give_the_fresh_renders(
+    msaa, background, rows, camera, monkeypatch
+):
+    """With the kernels and multisampling, a frame whose passes are all opaque or over is
+    drawn into per-pixel colour blocks (``frame_kernels.draw_blocks``: one colour for a pixel
+    a triangle covers whole, samples only where a pixel is split), band by band (here also
+    one image row a band): the pictures, depth and diagnostics of fresh renders, frame after
+    frame (an opaque face, a translucent one over it and over the background, back faces, a
+    third face through the first), and every buffer left clean."""
+    pytest.importorskip("numba")
+    from xaml3d.render import frame, frame_kernels
+
+    monkeypatch.setenv("XAML3D_KERNELS", "numba")
+    if rows is not None:
+        monkeypatch.setattr(frame, "BLOCK_BAND_BYTES", 1)
+    calls = []
+    real = frame_kernels.draw_blocks
+
+    def counted(*args):
+        calls.append(args[-7:-5])  # its sample rows
+        return real(*args)
+
+    monkeypatch.setattr(frame_kernels, "draw_blocks", counted)
+    source = OVERLAP
+    if camera == "orthographic":  # weights without perspective
+        perspective = source[source.index("<PerspectiveCamera") : source.index("</Viewport3D.C")]
+        source = source.replace(perspective, ORTHOGRAPHIC)
+    scene = load(source)
+    settings = RenderSettings(msaa=msaa, background=background)
+    session = FrameSession(scene, None, settings)
+    for t in (0.0, 0.7, 1.2, 1.5, 1.9, 2.4, 2.99):
+        fresh = render_scene(scene_at(scene, t), settings)
+        del calls[:]
+        _, kept = session.frame(t)
+        assert calls, t  # drawn into colour blocks
+        if rows is not None:
+            assert {r1 - r0 for r0, r1 in calls} == {msaa}  # one image row a band
+        assert np.array_equal(kept.rgba, fresh.rgba), t
+        assert np.array_equal(kept.depth, fresh.depth)
+        assert kept.diagnostics == fresh.diagnostics
+    fb = session.store.take(40 * msaa, 30 * msaa, settings.fill)  # the kept one
+    band, zbuf, color, state, _, _ = fb.blocks
+    bg = np.asarray(settings.fill, dtype=np.float64)
+    premul = np.array([*(bg[:3] * bg[3]), bg[3]], dtype=np.float32)
+    assert (state == 0).all() and (zbuf == 0.0).all() and (color == premul).all()
+    assert (fb.zbuf == 0.0).all() and (fb.color == premul).all()  # never drawn into
 
 
 @pytest.mark.parametrize("kernels", ["numpy", "numba"])
@@ -264,6 +365,65 @@ def test_the_resolve_of_kept_buffers_band_by_band_is_the_fresh_resolve():
     assert (zbuf == 0.0).all() and (color == background).all()
 
 
+@pytest.mark.parametrize("s", [2, 3])
+def test_the_resolve_of_colour_blocks_is_the_fresh_resolve(s):
+    """``frame_kernels.resolve_blocks`` over bands of a buffer in colour blocks (pixels
+    untouched, of one colour, or spread to their samples; NaN and negative colours among them)
+    gives ``kernels.resolve``'s pixels and depth for the same samples, says whether the
+    picture is one colour, and leaves the band clean."""
+    pytest.importorskip("numba")
+    from xaml3d.render import frame_kernels as fk
+    from xaml3d.render import kernels
+
+    rng = np.random.default_rng(11)
+    w, h = 9, 7
+    width = w * s
+    background = np.array([0.1, 0.2, 0.3, 0.4], np.float32)
+    state = rng.integers(0, 3, h * w).astype(np.uint8)
+    pcol = rng.uniform(-0.2, 1.2, (4, h * w)).astype(np.float32)
+    pcol[:, 5] = np.nan
+    color = rng.uniform(-0.2, 1.2, (width * h * s, 4)).astype(np.float32)
+    color[7, 2] = np.nan
+    zbuf = -rng.random(width * h * s) - 1.0
+    # the samples kernels.resolve reads: each pixel's, as its state says
+    samples, zfull = color.copy(), zbuf.copy()
+    for i in range(h * w):
+        rows = [(i // w * s + a) * width + i % w * s for a in range(s)]
+        for r in rows:
+            if state[i] == fk.UNTOUCHED:
+                samples[r : r + s], zfull[r : r + s] = background, 0.0
+            elif state[i] == fk.ONE_COLOUR:
+                samples[r : r + s] = pcol[:, i]
+    # only a pixel spread to its samples holds colours there; the others' hold the background
+    spread = state.reshape(h, 1, w, 1).repeat(s, 1).repeat(s, 3).reshape(-1) == fk.PER_SAMPLE
+    color[~spread] = background
+    untouched = state.reshape(h, 1, w, 1).repeat(s, 1).repeat(s, 3).reshape(-1) == fk.UNTOUCHED
+    zbuf[untouched] = 0.0  # nothing drawn there
+    want, want_depth = np.empty((h, w, 4), np.uint8), np.empty((h, w))
+    kernels.resolve(samples, zfull, width, s, False, want, want_depth)
+    got, got_depth = np.empty_like(want), np.empty_like(want_depth)
+    words = got.reshape(-1).view(np.uint32)
+    shifts = np.array([0, 8, 16, 24] if sys.byteorder == "little" else [24, 16, 8, 0], np.uint32)
+    sums = [np.empty(3 * w, np.float32) for _ in range(4)]
+    for y0, y1 in ((0, 3), (3, 4), (4, 7)):
+        band = slice(y0 * s * width, y1 * s * width)
+        c, z = color[band].copy(), zbuf[band].copy()
+        st, pc = state[y0 * w : y1 * w].copy(), pcol[:, y0 * w : y1 * w].copy()
+        one = fk.resolve_blocks(c, z, st, pc, width, s, words, got_depth, True, background,
+                                y0, y1, *sums, shifts)  # fmt: skip
+        assert not one
+        assert (st == 0).all() and (z == 0.0).all() and (c == background).all()
+    assert np.array_equal(got, want) and np.array_equal(got_depth, want_depth)
+    st = np.full(2 * w, fk.ONE_COLOUR, np.uint8)  # a picture of one colour
+    pc = np.repeat(np.array([[0.5], [0.25], [0.0], [0.5]], np.float32), 2 * w, axis=1)
+    c = np.empty((2 * s * width, 4), np.float32)
+    c[:] = background
+    z = np.zeros(2 * s * width)
+    assert fk.resolve_blocks(c, z, st, pc, width, s, words, got_depth, False, background,
+                             0, 2, *sums, shifts)  # fmt: skip
+    assert (got[:2] == (255, 128, 0, 128)).all()
+
+
 def test_a_camera_that_does_not_move_is_set_up_once(monkeypatch):
     """A session's frames share the pipeline of a camera that is not animated and reads no
     scene bounds (finite far plane, near plane above 0); an infinite far plane follows the
@@ -320,3 +480,42 @@ def test_vanishing_light_over_transparency_resolves_empty_on_every_path():
     rgba2 = np.empty_like(rgba)
     resolve_clear(color, zbuf, 3, 1, rgba2, depth, False, np.zeros(4, np.float32), 0, 1)
     assert np.array_equal(rgba2, got)
+
+
+def test_frame_passes_and_gif_passes_load_without_numba_registries():
+    """A process drawing an animation's frames with the kernels (colour blocks, the GIF frame
+    passes) from numba's cache loads them as the renderer's kernels are loaded: without
+    refreshing numba's typing registries (typed lists among them), on the numba versions the
+    light loading was checked against."""
+    pytest.importorskip("numba")
+    import subprocess
+
+    import numba
+
+    from xaml3d import numba_env
+
+    code = (
+        "import sys; from xaml3d.render.frames import FrameSession; "
+        "from xaml3d.render.settings import RenderSettings; import xaml3d; "
+        "from xaml3d.output.animation import GifPlan, gif_frame; "
+        "s = FrameSession(xaml3d.load('samples/spinning-cube.xaml'), None, "
+        "RenderSettings(width=64, height=48, time=None), depth=False); "
+        "from xaml3d.render import accel, frame_kernels as fk; "
+        "r = s.frame(0.5)[1]; g = gif_frame(r.rgba, GifPlan()); "
+        "hits = sum(sum(f.stats.cache_hits.values()) for f in (fk.draw_blocks, "
+        "fk.resolve_blocks)); print(hits, 'numba.typed.typedlist' in sys.modules)"
+    )
+    env = dict(os.environ, XAML3D_KERNELS="numba")
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True
+        )  # fmt: skip
+        for _ in range(2)  # the first fills numba's cache when it is cold
+    ]
+    assert runs[1].returncode == 0, runs[1].stderr
+    hits, registries = runs[1].stdout.split()
+    assert int(hits) > 0
+    checked = (
+        tuple(int(x) for x in numba.__version__.split(".")[:2]) in numba_env.LIGHT_LOAD_CHECKED
+    )
+    assert registries == str(not checked)

@@ -239,3 +239,48 @@ def test_a_frame_file_encoded_where_drawn_is_the_file_save_image_writes(tmp_path
     want = (tmp_path / "direct.png").read_bytes()
     assert (tmp_path / "d" / "frame_0000.png").read_bytes() == want
     assert (tmp_path / "d" / "frame_0001.png").read_bytes() == want
+
+
+def pillows_gif(frames, path: Path, total: float, reserve: bool) -> None:
+    """The frames' palette images (``_gif_frame``) as Pillow's own writer writes them."""
+    from xaml3d.output.animation import _gif_frame, frame_durations
+
+    images = [_gif_frame(f, reserve=reserve)[0] for f in frames]
+    extra = {"transparency": 255, "disposal": 2} if reserve else {}
+    durations = [10 * d for d in frame_durations(len(frames), total, 0.01)]
+    images[0].save(path, save_all=True, append_images=images[1:], duration=durations, loop=0,
+                   optimize=False, **extra)  # fmt: skip
+
+
+def decoded_with_times(path: Path) -> list[tuple[bytes, int]]:
+    with Image.open(path) as im:
+        out = []
+        for i in range(im.n_frames):
+            im.seek(i)
+            out.append((np.array(im.convert("RGBA")).tobytes(), im.info["duration"]))
+    return out
+
+
+def test_frames_compressed_where_made_decode_as_pillows_gif(tmp_path):
+    """Each frame's block is compressed by ``gif_frame`` (where a frame was drawn) and the
+    writer puts them together as they come: the decoded frames and display times of the file
+    are those of Pillow's writer given the same palette images (frames showing the picture of
+    the one before merged into it, their times added; an empty frame; frames without empty
+    pixels written whole)."""
+    moving = [np.roll(square(), 2 * k, axis=1) for k in range(4)]
+    empty = np.zeros_like(moving[0])
+    with_empty = [moving[0], moving[1], moving[1], empty, moving[2], moving[3], moving[3]]
+    rng = np.random.default_rng(3)
+    alpha = np.full((20, 24, 1), 255, np.uint8)
+    full = [np.concatenate([rng.integers(0, 256, (20, 24, 3), np.uint8), alpha], 2) for _ in "abc"]
+    opaque = [full[0], full[1], full[1], full[2]]
+    for name, frames, reserve in (("t", with_empty, True), ("o", opaque, False)):
+        assert not write_gif(lambda plan, fs=frames: (gif_frame(f, plan) for f in fs),
+                             tmp_path / f"{name}.gif", 0.7, len(frames))  # fmt: skip
+        pillows_gif(frames, tmp_path / f"{name}-pillow.gif", 0.7, reserve)
+        got = decoded_with_times(tmp_path / f"{name}.gif")
+        assert got == decoded_with_times(tmp_path / f"{name}-pillow.gif")
+        assert len(got) == len(frames) - 2 + (name == "o")  # the repeats merged
+        assert sum(ms for _, ms in got) == 700
+    with Image.open(tmp_path / "t.gif") as im:
+        assert im.info["loop"] == 0 and im.size == (24, 24)

@@ -227,8 +227,8 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         gif = Path(output).suffix.lower() == ".gif" and not to_dir
         apng = Path(output).suffix.lower() in (".png", ".apng") and not to_dir
         if gif:
-            # Streamed: each frame is quantized by the worker that drew it and written as it
-            # comes; only palette images are held (``output.animation.write_gif``).
+            # Streamed: each frame is quantized and compressed by the worker that drew it and
+            # written as it comes (``output.animation.write_gif``).
             matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
             source = lambda plan: drawn(functools.partial(_gif_ready, plan=plan))  # noqa: E731
             flattened = write_gif(source, output, end - start, len(times), loop=loop, matte=matte)
@@ -351,7 +351,7 @@ def _lean(r):
 
 def _gif_ready(r, plan):
     """A frame's Rendering with its picture made ready for the GIF writer under ``plan``
-    (quantized where it was drawn: in parallel, and a quarter of the bytes to send back)."""
+    (quantized and compressed where it was drawn: in parallel, and few bytes to send back)."""
     r = _lean(r)
     r.rgba = gif_frame(r.rgba, plan)
     return r

@@ -84,11 +84,13 @@ def _slot(table, key):
 
 
 @numba.njit(cache=True, nogil=True)
-def exact_palette(rgba, limit, idx, keys):
+def exact_palette(rgba, limit, idx, keys, box):
     """The distinct RGB colours of every pixel (empty ones included, as ``Image.getcolors`` of
     the RGB image counts them) in ascending order of (r << 16 | g << 8 | b) into ``keys``, and
-    each pixel's rank among them into ``idx`` (H, W uint8), 255 where alpha is 0. Returns the
-    number of colours, or -1 (``idx`` unspecified) when there are more than ``limit``."""
+    each pixel's rank among them into ``idx`` (H, W uint8), 255 where alpha is 0; ``box``
+    (int64 (4,)): the first and last column and row of the pixels whose alpha is not 0 (x0,
+    y0, x1, y1; x1 = -1 when there is none). Returns the number of colours, or -1 (``idx`` and
+    ``box`` unspecified) when there are more than ``limit``."""
     h = rgba.shape[0]
     w = rgba.shape[1]
     table = np.full(TABLE, EMPTY, dtype=np.int64)
@@ -113,14 +115,26 @@ def exact_palette(rgba, limit, idx, keys):
         rank[_slot(table, keys[r])] = r
     last = EMPTY
     code = 0
+    x0 = w
+    y0 = h
+    x1 = -1
+    y1 = -1
     for y in range(h):
         for x in range(w):
             if rgba[y, x, 3] == 0:
                 idx[y, x] = 255
                 continue
+            if x < x0:
+                x0 = x
+            if x > x1:
+                x1 = x
+            if y < y0:
+                y0 = y
+            y1 = y
             key = (np.int64(rgba[y, x, 0]) << 16) | (np.int64(rgba[y, x, 1]) << 8) | rgba[y, x, 2]
             if key != last:
                 last = key
                 code = rank[_slot(table, key)]
             idx[y, x] = code
+    box[0], box[1], box[2], box[3] = x0, y0, x1, y1
     return n

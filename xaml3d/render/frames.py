@@ -13,8 +13,6 @@ import copy
 from collections import OrderedDict
 from collections.abc import Iterator
 
-import numpy as np
-
 from xaml3d.animation.moment import scene_and_values_at, scene_at
 from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
 from xaml3d.render import accel
@@ -153,15 +151,13 @@ MEMO_BYTES = 16 << 20  # frames a session keeps for repeats (about 45 GIF frames
 
 
 def _nbytes(result) -> int:
-    """The bytes a frame's result holds: its arrays, or a prepared frame's image."""
+    """The bytes a frame's result holds: its arrays, or a prepared frame's encoded bytes."""
     total = 0
     for name in ("rgba", "depth", "distance", "ids"):
         a = getattr(result, name, None)
-        image = getattr(a, "image", None)  # a prepared frame (``output.animation.GifFrame``)
-        if isinstance(a, np.ndarray):
-            total += a.nbytes
-        elif image is not None:
-            total += image.width * image.height
+        size = getattr(a, "nbytes", None)  # an array, or a prepared frame (``GifFrame``)
+        if isinstance(size, int):
+            total += size
         elif a is not None:
             total += MEMO_BYTES  # unknown: not kept
     return total
