@@ -268,14 +268,6 @@ def _image_sample(u, v, lay, img):
     return s0, s1, s2, s3
 
 
-# The same function inlined into ``draw_pass``'s loop (numba's IR inlining: called there once a
-# sample, a call per sample cost more than the sampling). Not cached itself: it exists only
-# inside the cached caller.
-_image_sample_inline = numba.njit(nogil=True, inline="always", error_model="numpy")(
-    _image_sample.py_func
-)
-
-
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
     """The float32 colour (R, 4) of every row (a fragment, or a multisampled (triangle,
@@ -440,30 +432,6 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
 DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
 
 
-@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
-def _shade(w0, w1, w2, i0, i1, i2, mt, source, colors, brush, uvp, lay, img):
-    """One row's float32 colour, ``shade_rows``'s arithmetic for one row."""
-    if source == COLOR_PLANES:
-        c0 = w0 * colors[0, i0] + w1 * colors[0, i1] + w2 * colors[0, i2]
-        c1 = w0 * colors[1, i0] + w1 * colors[1, i1] + w2 * colors[1, i2]
-        c2 = w0 * colors[2, i0] + w1 * colors[2, i1] + w2 * colors[2, i2]
-        c3 = w0 * colors[3, i0] + w1 * colors[3, i1] + w2 * colors[3, i2]
-    else:
-        c0 = colors[mt, 0]
-        c1 = colors[mt, 1]
-        c2 = colors[mt, 2]
-        c3 = colors[mt, 3]
-    if brush == BRUSH_IMAGE:
-        u = w0 * uvp[0, i0] + w1 * uvp[0, i1] + w2 * uvp[0, i2]
-        v = w0 * uvp[1, i0] + w1 * uvp[1, i1] + w2 * uvp[1, i2]
-        s0, s1, s2, s3 = _image_sample_inline(u, v, lay, img)
-        c0 = c0 * s0
-        c1 = c1 * s1
-        c2 = c2 * s2
-        c3 = c3 * s3
-    return np.float32(c0), np.float32(c1), np.float32(c2), np.float32(c3)
-
-
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def draw_pass(
     A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, msaa, width,
@@ -497,6 +465,13 @@ def draw_pass(
     tag = stamp
     tag_t = -1
     tag_row = -1
+    code = 0
+    img_w = img_h = opacity = 0.0
+    if brush == BRUSH_IMAGE:
+        code = int(lay[19])
+        img_w = lay[16]
+        img_h = lay[17]
+        opacity = lay[18]
     for t in range(tcount):
         ia = inv_area[t]
         mt = mtri[t]
@@ -549,6 +524,7 @@ def draw_pass(
             sub = 0
             last = -1  # the image pixel whose colour r0..r3 hold (this row)
             r0 = r1 = r2 = r3 = np.float32(0.0)
+            w0 = w1 = w2 = 0.0
             if per_pixel:
                 pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
                 if j // msaa != tag_row or t != tag_t:
@@ -585,40 +561,40 @@ def draw_pass(
                 p = base + k
                 if not z <= zbuf[p]:
                     continue
-                if per_pixel and pc != last:
-                    pp = pc
-                    last = pp
-                    if owner[pp] != tag:
-                        owner[pp] = tag
-                        cx = pc * (msaa * SUBPIXEL) + msaa * HALF
-                        e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
-                        e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
-                        e1 = A[2, t] * cx + (B[2, t] * pcy + (C[2, t] - tl2))
-                        if persp:
-                            w0 = e0 * (q[t, 0] * ia)
-                            w1 = e1 * (q[t, 1] * ia)
-                            w2 = e2 * (q[t, 2] * ia)
-                            tot = w0 + w1 + w2
-                            w0 = w0 / tot
-                            w1 = w1 / tot
-                            w2 = w2 / tot
+                # The colour r0..r3: kept from the row's last sample (same image pixel), read
+                # from the cache of the image row, or shaded here. The shading is written out
+                # in the loop, not called: a call taking arrays costs reference counting (four
+                # atomic operations) per shaded pixel, more than the shading itself.
+                shade = False
+                if per_pixel:
+                    if pc != last:
+                        last = pc
+                        if owner[pc] != tag:
+                            owner[pc] = tag
+                            shade = True
+                            cx = pc * (msaa * SUBPIXEL) + msaa * HALF
+                            e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
+                            e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
+                            e1 = A[2, t] * cx + (B[2, t] * pcy + (C[2, t] - tl2))
+                            if persp:
+                                w0 = e0 * (q[t, 0] * ia)
+                                w1 = e1 * (q[t, 1] * ia)
+                                w2 = e2 * (q[t, 2] * ia)
+                                tot = w0 + w1 + w2
+                                w0 = w0 / tot
+                                w1 = w1 / tot
+                                w2 = w2 / tot
+                            else:
+                                w0 = e0 * ia
+                                w1 = e1 * ia
+                                w2 = e2 * ia
                         else:
-                            w0 = e0 * ia
-                            w1 = e1 * ia
-                            w2 = e2 * ia
-                        r0, r1, r2, r3 = _shade(
-                            w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img
-                        )
-                        cache[pp, 0] = r0
-                        cache[pp, 1] = r1
-                        cache[pp, 2] = r2
-                        cache[pp, 3] = r3
-                    else:
-                        r0 = cache[pp, 0]
-                        r1 = cache[pp, 1]
-                        r2 = cache[pp, 2]
-                        r3 = cache[pp, 3]
-                elif not per_pixel:
+                            r0 = cache[pc, 0]
+                            r1 = cache[pc, 1]
+                            r2 = cache[pc, 2]
+                            r3 = cache[pc, 3]
+                else:
+                    shade = True
                     w0 = s0 + g0 * k
                     w1 = s1 + g1 * k
                     w2 = s2 + g2 * k
@@ -627,9 +603,71 @@ def draw_pass(
                         w0 = w0 / tot
                         w1 = w1 / tot
                         w2 = w2 / tot
-                    r0, r1, r2, r3 = _shade(
-                        w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img
-                    )
+                if shade:  # shade_rows's arithmetic for one row
+                    if source == COLOR_PLANES:
+                        c0 = w0 * colors[0, vi0] + w1 * colors[0, vi1] + w2 * colors[0, vi2]
+                        c1 = w0 * colors[1, vi0] + w1 * colors[1, vi1] + w2 * colors[1, vi2]
+                        c2 = w0 * colors[2, vi0] + w1 * colors[2, vi1] + w2 * colors[2, vi2]
+                        c3 = w0 * colors[3, vi0] + w1 * colors[3, vi1] + w2 * colors[3, vi2]
+                    else:
+                        c0 = colors[mt, 0]
+                        c1 = colors[mt, 1]
+                        c2 = colors[mt, 2]
+                        c3 = colors[mt, 3]
+                    if brush == BRUSH_IMAGE:  # _image_sample, written out
+                        u = w0 * uvp[0, vi0] + w1 * uvp[0, vi1] + w2 * uvp[0, vi2]
+                        v = w0 * uvp[1, vi0] + w1 * uvp[1, vi1] + w2 * uvp[1, vi2]
+                        qx = u * lay[0] + v * lay[1] + lay[2]
+                        qy = u * lay[3] + v * lay[4] + lay[5]
+                        vpx = lay[6]
+                        vpy = lay[7]
+                        vpw = lay[8]
+                        vph = lay[9]
+                        fx, in_x = _tile((qx - vpx) / vpw, code, code == 2 or code == 4)
+                        fy, in_y = _tile((qy - vpy) / vph, code, code == 3 or code == 4)
+                        px = lay[10] + (vpx + fx * vpw - lay[14]) / lay[12]
+                        py_ = lay[11] + (vpy + fy * vph - lay[15]) / lay[13]
+                        t0 = 0.0
+                        t1 = 0.0
+                        t2 = 0.0
+                        t3 = 0.0
+                        if (
+                            in_x and in_y and px >= -TILE_EPS and px <= img_w + TILE_EPS
+                            and py_ >= -TILE_EPS and py_ <= img_h + TILE_EPS
+                        ):  # fmt: skip
+                            xi0, xi1, yi0, yi1, fx, fy = _corners(px, py_, img_w, img_h)
+                            hx = 1.0 - fx
+                            hy = 1.0 - fy
+                            t0 = (img[yi0, xi0, 0] * hx + img[yi0, xi1, 0] * fx) * hy + (
+                                img[yi1, xi0, 0] * hx + img[yi1, xi1, 0] * fx
+                            ) * fy
+                            t1 = (img[yi0, xi0, 1] * hx + img[yi0, xi1, 1] * fx) * hy + (
+                                img[yi1, xi0, 1] * hx + img[yi1, xi1, 1] * fx
+                            ) * fy
+                            t2 = (img[yi0, xi0, 2] * hx + img[yi0, xi1, 2] * fx) * hy + (
+                                img[yi1, xi0, 2] * hx + img[yi1, xi1, 2] * fx
+                            ) * fy
+                            t3 = (img[yi0, xi0, 3] * hx + img[yi0, xi1, 3] * fx) * hy + (
+                                img[yi1, xi0, 3] * hx + img[yi1, xi1, 3] * fx
+                            ) * fy
+                        if opacity != 1.0:
+                            t0 *= opacity
+                            t1 *= opacity
+                            t2 *= opacity
+                            t3 *= opacity
+                        c0 = c0 * t0
+                        c1 = c1 * t1
+                        c2 = c2 * t2
+                        c3 = c3 * t3
+                    r0 = np.float32(c0)
+                    r1 = np.float32(c1)
+                    r2 = np.float32(c2)
+                    r3 = np.float32(c3)
+                    if per_pixel:
+                        cache[pc, 0] = r0
+                        cache[pc, 1] = r1
+                        cache[pc, 2] = r2
+                        cache[pc, 3] = r3
                 drawn += 1
                 if additive:
                     color[p, 0] += r0
