@@ -106,7 +106,7 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
     draw_pass = kernels.draw_pass
 
     def counting(*args):
-        loops.append(args[21])  # the brush kind
+        loops.append((args[21], id(args[20])))  # the brush kind, the pass's colours
         return draw_pass(*args)
 
     monkeypatch.setattr(kernels, "draw_pass", counting)
@@ -120,11 +120,13 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
         monkeypatch.setattr(draw, "_draw_side_compiled", compiled)
         loops.clear()
         c = render_arrays(scene, **opts)
+        brushes = sorted({brush for brush, _ in loops})
+        passes = len(set(loops))  # each pass once, or once a band
         if view == "outside":  # every pass of both sides in its loop
-            assert sorted(set(loops)) == [kernels.BRUSH_UNIFORM, kernels.BRUSH_IMAGE], opts
-            assert len(loops) == 6, opts
+            assert brushes == [kernels.BRUSH_UNIFORM, kernels.BRUSH_IMAGE], opts
+            assert passes == 6, opts
         else:  # the clipped side takes the fragment path; the other still loops
-            assert 0 < len(loops) < 6, opts
+            assert 0 < passes < 6, opts
         for x in (b, c):
             assert np.array_equal(a.rgba, x.rgba), opts
             assert np.array_equal(a.depth, x.depth), opts
@@ -133,10 +135,13 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
 
 @pytest.mark.parametrize("msaa", [1, 2])
 @pytest.mark.parametrize("additive", [False, True])
-def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
+@pytest.mark.parametrize("band", [None, 2, 5, 8])
+def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, band, monkeypatch):
     """Overlapping triangles, colours below 0 and above 1, depths beyond the far plane, tiny
-    chunks: the one loop against ``raster_chunk`` + ``shade_rows`` + ``blend_rows`` chunk by
-    chunk (an additive pass clamps at 1 at the end of each chunk, not after each addition)."""
+    chunks: the one loop, whole or band by band of ``band`` sample rows (each band visiting only
+    the triangles that reach it), against ``raster_chunk`` + ``shade_rows`` + ``blend_rows``
+    chunk by chunk (an additive pass clamps at 1 at the end of each chunk, not after each
+    addition)."""
     monkeypatch.setenv(accel.ENV, "numba")
     from xaml3d.render.frame import Framebuffer
     from xaml3d.render.raster import rasterize, set_up
@@ -177,11 +182,23 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, monkeypatch):
     owner = np.full(w, -1, dtype=np.int64)
     cache = np.empty((owner.size, 4), np.float32)
     touched = np.empty(cap + w, dtype=np.int64)
-    got.fragments_drawn, tag = kernels.draw_pass(
-        *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w, s.tris.astype(np.int64),
-        indices, kernels.COLOR_PLANES, planes, kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img,
-        additive, got.zbuf, got.color, owner, cache, 0, cap, touched,
-    )  # fmt: skip
+    out = np.empty(10_000, dtype=np.int64)
+    chunks = out[: kernels.chunk_starts(*s.edges, *s.box, cap, out)].copy()
+    assert chunks.size > 20  # many chunks, most of them ending inside a band
+    if not additive:
+        chunks = np.zeros(0, dtype=np.int64)
+    tag = 0
+    for r0 in range(0, h, band or h):
+        r1 = min(r0 + (band or h), h)
+        j0, j1 = s.box[2], s.box[3]
+        tris = np.flatnonzero((j0 < r1) & (j1 >= r0)).astype(np.int64)
+        drawn, tag = kernels.draw_pass(
+            *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w,
+            s.tris.astype(np.int64), indices, kernels.COLOR_PLANES, planes,
+            kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img, additive, got.zbuf, got.color, owner,
+            cache, tag, tris, r0, r1, chunks, touched,
+        )  # fmt: skip
+        got.fragments_drawn += drawn
     assert got.fragments_drawn == want.fragments_drawn > 1000
     assert tag > 0
     assert np.array_equal(got.color, want.color)

@@ -219,19 +219,15 @@ def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) 
     xy = np.stack([sx[idx], sy[idx]], axis=-1)
     side = SideLoop(fb, xy, dv[idx], qv[idx], tris, _read_only(shaders[0].indices), ctx.msaa)
     for shader, args in zip(shaders, passes, strict=True):
-        # A kept framebuffer draws opaque/over passes band by band when it resolves
-        # (``frame.FrameStore``). Additive passes clamp where the rasterizer's chunks end,
-        # which bands would move: they, and the fragment path, are drawn now, after the passes
-        # kept before them.
-        if args is not None and fb.deferred is not None and not args[-1]:
-            fb.deferred.append((side, kernels, args))
+        # The framebuffer keeps the loop's passes and draws them band by band when it
+        # resolves (``Framebuffer.defer``); a pass on the fragment path is drawn now, after
+        # the passes kept before it.
+        if args is not None:
+            fb.defer(side, kernels, args)
             continue
         fb.draw_deferred()
-        if args is not None:
-            side.draw(kernels, args)
-        else:
-            for frag in side_fragments(pm, tris, ctx, passes=len(shaders)):
-                shader.draw(fb, frag)
+        for frag in side_fragments(pm, tris, ctx, passes=len(shaders)):
+            shader.draw(fb, frag)
     return True
 
 

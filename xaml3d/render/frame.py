@@ -39,6 +39,11 @@ import numpy as np
 from xaml3d.render import accel
 
 DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = empty
+# Sample rows per band of ``Framebuffer.draw_deferred``: about this many bytes of colour (16 a
+# sample) and depth (8). Measured on the lit textured translucent 1920x1080 frame (4 passes over
+# 2x2 samples): see benchmarks/README.md, run O.
+TILE_BYTES = 2 << 20
+DEFER_BYTES = 256 << 20  # set-ups of kept sides (``Framebuffer.defer``) before drawing them
 # kernels.blend_rows with no index: fragment f takes row f of its colours
 _EVERY_ROW = np.zeros(0, dtype=np.int64)
 
@@ -60,17 +65,40 @@ class Framebuffer:
         self._win: np.ndarray | None = None  # scratch buffers, allocated when first needed
         self._cov: np.ndarray | None = None
         self.fragments_drawn = 0
-        # Passes of ``pass_loop.SideLoop`` kept to be drawn band by band (``FrameStore``): a
-        # list while a kept framebuffer defers them, else None (drawn at once).
+        # Passes of ``pass_loop.SideLoop`` kept to be drawn band by band (``draw_deferred``,
+        # ``FrameStore``): a list while the framebuffer defers them, else None (drawn at once).
         self.deferred: list | None = None
+        self._deferred_bytes = 0
+
+    def defer(self, side, kernels, args) -> None:
+        """Keep a pass of the compiled loop for ``draw_deferred`` (or draw it now when this
+        framebuffer does not defer). The kept sides' set-ups stay in memory until then: past
+        ``DEFER_BYTES`` of them the kept passes are drawn first."""
+        if self.deferred is None:
+            side.draw(kernels, args)
+            return
+        if not any(kept is side for kept, _, _ in self.deferred):
+            if self.deferred and self._deferred_bytes + side.nbytes > DEFER_BYTES:
+                self.draw_deferred()
+            self._deferred_bytes += side.nbytes
+        self.deferred.append((side, kernels, args))
 
     def draw_deferred(self) -> None:
-        """Draw the passes kept in ``deferred`` whole, in order: before anything is drawn into
-        this framebuffer another way, which must come after them."""
-        if self.deferred:
-            for side, kernels, args in self.deferred:
-                side.draw(kernels, args)
-            self.deferred.clear()
+        """Draw the passes kept in ``deferred``, in order, band by band of sample rows: every
+        pass into one band (``TILE_BYTES`` of colour and depth, which stay in the processor's
+        cache meanwhile), then the next band. Each sample sees the same passes in the same
+        order as when they are drawn whole: the same picture. Called before anything is drawn
+        into this framebuffer another way, which must come after them, and by ``resolve``."""
+        if not self.deferred:
+            return
+        kept = list(self.deferred)
+        self.deferred.clear()
+        self._deferred_bytes = 0
+        rows = band_rows(self.width, self.height, kept[0][0].msaa)
+        for y0 in range(0, self.height, rows):
+            band = (y0, min(y0 + rows, self.height))
+            for side, kernels, args in kept:
+                side.draw(kernels, args, rows=band)
 
     @property
     def depth(self) -> np.ndarray:
@@ -220,6 +248,7 @@ class Framebuffer:
         (the first in row order on a tie) instead of the average: the model-id render, whose
         colours are codes that must never mix, and whose ids then belong to the very sample
         that gives the depth."""
+        self.draw_deferred()
         s = int(ssaa)
         h, w = self.height // s, self.width // s
         kernels = accel.active()
@@ -358,3 +387,12 @@ class FrameStore:
         fb.zbuf.fill(0.0)
         self._fb = fb
         return rgba, (z if depth else None), None
+
+
+def band_rows(width: int, height: int, msaa: int) -> int:
+    """Sample rows per band of ``Framebuffer.draw_deferred``: ``TILE_BYTES`` of samples,
+    whole image rows of ``msaa`` sample rows (an image row's shading is then kept within one
+    band's loop)."""
+    rows = max(1, TILE_BYTES // (24 * max(int(width), 1)))
+    rows = max(msaa, rows - rows % msaa)
+    return min(rows, max(int(height), 1))

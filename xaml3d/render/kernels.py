@@ -432,101 +432,213 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
 DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
 
 
+ROW_KEY = 1 << 32  # chunk keys: triangle * ROW_KEY + sample row (rows < 2**32)
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _span(a0, b0, c0, a1, b1, c1, a2, b2, c2, lo, hi, py):
+    """The covered sample columns [lo, hi] of one row (centre y ``py`` in sub-pixels) of a
+    triangle with edges (a, b, c) and box columns [lo, hi]: ``raster_chunk``'s exact integer
+    solution of the three edge inequalities (scalars only: no reference counting)."""
+    for e in range(3):
+        if e == 0:
+            a, kk = a0, b0 * py + c0
+        elif e == 1:
+            a, kk = a1, b1 * py + c1
+        else:
+            a, kk = a2, b2 * py + c2
+        if a > 0:
+            lim = (kk - 1) // a
+            v = -((lim + HALF) // SUBPIXEL)
+            if v > lo:
+                lo = v
+        elif a < 0:
+            lim = (kk - 1) // (-a)
+            v = (lim - HALF) // SUBPIXEL
+            if v < hi:
+                hi = v
+        elif kk <= 0:
+            hi = -1
+    return lo, hi
+
+
+@numba.njit(cache=True, nogil=True)
+def chunk_starts(A, B, C, i0, i1, j0, j1, cap, out):
+    """Where ``raster_chunk`` (``cap`` fragments, whole rows) starts each chunk after the
+    first, as keys t * ROW_KEY + j of the row that starts it, in order, into ``out``; returns
+    how many. An additive pass drawn band by band clamps where these chunks end, as the
+    fragment path does (``draw_pass``)."""
+    n = 0
+    m = 0
+    for t in range(A.shape[1]):
+        for j in range(j0[t], j1[t] + 1):
+            lo, hi = _span(
+                A[0, t], B[0, t], C[0, t], A[1, t], B[1, t], C[1, t], A[2, t], B[2, t],
+                C[2, t], i0[t], i1[t], j * SUBPIXEL + HALF,
+            )  # fmt: skip
+            span = hi - lo + 1
+            if span <= 0:
+                continue
+            if n + span > cap and n > 0:
+                out[m] = t * ROW_KEY + j
+                m += 1
+                n = 0
+            n += span
+    return m
+
+
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def draw_pass(
     A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, msaa, width,
     mtri, indices, source, colors, brush, uvp, lay, img, additive,
-    zbuf, color, owner, cache, stamp, cap, touched,
+    zbuf, color, owner, cache, stamp, tris, r0, r1, chunks, touched,
 ):  # fmt: skip
-    """A whole material pass over set-up triangles (``raster.set_up``) in ONE loop: each
-    sample is found (``raster_chunk``'s spans and depth), dropped beyond the far plane
+    """A material pass over set-up triangles (``raster.set_up``) in ONE loop: each sample is
+    found (``raster_chunk``'s spans and depth), dropped beyond the far plane
     (``draw.side_fragments``), depth-tested, shaded (``shade_rows``; with ``msaa`` > 1 once per
     (triangle, image pixel), at the pixel's centre) and blended (``blend_rows``), with no
-    fragment arrays in between.
+    fragment arrays in between. Only the triangles ``tris`` (increasing; a superset of those
+    that reach the band is enough) and the sample rows [r0, r1) are drawn: a whole pass, or
+    one band of it (``pass_loop``: every pass of a frame drawn band by band, each band's
+    samples staying in the processor's cache). Every sample sees the same operations in the
+    same order either way.
 
     Multisampling: the ``msaa`` sample rows of one image row of a triangle come one after the
     other, so the colour of (triangle, image pixel) is kept in ``cache[column]`` (one image
-    row, small enough to stay in the processor's cache) under ``owner[column]``, a tag unique
-    to (pass, triangle, image row): tags start above ``stamp`` and the next free one is
-    returned.
+    row) under ``owner[column]``, a tag unique to (pass, triangle, image row): tags start above
+    ``stamp`` and the next free one is returned.
 
     ``mtri``: each set-up triangle's index in the mesh (``indices``, per-triangle ``colors``).
-    Additive passes clamp at 1 at the end of each of the rasterizer's chunks (``cap``
-    fragments, whole rows), where ``blend_rows`` clamps: the same picture even for the rare
-    negative colour (weights extrapolated at an edge). ``touched`` (scratch of ``cap`` +
-    ``width`` entries) lists the samples of the chunk that went above 1 after an addition.
+    Additive passes clamp at 1 where the rasterizer's chunks end (``chunks``, from
+    ``chunk_starts``), as ``blend_rows`` does chunk by chunk: the same picture even for the
+    rare negative colour (weights extrapolated at an edge). A sample's additions all come in
+    its own band, so clamping the band's touched samples when the chunk changes, and at the
+    end, is that clamp. ``touched`` (scratch of ``cap`` + ``width`` entries) lists the samples
+    that went above 1 after an addition since the last clamp.
     Returns (how many samples passed the depth test, the next free tag)."""
-    tcount = A.shape[1]
     one = np.float32(1.0)
+    u1 = np.uint64(1)
+    u2 = np.uint64(2)
+    u3 = np.uint64(3)
+    u4 = np.uint64(4)
+    # Flat views, indexed with unsigned integers: no negative-index wrap-around and no
+    # multiplication by a run-time row length per access in the per-sample code.
+    col = color.reshape(color.shape[0] * 4)
+    cch = cache.reshape(cache.shape[0] * 4)
     per_pixel = msaa > 1
-    n = 0  # fragments of the rasterizer's current chunk
-    nt = 0  # samples an additive pass touched in that chunk
+    nchunks = chunks.shape[0]
+    ci = -1  # the next chunk start not yet passed (-1: found at the first row)
+    nt = 0  # samples an additive pass touched since the last clamp
     drawn = 0
     tag = stamp
     tag_t = -1
     tag_row = -1
+    # the ImageBrush's placement (``image_layout``), once per pass
+    image = brush == BRUSH_IMAGE
     code = 0
+    l0 = l1 = l2 = l3 = l4 = l5 = l6 = l7 = l8 = l9 = l10 = l11 = l12 = l13 = l14 = l15 = 0.0
     img_w = img_h = opacity = 0.0
-    if brush == BRUSH_IMAGE:
-        code = int(lay[19])
+    iwid = 0
+    imf = img.reshape(img.size)
+    if image:
+        l0, l1, l2, l3 = lay[0], lay[1], lay[2], lay[3]
+        l4, l5, l6, l7 = lay[4], lay[5], lay[6], lay[7]
+        l8, l9, l10, l11 = lay[8], lay[9], lay[10], lay[11]
+        l12, l13, l14, l15 = lay[12], lay[13], lay[14], lay[15]
         img_w = lay[16]
         img_h = lay[17]
         opacity = lay[18]
-    for t in range(tcount):
+        code = int(lay[19])
+        iwid = img.shape[1]
+    planes = source == COLOR_PLANES
+    for ti in range(tris.shape[0]):
+        t = tris[ti]
+        ja = j0[t] if j0[t] > r0 else r0
+        jb = j1[t] if j1[t] < r1 - 1 else r1 - 1
+        if ja > jb:
+            continue
+        # the triangle's numbers, loaded once
+        a0, b0, c0 = A[0, t], B[0, t], C[0, t]
+        a1, b1, c1 = A[1, t], B[1, t], C[1, t]
+        a2, b2, c2 = A[2, t], B[2, t], C[2, t]
+        tl0 = 1 if (a0 > 0 or (a0 == 0 and b0 > 0)) else 0
+        tl1 = 1 if (a1 > 0 or (a1 == 0 and b1 > 0)) else 0
+        tl2 = 1 if (a2 > 0 or (a2 == 0 and b2 > 0)) else 0
         ia = inv_area[t]
+        qa0 = qa1 = qa2 = 0.0
+        if persp:
+            qa0 = q[t, 0] * ia
+            qa1 = q[t, 1] * ia
+            qa2 = q[t, 2] * ia
         mt = mtri[t]
         vi0 = indices[mt, 0]
         vi1 = indices[mt, 1]
         vi2 = indices[mt, 2]
-        tl0 = 1 if (A[0, t] > 0 or (A[0, t] == 0 and B[0, t] > 0)) else 0
-        tl1 = 1 if (A[1, t] > 0 or (A[1, t] == 0 and B[1, t] > 0)) else 0
-        tl2 = 1 if (A[2, t] > 0 or (A[2, t] == 0 and B[2, t] > 0)) else 0
-        for j in range(j0[t], j1[t] + 1):
+        # the colour source (Gouraud planes per vertex, or one colour per triangle) and the
+        # texture coordinates at the three vertices
+        k00 = k01 = k02 = k10 = k11 = k12 = k20 = k21 = k22 = k30 = k31 = k32 = 0.0
+        f0 = f1 = f2 = f3 = 0.0
+        if planes:
+            k00, k01, k02 = colors[0, vi0], colors[0, vi1], colors[0, vi2]
+            k10, k11, k12 = colors[1, vi0], colors[1, vi1], colors[1, vi2]
+            k20, k21, k22 = colors[2, vi0], colors[2, vi1], colors[2, vi2]
+            k30, k31, k32 = colors[3, vi0], colors[3, vi1], colors[3, vi2]
+        else:
+            f0, f1, f2, f3 = colors[mt, 0], colors[mt, 1], colors[mt, 2], colors[mt, 3]
+        ua = ub = uc = va = vb = vc = 0.0
+        if image:
+            ua, ub, uc = uvp[0, vi0], uvp[0, vi1], uvp[0, vi2]
+            va, vb, vc = uvp[1, vi0], uvp[1, vi1], uvp[1, vi2]
+        zt, gxt, gyt, xrt, yrt = zr[t], gx[t], gy[t], xr[t], yr[t]
+        for j in range(ja, jb + 1):
             py = j * SUBPIXEL + HALF
-            lo = i0[t]
-            hi = i1[t]
-            for e in range(3):
-                a = A[e, t]
-                kk = B[e, t] * py + C[e, t]
-                if a > 0:
-                    lim = (kk - 1) // a
-                    v = -((lim + HALF) // SUBPIXEL)
-                    if v > lo:
-                        lo = v
-                elif a < 0:
-                    lim = (kk - 1) // (-a)
-                    v = (lim - HALF) // SUBPIXEL
-                    if v < hi:
-                        hi = v
-                elif kk <= 0:
-                    hi = -1
+            lo, hi = _span(a0, b0, c0, a1, b1, c1, a2, b2, c2, i0[t], i1[t], py)
             span = hi - lo + 1
             if span <= 0:
                 continue
-            if n + span > cap and n > 0:  # where raster_chunk ends a chunk
-                if additive:
+            if additive:
+                key = t * ROW_KEY + j
+                if ci < 0:  # the chunk starts at or before this row: passed already
+                    lo_, hi_ = 0, nchunks
+                    while lo_ < hi_:
+                        mid = (lo_ + hi_) // 2
+                        if chunks[mid] <= key:
+                            lo_ = mid + 1
+                        else:
+                            hi_ = mid
+                    ci = lo_
+                elif ci < nchunks and chunks[ci] <= key:  # a chunk ended: its clamp
                     for m in range(nt):
-                        p = touched[m]
-                        for c in range(4):
-                            if color[p, c] > one:
-                                color[p, c] = one
-                nt = 0
-                n = 0
-            n += span
+                        p4 = np.uint64(touched[m]) * u4
+                        if col[p4] > one:
+                            col[p4] = one
+                        if col[p4 + u1] > one:
+                            col[p4 + u1] = one
+                        if col[p4 + u2] > one:
+                            col[p4 + u2] = one
+                        if col[p4 + u3] > one:
+                            col[p4 + u3] = one
+                    nt = 0
+                    while ci < nchunks and chunks[ci] <= key:
+                        ci += 1
             px0 = lo * SUBPIXEL + HALF
-            d_s = zr[t] + gy[t] * (py - yr[t]) + gx[t] * (px0 - xr[t])
-            d_g = gx[t] * SUBPIXEL
+            d_s = zt + gyt * (py - yrt) + gxt * (px0 - xrt)
+            d_g = gxt * SUBPIXEL
             base = j * width + lo
             # per-fragment weights (no multisampling): affine in k along the row
             s0 = s1 = s2 = g0 = g1 = g2 = 0.0
-            pcy = 0
+            ky0 = ky1 = ky2 = 0
             cpix = 0  # the image column and the sample within it, counted along the row
             sub = 0
-            last = -1  # the image pixel whose colour r0..r3 hold (this row)
-            r0 = r1 = r2 = r3 = np.float32(0.0)
+            last = -1  # the image pixel whose colour rr0..rr3 hold (this row)
+            rr0 = rr1 = rr2 = rr3 = np.float32(0.0)
             w0 = w1 = w2 = 0.0
             if per_pixel:
                 pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
+                # the edge functions at the image pixel's centre, their row part (exact)
+                ky2 = b0 * pcy + (c0 - tl0)
+                ky0 = b1 * pcy + (c1 - tl1)
+                ky1 = b2 * pcy + (c2 - tl2)
                 if j // msaa != tag_row or t != tag_t:
                     tag += 1
                     tag_row = j // msaa
@@ -534,12 +646,12 @@ def draw_pass(
                 cpix = lo // msaa
                 sub = lo - cpix * msaa
             else:
-                s2 = (A[0, t] * px0 + B[0, t] * py + (C[0, t] - tl0)) * ia
-                g2 = (A[0, t] * SUBPIXEL) * ia
-                s0 = (A[1, t] * px0 + B[1, t] * py + (C[1, t] - tl1)) * ia
-                g0 = (A[1, t] * SUBPIXEL) * ia
-                s1 = (A[2, t] * px0 + B[2, t] * py + (C[2, t] - tl2)) * ia
-                g1 = (A[2, t] * SUBPIXEL) * ia
+                s2 = (a0 * px0 + b0 * py + (c0 - tl0)) * ia
+                g2 = (a0 * SUBPIXEL) * ia
+                s0 = (a1 * px0 + b1 * py + (c1 - tl1)) * ia
+                g0 = (a1 * SUBPIXEL) * ia
+                s1 = (a2 * px0 + b2 * py + (c2 - tl2)) * ia
+                g1 = (a2 * SUBPIXEL) * ia
                 if persp:
                     s0 *= q[t, 0]
                     g0 *= q[t, 0]
@@ -558,10 +670,10 @@ def draw_pass(
                 if not d <= 1.0:
                     continue
                 z = d - DEPTH_OFFSET
-                p = base + k
-                if not z <= zbuf[p]:
+                pu = np.uint64(base + k)
+                if not z <= zbuf[pu]:
                     continue
-                # The colour r0..r3: kept from the row's last sample (same image pixel), read
+                # The colour rr0..rr3: kept from the row's last sample (same image pixel), read
                 # from the cache of the image row, or shaded here. The shading is written out
                 # in the loop, not called: a call taking arrays costs reference counting (four
                 # atomic operations) per shaded pixel, more than the shading itself.
@@ -569,17 +681,18 @@ def draw_pass(
                 if per_pixel:
                     if pc != last:
                         last = pc
-                        if owner[pc] != tag:
-                            owner[pc] = tag
+                        pcu = np.uint64(pc)
+                        if owner[pcu] != tag:
+                            owner[pcu] = tag
                             shade = True
                             cx = pc * (msaa * SUBPIXEL) + msaa * HALF
-                            e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
-                            e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
-                            e1 = A[2, t] * cx + (B[2, t] * pcy + (C[2, t] - tl2))
+                            e2 = a0 * cx + ky2
+                            e0 = a1 * cx + ky0
+                            e1 = a2 * cx + ky1
                             if persp:
-                                w0 = e0 * (q[t, 0] * ia)
-                                w1 = e1 * (q[t, 1] * ia)
-                                w2 = e2 * (q[t, 2] * ia)
+                                w0 = e0 * qa0
+                                w1 = e1 * qa1
+                                w2 = e2 * qa2
                                 tot = w0 + w1 + w2
                                 w0 = w0 / tot
                                 w1 = w1 / tot
@@ -589,10 +702,11 @@ def draw_pass(
                                 w1 = e1 * ia
                                 w2 = e2 * ia
                         else:
-                            r0 = cache[pc, 0]
-                            r1 = cache[pc, 1]
-                            r2 = cache[pc, 2]
-                            r3 = cache[pc, 3]
+                            cu = pcu * u4
+                            rr0 = cch[cu]
+                            rr1 = cch[cu + u1]
+                            rr2 = cch[cu + u2]
+                            rr3 = cch[cu + u3]
                 else:
                     shade = True
                     w0 = s0 + g0 * k
@@ -604,33 +718,26 @@ def draw_pass(
                         w1 = w1 / tot
                         w2 = w2 / tot
                 if shade:  # shade_rows's arithmetic for one row
-                    if source == COLOR_PLANES:
-                        c0 = w0 * colors[0, vi0] + w1 * colors[0, vi1] + w2 * colors[0, vi2]
-                        c1 = w0 * colors[1, vi0] + w1 * colors[1, vi1] + w2 * colors[1, vi2]
-                        c2 = w0 * colors[2, vi0] + w1 * colors[2, vi1] + w2 * colors[2, vi2]
-                        c3 = w0 * colors[3, vi0] + w1 * colors[3, vi1] + w2 * colors[3, vi2]
+                    if planes:
+                        x0 = w0 * k00 + w1 * k01 + w2 * k02
+                        x1 = w0 * k10 + w1 * k11 + w2 * k12
+                        x2 = w0 * k20 + w1 * k21 + w2 * k22
+                        x3 = w0 * k30 + w1 * k31 + w2 * k32
                     else:
-                        c0 = colors[mt, 0]
-                        c1 = colors[mt, 1]
-                        c2 = colors[mt, 2]
-                        c3 = colors[mt, 3]
-                    if brush == BRUSH_IMAGE:  # _image_sample, written out
-                        u = w0 * uvp[0, vi0] + w1 * uvp[0, vi1] + w2 * uvp[0, vi2]
-                        v = w0 * uvp[1, vi0] + w1 * uvp[1, vi1] + w2 * uvp[1, vi2]
-                        qx = u * lay[0] + v * lay[1] + lay[2]
-                        qy = u * lay[3] + v * lay[4] + lay[5]
-                        vpx = lay[6]
-                        vpy = lay[7]
-                        vpw = lay[8]
-                        vph = lay[9]
-                        fx, in_x = _tile((qx - vpx) / vpw, code, code == 2 or code == 4)
-                        fy, in_y = _tile((qy - vpy) / vph, code, code == 3 or code == 4)
-                        px = lay[10] + (vpx + fx * vpw - lay[14]) / lay[12]
-                        py_ = lay[11] + (vpy + fy * vph - lay[15]) / lay[13]
-                        t0 = 0.0
-                        t1 = 0.0
-                        t2 = 0.0
-                        t3 = 0.0
+                        x0 = f0
+                        x1 = f1
+                        x2 = f2
+                        x3 = f3
+                    if image:  # _image_sample, written out
+                        u = w0 * ua + w1 * ub + w2 * uc
+                        v = w0 * va + w1 * vb + w2 * vc
+                        qx = u * l0 + v * l1 + l2
+                        qy = u * l3 + v * l4 + l5
+                        fx, in_x = _tile((qx - l6) / l8, code, code == 2 or code == 4)
+                        fy, in_y = _tile((qy - l7) / l9, code, code == 3 or code == 4)
+                        px = l10 + (l6 + fx * l8 - l14) / l12
+                        py_ = l11 + (l7 + fy * l9 - l15) / l13
+                        t0 = t1 = t2 = t3 = 0.0
                         if (
                             in_x and in_y and px >= -TILE_EPS and px <= img_w + TILE_EPS
                             and py_ >= -TILE_EPS and py_ <= img_h + TILE_EPS
@@ -638,69 +745,81 @@ def draw_pass(
                             xi0, xi1, yi0, yi1, fx, fy = _corners(px, py_, img_w, img_h)
                             hx = 1.0 - fx
                             hy = 1.0 - fy
-                            t0 = (img[yi0, xi0, 0] * hx + img[yi0, xi1, 0] * fx) * hy + (
-                                img[yi1, xi0, 0] * hx + img[yi1, xi1, 0] * fx
+                            o00 = np.uint64((yi0 * iwid + xi0) * 4)
+                            o01 = np.uint64((yi0 * iwid + xi1) * 4)
+                            o10 = np.uint64((yi1 * iwid + xi0) * 4)
+                            o11 = np.uint64((yi1 * iwid + xi1) * 4)
+                            t0 = (imf[o00] * hx + imf[o01] * fx) * hy + (
+                                imf[o10] * hx + imf[o11] * fx
                             ) * fy
-                            t1 = (img[yi0, xi0, 1] * hx + img[yi0, xi1, 1] * fx) * hy + (
-                                img[yi1, xi0, 1] * hx + img[yi1, xi1, 1] * fx
+                            t1 = (imf[o00 + u1] * hx + imf[o01 + u1] * fx) * hy + (
+                                imf[o10 + u1] * hx + imf[o11 + u1] * fx
                             ) * fy
-                            t2 = (img[yi0, xi0, 2] * hx + img[yi0, xi1, 2] * fx) * hy + (
-                                img[yi1, xi0, 2] * hx + img[yi1, xi1, 2] * fx
+                            t2 = (imf[o00 + u2] * hx + imf[o01 + u2] * fx) * hy + (
+                                imf[o10 + u2] * hx + imf[o11 + u2] * fx
                             ) * fy
-                            t3 = (img[yi0, xi0, 3] * hx + img[yi0, xi1, 3] * fx) * hy + (
-                                img[yi1, xi0, 3] * hx + img[yi1, xi1, 3] * fx
+                            t3 = (imf[o00 + u3] * hx + imf[o01 + u3] * fx) * hy + (
+                                imf[o10 + u3] * hx + imf[o11 + u3] * fx
                             ) * fy
                         if opacity != 1.0:
                             t0 *= opacity
                             t1 *= opacity
                             t2 *= opacity
                             t3 *= opacity
-                        c0 = c0 * t0
-                        c1 = c1 * t1
-                        c2 = c2 * t2
-                        c3 = c3 * t3
-                    r0 = np.float32(c0)
-                    r1 = np.float32(c1)
-                    r2 = np.float32(c2)
-                    r3 = np.float32(c3)
+                        x0 = x0 * t0
+                        x1 = x1 * t1
+                        x2 = x2 * t2
+                        x3 = x3 * t3
+                    rr0 = np.float32(x0)
+                    rr1 = np.float32(x1)
+                    rr2 = np.float32(x2)
+                    rr3 = np.float32(x3)
                     if per_pixel:
-                        cache[pc, 0] = r0
-                        cache[pc, 1] = r1
-                        cache[pc, 2] = r2
-                        cache[pc, 3] = r3
+                        cu = np.uint64(pc) * u4
+                        cch[cu] = rr0
+                        cch[cu + u1] = rr1
+                        cch[cu + u2] = rr2
+                        cch[cu + u3] = rr3
                 drawn += 1
+                p4 = pu * u4
                 if additive:
-                    color[p, 0] += r0
-                    color[p, 1] += r1
-                    color[p, 2] += r2
-                    color[p, 3] += r3
-                    if (
-                        color[p, 0] > one or color[p, 1] > one or color[p, 2] > one
-                        or color[p, 3] > one
-                    ):  # fmt: skip
+                    y0 = col[p4] + rr0
+                    y1 = col[p4 + u1] + rr1
+                    y2 = col[p4 + u2] + rr2
+                    y3 = col[p4 + u3] + rr3
+                    col[p4] = y0
+                    col[p4 + u1] = y1
+                    col[p4 + u2] = y2
+                    col[p4 + u3] = y3
+                    if y0 > one or y1 > one or y2 > one or y3 > one:
                         # only these can need the clamp: a sample's value at the chunk's end
                         # is the one after its last addition
-                        touched[nt] = p
+                        touched[nt] = base + k
                         nt += 1
-                elif r3 >= one:
-                    color[p, 0] = r0
-                    color[p, 1] = r1
-                    color[p, 2] = r2
-                    color[p, 3] = r3
-                    zbuf[p] = z
+                elif rr3 >= one:
+                    col[p4] = rr0
+                    col[p4 + u1] = rr1
+                    col[p4 + u2] = rr2
+                    col[p4 + u3] = rr3
+                    zbuf[pu] = z
                 else:
-                    a = one - r3
-                    color[p, 0] = r0 + a * color[p, 0]
-                    color[p, 1] = r1 + a * color[p, 1]
-                    color[p, 2] = r2 + a * color[p, 2]
-                    color[p, 3] = r3 + a * color[p, 3]
-                    zbuf[p] = z
+                    a = one - rr3
+                    col[p4] = rr0 + a * col[p4]
+                    col[p4 + u1] = rr1 + a * col[p4 + u1]
+                    col[p4 + u2] = rr2 + a * col[p4 + u2]
+                    col[p4 + u3] = rr3 + a * col[p4 + u3]
+                    zbuf[pu] = z
     if additive:
         for m in range(nt):
-            p = touched[m]
-            for c in range(4):
-                if color[p, c] > one:
-                    color[p, c] = one
+            p4 = np.uint64(touched[m]) * u4
+            if col[p4] > one:
+                col[p4] = one
+            if col[p4 + u1] > one:
+                col[p4 + u1] = one
+            if col[p4 + u2] > one:
+                col[p4 + u2] = one
+            if col[p4 + u3] > one:
+                col[p4 + u3] = one
     return drawn, tag + 1
 
 

@@ -81,7 +81,11 @@ def draw_viewport(
     # the viewport's own Opacity, Clip, Effect... act on its picture alone, not the background
     fill = bg if picture is None or nearest else (0.0, 0.0, 0.0, 0.0)
     store = None if nearest else store
-    fb = Framebuffer(sw, sh, fill) if store is None else store.take(sw, sh, fill)
+    if store is None:
+        fb = Framebuffer(sw, sh, fill)
+        fb.deferred = []  # the compiled passes drawn band by band when it resolves
+    else:
+        fb = store.take(sw, sh, fill)
     ctx = make_context(sw, sh, settings.effective_msaa)
     try:
         if store is not None and not _reads_bounds(vp.camera):
