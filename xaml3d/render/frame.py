@@ -83,22 +83,26 @@ class Framebuffer:
             self._deferred_bytes += side.nbytes
         self.deferred.append((side, kernels, args))
 
-    def draw_deferred(self) -> None:
+    def draw_deferred(self, grid: int = 0, band_done=None) -> None:
         """Draw the passes kept in ``deferred``, in order, band by band of sample rows: every
         pass into one band (``TILE_BYTES`` of colour and depth, which stay in the processor's
         cache meanwhile), then the next band. Each sample sees the same passes in the same
         order as when they are drawn whole: the same picture. Called before anything is drawn
-        into this framebuffer another way, which must come after them, and by ``resolve``."""
+        into this framebuffer another way, which must come after them, and by ``resolve``,
+        which gives ``band_done(y0, y1)`` to resolve each band of ``grid`` x ``grid`` pixel
+        blocks right after it is drawn."""
         if not self.deferred:
             return
         kept = list(self.deferred)
         self.deferred.clear()
         self._deferred_bytes = 0
-        rows = band_rows(self.width, self.height, kept[0][0].msaa)
+        rows = band_rows(self.width, self.height, grid or kept[0][0].msaa)
         for y0 in range(0, self.height, rows):
             band = (y0, min(y0 + rows, self.height))
             for side, kernels, args in kept:
                 side.draw(kernels, args, rows=band)
+            if band_done is not None:
+                band_done(*band)
 
     @property
     def depth(self) -> np.ndarray:
@@ -248,15 +252,25 @@ class Framebuffer:
         (the first in row order on a tie) instead of the average: the model-id render, whose
         colours are codes that must never mix, and whose ids then belong to the very sample
         that gives the depth."""
-        self.draw_deferred()
         s = int(ssaa)
         h, w = self.height // s, self.width // s
         kernels = accel.active()
         if kernels is not None:  # the same numbers in one pass
             rgba = np.empty((h, w, 4), dtype=np.uint8)
             depth = np.empty((h, w))
-            kernels.resolve(self.color, self.zbuf, self.width, s, bool(nearest), rgba, depth)
+            width = self.width
+
+            def resolve(y0: int, y1: int) -> None:  # sample rows y0..y1, multiples of s
+                a, b = y0 * width, y1 * width
+                kernels.resolve(self.color[a:b], self.zbuf[a:b], width, s, bool(nearest),
+                                rgba[y0 // s : y1 // s], depth[y0 // s : y1 // s])  # fmt: skip
+
+            if self.deferred:  # each band resolved right after it is drawn, still in cache
+                self.draw_deferred(s, resolve)
+            else:
+                resolve(0, self.height)
             return rgba, depth
+        self.draw_deferred()
         # s * s strided slices: about 5x faster here than a float32 sum over the two sample
         # axes of a 5-D reshape (numpy reduces non-adjacent axes slowly).
         c5 = self.color.reshape(h, s, w, s, 4)
