@@ -220,3 +220,50 @@ def test_pass_loops_in_threads_draw_what_one_thread_draws(tmp_path, monkeypatch)
         together = list(pool.map(lambda opts: render_arrays(scene, **opts).rgba, sizes))
     for a, b in zip(alone, together, strict=True):
         assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize(
+    "tile_bytes, defer_bytes",
+    [(1, 256 << 20), (50_000, 256 << 20), (50_000, 1), (1 << 40, 256 << 20)],
+)
+def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, tmp_path,
+                                                    monkeypatch):  # fmt: skip
+    """An ordinary render keeps the loop's passes and draws them band by band (one image row
+    a band, a few rows, or the whole frame), each band resolved right after; with
+    ``defer_bytes`` = 1 the kept passes are drawn whenever another side comes. The frame is
+    big enough for the additive passes to span many of the rasterizer's chunks: the picture
+    and depth are the numpy path's."""
+    from xaml3d.render import frame, pass_loop
+
+    scene = _scene(tmp_path, "Tile", "outside")
+    opts = {"width": 800}
+    monkeypatch.setenv(accel.ENV, "numpy")
+    want = render_arrays(scene, **opts)
+    monkeypatch.setenv(accel.ENV, "numba")
+    monkeypatch.setattr(frame, "TILE_BYTES", tile_bytes)
+    monkeypatch.setattr(frame, "DEFER_BYTES", defer_bytes)
+    bands, chunks = set(), []
+    draw, find = pass_loop.SideLoop.draw, pass_loop.SideLoop.chunks
+
+    def counted(self, kernels, args, rows=None):
+        bands.add(rows)
+        return draw(self, kernels, args, rows)
+
+    def found(self, kernels):
+        starts = find(self, kernels)
+        chunks.append(starts.size)
+        return starts
+
+    monkeypatch.setattr(pass_loop.SideLoop, "draw", counted)
+    monkeypatch.setattr(pass_loop.SideLoop, "chunks", found)
+    got = render_arrays(scene, **opts)
+    assert np.array_equal(got.rgba, want.rgba)
+    assert np.array_equal(got.depth, want.depth)
+    assert max(chunks) >= 5  # additive passes over several of the rasterizer's chunks
+    assert None not in bands
+    if tile_bytes == 1:  # one image row (2 sample rows) a band
+        assert {b - a for a, b in bands} == {2}
+    elif tile_bytes > 1 << 30:
+        assert len(bands) == 1
+    else:
+        assert len(bands) > 10
