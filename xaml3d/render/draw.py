@@ -18,7 +18,8 @@ For every GeometryModel3D (``Model``), vectorized over all its vertices and tria
    one colour per face) times the brush sample (uniform brushes: one constant), then blended.
    Fragments beyond the far plane (d > 1) are dropped. With the compiled kernels loaded, a side
    with no triangle to clip skips the fragment arrays: each pass is one compiled loop that
-   rasterizes, shades and blends (``xaml3d.render.pass_loop``), the same picture.
+   rasterizes, shades and blends (``xaml3d.render.pass_loop``), the same picture; the
+   framebuffer keeps these passes and draws them band by band when it resolves.
 
 ``mode="flat"`` samples non-uniform brushes per pixel exactly as ``shaded`` does; only the
 lighting is per face.
