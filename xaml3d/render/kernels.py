@@ -513,8 +513,9 @@ def draw_pass(
     ``chunk_starts``), as ``blend_rows`` does chunk by chunk: the same picture even for the
     rare negative colour (weights extrapolated at an edge). A sample's additions all come in
     its own band, so clamping the band's touched samples when the chunk changes, and at the
-    end, is that clamp. ``touched`` (scratch of ``cap`` + ``width`` entries) lists the samples
-    that went above 1 after an addition since the last clamp.
+    end, is that clamp. ``touched`` lists the samples that went above 1 after an addition
+    since the last clamp: at most one chunk's additions, so the chunk budget plus ``width``
+    entries are enough.
     Returns (how many samples passed the depth test, the next free tag)."""
     one = np.float32(1.0)
     u1 = np.uint64(1)
