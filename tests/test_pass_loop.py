@@ -267,3 +267,23 @@ def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, tmp
         assert len(bands) == 1
     else:
         assert len(bands) > 10
+
+
+def test_power_of_two_divisions_as_products_are_exact(monkeypatch):
+    """``draw_pass`` multiplies by 1 / d instead of dividing by d (the image placement's
+    viewport sizes and stretch scales) only when d is a power of two with an exact reciprocal:
+    then both round the same real number, for every x (subnormal and huge ones too)."""
+    monkeypatch.setenv(accel.ENV, "numba")
+    accel.plan(0.0, 0)
+    kernels = accel.active()
+    rng = np.random.default_rng(5)
+    with np.errstate(under="ignore"):  # subnormal x wanted
+        x = rng.standard_normal(20_000) * np.exp2(rng.integers(-1074, 1023, 20_000))
+    x = np.concatenate([x, [0.0, -0.0, 5e-324, -5e-324, 1.7e308, np.inf, -np.inf]])
+    for d in (1.0, 0.125, 0.25, 2.0**-9, -4.0, 2.0**1000, 2.0**-1022, 2.0**-1023):
+        r = kernels._reciprocal(d)
+        assert r != 0.0, d
+        with np.errstate(over="ignore", under="ignore"):  # those results are the point
+            assert np.array_equal(x * r, x / d), d
+    for d in (0.3, 3.0, 0.1, 2.0**-1060, 0.0, np.inf, np.nan, 1.0 + 2.0**-52):
+        assert kernels._reciprocal(d) == 0.0, d  # divided as it is (2**1060 is no double)

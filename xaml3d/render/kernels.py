@@ -19,6 +19,8 @@ the on-disk cache holds one compiled version of each kernel.
 
 from __future__ import annotations
 
+import math
+
 import numba
 import numpy as np
 
@@ -432,6 +434,17 @@ def resolve(color, zbuf, width, s, nearest, rgba, depth):
 DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _reciprocal(d):
+    """1 / d when dividing by d equals multiplying by it for EVERY x (d a power of two whose
+    reciprocal is exact: both operations round the same real number x / d), else 0."""
+    m, _ = math.frexp(d)
+    if m != 0.5 and m != -0.5:
+        return 0.0
+    r = 1.0 / d
+    return r if (r * d == 1.0 and abs(r) < math.inf) else 0.0
+
+
 ROW_KEY = 1 << 32  # chunk keys: triangle * ROW_KEY + sample row (rows < 2**32)
 
 
@@ -538,6 +551,7 @@ def draw_pass(
     image = brush == BRUSH_IMAGE
     code = 0
     l0 = l1 = l2 = l3 = l4 = l5 = l6 = l7 = l8 = l9 = l10 = l11 = l12 = l13 = l14 = l15 = 0.0
+    d8 = d9 = d12 = d13 = 0.0
     img_w = img_h = opacity = 0.0
     iwid = 0
     imf = img.reshape(img.size)
@@ -546,6 +560,8 @@ def draw_pass(
         l4, l5, l6, l7 = lay[4], lay[5], lay[6], lay[7]
         l8, l9, l10, l11 = lay[8], lay[9], lay[10], lay[11]
         l12, l13, l14, l15 = lay[12], lay[13], lay[14], lay[15]
+        # divisions by powers of two (unit viewports, 2^n-texel images) as exact products
+        d8, d9, d12, d13 = _reciprocal(l8), _reciprocal(l9), _reciprocal(l12), _reciprocal(l13)
         img_w = lay[16]
         img_h = lay[17]
         opacity = lay[18]
@@ -734,10 +750,14 @@ def draw_pass(
                         v = w0 * va + w1 * vb + w2 * vc
                         qx = u * l0 + v * l1 + l2
                         qy = u * l3 + v * l4 + l5
-                        fx, in_x = _tile((qx - l6) / l8, code, code == 2 or code == 4)
-                        fy, in_y = _tile((qy - l7) / l9, code, code == 3 or code == 4)
-                        px = l10 + (l6 + fx * l8 - l14) / l12
-                        py_ = l11 + (l7 + fy * l9 - l15) / l13
+                        lx = (qx - l6) * d8 if d8 != 0.0 else (qx - l6) / l8
+                        ly = (qy - l7) * d9 if d9 != 0.0 else (qy - l7) / l9
+                        fx, in_x = _tile(lx, code, code == 2 or code == 4)
+                        fy, in_y = _tile(ly, code, code == 3 or code == 4)
+                        ex = l6 + fx * l8 - l14
+                        ey = l7 + fy * l9 - l15
+                        px = l10 + (ex * d12 if d12 != 0.0 else ex / l12)
+                        py_ = l11 + (ey * d13 if d13 != 0.0 else ey / l13)
                         t0 = t1 = t2 = t3 = 0.0
                         if (
                             in_x and in_y and px >= -TILE_EPS and px <= img_w + TILE_EPS
