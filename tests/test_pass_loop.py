@@ -223,16 +223,18 @@ def test_pass_loops_in_threads_draw_what_one_thread_draws(tmp_path, monkeypatch)
 
 
 @pytest.mark.parametrize(
-    "tile_bytes, defer_bytes",
-    [(1, 256 << 20), (50_000, 256 << 20), (50_000, 1), (1 << 40, 256 << 20)],
-)
-def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, tmp_path,
-                                                    monkeypatch):  # fmt: skip
+    "tile_bytes, defer_bytes, call_cost",
+    [(1, 256 << 20, 0.0), (50_000, 256 << 20, 0.0), (50_000, 1, 0.0), (1 << 40, 256 << 20, 0.0),
+     (50_000, 256 << 20, 1.0)],
+)  # fmt: skip
+def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, call_cost,
+                                                    tmp_path, monkeypatch):  # fmt: skip
     """An ordinary render keeps the loop's passes and draws them band by band (one image row
     a band, a few rows, or the whole frame), each band resolved right after; with
-    ``defer_bytes`` = 1 the kept passes are drawn whenever another side comes. The frame is
-    big enough for the additive passes to span many of the rasterizer's chunks: the picture
-    and depth are the numpy path's."""
+    ``defer_bytes`` = 1 the kept passes are drawn whenever another side comes; with calls
+    dearer than what the cache saves (many small models), whole. The frame is big enough for
+    the additive passes to span many of the rasterizer's chunks: the picture and depth are the
+    numpy path's."""
     from xaml3d.render import frame, pass_loop
 
     scene = _scene(tmp_path, "Tile", "outside")
@@ -242,6 +244,7 @@ def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, tmp
     monkeypatch.setenv(accel.ENV, "numba")
     monkeypatch.setattr(frame, "TILE_BYTES", tile_bytes)
     monkeypatch.setattr(frame, "DEFER_BYTES", defer_bytes)
+    monkeypatch.setattr(frame, "BAND_CALL_COST", call_cost)
     bands, chunks = set(), []
     draw, find = pass_loop.SideLoop.draw, pass_loop.SideLoop.chunks
 
@@ -259,6 +262,9 @@ def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, tmp
     got = render_arrays(scene, **opts)
     assert np.array_equal(got.rgba, want.rgba)
     assert np.array_equal(got.depth, want.depth)
+    if call_cost:  # drawn whole, pass after pass
+        assert bands == {None}
+        return
     assert max(chunks) >= 5  # additive passes over several of the rasterizer's chunks
     assert None not in bands
     if tile_bytes == 1:  # one image row (2 sample rows) a band

@@ -43,7 +43,11 @@ DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = e
 # sample) and depth (8). Measured on the lit textured translucent 1920x1080 frame (4 passes over
 # 2x2 samples): see benchmarks/README.md, run O.
 TILE_BYTES = 2 << 20
-DEFER_BYTES = 256 << 20  # set-ups of kept sides (``Framebuffer.defer``) before drawing them
+DEFER_BYTES = 64 << 20  # set-ups of kept sides (``Framebuffer.defer``) before drawing them
+# Bands pay when the cache saves more than the loop's extra calls cost (one call a pass and a
+# band it reaches): about 2.5 ns a sample saved (run O), about 8 us a call (its 37 arguments).
+BAND_SAMPLE_GAIN = 2.5e-9
+BAND_CALL_COST = 8e-6
 # kernels.blend_rows with no index: fragment f takes row f of its colours
 _EVERY_ROW = np.zeros(0, dtype=np.int64)
 
@@ -77,7 +81,7 @@ class Framebuffer:
         if self.deferred is None:
             side.draw(kernels, args)
             return
-        if not any(kept is side for kept, _, _ in self.deferred):
+        if not self.deferred or self.deferred[-1][0] is not side:  # a side's passes come together
             if self.deferred and self._deferred_bytes + side.nbytes > DEFER_BYTES:
                 self.draw_deferred()
             self._deferred_bytes += side.nbytes
@@ -97,9 +101,30 @@ class Framebuffer:
         self.deferred.clear()
         self._deferred_bytes = 0
         rows = band_rows(self.width, self.height, grid or kept[0][0].msaa)
-        for y0 in range(0, self.height, rows):
-            band = (y0, min(y0 + rows, self.height))
+        # the passes each band gets, in order: a small model's passes only in the bands it
+        # reaches (a loop over every pass for every band would cost many models dearly)
+        bands: list[list] = [[] for _ in range(0, self.height, rows)]
+        calls, samples = 0, 0.0
+        for kept_pass in kept:
+            side = kept_pass[0]
+            if side.s is None:
+                continue
+            first = max(side.first_row, 0) // rows
+            last = min(side.last_row // rows, len(bands) - 1)
+            for b in range(first, last + 1):
+                bands[b].append(kept_pass)
+            calls += last - first
+            samples += 2.0 * side.s.estimate
+        if calls * BAND_CALL_COST > samples * BAND_SAMPLE_GAIN:
+            # many small models: the loop's calls would cost more than the cache saves
             for side, kernels, args in kept:
+                side.draw(kernels, args)
+            if band_done is not None:
+                band_done(0, self.height)
+            return
+        for b, y0 in enumerate(range(0, self.height, rows)):
+            band = (y0, min(y0 + rows, self.height))
+            for side, kernels, args in bands[b]:
                 side.draw(kernels, args, rows=band)
             if band_done is not None:
                 band_done(*band)

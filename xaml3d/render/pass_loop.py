@@ -37,6 +37,10 @@ from xaml3d.render.raster import DEFAULT_BUDGET, set_up
 # per thread: the kernels release the GIL, and renders may run in a thread pool.
 _LOCAL = threading.local()
 _EMPTY = np.zeros(0, dtype=np.int64)  # no chunks (a pass that does not add), no triangles
+# A side of at most this many triangles visits them all in every band it reaches (the loop
+# passes a triangle outside the band in a few instructions): sorting them into bands would
+# cost more.
+FEW = 256
 
 
 def _scratch(width: int):
@@ -64,8 +68,9 @@ class SideLoop:
             self.mtri = np.ascontiguousarray(tris[self.s.tris], dtype=np.int64)
             self.first_row, self.last_row = int(self.s.box[2].min()), int(self.s.box[3].max())
             self.all = np.arange(self.mtri.size, dtype=np.int64)
-            # about what the set-up holds (edges, boxes, planes, 1/w...): 25 numbers a triangle
-            self.nbytes = 200 * self.mtri.size
+            # about what the set-up holds: 25 numbers a triangle (edges, boxes, planes, 1/w...)
+            # and some 20 arrays and objects of a few hundred bytes each
+            self.nbytes = 200 * self.mtri.size + 4096
         self.indices = indices
         self.msaa = max(int(msaa), 1)
         self._chunks: np.ndarray | None = None
@@ -76,6 +81,9 @@ class SideLoop:
         found once for all the side's additive passes."""
         if self._chunks is None:
             s = self.s
+            if 2.0 * s.estimate <= DEFAULT_BUDGET:  # all its boxes' samples fit in one chunk
+                self._chunks = _EMPTY
+                return _EMPTY
             # Two consecutive chunks hold more than the budget together, and the side has at
             # most its boxes' samples (twice the estimate): a bound on their number.
             out = np.empty(int(4.0 * s.estimate / DEFAULT_BUDGET) + 3, dtype=np.int64)
@@ -87,6 +95,8 @@ class SideLoop:
         """The set-up triangles that may reach sample rows [r0, r1), in order (a superset is
         enough: the loop clips each triangle's rows to the band). The side's triangles are
         sorted into bands of r1 - r0 rows once, when a band starts on such a boundary."""
+        if self.all.size <= FEW:
+            return self.all
         bands = self._bands
         if bands is None or r0 % bands[0] or r1 - r0 > bands[0]:
             rows = r1 - r0
