@@ -81,6 +81,8 @@ class Framebuffer:
         if self.deferred is None:
             side.draw(kernels, args)
             return
+        if not self.deferred:  # (``FrameStore.finish`` takes the list away whole)
+            self._deferred_bytes = 0
         if not self.deferred or self.deferred[-1][0] is not side:  # a side's passes come together
             if self.deferred and self._deferred_bytes + side.nbytes > DEFER_BYTES:
                 self.draw_deferred()
