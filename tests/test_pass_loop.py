@@ -106,7 +106,7 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
     draw_pass = kernels.draw_pass
 
     def counting(*args):
-        loops.append(args[21])  # the brush kind
+        loops.append((args[21], id(args[20])))  # the brush kind, the pass's colours
         return draw_pass(*args)
 
     monkeypatch.setattr(kernels, "draw_pass", counting)
@@ -120,11 +120,13 @@ def test_pass_loop_matches_fragment_and_numpy_paths(tile, view, tmp_path, monkey
         monkeypatch.setattr(draw, "_draw_side_compiled", compiled)
         loops.clear()
         c = render_arrays(scene, **opts)
+        brushes = sorted({brush for brush, _ in loops})
+        passes = len(set(loops))  # each pass once, or once a band
         if view == "outside":  # every pass of both sides in its loop
-            assert sorted(set(loops)) == [kernels.BRUSH_UNIFORM, kernels.BRUSH_IMAGE], opts
-            assert len(loops) == 6, opts
+            assert brushes == [kernels.BRUSH_UNIFORM, kernels.BRUSH_IMAGE], opts
+            assert passes == 6, opts
         else:  # the clipped side takes the fragment path; the other still loops
-            assert 0 < len(loops) < 6, opts
+            assert 0 < passes < 6, opts
         for x in (b, c):
             assert np.array_equal(a.rgba, x.rgba), opts
             assert np.array_equal(a.depth, x.depth), opts
@@ -182,12 +184,15 @@ def test_flat_solid_colours_loop_like_the_other_paths(view, compiled_set_up, tmp
 @pytest.mark.parametrize("per_triangle", [False, True])
 @pytest.mark.parametrize("msaa", [1, 2])
 @pytest.mark.parametrize("additive", [False, True])
-def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, per_triangle, monkeypatch):
+@pytest.mark.parametrize("band", [None, 2, 5, 8])
+def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, per_triangle, band,
+                                                   monkeypatch):  # fmt: skip
     """Overlapping triangles, colours below 0 and above 1, depths beyond the far plane, tiny
-    chunks: the one loop against ``raster_chunk`` + ``shade_rows`` + ``blend_rows`` chunk by
-    chunk (an additive pass clamps at 1 at the end of each chunk, not after each addition).
-    ``per_triangle``: flat solid colours, one per triangle, against the fragment path's
-    weightless fragments blended from the float32 table (``PassShader.draw``)."""
+    chunks: the one loop, whole or band by band of ``band`` sample rows (each band visiting only
+    the triangles that reach it), against ``raster_chunk`` + ``shade_rows`` + ``blend_rows``
+    chunk by chunk (an additive pass clamps at 1 at the end of each chunk, not after each
+    addition). ``per_triangle``: flat solid colours, one per triangle, against the fragment
+    path's weightless fragments blended from the float32 table (``PassShader.draw``)."""
     monkeypatch.setenv(accel.ENV, "numba")
     from xaml3d.render.frame import Framebuffer
     from xaml3d.render.raster import rasterize, set_up
@@ -240,11 +245,23 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, per_triangle, 
     source, colors = kernels.COLOR_PLANES, planes
     if per_triangle:
         source, colors = kernels.COLOR_PER_TRIANGLE, table
-    got.fragments_drawn, tag = kernels.draw_pass(
-        *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w, s.tris.astype(np.int64),
-        indices, source, colors, kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img,
-        additive, got.zbuf, got.color, owner, cache, 0, cap, touched,
-    )  # fmt: skip
+    out = np.empty(10_000, dtype=np.int64)
+    chunks = out[: kernels.chunk_starts(*s.edges, *s.box, cap, out)].copy()
+    assert chunks.size > 20  # many chunks, most of them ending inside a band
+    if not additive:
+        chunks = np.zeros(0, dtype=np.int64)
+    tag = 0
+    for r0 in range(0, h, band or h):
+        r1 = min(r0 + (band or h), h)
+        j0, j1 = s.box[2], s.box[3]
+        tris = np.flatnonzero((j0 < r1) & (j1 >= r0)).astype(np.int64)
+        drawn, tag = kernels.draw_pass(
+            *s.edges, *s.box, *s.plane, s.inv_area, s.q, s.persp, msaa, w,
+            s.tris.astype(np.int64), indices, source, colors,
+            kernels.BRUSH_UNIFORM, no_uv, no_lay, no_img, additive, got.zbuf, got.color, owner,
+            cache, tag, tris, r0, r1, chunks, touched,
+        )  # fmt: skip
+        got.fragments_drawn += drawn
     assert got.fragments_drawn == want.fragments_drawn > 1000
     assert tag > 0
     assert np.array_equal(got.color, want.color)
@@ -266,3 +283,76 @@ def test_pass_loops_in_threads_draw_what_one_thread_draws(tmp_path, monkeypatch)
         together = list(pool.map(lambda opts: render_arrays(scene, **opts).rgba, sizes))
     for a, b in zip(alone, together, strict=True):
         assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize(
+    "tile_bytes, defer_bytes, call_cost",
+    [(1, 256 << 20, 0.0), (50_000, 256 << 20, 0.0), (50_000, 1, 0.0), (1 << 40, 256 << 20, 0.0),
+     (50_000, 256 << 20, 1.0)],
+)  # fmt: skip
+def test_bands_of_every_pass_give_the_numpy_picture(tile_bytes, defer_bytes, call_cost,
+                                                    tmp_path, monkeypatch):  # fmt: skip
+    """An ordinary render keeps the loop's passes and draws them band by band (one image row
+    a band, a few rows, or the whole frame), each band resolved right after; with
+    ``defer_bytes`` = 1 the kept passes are drawn whenever another side comes; with calls
+    dearer than what the cache saves (many small models), whole. The frame is big enough for
+    the additive passes to span many of the rasterizer's chunks: the picture and depth are the
+    numpy path's."""
+    from xaml3d.render import frame, pass_loop
+
+    scene = _scene(tmp_path, "Tile", "outside")
+    opts = {"width": 800}
+    monkeypatch.setenv(accel.ENV, "numpy")
+    want = render_arrays(scene, **opts)
+    monkeypatch.setenv(accel.ENV, "numba")
+    monkeypatch.setattr(frame, "TILE_BYTES", tile_bytes)
+    monkeypatch.setattr(frame, "DEFER_BYTES", defer_bytes)
+    monkeypatch.setattr(frame, "BAND_CALL_COST", call_cost)
+    bands, chunks = set(), []
+    draw, find = pass_loop.SideLoop.draw, pass_loop.SideLoop.chunks
+
+    def counted(self, kernels, args, rows=None):
+        bands.add(rows)
+        return draw(self, kernels, args, rows)
+
+    def found(self, kernels):
+        starts = find(self, kernels)
+        chunks.append(starts.size)
+        return starts
+
+    monkeypatch.setattr(pass_loop.SideLoop, "draw", counted)
+    monkeypatch.setattr(pass_loop.SideLoop, "chunks", found)
+    got = render_arrays(scene, **opts)
+    assert np.array_equal(got.rgba, want.rgba)
+    assert np.array_equal(got.depth, want.depth)
+    if call_cost:  # drawn whole, pass after pass
+        assert bands == {None}
+        return
+    assert max(chunks) >= 5  # additive passes over several of the rasterizer's chunks
+    assert None not in bands
+    if tile_bytes == 1:  # one image row (2 sample rows) a band
+        assert {b - a for a, b in bands} == {2}
+    elif tile_bytes > 1 << 30:
+        assert len(bands) == 1
+    else:
+        assert len(bands) > 10
+
+
+def test_power_of_two_divisions_as_products_are_exact(monkeypatch):
+    """``draw_pass`` multiplies by 1 / d instead of dividing by d (the image placement's
+    viewport sizes and stretch scales) only when d is a power of two with an exact reciprocal:
+    then both round the same real number, for every x (subnormal and huge ones too)."""
+    monkeypatch.setenv(accel.ENV, "numba")
+    accel.plan(0.0, 0)
+    kernels = accel.active()
+    rng = np.random.default_rng(5)
+    with np.errstate(under="ignore"):  # subnormal x wanted
+        x = rng.standard_normal(20_000) * np.exp2(rng.integers(-1074, 1023, 20_000))
+    x = np.concatenate([x, [0.0, -0.0, 5e-324, -5e-324, 1.7e308, np.inf, -np.inf]])
+    for d in (1.0, 0.125, 0.25, 2.0**-9, -4.0, 2.0**1000, 2.0**-1022, 2.0**-1023):
+        r = kernels._reciprocal(d)
+        assert r != 0.0, d
+        with np.errstate(over="ignore", under="ignore"):  # those results are the point
+            assert np.array_equal(x * r, x / d), d
+    for d in (0.3, 3.0, 0.1, 2.0**-1060, 0.0, np.inf, np.nan, 1.0 + 2.0**-52):
+        assert kernels._reciprocal(d) == 0.0, d  # divided as it is (2**1060 is no double)

@@ -18,7 +18,8 @@ For every GeometryModel3D (``Model``), vectorized over all its vertices and tria
    one colour per face) times the brush sample (uniform brushes: one constant), then blended.
    Fragments beyond the far plane (d > 1) are dropped. With the compiled kernels loaded, a side
    with no triangle to clip skips the fragment arrays: each pass is one compiled loop that
-   rasterizes, shades and blends (``xaml3d.render.pass_loop``), the same picture.
+   rasterizes, shades and blends (``xaml3d.render.pass_loop``), the same picture; the
+   framebuffer keeps these passes and draws them band by band when it resolves.
 
 ``mode="flat"`` samples non-uniform brushes per pixel exactly as ``shaded`` does; only the
 lighting is per face.
@@ -248,21 +249,16 @@ def _draw_side_compiled(fb, pm: PreparedModel, tris, ctx: DrawContext, shaders) 
         xy = np.stack([sx[idx], sy[idx]], axis=-1)
         side = SideLoop(fb, xy, dv[idx], qv[idx], tris, indices, ctx.msaa)
     for shader, args in zip(shaders, passes, strict=True):
-        # A kept framebuffer draws opaque/over passes band by band when it resolves
-        # (``frame.FrameStore``). Additive passes clamp where the rasterizer's chunks end,
-        # which bands would move: they, and the fragment path, are drawn now, after the passes
-        # kept before them.
-        if side is None and args is not None:
-            continue  # no triangle covers a sample
-        if args is not None and fb.deferred is not None and not args[-1]:
-            fb.deferred.append((side, kernels, args))
+        # The framebuffer keeps the loop's passes and draws them band by band when it
+        # resolves (``Framebuffer.defer``); a pass on the fragment path is drawn now, after
+        # the passes kept before it.
+        if args is not None:
+            if side is not None:  # else no triangle covers a sample
+                fb.defer(side, kernels, args)
             continue
         fb.draw_deferred()
-        if args is not None:
-            side.draw(kernels, args)
-        else:
-            for frag in side_fragments(pm, tris, ctx, passes=len(shaders)):
-                shader.draw(fb, frag)
+        for frag in side_fragments(pm, tris, ctx, passes=len(shaders)):
+            shader.draw(fb, frag)
     return True
 
 

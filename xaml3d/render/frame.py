@@ -41,6 +41,15 @@ import numpy as np
 from xaml3d.render import accel
 
 DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = empty
+# Sample rows per band of ``Framebuffer.draw_deferred``: about this many bytes of colour (16 a
+# sample) and depth (8). Measured on the lit textured translucent 1920x1080 frame (4 passes over
+# 2x2 samples): see benchmarks/README.md, run O.
+TILE_BYTES = 2 << 20
+DEFER_BYTES = 64 << 20  # set-ups of kept sides (``Framebuffer.defer``) before drawing them
+# Bands pay when the cache saves more than the loop's extra calls cost (one call a pass and a
+# band it reaches): about 2.5 ns a sample saved (run O), about 8 us a call (its 37 arguments).
+BAND_SAMPLE_GAIN = 2.5e-9
+BAND_CALL_COST = 8e-6
 # kernels.blend_rows with no index: fragment f takes row f of its colours
 _EVERY_ROW = np.zeros(0, dtype=np.int64)
 
@@ -62,22 +71,72 @@ class Framebuffer:
         self._win: np.ndarray | None = None  # scratch buffers, allocated when first needed
         self._cov: np.ndarray | None = None
         self.fragments_drawn = 0
-        # Passes of ``pass_loop.SideLoop`` kept to be drawn band by band (``FrameStore``): a
-        # list while a kept framebuffer defers them, else None (drawn at once).
+        # Passes of ``pass_loop.SideLoop`` kept to be drawn band by band (``draw_deferred``,
+        # ``FrameStore``): a list while the framebuffer defers them, else None (drawn at once).
         self.deferred: list | None = None
         # A kept framebuffer's band of colour blocks (``FrameStore``, ``_draw_blocks``): (image
         # rows, depth, colour samples, a state byte and one colour per pixel), made when first
         # drawn into.
         self.blocks: tuple | None = None
         self.depth_written = False  # by ``depth_only``, which counts no fragments
+        self._deferred_bytes = 0
 
-    def draw_deferred(self) -> None:
-        """Draw the passes kept in ``deferred`` whole, in order: before anything is drawn into
-        this framebuffer another way, which must come after them."""
-        if self.deferred:
-            for side, kernels, args in self.deferred:
+    def defer(self, side, kernels, args) -> None:
+        """Keep a pass of the compiled loop for ``draw_deferred`` (or draw it now when this
+        framebuffer does not defer). The kept sides' set-ups stay in memory until then: past
+        ``DEFER_BYTES`` of them the kept passes are drawn first."""
+        if self.deferred is None:
+            side.draw(kernels, args)
+            return
+        if not self.deferred:  # (``FrameStore.finish`` takes the list away whole)
+            self._deferred_bytes = 0
+        if not self.deferred or self.deferred[-1][0] is not side:  # a side's passes come together
+            if self.deferred and self._deferred_bytes + side.nbytes > DEFER_BYTES:
+                self.draw_deferred()
+            self._deferred_bytes += side.nbytes
+        self.deferred.append((side, kernels, args))
+
+    def draw_deferred(self, grid: int = 0, band_done=None) -> None:
+        """Draw the passes kept in ``deferred``, in order, band by band of sample rows: every
+        pass into one band (``TILE_BYTES`` of colour and depth, which stay in the processor's
+        cache meanwhile), then the next band. Each sample sees the same passes in the same
+        order as when they are drawn whole: the same picture. Called before anything is drawn
+        into this framebuffer another way, which must come after them, and by ``resolve``,
+        which gives ``band_done(y0, y1)`` to resolve each band of ``grid`` x ``grid`` pixel
+        blocks right after it is drawn."""
+        if not self.deferred:
+            return
+        kept = list(self.deferred)
+        self.deferred.clear()
+        self._deferred_bytes = 0
+        rows = band_rows(self.width, self.height, grid or kept[0][0].msaa)
+        # the passes each band gets, in order: a small model's passes only in the bands it
+        # reaches (a loop over every pass for every band would cost many models dearly)
+        bands: list[list] = [[] for _ in range(0, self.height, rows)]
+        calls, samples = 0, 0.0
+        for kept_pass in kept:
+            side = kept_pass[0]
+            if side.s is None:
+                continue
+            first = max(side.first_row, 0) // rows
+            last = min(side.last_row // rows, len(bands) - 1)
+            for b in range(first, last + 1):
+                bands[b].append(kept_pass)
+            calls += last - first
+            samples += 2.0 * side.s.estimate
+        if calls * BAND_CALL_COST > samples * BAND_SAMPLE_GAIN:
+            # many small models: the loop's calls would cost more than the cache saves
+            for side, kernels, args in kept:
                 side.draw(kernels, args)
-            self.deferred.clear()
+            if band_done is not None:
+                band_done(0, self.height)
+            return
+        for b, y0 in enumerate(range(0, self.height, rows)):
+            band = (y0, min(y0 + rows, self.height))
+            for side, kernels, args in bands[b]:
+                side.draw(kernels, args, rows=band)
+            if band_done is not None:
+                band_done(*band)
 
     @property
     def depth(self) -> np.ndarray:
@@ -234,8 +293,19 @@ class Framebuffer:
         if kernels is not None:  # the same numbers in one pass
             rgba = np.empty((h, w, 4), dtype=np.uint8)
             depth = np.empty((h, w))
-            kernels.resolve(self.color, self.zbuf, self.width, s, bool(nearest), rgba, depth)
+            width = self.width
+
+            def resolve(y0: int, y1: int) -> None:  # sample rows y0..y1, multiples of s
+                a, b = y0 * width, y1 * width
+                kernels.resolve(self.color[a:b], self.zbuf[a:b], width, s, bool(nearest),
+                                rgba[y0 // s : y1 // s], depth[y0 // s : y1 // s])  # fmt: skip
+
+            if self.deferred:  # each band resolved right after it is drawn, still in cache
+                self.draw_deferred(s, resolve)
+            else:
+                resolve(0, self.height)
             return rgba, depth
+        self.draw_deferred()
         # s * s strided slices: about 5x faster here than a float32 sum over the two sample
         # axes of a 5-D reshape (numpy reduces non-adjacent axes slowly).
         c5 = self.color.reshape(h, s, w, s, 4)
@@ -382,14 +452,16 @@ class FrameStore:
 
 def _blocks_apply(fb: Framebuffer, sides: list, s: int) -> bool:
     """Whether a kept frame is drawn into colour blocks (``frame_kernels.draw_blocks``): every
-    pass of it was kept (nothing drew into the buffers before: they are clean) and is
-    multisampled (one shading a pixel, so one colour for a pixel a triangle covers)."""
+    pass of it was kept (nothing drew into the buffers before: they are clean), is
+    multisampled (one shading a pixel, so one colour for a pixel a triangle covers) and is an
+    opaque or over pass (an additive pass clamps at the rasterizer's chunk ends: the ordinary
+    bands draw it)."""
     return (
         s > 1
         and bool(sides)
         and fb.fragments_drawn == 0
         and not fb.depth_written
-        and all(side.msaa == s for side, _, _ in sides)
+        and all(side.msaa == s and not args[-1] for side, _, args in sides)
     )
 
 
@@ -447,3 +519,12 @@ _SHIFTS = np.array([0, 8, 16, 24] if sys.byteorder == "little" else [24, 16, 8, 
 # what stays in one core's cache (corpus 005, 600x600 at 2x2: 27 image rows a band; 256 KB
 # to 1 MB measured alike, the fewer calls the better).
 BLOCK_BAND_BYTES = 512 << 10
+
+
+def band_rows(width: int, height: int, msaa: int) -> int:
+    """Sample rows per band of ``Framebuffer.draw_deferred``: ``TILE_BYTES`` of samples,
+    whole image rows of ``msaa`` sample rows (an image row's shading is then kept within one
+    band's loop)."""
+    rows = max(1, TILE_BYTES // (24 * max(int(width), 1)))
+    rows = max(msaa, rows - rows % msaa)
+    return min(rows, max(int(height), 1))

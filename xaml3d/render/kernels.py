@@ -19,6 +19,8 @@ the on-disk cache holds one compiled version of each kernel.
 
 from __future__ import annotations
 
+import math
+
 import numba
 import numpy as np
 
@@ -270,8 +272,8 @@ def _image_sample(u, v, lay, img):
     return s0, s1, s2, s3
 
 
-# The same function inlined into ``draw_pass``'s loop (numba's IR inlining: called there once a
-# sample, a call per sample cost more than the sampling). Not cached itself: it exists only
+# The same function inlined into ``_shade`` (numba's IR inlining: ``frame_kernels.draw_blocks``
+# calls it once a shaded pixel). Not cached itself: it exists only
 # inside the cached caller.
 _image_sample_inline = numba.njit(nogil=True, inline="always", error_model="numpy")(
     _image_sample.py_func
@@ -443,9 +445,76 @@ _EMPTY = np.float32(2.0**-64)  # frame.ALPHA_EMPTY: at or below, a pixel resolve
 DEPTH_OFFSET = 2.0  # frame.DEPTH_OFFSET: the depth buffer stores d - 2
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _reciprocal(d):
+    """1 / d when dividing by d equals multiplying by it for EVERY x (d a power of two whose
+    reciprocal is exact: both operations round the same real number x / d), else 0."""
+    m, _ = math.frexp(d)
+    if m != 0.5 and m != -0.5:
+        return 0.0
+    r = 1.0 / d
+    return r if (r * d == 1.0 and abs(r) < math.inf) else 0.0
+
+
+ROW_KEY = 1 << 32  # chunk keys: triangle * ROW_KEY + sample row (rows < 2**32)
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _span(a0, b0, c0, a1, b1, c1, a2, b2, c2, lo, hi, py):
+    """The covered sample columns [lo, hi] of one row (centre y ``py`` in sub-pixels) of a
+    triangle with edges (a, b, c) and box columns [lo, hi]: ``raster_chunk``'s exact integer
+    solution of the three edge inequalities (scalars only: no reference counting)."""
+    for e in range(3):
+        if e == 0:
+            a, kk = a0, b0 * py + c0
+        elif e == 1:
+            a, kk = a1, b1 * py + c1
+        else:
+            a, kk = a2, b2 * py + c2
+        if a > 0:
+            lim = (kk - 1) // a
+            v = -((lim + HALF) // SUBPIXEL)
+            if v > lo:
+                lo = v
+        elif a < 0:
+            lim = (kk - 1) // (-a)
+            v = (lim - HALF) // SUBPIXEL
+            if v < hi:
+                hi = v
+        elif kk <= 0:
+            hi = -1
+    return lo, hi
+
+
+@numba.njit(cache=True, nogil=True)
+def chunk_starts(A, B, C, i0, i1, j0, j1, cap, out):
+    """Where ``raster_chunk`` (``cap`` fragments, whole rows) starts each chunk after the
+    first, as keys t * ROW_KEY + j of the row that starts it, in order, into ``out``; returns
+    how many. An additive pass drawn band by band clamps where these chunks end, as the
+    fragment path does (``draw_pass``)."""
+    n = 0
+    m = 0
+    for t in range(A.shape[1]):
+        for j in range(j0[t], j1[t] + 1):
+            lo, hi = _span(
+                A[0, t], B[0, t], C[0, t], A[1, t], B[1, t], C[1, t], A[2, t], B[2, t],
+                C[2, t], i0[t], i1[t], j * SUBPIXEL + HALF,
+            )  # fmt: skip
+            span = hi - lo + 1
+            if span <= 0:
+                continue
+            if n + span > cap and n > 0:
+                out[m] = t * ROW_KEY + j
+                m += 1
+                n = 0
+            n += span
+    return m
+
+
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
 def _shade(w0, w1, w2, i0, i1, i2, mt, source, colors, brush, uvp, lay, img):
-    """One row's float32 colour, ``shade_rows``'s arithmetic for one row."""
+    """One row's float32 colour, ``shade_rows``'s arithmetic for one row (``draw_pass`` writes
+    it out in its loop; ``frame_kernels.draw_blocks`` calls it)."""
     if source == COLOR_PLANES:
         c0 = w0 * colors[0, i0] + w1 * colors[0, i1] + w2 * colors[0, i2]
         c1 = w0 * colors[1, i0] + w1 * colors[1, i1] + w2 * colors[1, i2]
@@ -471,96 +540,167 @@ def _shade(w0, w1, w2, i0, i1, i2, mt, source, colors, brush, uvp, lay, img):
 def draw_pass(
     A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, persp, msaa, width,
     mtri, indices, source, colors, brush, uvp, lay, img, additive,
-    zbuf, color, owner, cache, stamp, cap, touched,
+    zbuf, color, owner, cache, stamp, tris, r0, r1, chunks, touched,
 ):  # fmt: skip
-    """A whole material pass over set-up triangles (``raster.set_up``) in ONE loop: each
-    sample is found (``raster_chunk``'s spans and depth), dropped beyond the far plane
+    """A material pass over set-up triangles (``raster.set_up``) in ONE loop: each sample is
+    found (``raster_chunk``'s spans and depth), dropped beyond the far plane
     (``draw.side_fragments``), depth-tested, shaded (``shade_rows``; with ``msaa`` > 1 once per
     (triangle, image pixel), at the pixel's centre) and blended (``blend_rows``), with no
-    fragment arrays in between.
+    fragment arrays in between. Only the triangles ``tris`` (increasing; a superset of those
+    that reach the band is enough) and the sample rows [r0, r1) are drawn: a whole pass, or
+    one band of it (``pass_loop``: every pass of a frame drawn band by band, each band's
+    samples staying in the processor's cache). Every sample sees the same operations in the
+    same order either way.
 
     Multisampling: the ``msaa`` sample rows of one image row of a triangle come one after the
     other, so the colour of (triangle, image pixel) is kept in ``cache[column]`` (one image
-    row, small enough to stay in the processor's cache) under ``owner[column]``, a tag unique
-    to (pass, triangle, image row): tags start above ``stamp`` and the next free one is
-    returned.
+    row) under ``owner[column]``, a tag unique to (pass, triangle, image row): tags start above
+    ``stamp`` and the next free one is returned.
 
     ``mtri``: each set-up triangle's index in the mesh (``indices``, per-triangle ``colors``).
     Per-triangle colours with a uniform brush (flat mode's solid colours) are taken once per
     row of the triangle, not shaded per sample or image pixel (they need no weights).
-    Additive passes clamp at 1 at the end of each of the rasterizer's chunks (``cap``
-    fragments, whole rows), where ``blend_rows`` clamps: the same picture even for the rare
-    negative colour (weights extrapolated at an edge). ``touched`` (scratch of ``cap`` +
-    ``width`` entries) lists the samples of the chunk that went above 1 after an addition.
+    Additive passes clamp at 1 where the rasterizer's chunks end (``chunks``, from
+    ``chunk_starts``), as ``blend_rows`` does chunk by chunk: the same picture even for the
+    rare negative colour (weights extrapolated at an edge). A sample's additions all come in
+    its own band, so clamping the band's touched samples when the chunk changes, and at the
+    end, is that clamp. ``touched`` lists the samples that went above 1 after an addition
+    since the last clamp: at most one chunk's additions, so the chunk budget plus ``width``
+    entries are enough.
     Returns (how many samples passed the depth test, the next free tag)."""
-    tcount = A.shape[1]
     one = np.float32(1.0)
-    # a solid colour per triangle (flat mode): the colour is the triangle's, at every sample
-    per_triangle = source == COLOR_PER_TRIANGLE and brush == BRUSH_UNIFORM
-    per_pixel = msaa > 1 and not per_triangle
-    n = 0  # fragments of the rasterizer's current chunk
-    nt = 0  # samples an additive pass touched in that chunk
+    u1 = np.uint64(1)
+    u2 = np.uint64(2)
+    u3 = np.uint64(3)
+    u4 = np.uint64(4)
+    # Flat views, indexed with unsigned integers: no negative-index wrap-around and no
+    # multiplication by a run-time row length per access in the per-sample code.
+    col = color.reshape(color.shape[0] * 4)
+    cch = cache.reshape(cache.shape[0] * 4)
+    per_pixel = msaa > 1
+    nchunks = chunks.shape[0]
+    ci = -1  # the next chunk start not yet passed (-1: found at the first row)
+    nt = 0  # samples an additive pass touched since the last clamp
     drawn = 0
     tag = stamp
     tag_t = -1
     tag_row = -1
-    for t in range(tcount):
+    # the ImageBrush's placement (``image_layout``), once per pass
+    image = brush == BRUSH_IMAGE
+    code = 0
+    l0 = l1 = l2 = l3 = l4 = l5 = l6 = l7 = l8 = l9 = l10 = l11 = l12 = l13 = l14 = l15 = 0.0
+    d8 = d9 = d12 = d13 = 0.0
+    img_w = img_h = opacity = 0.0
+    iwid = 0
+    imf = img.reshape(img.size)
+    if image:
+        l0, l1, l2, l3 = lay[0], lay[1], lay[2], lay[3]
+        l4, l5, l6, l7 = lay[4], lay[5], lay[6], lay[7]
+        l8, l9, l10, l11 = lay[8], lay[9], lay[10], lay[11]
+        l12, l13, l14, l15 = lay[12], lay[13], lay[14], lay[15]
+        # divisions by powers of two (unit viewports, 2^n-texel images) as exact products
+        d8, d9, d12, d13 = _reciprocal(l8), _reciprocal(l9), _reciprocal(l12), _reciprocal(l13)
+        img_w = lay[16]
+        img_h = lay[17]
+        opacity = lay[18]
+        code = int(lay[19])
+        iwid = img.shape[1]
+    planes = source == COLOR_PLANES
+    # a solid colour per triangle (flat mode): the triangle's colour at every sample, taken
+    # once per row, with no weights to compute per sample or image pixel
+    per_triangle = not planes and not image
+    if per_triangle:
+        per_pixel = False
+    for ti in range(tris.shape[0]):
+        t = tris[ti]
+        ja = j0[t] if j0[t] > r0 else r0
+        jb = j1[t] if j1[t] < r1 - 1 else r1 - 1
+        if ja > jb:
+            continue
+        # the triangle's numbers, loaded once
+        a0, b0, c0 = A[0, t], B[0, t], C[0, t]
+        a1, b1, c1 = A[1, t], B[1, t], C[1, t]
+        a2, b2, c2 = A[2, t], B[2, t], C[2, t]
+        tl0 = 1 if (a0 > 0 or (a0 == 0 and b0 > 0)) else 0
+        tl1 = 1 if (a1 > 0 or (a1 == 0 and b1 > 0)) else 0
+        tl2 = 1 if (a2 > 0 or (a2 == 0 and b2 > 0)) else 0
         ia = inv_area[t]
+        qa0 = qa1 = qa2 = 0.0
+        if persp:
+            qa0 = q[t, 0] * ia
+            qa1 = q[t, 1] * ia
+            qa2 = q[t, 2] * ia
         mt = mtri[t]
         vi0 = indices[mt, 0]
         vi1 = indices[mt, 1]
         vi2 = indices[mt, 2]
-        tl0 = 1 if (A[0, t] > 0 or (A[0, t] == 0 and B[0, t] > 0)) else 0
-        tl1 = 1 if (A[1, t] > 0 or (A[1, t] == 0 and B[1, t] > 0)) else 0
-        tl2 = 1 if (A[2, t] > 0 or (A[2, t] == 0 and B[2, t] > 0)) else 0
-        for j in range(j0[t], j1[t] + 1):
+        # the colour source (Gouraud planes per vertex, or one colour per triangle) and the
+        # texture coordinates at the three vertices
+        k00 = k01 = k02 = k10 = k11 = k12 = k20 = k21 = k22 = k30 = k31 = k32 = 0.0
+        f0 = f1 = f2 = f3 = 0.0
+        if planes:
+            k00, k01, k02 = colors[0, vi0], colors[0, vi1], colors[0, vi2]
+            k10, k11, k12 = colors[1, vi0], colors[1, vi1], colors[1, vi2]
+            k20, k21, k22 = colors[2, vi0], colors[2, vi1], colors[2, vi2]
+            k30, k31, k32 = colors[3, vi0], colors[3, vi1], colors[3, vi2]
+        else:
+            f0, f1, f2, f3 = colors[mt, 0], colors[mt, 1], colors[mt, 2], colors[mt, 3]
+        ua = ub = uc = va = vb = vc = 0.0
+        if image:
+            ua, ub, uc = uvp[0, vi0], uvp[0, vi1], uvp[0, vi2]
+            va, vb, vc = uvp[1, vi0], uvp[1, vi1], uvp[1, vi2]
+        zt, gxt, gyt, xrt, yrt = zr[t], gx[t], gy[t], xr[t], yr[t]
+        for j in range(ja, jb + 1):
             py = j * SUBPIXEL + HALF
-            lo = i0[t]
-            hi = i1[t]
-            for e in range(3):
-                a = A[e, t]
-                kk = B[e, t] * py + C[e, t]
-                if a > 0:
-                    lim = (kk - 1) // a
-                    v = -((lim + HALF) // SUBPIXEL)
-                    if v > lo:
-                        lo = v
-                elif a < 0:
-                    lim = (kk - 1) // (-a)
-                    v = (lim - HALF) // SUBPIXEL
-                    if v < hi:
-                        hi = v
-                elif kk <= 0:
-                    hi = -1
+            lo, hi = _span(a0, b0, c0, a1, b1, c1, a2, b2, c2, i0[t], i1[t], py)
             span = hi - lo + 1
             if span <= 0:
                 continue
-            if n + span > cap and n > 0:  # where raster_chunk ends a chunk
-                if additive:
+            if additive:
+                key = t * ROW_KEY + j
+                if ci < 0:  # the chunk starts at or before this row: passed already
+                    lo_, hi_ = 0, nchunks
+                    while lo_ < hi_:
+                        mid = (lo_ + hi_) // 2
+                        if chunks[mid] <= key:
+                            lo_ = mid + 1
+                        else:
+                            hi_ = mid
+                    ci = lo_
+                elif ci < nchunks and chunks[ci] <= key:  # a chunk ended: its clamp
                     for m in range(nt):
-                        p = touched[m]
-                        for c in range(4):
-                            if color[p, c] > one:
-                                color[p, c] = one
-                nt = 0
-                n = 0
-            n += span
+                        p4 = np.uint64(touched[m]) * u4
+                        if col[p4] > one:
+                            col[p4] = one
+                        if col[p4 + u1] > one:
+                            col[p4 + u1] = one
+                        if col[p4 + u2] > one:
+                            col[p4 + u2] = one
+                        if col[p4 + u3] > one:
+                            col[p4 + u3] = one
+                    nt = 0
+                    while ci < nchunks and chunks[ci] <= key:
+                        ci += 1
             px0 = lo * SUBPIXEL + HALF
-            d_s = zr[t] + gy[t] * (py - yr[t]) + gx[t] * (px0 - xr[t])
-            d_g = gx[t] * SUBPIXEL
+            d_s = zt + gyt * (py - yrt) + gxt * (px0 - xrt)
+            d_g = gxt * SUBPIXEL
             base = j * width + lo
             # per-fragment weights (no multisampling): affine in k along the row
             s0 = s1 = s2 = g0 = g1 = g2 = 0.0
-            pcy = 0
+            ky0 = ky1 = ky2 = 0
             cpix = 0  # the image column and the sample within it, counted along the row
             sub = 0
-            last = -1  # the image pixel whose colour r0..r3 hold (this row)
-            r0 = r1 = r2 = r3 = np.float32(0.0)
+            last = -1  # the image pixel whose colour rr0..rr3 hold (this row)
+            rr0 = rr1 = rr2 = rr3 = np.float32(0.0)
+            w0 = w1 = w2 = 0.0
             if per_triangle:
-                r0, r1, r2, r3 = _shade(0.0, 0.0, 0.0, vi0, vi1, vi2, mt, source, colors, brush,
-                                        uvp, lay, img)  # fmt: skip
+                rr0, rr1, rr2, rr3 = np.float32(f0), np.float32(f1), np.float32(f2), np.float32(f3)
             if per_pixel:
                 pcy = (j // msaa) * (msaa * SUBPIXEL) + msaa * HALF
+                # the edge functions at the image pixel's centre, their row part (exact)
+                ky2 = b0 * pcy + (c0 - tl0)
+                ky0 = b1 * pcy + (c1 - tl1)
+                ky1 = b2 * pcy + (c2 - tl2)
                 if j // msaa != tag_row or t != tag_t:
                     tag += 1
                     tag_row = j // msaa
@@ -568,12 +708,12 @@ def draw_pass(
                 cpix = lo // msaa
                 sub = lo - cpix * msaa
             else:
-                s2 = (A[0, t] * px0 + B[0, t] * py + (C[0, t] - tl0)) * ia
-                g2 = (A[0, t] * SUBPIXEL) * ia
-                s0 = (A[1, t] * px0 + B[1, t] * py + (C[1, t] - tl1)) * ia
-                g0 = (A[1, t] * SUBPIXEL) * ia
-                s1 = (A[2, t] * px0 + B[2, t] * py + (C[2, t] - tl2)) * ia
-                g1 = (A[2, t] * SUBPIXEL) * ia
+                s2 = (a0 * px0 + b0 * py + (c0 - tl0)) * ia
+                g2 = (a0 * SUBPIXEL) * ia
+                s0 = (a1 * px0 + b1 * py + (c1 - tl1)) * ia
+                g0 = (a1 * SUBPIXEL) * ia
+                s1 = (a2 * px0 + b2 * py + (c2 - tl2)) * ia
+                g1 = (a2 * SUBPIXEL) * ia
                 if persp:
                     s0 *= q[t, 0]
                     g0 *= q[t, 0]
@@ -592,43 +732,45 @@ def draw_pass(
                 if not d <= 1.0:
                     continue
                 z = d - DEPTH_OFFSET
-                p = base + k
-                if not z <= zbuf[p]:
+                pu = np.uint64(base + k)
+                if not z <= zbuf[pu]:
                     continue
-                if per_pixel and pc != last:
-                    pp = pc
-                    last = pp
-                    if owner[pp] != tag:
-                        owner[pp] = tag
-                        cx = pc * (msaa * SUBPIXEL) + msaa * HALF
-                        e2 = A[0, t] * cx + (B[0, t] * pcy + (C[0, t] - tl0))
-                        e0 = A[1, t] * cx + (B[1, t] * pcy + (C[1, t] - tl1))
-                        e1 = A[2, t] * cx + (B[2, t] * pcy + (C[2, t] - tl2))
-                        if persp:
-                            w0 = e0 * (q[t, 0] * ia)
-                            w1 = e1 * (q[t, 1] * ia)
-                            w2 = e2 * (q[t, 2] * ia)
-                            tot = w0 + w1 + w2
-                            w0 = w0 / tot
-                            w1 = w1 / tot
-                            w2 = w2 / tot
+                # The colour rr0..rr3: kept from the row's last sample (same image pixel), read
+                # from the cache of the image row, or shaded here. The shading is written out
+                # in the loop, not called: a call taking arrays costs reference counting (four
+                # atomic operations) per shaded pixel, more than the shading itself.
+                shade = False
+                if per_pixel:
+                    if pc != last:
+                        last = pc
+                        pcu = np.uint64(pc)
+                        if owner[pcu] != tag:
+                            owner[pcu] = tag
+                            shade = True
+                            cx = pc * (msaa * SUBPIXEL) + msaa * HALF
+                            e2 = a0 * cx + ky2
+                            e0 = a1 * cx + ky0
+                            e1 = a2 * cx + ky1
+                            if persp:
+                                w0 = e0 * qa0
+                                w1 = e1 * qa1
+                                w2 = e2 * qa2
+                                tot = w0 + w1 + w2
+                                w0 = w0 / tot
+                                w1 = w1 / tot
+                                w2 = w2 / tot
+                            else:
+                                w0 = e0 * ia
+                                w1 = e1 * ia
+                                w2 = e2 * ia
                         else:
-                            w0 = e0 * ia
-                            w1 = e1 * ia
-                            w2 = e2 * ia
-                        r0, r1, r2, r3 = _shade(
-                            w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img
-                        )
-                        cache[pp, 0] = r0
-                        cache[pp, 1] = r1
-                        cache[pp, 2] = r2
-                        cache[pp, 3] = r3
-                    else:
-                        r0 = cache[pp, 0]
-                        r1 = cache[pp, 1]
-                        r2 = cache[pp, 2]
-                        r3 = cache[pp, 3]
-                elif not per_pixel and not per_triangle:
+                            cu = pcu * u4
+                            rr0 = cch[cu]
+                            rr1 = cch[cu + u1]
+                            rr2 = cch[cu + u2]
+                            rr3 = cch[cu + u3]
+                elif not per_triangle:
+                    shade = True
                     w0 = s0 + g0 * k
                     w1 = s1 + g1 * k
                     w2 = s2 + g2 * k
@@ -637,42 +779,113 @@ def draw_pass(
                         w0 = w0 / tot
                         w1 = w1 / tot
                         w2 = w2 / tot
-                    r0, r1, r2, r3 = _shade(
-                        w0, w1, w2, vi0, vi1, vi2, mt, source, colors, brush, uvp, lay, img
-                    )
+                if shade:  # shade_rows's arithmetic for one row
+                    if planes:
+                        x0 = w0 * k00 + w1 * k01 + w2 * k02
+                        x1 = w0 * k10 + w1 * k11 + w2 * k12
+                        x2 = w0 * k20 + w1 * k21 + w2 * k22
+                        x3 = w0 * k30 + w1 * k31 + w2 * k32
+                    else:
+                        x0 = f0
+                        x1 = f1
+                        x2 = f2
+                        x3 = f3
+                    if image:  # _image_sample, written out
+                        u = w0 * ua + w1 * ub + w2 * uc
+                        v = w0 * va + w1 * vb + w2 * vc
+                        qx = u * l0 + v * l1 + l2
+                        qy = u * l3 + v * l4 + l5
+                        lx = (qx - l6) * d8 if d8 != 0.0 else (qx - l6) / l8
+                        ly = (qy - l7) * d9 if d9 != 0.0 else (qy - l7) / l9
+                        fx, in_x = _tile(lx, code, code == 2 or code == 4)
+                        fy, in_y = _tile(ly, code, code == 3 or code == 4)
+                        ex = l6 + fx * l8 - l14
+                        ey = l7 + fy * l9 - l15
+                        px = l10 + (ex * d12 if d12 != 0.0 else ex / l12)
+                        py_ = l11 + (ey * d13 if d13 != 0.0 else ey / l13)
+                        t0 = t1 = t2 = t3 = 0.0
+                        if (
+                            in_x and in_y and px >= -TILE_EPS and px <= img_w + TILE_EPS
+                            and py_ >= -TILE_EPS and py_ <= img_h + TILE_EPS
+                        ):  # fmt: skip
+                            xi0, xi1, yi0, yi1, fx, fy = _corners(px, py_, img_w, img_h)
+                            hx = 1.0 - fx
+                            hy = 1.0 - fy
+                            o00 = np.uint64((yi0 * iwid + xi0) * 4)
+                            o01 = np.uint64((yi0 * iwid + xi1) * 4)
+                            o10 = np.uint64((yi1 * iwid + xi0) * 4)
+                            o11 = np.uint64((yi1 * iwid + xi1) * 4)
+                            t0 = (imf[o00] * hx + imf[o01] * fx) * hy + (
+                                imf[o10] * hx + imf[o11] * fx
+                            ) * fy
+                            t1 = (imf[o00 + u1] * hx + imf[o01 + u1] * fx) * hy + (
+                                imf[o10 + u1] * hx + imf[o11 + u1] * fx
+                            ) * fy
+                            t2 = (imf[o00 + u2] * hx + imf[o01 + u2] * fx) * hy + (
+                                imf[o10 + u2] * hx + imf[o11 + u2] * fx
+                            ) * fy
+                            t3 = (imf[o00 + u3] * hx + imf[o01 + u3] * fx) * hy + (
+                                imf[o10 + u3] * hx + imf[o11 + u3] * fx
+                            ) * fy
+                        if opacity != 1.0:
+                            t0 *= opacity
+                            t1 *= opacity
+                            t2 *= opacity
+                            t3 *= opacity
+                        x0 = x0 * t0
+                        x1 = x1 * t1
+                        x2 = x2 * t2
+                        x3 = x3 * t3
+                    rr0 = np.float32(x0)
+                    rr1 = np.float32(x1)
+                    rr2 = np.float32(x2)
+                    rr3 = np.float32(x3)
+                    if per_pixel:
+                        cu = np.uint64(pc) * u4
+                        cch[cu] = rr0
+                        cch[cu + u1] = rr1
+                        cch[cu + u2] = rr2
+                        cch[cu + u3] = rr3
                 drawn += 1
+                p4 = pu * u4
                 if additive:
-                    color[p, 0] += r0
-                    color[p, 1] += r1
-                    color[p, 2] += r2
-                    color[p, 3] += r3
-                    if (
-                        color[p, 0] > one or color[p, 1] > one or color[p, 2] > one
-                        or color[p, 3] > one
-                    ):  # fmt: skip
+                    y0 = col[p4] + rr0
+                    y1 = col[p4 + u1] + rr1
+                    y2 = col[p4 + u2] + rr2
+                    y3 = col[p4 + u3] + rr3
+                    col[p4] = y0
+                    col[p4 + u1] = y1
+                    col[p4 + u2] = y2
+                    col[p4 + u3] = y3
+                    if y0 > one or y1 > one or y2 > one or y3 > one:
                         # only these can need the clamp: a sample's value at the chunk's end
                         # is the one after its last addition
-                        touched[nt] = p
+                        touched[nt] = base + k
                         nt += 1
-                elif r3 >= one:
-                    color[p, 0] = r0
-                    color[p, 1] = r1
-                    color[p, 2] = r2
-                    color[p, 3] = r3
-                    zbuf[p] = z
+                elif rr3 >= one:
+                    col[p4] = rr0
+                    col[p4 + u1] = rr1
+                    col[p4 + u2] = rr2
+                    col[p4 + u3] = rr3
+                    zbuf[pu] = z
                 else:
-                    a = one - r3
-                    color[p, 0] = r0 + a * color[p, 0]
-                    color[p, 1] = r1 + a * color[p, 1]
-                    color[p, 2] = r2 + a * color[p, 2]
-                    color[p, 3] = r3 + a * color[p, 3]
-                    zbuf[p] = z
+                    a = one - rr3
+                    col[p4] = rr0 + a * col[p4]
+                    col[p4 + u1] = rr1 + a * col[p4 + u1]
+                    col[p4 + u2] = rr2 + a * col[p4 + u2]
+                    col[p4 + u3] = rr3 + a * col[p4 + u3]
+                    zbuf[pu] = z
     if additive:
         for m in range(nt):
-            p = touched[m]
-            for c in range(4):
-                if color[p, c] > one:
-                    color[p, c] = one
+            p4 = np.uint64(touched[m]) * u4
+            if col[p4] > one:
+                col[p4] = one
+            if col[p4 + u1] > one:
+                col[p4 + u1] = one
+            if col[p4 + u2] > one:
+                col[p4 + u2] = one
+            if col[p4 + u3] > one:
+                col[p4 + u3] = one
     return drawn, tag + 1
 
 

@@ -81,7 +81,11 @@ def draw_viewport(
     # the viewport's own Opacity, Clip, Effect... act on its picture alone, not the background
     fill = bg if picture is None or nearest else (0.0, 0.0, 0.0, 0.0)
     store = None if nearest else store
-    fb = Framebuffer(sw, sh, fill) if store is None else store.take(sw, sh, fill)
+    if store is None:
+        fb = Framebuffer(sw, sh, fill)
+        fb.deferred = []  # the compiled passes drawn band by band when it resolves
+    else:
+        fb = store.take(sw, sh, fill)
     ctx = make_context(sw, sh, settings.effective_msaa)
     try:
         if store is not None and not _reads_bounds(vp.camera):
@@ -116,11 +120,7 @@ def draw_viewport(
         else:
             msg = "the viewport holds no models: nothing to draw"
             diags.append(Diagnostic("RND003", INFO, msg, scene.file))
-    if (
-        fb.fragments_drawn
-        and w * h > 1
-        and (uniform if uniform is not None else bool((rgba == rgba[0, 0]).all()))
-    ):
+    if fb.fragments_drawn and w * h > 1 and (uniform if uniform is not None else _one_colour(rgba)):
         # something was drawn, yet the image is one colour: a surface fills the view (the
         # camera inside a model), or the models draw in the background's colour
         hexa = "#" + "".join(f"{int(c):02X}" for c in rgba[0, 0][[3, 0, 1, 2]])
@@ -149,6 +149,15 @@ def draw_viewport(
     if pipeline is not None and zbuf is not None:
         result.distance = eye_depth(zbuf, pipeline)
     return result
+
+
+def _one_colour(rgba: np.ndarray) -> bool:
+    """Whether every pixel of the (H, W, 4) uint8 image equals the first: each pixel compared
+    as one 32-bit word (broadcasting a 4-byte pixel over the image is many times slower)."""
+    if rgba.flags.c_contiguous:
+        words = rgba.view(np.uint32)
+        return bool((words == words.flat[0]).all())
+    return bool((rgba == rgba[0, 0]).all())
 
 
 def _reads_bounds(camera) -> bool:
