@@ -206,3 +206,42 @@ def test_a_moved_layer_brings_in_what_a_shape_draws_left_of_the_window():
     blue = (rgba[..., 2] == 255) & (rgba[..., 0] < 100) & (rgba[..., 3] > 0)
     cols = np.nonzero(blue.any(axis=0))[0]
     assert (cols.min(), cols.max()) == (0, 49)
+
+
+def test_a_panels_clip_to_bounds_cuts_what_it_holds_at_its_box():
+    """ClipToBounds on a Canvas (WPF's layout clip of the panel, applied to all it holds): an
+    Ellipse reaching out of it is cut at the Canvas's box; the same Canvas without it lets the
+    Ellipse draw past its box."""
+
+    def red_box(clip: str):
+        s, _ = _boxes(
+            f'<Canvas Width="100" Height="80" {clip}><Ellipse Canvas.Left="40" Canvas.Top="30" '
+            'Width="120" Height="100" Fill="Red"/></Canvas>',
+            panel="Grid",
+        )
+        rgba, _ = compose_window(s)
+        ys, xs = np.nonzero(rgba[..., 3] > 0)  # the ellipse, edges included
+        return int(xs.min()), int(xs.max()), int(ys.min()), int(ys.max())
+
+    assert red_box("") == (40, 159, 30, 129)
+    x0, x1, y0, y1 = red_box('ClipToBounds="True"')
+    assert (x0, y0, x1, y1) == (40, 30, 99, 79)  # cut at the box: right 100, bottom 80
+
+
+def test_a_panels_clip_to_bounds_inside_a_visual_brush():
+    """The same cut inside a VisualBrush's visual, intersected with the panel's own Clip."""
+    from xaml3d.render.layer2d.paint import drawing_bounds
+
+    def bounds(attrs: str):
+        s = load(f"<Grid {NS} Width='40' Height='40'><Grid.Background><VisualBrush><VisualBrush."
+                 f"Visual><Grid><Canvas Width='50' Height='40' {attrs}><Rectangle Canvas.Left="
+                 "'30' Width='60' Height='20' Fill='Red'/></Canvas></Grid></VisualBrush.Visual>"
+                 "</VisualBrush></Grid.Background><Viewport3D Width='4' Height='4'/></Grid>",
+                 text=True)  # fmt: skip
+        [grid] = [b for b in s.layout.boxes if b.type == "Grid" and b.background is not None]
+        box = drawing_bounds(grid.background.drawing)
+        return round(box.right(), 3)
+
+    assert bounds("") == 90.0
+    assert bounds("ClipToBounds='True'") == 50.0
+    assert bounds("ClipToBounds='True' Clip='M 0,0 L 45,0 45,10 0,10 Z'") == 45.0

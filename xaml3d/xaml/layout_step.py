@@ -188,7 +188,7 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
         layer, nodes = None, []
         if n.kind != VIEWPORT:
             w, h = float(n.ink[0]), float(n.ink[1])
-            layer = element_layer(r, r.props(el), w, h, node_out=nodes, animated=True)
+            layer = element_layer(r, r.props(el), w, h, node_out=nodes, animated=True, bounds=True)
         opacity = layer is not None and not (n.kind == CONTROL and n.drawing is not None)
         if layer is not None and not opacity:
             layer = replace(layer, opacity=1.0)

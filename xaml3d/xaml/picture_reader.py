@@ -19,7 +19,14 @@ from __future__ import annotations
 import numpy as np
 
 from xaml3d.scene import tracks as K
-from xaml3d.scene.drawing import Around, Effect, Layer2D, Viewport2D
+from xaml3d.scene.drawing import (
+    Around,
+    CombinedGeometry,
+    Effect,
+    Layer2D,
+    RectangleGeometry,
+    Viewport2D,
+)
 from xaml3d.scene.transforms import node_matrix
 from xaml3d.scene.types import frozen_array
 from xaml3d.xaml import values as V
@@ -123,17 +130,30 @@ def animates(r, el, prop: str) -> bool:
 
 
 def element_layer(
-    r, p, width: float, height: float, *, node_out: list | None = None, animated: bool = False
+    r,
+    p,
+    width: float,
+    height: float,
+    *,
+    node_out: list | None = None,
+    animated: bool = False,
+    bounds: bool = False,
 ):
     """The Layer2D of an element's Opacity, OpacityMask, Clip, RenderTransform (about its
     RenderTransformOrigin, for a box ``width`` x ``height``) and Effect (or BitmapEffect); None
     when it changes nothing. ``node_out``: receives the RenderTransform's typed node when an
     animation drives it (the caller places it in the Scene). ``animated``: a layer is kept
     when a storyboard drives its Opacity or RenderTransform, even if it changes nothing at
-    load (the frames of an animation change it)."""
+    load (the frames of an animation change it). ``bounds``: ClipToBounds="True" cuts the
+    element and all it holds at its box (WPF's layout clip, FrameworkElement.GetLayoutClip),
+    intersected with its Clip, as UIElement combines them; not for a Viewport3D, whose
+    ClipToBounds is its picture's own."""
     opacity = p.value("Opacity", _D, 1.0)
     mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
     clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
+    if bounds and p.value("ClipToBounds", V.parse_bool, False):
+        box = RectangleGeometry((0.0, 0.0, float(width), float(height)))
+        clip = box if clip is None else CombinedGeometry("Intersect", clip, box)
     transform, node = _render_transform(r, p, width, height)
     if node_out is not None and node is not None:
         node_out.append(node)

@@ -116,7 +116,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     # RenderTransform (about RenderTransformOrigin), Clip and Effect act on the element and its
     # children as one layer, in its own coordinates, as the window's and a viewport's do (a
     # template's part has no element: no properties of its own)
-    layer = element_layer(r, r.props(el), ink_w, ink_h) if el is not None else None
+    layer = element_layer(r, r.props(el), ink_w, ink_h, bounds=True) if el is not None else None
     px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
