@@ -180,6 +180,20 @@ def test_gif_flattens_onto_the_background_colour(tmp_path):
     assert len(gif) == 4 and all(tuple(g[0, 0]) == (255, 0, 0, 255) for g in gif)
 
 
+def test_gif_flattens_onto_the_opaque_background_beneath_the_viewport(tmp_path):
+    """Without --background, the opaque Background WPF shows beneath the viewport (its nearest
+    laid-out ancestor's) is the matte, not white."""
+    inner = scene(FADE).replace(f"<Viewport3D {NS}", "<Viewport3D", 1)
+    (tmp_path / "s.xaml").write_text(
+        f'<Grid {NS} Background="Navy" Width="64" Height="48">{inner}</Grid>'
+    )
+    p = xaml3d("animate", "s.xaml", "-o", "fade.gif", "--fps", "4", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert b"flattened onto the Background beneath the viewport (#000080)" in p.stderr
+    gif = gif_frames(tmp_path / "fade.gif")
+    assert len(gif) == 4 and all(tuple(g[0, 0]) == (0, 0, 128, 255) for g in gif)
+
+
 def test_gif_of_opaque_models_keeps_its_transparent_background(tmp_path):
     (tmp_path / "s.xaml").write_text(scene(MOVE))
     p = xaml3d("animate", "s.xaml", "-o", "move.gif", "--fps", "4", cwd=tmp_path)

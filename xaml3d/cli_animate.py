@@ -229,7 +229,11 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if gif:
             # Streamed: each frame is quantized and compressed by the worker that drew it and
             # written as it comes (``output.animation.write_gif``).
-            matte = (255, 255, 255) if bg is None else tuple(round(255 * c) for c in bg[:3])
+            beneath = None if bg is not None or window else _opaque_beneath(vp)
+            if bg is not None:
+                matte = tuple(round(255 * c) for c in bg[:3])
+            else:
+                matte = beneath or (255, 255, 255)
             source = lambda plan: drawn(functools.partial(_gif_ready, plan=plan))  # noqa: E731
             flattened = write_gif(source, output, end - start, len(times), loop=loop, matte=matte)
         elif sequence is not None:  # to disk frame by frame, encoded by the workers
@@ -246,7 +250,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
             sequence.commit()
         elif gif:
             if flattened:
-                diags.append(_note(file, _flattened_message(bg), "ANIM013"))
+                diags.append(_note(file, _flattened_message(bg, beneath), "ANIM013"))
         if stale and clean:
             stale = remove_stale(stale, inputs)  # only after the new sequence is complete
         if stale:
@@ -333,12 +337,30 @@ def _refused(name: str, outputs: list[Path], inputs: list[Path]) -> bool:
     return hit is not None
 
 
-def _flattened_message(bg) -> str:
-    """ANIM013: the GIF's frames were flattened onto the --background colour made opaque (white
-    without it), as GIF's 1-bit transparency would lose their translucency."""
-    onto = "white" if bg is None else "the --background colour, made opaque"
+def _opaque_beneath(vp) -> tuple[int, int, int] | None:
+    """The colour WPF shows beneath the viewport (its nearest laid-out ancestor's Background)
+    as 8-bit sRGB when it is one opaque colour, else None."""
+    from xaml3d.scene.types import SolidColorBrush
+
+    b = vp.background
+    if not isinstance(b, SolidColorBrush) or b.color[3] * b.opacity < 1.0:
+        return None
+    return tuple(round(255 * c) for c in b.color[:3])
+
+
+def _flattened_message(bg, beneath=None) -> str:
+    """ANIM013: the GIF's frames were flattened onto the --background colour made opaque, else
+    onto the opaque colour beneath the viewport (its nearest Background), else white, as GIF's
+    1-bit transparency would lose their partly transparent pixels."""
+    if bg is not None:
+        onto = "the --background colour, made opaque"
+    elif beneath is not None:
+        onto = "the Background beneath the viewport (#{:02X}{:02X}{:02X})".format(*beneath)
+    else:
+        onto = "white"
     return (f"GIF keeps only 1-bit transparency: frames flattened onto {onto} to show their "
-            "partly transparent pixels (translucent materials, or the blur of --aperture); "
+            "partly transparent pixels (translucent materials, light added over transparency, "
+            "or the blur of --aperture); "
             "use .png (APNG) or .webp to keep alpha")  # fmt: skip
 
 
