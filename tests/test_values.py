@@ -416,3 +416,14 @@ def test_every_corpus_value_converts(corpus_dir):
                     assert value.shape[1] == width, (path.name, name)
                 seen[name] += 1
     assert all(seen.values()), seen  # every kind occurs at least once in the corpus
+
+
+def test_a_misspelt_forever_names_the_forms_it_could_take():
+    with pytest.raises(
+        ValueSyntaxError, match=r"RepeatBehavior: 'Forver' is none of Forever, a count \(3x\)"
+    ):
+        parse_repeat_behavior("Forver")
+    with pytest.raises(
+        ValueSyntaxError, match=r"Duration: 'forever' is none of Automatic, Forever \(this case\)"
+    ):
+        parse_duration("forever")

@@ -513,6 +513,9 @@ def parse_duration(s: str) -> float | str:
     t = s.strip()
     if t in ("Automatic", "Forever"):
         return t
+    if t and t[0].isalpha():  # a misspelt Automatic or Forever: a time starts with a digit
+        raise _fail("VAL006", f"Duration: {_show(s)} is none of Automatic, Forever (this case) "
+                    "or a time ([d.]h:m[:s[.fff]])")  # fmt: skip
     return _non_negative_timespan(t, "Duration")
 
 
@@ -533,6 +536,9 @@ def parse_repeat_behavior(s: str) -> float | str | tuple[str, float]:
         if not (count >= 0 and math.isfinite(count)):
             raise _fail("VAL006", f"RepeatBehavior: count {_show(s)} must be finite and >= 0")
         return count
+    if t and t[0].isalpha():  # a misspelt Forever: a time starts with a digit
+        raise _fail("VAL006", f"RepeatBehavior: {_show(s)} is none of Forever, a count (3x) "
+                    "or a time ([d.]h:m[:s[.fff]])")  # fmt: skip
     return ("time", _non_negative_timespan(t, "RepeatBehavior"))
 
 
