@@ -199,7 +199,7 @@ def _resolve(res: Resolution, r, names, a: Animation, host, library=False) -> Ta
 _LAID_OUT = frozenset({
     "Width", "Height", "MinWidth", "MinHeight", "MaxWidth", "MaxHeight", "Margin", "Padding",
     "BorderThickness", "LayoutTransform", "HorizontalAlignment", "VerticalAlignment",
-    "Visibility", "FontSize", "StrokeThickness",
+    "Visibility", "FontSize",
 })  # fmt: skip
 
 
