@@ -301,9 +301,16 @@ def test_panel_background_colour_animates():
       </Viewport3D></Grid>"""
     s = xaml3d.load(text, text=True)
     (track,) = s.tracks.tracks
-    assert track.paths == (ScenePath(0, (("background", None),), "color"),)
-    assert xaml3d.scene_at(s, 0.0).viewports[0].background.color == (0.0, 0.0, 0.0, 1.0)
+    # the viewport's background and the Grid's box, which render --window paints
+    assert track.paths == (
+        ScenePath(0, (("background", None),), "color"),
+        ScenePath(None, (("boxes", 0), ("background", None)), "color"),
+    )
+    frame = xaml3d.scene_at(s, 0.0)
+    assert frame.viewports[0].background.color == (0.0, 0.0, 0.0, 1.0)
+    assert frame.layout.boxes[0].background.color == (0.0, 0.0, 0.0, 1.0)
     assert s.viewports[0].background.color == (1.0, 1.0, 1.0, 1.0)
+    assert s.layout.boxes[0].background.color == (1.0, 1.0, 1.0, 1.0)
 
 
 @pytest.mark.parametrize(

@@ -91,11 +91,16 @@ def _default_of(f: dataclasses.Field):
 
 
 def camera_properties(camera) -> list[tuple[str, object, bool]]:
-    """(WPF name, value, is_default) for every property of the camera, compared with the scene
-    dataclass defaults (which are WPF's, wpf3d.md section 1)."""
+    """(WPF name, value, is_default) for every property of the camera: a default is one the
+    markup does not give (or gives a value WPF refuses) whose value is the scene dataclass
+    default (WPF's, wpf3d.md section 1); a value written out is never one, whatever it is."""
     out = []
+    written = getattr(camera, "given", frozenset()) - getattr(camera, "rejected", frozenset())
     for f in dataclasses.fields(camera):
         if f.name not in WPF_NAMES:
+            continue
+        if WPF_NAMES[f.name] in written:
+            out.append((WPF_NAMES[f.name], getattr(camera, f.name), False))
             continue
         value, default = getattr(camera, f.name), _default_of(f)
         if isinstance(value, np.ndarray):

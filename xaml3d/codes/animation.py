@@ -41,9 +41,10 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
     "ANIM010": (ERROR, "--storyboard names no storyboard of the document"),
     "ANIM014": (
         WARNING,
-        "animation of a property xaml3d evaluates once, at load (a panel's or viewport's size, "
-        "a LayoutTransform, the RenderTransform or Opacity of an element inside a visual or "
-        "one the layout does not reach): its value at load is drawn in every frame",
+        "animation of a property the picture shows at its value at load: laid out once (a "
+        "panel's or viewport's size, a LayoutTransform) or not a track of the scene (the "
+        "RenderTransform or Opacity of a shape, of an element inside a visual or one the layout "
+        "does not reach, a shape's or text's brush): its value at load is drawn in every frame",
     ),  # fmt: skip
     "ANIM011": (INFO, "animate: what length is drawn when it is not one whole cycle"),
     "ANIM015": (

@@ -164,6 +164,12 @@ def rejected_field():
     return field(default=frozenset(), compare=False)
 
 
+def given_field():
+    """The WPF names of the properties the markup gives (``xaml3d camera`` marks the others
+    as defaults): a value equal to WPF's default may still be written out."""
+    return field(default=frozenset(), compare=False)
+
+
 @dataclass(frozen=True)
 class DiffuseMaterial:
     brush: Brush | None = None
@@ -357,6 +363,7 @@ class ProjectionCamera:
     # the file the camera is written in when not the scene's (a -r dictionary): its findings
     # are located there
     file: str | None = field(default=None, compare=False)
+    given: frozenset[str] = given_field()  # "Position"...: see given_field
 
 
 @dataclass(frozen=True)
@@ -383,6 +390,7 @@ class MatrixCamera:
     column: int | None = None
     rejected: frozenset[str] = rejected_field()
     file: str | None = field(default=None, compare=False)  # as ProjectionCamera.file
+    given: frozenset[str] = given_field()
 
 
 Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera

@@ -9,11 +9,14 @@ matrix made from an animated transform, with its chain). ``tracks`` then walks t
 viewports once and turns each tagged object into the paths where it lands.
 
 A slot read while building but held by no scene object is a property xaml3d evaluates only at
-load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once). WPF would
-show it change; ANIM014 says that xaml3d draws its value at load instead. A Viewport3D's own
-RenderTransform and Opacity are tracks (its picture's ``render_transform`` and ``opacity``), and
-so are those of a laid-out element around it: its ``Around`` layer in each viewport's picture it
-encloses and its ``Box.layer`` in the Scene's layout (``render --window``).
+load: a panel's or Viewport3D's size, a LayoutTransform (the layout is done once), a shape's
+Opacity. So is a slot held only by objects the walk does not reach (a shape's or text's brush in
+the window's 2D drawings). WPF would show it change; ANIM014 says that xaml3d draws its value
+at load instead. A laid-out box's Background and BorderBrush are tracks (``render --window``).
+A Viewport3D's own RenderTransform and Opacity are tracks (its picture's ``render_transform``
+and ``opacity``), and so are those of a laid-out element around it: its ``Around`` layer in each
+viewport's picture it encloses and its ``Box.layer`` in the Scene's layout (``render
+--window``).
 
 What runs (storyboard checks): ANIM007 for a storyboard no trigger begins or whose BeginTime
 is {x:Null}, ANIM008 for an animation whose BeginTime is {x:Null}.
@@ -192,6 +195,29 @@ def _resolve(res: Resolution, r, names, a: Animation, host, library=False) -> Ta
 
 # --------------------------------------------------------------------------- the tracks
 
+# properties the layout reads: xaml3d lays the window out once, at load
+_LAID_OUT = frozenset({
+    "Width", "Height", "MinWidth", "MinHeight", "MaxWidth", "MaxHeight", "Margin", "Padding",
+    "BorderThickness", "LayoutTransform", "HorizontalAlignment", "VerticalAlignment",
+    "Visibility", "FontSize",
+})  # fmt: skip
+
+
+def at_load(a: Animation, label: str, target: Target, held: bool) -> str:
+    """ANIM014's message: the picture shows the property's value at load, and why."""
+    tag = getattr(target.element, "tag", "")
+    owner = tag.rpartition("}")[2] if isinstance(tag, str) else ""
+    what = f"{owner}.{target.prop}" if owner else target.prop
+    if target.field is not None:  # a brush made from a colour string: its Color or Opacity
+        what = f"{what} ({target.field})"
+    if not held and target.prop in _LAID_OUT:
+        why = "xaml3d lays the window out once, at load"
+    else:
+        why = "it is not a track of the scene, so xaml3d draws it once, at load"
+    return (
+        f"{a.type} -> {label}: the picture shows {what} at its value at load, not animated: {why}"
+    )
+
 
 def tracks(res: Resolution, viewports: tuple[Viewport, ...], layout=None) -> Tracks:
     """The tracks of the built viewports and of the laid-out boxes (``layout``, the Scene's
@@ -200,7 +226,10 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...], layout=None) -> Tra
     paths: list[list[ScenePath]] = [[] for _ in slots.targets]
     worlds: list[WorldChain] = []
 
+    reached: set[int] = set()  # id() of the scene objects the walk visits
+
     def visit(obj, vi: int, steps: tuple) -> None:
+        reached.add(id(obj))
         hit = slots.tags.get(id(obj))
         if hit is not None and hit[0] is obj:
             for field, slot in hit[1]:
@@ -240,20 +269,34 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...], layout=None) -> Tra
     for bi, box in enumerate(layout.boxes if layout is not None else ()):
         if box.layer is not None:
             visit(box.layer, None, (("boxes", bi), ("layer", None)))
+        # a panel's or Border's Background and BorderBrush, which the window paints itself
+        for side in ("background", "border_brush"):
+            if getattr(box, side) is not None:
+                visit_brush(getattr(box, side), None, (("boxes", bi), (side, None)))
 
     moves: list[list[ScenePath]] = [[] for _ in slots.targets]
     for chain in worlds:
         for k in sorted(chain.slots):
             moves[k].append(chain.path)
+    # the slots of tagged objects the walk above did not reach: a brush or layer of the 2D
+    # picture (drawn once, at load) rather than of a viewport or a laid-out box's layer
+    unfollowed = {
+        k for obj, pairs in slots.tags.values() if id(obj) not in reached for _, k in pairs
+    } | {
+        k for obj, pairs in slots.worlds.values() if id(obj) not in reached
+        for _, chain in pairs for k in chain.slots
+    }  # fmt: skip
+    unfollowed -= {k for k, m in enumerate(moves) if m}
     out = []
     for k, (target, anims) in enumerate(zip(slots.targets, slots.animations, strict=True)):
         first = anims[0]
         label = res.label(first)
-        if k in slots.read and k not in slots.placed:
+        # read but held by no scene object (a size, a LayoutTransform), or held by one that
+        # no frame evaluates again (a shape's brush in the window's 2D drawings)
+        held = k in slots.placed
+        if (k in slots.read and not held) or (held and k in unfollowed and not paths[k]):
             for a in anims:
-                res.diag("ANIM014", f"{a.type} -> {label}: {target.prop} is laid out (or "
-                         "converted) once, at load: xaml3d draws its value at load, not its "
-                         "animation", a)  # fmt: skip
+                res.diag("ANIM014", at_load(a, label, target, held), a)
         out.append(Track(label, first.value_type, tuple(anims), tuple(paths[k]),
                          tuple(moves[k]), first.line, first.column))  # fmt: skip
     return Tracks(tuple(out), tuple(worlds))

@@ -162,11 +162,16 @@ _LIGHT_FIELDS = {"Color": "color", "Direction": "direction", "Position": "positi
                  "InnerConeAngle": "inner_cone_angle"}  # fmt: skip
 
 
+# what ``xaml3d camera`` marks "(default)" when the markup does not give it
+_GIVEN = ("Position", "LookDirection", "UpDirection", "NearPlaneDistance", "FarPlaneDistance",
+          "FieldOfView", "Width", "ViewMatrix", "ProjectionMatrix", "Transform")  # fmt: skip
+
+
 def _camera(r, p, transform):
     el, t, d = p.el, p.type, V.parse_double
     # the file it is written in: a camera of a -r dictionary is reported there
     common = dict(transform=transform, name=element_name(el), file=r.ctx.file_elsewhere(el),
-                  **r.ctx.position(el))  # fmt: skip
+                  given=frozenset(n for n in _GIVEN if p.has(n)), **r.ctx.position(el))  # fmt: skip
     if t in ("PerspectiveCamera", "OrthographicCamera"):
         frame = dict(
             position=p.value("Position", V.parse_point3d, (0.0, 0.0, 0.0)),

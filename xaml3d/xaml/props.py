@@ -292,7 +292,9 @@ class Props:
         try:
             return conv(s)
         except ValueSyntaxError as exc:
-            exc.message = f"{self.type}.{prop}: {exc.message}"
+            # a converter names what it reads ("Color: '#GG1122' is not..."): said once
+            own = exc.message.removeprefix(f"{prop}: ")
+            exc.message = f"{self.type}.{prop}: {own}"
             self.r.ctx.error(exc, node, attr=attr)
             return default
 
