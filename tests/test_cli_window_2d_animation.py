@@ -106,3 +106,35 @@ def test_an_animated_brush_of_a_shape_is_reported(tmp_path):
         "SolidColorBrush.Opacity at its value at load, not animated: it is not a track of the "
         "scene, so xaml3d draws it once, at load"
     ]
+
+
+def test_an_animated_canvas_offset_is_a_double_the_layout_reads_once(tmp_path):
+    """``(Canvas.Left)`` is Canvas's attached Double on any element: a DoubleAnimation of it is
+    valid (not ANIM003) and the picture shows its value at load (ANIM014, the layout's reason);
+    a ColorAnimation of it is ANIM003, naming the attached property's kind."""
+
+    def validate(animation: str) -> str:
+        (tmp_path / "a.xaml").write_text(
+            '<Canvas xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+            'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="200" Height="100">\n'
+            '<Canvas.Triggers><EventTrigger RoutedEvent="Canvas.Loaded"><BeginStoryboard>\n'
+            f"<Storyboard>{animation}</Storyboard>\n"
+            "</BeginStoryboard></EventTrigger></Canvas.Triggers>\n"
+            '<Rectangle x:Name="rect" Width="20" Height="20" Fill="Red"/>\n'
+            '<Viewport3D Canvas.Left="120" Width="40" Height="40"/></Canvas>'
+        )
+        p = subprocess.run([sys.executable, "-m", "xaml3d", "validate", "a.xaml"],
+                           cwd=tmp_path, capture_output=True, text=True)  # fmt: skip
+        return p.stdout + p.stderr
+
+    left = 'Storyboard.TargetName="rect" Storyboard.TargetProperty="(Canvas.Left)"'
+    out = validate(f'<DoubleAnimation {left} To="100" Duration="0:0:1"/>')
+    assert "ANIM003" not in out
+    assert (
+        "a.xaml:3:13: warning ANIM014 DoubleAnimation -> rect.(Canvas.Left): the picture shows "
+        "Rectangle's Canvas.Left at its value at load, not animated: xaml3d lays the window out "
+        "once, at load"
+    ) in out
+    out = validate(f'<ColorAnimation {left} To="Red" Duration="0:0:1"/>')
+    said = "ANIM003 ColorAnimation -> rect.(Canvas.Left): Color animation on Canvas.Left, a double"
+    assert said in out

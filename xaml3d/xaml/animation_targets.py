@@ -45,6 +45,14 @@ _KINDS = {
     "Point": ("point",),
     "Size": ("size",),
 }
+# Attached properties of the panels that a Double animation may drive (Canvas's offsets: WPF
+# moves the element within its Canvas); the path names them "(Canvas.Left)" on any element
+_ATTACHED_KINDS = {
+    ("Canvas", "Left"): "double",
+    ("Canvas", "Top"): "double",
+    ("Canvas", "Right"): "double",
+    ("Canvas", "Bottom"): "double",
+}
 _STEP = re.compile(r"\s*(?:\(\s*([\w.:]+)\s*\)|([\w]+))\s*((?:\[\s*\d+\s*\])*)")
 
 
@@ -193,6 +201,13 @@ def resolve(
             )
         et = voc.lookup(qname(el.tag)[1])
         tname = qname(el.tag)[1]
+        attached = _ATTACHED_KINDS.get((_owner, prop)) if _owner != tname else None
+        if attached is not None and n == len(steps) - 1 and not indices:
+            if attached not in _KINDS.get(vtype, ()):
+                raise TargetError(
+                    "ANIM003", f"{vtype} animation on {_owner}.{prop}, {a_an(attached)} property"
+                )
+            return Target(el, f"{_owner}.{prop}", attached)
         if et is None or (not et.open and prop not in et.properties):
             hint = "" if et is None else voc.did_you_mean(prop, et.properties)
             raise TargetError("ANIM002", f"{tname} has no property {prop!r}{hint} (path {path!r})")

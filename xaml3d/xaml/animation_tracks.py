@@ -208,9 +208,11 @@ def at_load(a: Animation, label: str, target: Target, held: bool) -> str:
     tag = getattr(target.element, "tag", "")
     owner = tag.rpartition("}")[2] if isinstance(tag, str) else ""
     what = f"{owner}.{target.prop}" if owner else target.prop
+    if "." in target.prop:  # an attached property: (Canvas.Left) of a Rectangle
+        what = f"{owner}'s {target.prop}" if owner else target.prop
     if target.field is not None:  # a brush made from a colour string: its Color or Opacity
         what = f"{what} ({target.field})"
-    if not held and target.prop in _LAID_OUT:
+    if not held and (target.prop in _LAID_OUT or "." in target.prop):  # or (Canvas.Left)
         why = "xaml3d lays the window out once, at load"
     else:
         why = "it is not a track of the scene, so xaml3d draws it once, at load"
@@ -294,7 +296,13 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...], layout=None) -> Tra
         # read but held by no scene object (a size, a LayoutTransform), or held by one that
         # no frame evaluates again (a shape's brush in the window's 2D drawings)
         held = k in slots.placed
-        if (k in slots.read and not held) or (held and k in unfollowed and not paths[k]):
+        # an attached layout property ((Canvas.Left) ...): the layout reads it, once
+        attached = "." in target.prop and not held
+        if (
+            (k in slots.read and not held)
+            or attached
+            or (held and k in unfollowed and not paths[k])
+        ):
             for a in anims:
                 res.diag("ANIM014", at_load(a, label, target, held), a)
         out.append(Track(label, first.value_type, tuple(anims), tuple(paths[k]),
