@@ -37,6 +37,7 @@ from xaml3d.render.kernels import (
     _max32,
     _min32,
     _shade,
+    _span,
 )
 
 
@@ -195,23 +196,8 @@ def draw_blocks(
                 last = 0
                 if ja <= j <= jb:
                     py = j * SUBPIXEL + HALF
-                    first = i0[t]
-                    last = i1[t]
-                    for e in range(3):
-                        ae = A[e, t]
-                        kk = B[e, t] * py + C[e, t]
-                        if ae > 0:
-                            lim = (kk - 1) // ae
-                            v = -((lim + HALF) // SUBPIXEL)
-                            if v > first:
-                                first = v
-                        elif ae < 0:
-                            lim = (kk - 1) // (-ae)
-                            v = (lim - HALF) // SUBPIXEL
-                            if v < last:
-                                last = v
-                        elif kk <= 0:
-                            last = -1
+                    first, last = _span(A[0, t], B[0, t], C[0, t], A[1, t], B[1, t], C[1, t],
+                                        A[2, t], B[2, t], C[2, t], i0[t], i1[t], py)  # fmt: skip
                 lo[a] = first
                 hi[a] = last
                 if last >= first:

@@ -60,23 +60,8 @@ def raster_chunk(
         ia = inv_area[t]
         while j <= j1[t]:
             py = j * SUBPIXEL + HALF
-            lo = i0[t]
-            hi = i1[t]
-            for e in range(3):
-                a = A[e, t]
-                kk = B[e, t] * py + C[e, t]
-                if a > 0:
-                    lim = (kk - 1) // a
-                    v = -((lim + HALF) // SUBPIXEL)
-                    if v > lo:
-                        lo = v
-                elif a < 0:
-                    lim = (kk - 1) // (-a)
-                    v = (lim - HALF) // SUBPIXEL
-                    if v < hi:
-                        hi = v
-                elif kk <= 0:
-                    hi = -1
+            lo, hi = _span(A[0, t], B[0, t], C[0, t], A[1, t], B[1, t], C[1, t], A[2, t], B[2, t],
+                           C[2, t], i0[t], i1[t], py)  # fmt: skip
             span = hi - lo + 1
             if span > 0:
                 if n + span > cap and n > 0:
