@@ -1,13 +1,20 @@
-"""Test configuration: numeric problems raise, and the shared corpus is located once."""
+"""Test configuration: numeric problems raise, the shared corpus is located once, kernels load
+through numba."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 np.seterr(all="raise")
+
+# The suite's own processes run the kernels through numba's loading, so that tests may replace
+# a kernel module's functions; the native loading of the same machine code is tested, in its
+# own processes, by tests/test_native_kernels.py.
+os.environ.setdefault("XAML3D_NATIVE", "0")
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT.parent / "shared" / "corpus"

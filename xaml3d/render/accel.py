@@ -17,8 +17,10 @@ within one frame is harmless.
 
 from __future__ import annotations
 
+import importlib.util
 import sys
 
+from xaml3d import native
 from xaml3d.numba_env import ENV, MODES, mode, set_cache_dir
 
 __all__ = [
@@ -126,12 +128,17 @@ def _load(required: bool) -> None:
     if _failed and not required:
         return
     set_cache_dir()
-    try:
-        # numba is imported here, only for a frame big enough to pay for its start-up
-        from xaml3d.render import kernels
-    except ImportError:
+    if importlib.util.find_spec("numba") is None:
         _failed = True
         if required:
-            raise
+            raise ImportError("numba is not installed")
         return
-    _kernels = kernels
+    if native.enabled():
+        # The kernels' machine code as this machine last kept it, loaded without numba's
+        # import (``xaml3d.native``); a kernel without it (the first run, new sources) imports
+        # the real module, and numba, on its first call, and is kept for the next process.
+        _kernels = native.kernels("xaml3d.render.kernels")
+    else:
+        from xaml3d.render import kernels  # numba's own loading (XAML3D_NATIVE=0)
+
+        _kernels = kernels

@@ -1,0 +1,153 @@
+"""Compiled kernels without numba's start-up: numba's cached machine code, loaded by llvmlite.
+
+numba compiles xaml3d's kernels (``xaml3d.render.kernels``...) once and caches their machine
+code on disk, but every process that wants to run them pays numba's import and runtime set-up
+first, about 0.25-0.3 s here: more than a whole small render. This package keeps, beside
+numba's cache, the same machine code with a small trampoline per kernel (``build``, run in a
+process that has numba and has just used the kernel), and loads it later with llvmlite alone
+(``engine``, ~30 ms). The code run is byte for byte the code numba would run, so pictures are
+the same; the first process on a machine (or after the kernels' source, numba, llvmlite or the
+processor changes: ``store.key``) runs them through numba and leaves the native objects for
+the next.
+
+``kernels(name)`` gives a stand-in for a kernel module: its kernels that have native code are
+called through it (each call's arguments checked against the compiled versions' types, as
+numba's dispatch would; anything else goes to numba), its constants are served from the
+manifest, and every other attribute imports the real module (and numba) on first use.
+``XAML3D_NATIVE=0`` turns this off (always numba's own loading).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import importlib
+import importlib.util
+import os
+from pathlib import Path
+
+ENV = "XAML3D_NATIVE"
+
+
+def enabled() -> bool:
+    return os.environ.get(ENV, "1").strip().lower() not in ("0", "no", "off", "false")
+
+
+class Kernels:
+    """A kernel module's stand-in (see the package's docstring)."""
+
+    def __init__(self, name: str, native: dict | None = None, constants: dict | None = None):
+        self._name = name
+        self._module = None
+        self.native_kernels = sorted(native or ())
+        for kernel, versions in (native or {}).items():
+            setattr(self, kernel, _NativeKernel(self, kernel, versions))
+        for key, value in (constants or {}).items():
+            setattr(self, key, value)
+
+    def real(self):
+        """The real kernel module (importing it imports numba)."""
+        if self._module is None:
+            self._module = importlib.import_module(self._name)
+        return self._module
+
+    def __getattr__(self, name: str):
+        if name.startswith("__"):
+            raise AttributeError(name)
+        value = getattr(self.real(), name)
+        if hasattr(value, "py_func") and hasattr(value, "signatures"):
+            value = _Remembering(self, name, value)
+        setattr(self, name, value)
+        return value
+
+
+class _Remembering:
+    """A numba kernel called through the stand-in: after a call that compiled (or loaded) a
+    new version, its machine code is kept for the next process (``build.remember``)."""
+
+    def __init__(self, owner: Kernels, name: str, dispatcher):
+        self._owner = owner
+        self._name = name
+        self._dispatcher = dispatcher
+        self._seen = -1
+
+    def __call__(self, *args):
+        result = self._dispatcher(*args)
+        count = len(self._dispatcher.signatures)
+        if count != self._seen:
+            self._seen = count
+            from xaml3d.native import build
+
+            build.remember(self._owner.real(), [self._name])
+        return result
+
+    def __getattr__(self, name):
+        return getattr(self._dispatcher, name)
+
+
+class _NativeKernel:
+    """A kernel with native code: each call goes to the first compiled version whose types
+    match the arguments; none matching, to numba (which may compile another version)."""
+
+    def __init__(self, owner: Kernels, name: str, versions: list):
+        self._owner = owner
+        self._name = name
+        self._versions = versions  # [(abi.Signature, ctypes function)]
+        self._numba = None
+
+    def __call__(self, *args):
+        for sig, fn in self._versions:
+            block = sig.pack(args)
+            if block is not None:
+                result = ctypes.create_string_buffer(sig.rsize)
+                status = ctypes.c_int32(0)
+                fn(block, result, ctypes.byref(status))
+                return sig.result_of(status.value, result)
+        if self._numba is None:
+            self._numba = _Remembering(
+                self._owner, self._name, getattr(self._owner.real(), self._name)
+            )
+        return self._numba(*args)
+
+
+def kernels(name: str) -> Kernels:
+    """The stand-in of kernel module ``name`` with whatever native code this machine has for
+    it (none: every kernel goes through numba, and is kept as it is used)."""
+    if not enabled():
+        return Kernels(name)
+    try:
+        native, constants = _load(name)
+    except Exception:  # noqa: BLE001 - no native code (no llvmlite, a damaged cache...): numba
+        return Kernels(name)
+    return Kernels(name, native, constants)
+
+
+def _load(name: str) -> tuple[dict, dict]:
+    from xaml3d.native import abi, engine, store
+
+    spec = importlib.util.find_spec(name)
+    if spec is None or not spec.origin:
+        return {}, {}
+    import llvmlite.binding as llvm
+
+    k = store.key(
+        Path(spec.origin), llvm.get_host_cpu_name(), llvm.get_host_cpu_features().flatten()
+    )
+    where = store.folder(name, k)
+    manifest = store.read_manifest(where)
+    if manifest is None:
+        return {}, {}
+    linked = []
+    for kernel, versions in manifest.get("kernels", {}).items():
+        for entry in versions:
+            try:
+                objects = [(where / f).read_bytes() for f in entry["objects"]]
+            except OSError:
+                continue
+            if engine.link(objects, entry["undefined"]):
+                linked.append((kernel, entry))
+    native: dict[str, list] = {}
+    for kernel, entry in linked:
+        fn = engine.function(entry["symbol"])
+        native.setdefault(kernel, []).append((abi.Signature(entry["args"], entry["result"]), fn))
+    constants = manifest.get("constants", {}) if native else {}
+    return native, constants

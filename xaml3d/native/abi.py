@@ -1,0 +1,215 @@
+"""How a compiled kernel's arguments and results cross into its machine code: one flat block.
+
+numba compiles a kernel to a native function with its own calling convention
+(``numba.core.callconv.CPUCallConv``): ``i32 f(ret*, excinfo**, <arguments flattened>)``, where
+every array is flattened into its fields (meminfo, parent, size, itemsize, data pointer, shape,
+strides) and the i32 is a status (0: a value, -2: None, anything else: an exception was raised).
+A small trampoline (``trampoline_ir``), compiled once beside the kernel's cached machine code,
+reads those flattened arguments from one block of 8-byte slots, calls the kernel and stores the
+status: so a call from Python is ``struct.pack`` of the slots and one ctypes call, with no numba
+in the process.
+
+``describe`` turns numba's argument types into specs (plain tuples, kept in a JSON manifest);
+``Signature`` checks a call's arguments against one of them (the same dtype, dimensions,
+contiguity and writability numba would have typed them as: anything else is not this machine
+code, so the caller falls back to numba's own dispatch) and packs them.
+"""
+
+from __future__ import annotations
+
+import struct
+
+import numpy as np
+
+# numba's array data model, flattened (numba.core.datamodel.models.ArrayModel): meminfo and
+# parent pointers, nitems, itemsize, data pointer, then shape and strides (ndim each).
+_ARRAY_HEAD = ("ptr", "ptr", "i64", "i64", "ptr")
+
+# scalar numba types a kernel may take, with their LLVM argument type and block packing
+_SCALARS = {
+    "int64": ("i64", "q"),
+    "float64": ("double", "d"),
+    "float32": ("float", "f4x"),
+    "bool": ("i8", "q"),  # numba passes a boolean as a byte
+}
+# results a kernel may return (each one 8-byte slot of the result struct)
+_RESULTS = {"int64": "q", "float64": "d"}
+
+STATUS_VALUE = 0
+STATUS_NONE = -2  # numba's RETCODE_NONE: the function returned None
+
+
+class KernelRaised(RuntimeError):
+    """A kernel's machine code reported an exception (a defect: kernels do not raise)."""
+
+    def __init__(self, status: int):
+        super().__init__(f"a compiled kernel stopped with status {status}")
+
+
+class Unsupported(Exception):
+    """A kernel whose arguments or result this ABI does not carry (it stays on numba)."""
+
+
+def describe(argtypes, restype) -> tuple[list, list]:
+    """Specs of numba's argument types and result type: ``["a", dtype, ndim, readonly]`` for a
+    C-contiguous aligned array, ``["s", name]`` for a scalar; the result as a list of scalar
+    names, empty for None, with "tuple" first for a tuple (``Signature.result_of``)."""
+    args = []
+    for t in argtypes:
+        name = type(t).__name__
+        if name == "Array":
+            if t.layout != "C" or not t.aligned or str(t.dtype) not in _DTYPES:
+                raise Unsupported(f"array {t}")
+            args.append(["a", str(t.dtype), int(t.ndim), bool(not t.mutable)])
+        elif str(t) in _SCALARS:
+            args.append(["s", str(t)])
+        else:
+            raise Unsupported(f"argument {t}")
+    rname = type(restype).__name__
+    if str(restype) == "none":
+        result = []
+    elif rname in ("UniTuple", "Tuple"):
+        result = ["tuple", *(str(x) for x in restype.types)]
+    else:
+        result = [str(restype)]
+    for r in result[1:] if result[:1] == ["tuple"] else result:
+        if r not in _RESULTS:
+            raise Unsupported(f"result {restype}")
+    return args, result
+
+
+_DTYPES = {
+    name: np.dtype(name)
+    for name in ("float64", "float32", "int64", "int32", "uint8", "uint32", "uint64", "bool")
+}
+
+
+def llvm_types(args: list) -> list[str]:
+    """The flattened LLVM argument types of the specs (after ret* and excinfo**)."""
+    out = []
+    for spec in args:
+        if spec[0] == "a":
+            out.extend(_ARRAY_HEAD)
+            out.extend(["i64"] * (2 * spec[2]))
+        else:
+            out.append(_SCALARS[spec[1]][0])
+    return out
+
+
+def trampoline_ir(symbol: str, native: str, args: list, triple: str, layout: str) -> str:
+    """LLVM IR of ``void symbol(i64* block, ret*, i32* status)``: load each flattened argument
+    from its 8-byte slot, call the kernel's native function, store its status."""
+    types = llvm_types(args)
+    lines = [
+        f'target triple = "{triple}"',
+        f'target datalayout = "{layout}"',
+        f'declare i32 @"{native}"(ptr, ptr{"".join(", " + t for t in types)})',
+        f'define void @"{symbol}"(ptr %blk, ptr %ret, ptr %status) {{',
+        "entry:",
+        "  %exc = alloca ptr",
+        "  store ptr null, ptr %exc",
+    ]
+    call = []
+    for k, t in enumerate(types):
+        lines.append(f"  %p{k} = getelementptr i64, ptr %blk, i64 {k}")
+        lines.append(f"  %v{k} = load i64, ptr %p{k}")
+        if t == "i64":
+            call.append(f"i64 %v{k}")
+            continue
+        if t == "ptr":
+            lines.append(f"  %a{k} = inttoptr i64 %v{k} to ptr")
+        elif t == "double":
+            lines.append(f"  %a{k} = bitcast i64 %v{k} to double")
+        elif t == "float":
+            lines.append(f"  %t{k} = trunc i64 %v{k} to i32")
+            lines.append(f"  %a{k} = bitcast i32 %t{k} to float")
+        elif t == "i8":
+            lines.append(f"  %a{k} = trunc i64 %v{k} to i8")
+        else:  # pragma: no cover - llvm_types makes only the types above
+            raise Unsupported(t)
+        call.append(f"{t} %a{k}")
+    lines.append(
+        f'  %r = call i32 @"{native}"(ptr %ret, ptr %exc{"".join(", " + c for c in call)})'
+    )
+    lines.append("  store i32 %r, ptr %status")
+    lines.append("  ret void")
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+class Signature:
+    """One compiled version of a kernel: checks a call's arguments and packs them."""
+
+    __slots__ = ("args", "result", "fmt", "rfmt", "rsize", "tuple", "_checks")
+
+    def __init__(self, args: list, result: list):
+        self.args = args
+        self.tuple = result[:1] == ["tuple"]
+        self.result = result = result[1:] if self.tuple else result
+        fmt = ["<"]
+        checks = []
+        for spec in args:
+            if spec[0] == "a":
+                fmt.append("QQqqQ" + "q" * (2 * spec[2]))
+                checks.append((True, (_DTYPES[spec[1]], spec[2], not spec[3])))
+            else:
+                fmt.append(_SCALARS[spec[1]][1])
+                checks.append((False, _SCALAR_CHECK[spec[1]]))
+        self.fmt = struct.Struct("".join(fmt))
+        self.rfmt = struct.Struct("<" + "".join(_RESULTS[r] for r in result))
+        self.rsize = max(8, self.rfmt.size)
+        self._checks = checks
+
+    def result_of(self, status: int, buffer) -> object:
+        """The kernel's result from its status and result buffer, as numba returns it."""
+        if status == STATUS_NONE or (status == STATUS_VALUE and not self.result):
+            return None
+        if status != STATUS_VALUE:
+            raise KernelRaised(status)
+        values = self.rfmt.unpack_from(buffer)
+        return values if self.tuple else values[0]
+
+    def pack(self, values: tuple) -> bytes | None:
+        """The argument block, or None when an argument is not of this version's types (as
+        numba would type it: e.g. a read-only array for a writable one, a float for an int)."""
+        if len(values) != len(self._checks):
+            return None
+        slots = []
+        add = slots.append
+        extend = slots.extend
+        for (array, check), v in zip(self._checks, values, strict=True):
+            if array:
+                if type(v) is not np.ndarray:
+                    return None
+                dtype, ndim, writable = check
+                flags = v.flags
+                if (
+                    v.ndim != ndim
+                    or v.dtype != dtype
+                    or not flags.c_contiguous
+                    or not flags.aligned
+                    or flags.writeable != writable
+                ):
+                    return None
+                # meminfo and parent stay NULL: the kernel only reads and writes the data
+                extend((0, 0, v.size, v.itemsize, v.__array_interface__["data"][0]))
+                extend(v.shape)
+                extend(v.strides)
+            else:
+                if type(v) not in check:
+                    return None
+                add(v)
+        try:
+            return self.fmt.pack(*slots)
+        except (struct.error, OverflowError):  # an int beyond int64: numba types it uint64
+            return None
+
+
+# Python values numba types as each scalar (numba.typeof), by exact type: a bool is not an
+# int64 here, an int is not a float64 (each would be another compiled version).
+_SCALAR_CHECK = {
+    "int64": (int, np.int64),
+    "float64": (float, np.float64),
+    "float32": (np.float32,),
+    "bool": (bool, np.bool_),
+}
