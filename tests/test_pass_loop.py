@@ -230,9 +230,10 @@ def test_draw_pass_equals_chunked_fragment_passes(msaa, additive, per_triangle, 
             continue
         rtri = frag.tri if frag.inverse is None else frag.wtri
         inverse = np.zeros(0, np.int64) if frag.inverse is None else frag.inverse
-        rows = kernels.shade_rows(
+        rows = np.empty((rtri.shape[0], 4), np.float32)
+        kernels.shade_rows(
             rtri, np.ascontiguousarray(frag.weights), kernels.COLOR_PLANES, planes, indices,
-            no_uv, kernels.BRUSH_UNIFORM, np.zeros((0, 4)), no_lay, no_img,
+            no_uv, kernels.BRUSH_UNIFORM, np.zeros((0, 4)), no_lay, no_img, rows,
         )  # fmt: skip
         want.fragments_drawn += kernels.blend_rows(
             want.zbuf, want.color, frag.pixel, frag.depth - 2.0, inverse, rows, additive

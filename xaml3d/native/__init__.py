@@ -20,6 +20,7 @@ manifest, and every other attribute imports the real module (and numba) on first
 from __future__ import annotations
 
 import ctypes
+import hashlib
 import importlib
 import importlib.util
 import os
@@ -39,6 +40,7 @@ class Kernels:
         self._name = name
         self._module = None
         self.native_kernels = sorted(native or ())
+        self.numba_kernels: set[str] = set()  # the kernels this process ran through numba
         for kernel, versions in (native or {}).items():
             setattr(self, kernel, _NativeKernel(self, kernel, versions))
         for key, value in (constants or {}).items():
@@ -71,6 +73,7 @@ class _Remembering:
         self._seen = -1
 
     def __call__(self, *args):
+        self._owner.numba_kernels.add(self._name)
         result = self._dispatcher(*args)
         count = len(self._dispatcher.signatures)
         if count != self._seen:
@@ -109,16 +112,26 @@ class _NativeKernel:
         return self._numba(*args)
 
 
+_stand_ins: dict[str, Kernels] = {}
+
+
 def kernels(name: str) -> Kernels:
     """The stand-in of kernel module ``name`` with whatever native code this machine has for
-    it (none: every kernel goes through numba, and is kept as it is used)."""
+    it (none: every kernel goes through numba, and is kept as it is used); one per process
+    (an object is linked into the process once)."""
+    found = _stand_ins.get(name)
+    if found is not None:
+        return found
     if not enabled():
-        return Kernels(name)
-    try:
-        native, constants = _load(name)
-    except Exception:  # noqa: BLE001 - no native code (no llvmlite, a damaged cache...): numba
-        return Kernels(name)
-    return Kernels(name, native, constants)
+        found = Kernels(name)
+    else:
+        try:
+            native, constants = _load(name)
+        except Exception:  # noqa: BLE001 - no native code (no llvmlite, a damaged cache): numba
+            native, constants = {}, {}
+        found = Kernels(name, native, constants)
+    _stand_ins[name] = found
+    return found
 
 
 def _load(name: str) -> tuple[dict, dict]:
@@ -142,6 +155,9 @@ def _load(name: str) -> tuple[dict, dict]:
             try:
                 objects = [(where / f).read_bytes() for f in entry["objects"]]
             except OSError:
+                continue
+            # a damaged object would stop the process inside LLVM: check it is what was kept
+            if [hashlib.sha256(b).hexdigest() for b in objects] != entry.get("sha256"):
                 continue
             if engine.link(objects, entry["undefined"]):
                 linked.append((kernel, entry))

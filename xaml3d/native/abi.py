@@ -33,7 +33,7 @@ _SCALARS = {
     "bool": ("i8", "q"),  # numba passes a boolean as a byte
 }
 # results a kernel may return (each one 8-byte slot of the result struct)
-_RESULTS = {"int64": "q", "float64": "d"}
+_RESULTS = {"int64": "q", "float64": "d", "bool": "?"}
 
 STATUS_VALUE = 0
 STATUS_NONE = -2  # numba's RETCODE_NONE: the function returned None
@@ -75,6 +75,8 @@ def describe(argtypes, restype) -> tuple[list, list]:
     for r in result[1:] if result[:1] == ["tuple"] else result:
         if r not in _RESULTS:
             raise Unsupported(f"result {restype}")
+    if "bool" in result and len(result) > 1:
+        raise Unsupported(f"result {restype}")  # a tuple's booleans are not 8-byte slots
     return args, result
 
 

@@ -13,8 +13,8 @@ other than ELF, a cache folder that cannot be written, all leave the kernel on n
 
 from __future__ import annotations
 
+import hashlib
 import json
-import sys
 from pathlib import Path
 
 from xaml3d.native import abi, elf, store
@@ -51,16 +51,37 @@ def _remember(module, names: list[str]) -> None:
                 continue
             _done.add(tag)
             versions = manifest["kernels"].setdefault(name, [])
-            if any(v["numba"] == str(sig) for v in versions):
+            if any(v["numba"] == str(sig) and _intact(where, v) for v in versions):
                 continue
+            # a version whose files are gone or damaged is made again
+            versions[:] = [v for v in versions if v["numba"] != str(sig)]
+            if not dispatcher.targetoptions.get("nogil"):
+                continue  # the trampoline is called with the GIL released
             try:
-                entry = _save(where, name, len(versions), dispatcher, sig)
+                entry = _save(where, name, _free_index(versions), dispatcher, sig)
             except (abi.Unsupported, ValueError, AttributeError, KeyError):
                 continue
             versions.append(entry)
             changed = True
     if changed:
         store.write_atomically(where / "manifest.json", json.dumps(manifest, indent=1).encode())
+        store.prune(module.__name__, k)
+
+
+def _intact(where: Path, entry: dict) -> bool:
+    try:
+        data = [(where / f).read_bytes() for f in entry["objects"]]
+    except (OSError, KeyError, TypeError):
+        return False
+    return [hashlib.sha256(b).hexdigest() for b in data] == entry.get("sha256")
+
+
+def _free_index(versions: list) -> int:
+    used = {v.get("symbol") for v in versions}
+    k = 0
+    while any(str(s).endswith(f"_{k}") for s in used):
+        k += 1
+    return k
 
 
 def _constants(module) -> dict:
@@ -97,8 +118,8 @@ def _save(where: Path, name: str, index: int, dispatcher, sig) -> dict:
     undefined = sorted(set(undefined) | set(elf.undefined_symbols(call)) - {native})
     return {
         "numba": str(sig), "args": args, "result": result, "symbol": symbol,
-        "objects": files, "undefined": undefined, "nogil": bool(_nogil(dispatcher)),
-        "python": sys.version.split()[0],
+        "objects": files, "sha256": [hashlib.sha256(b).hexdigest() for b in (code, call)],
+        "undefined": undefined,
     }  # fmt: skip
 
 
@@ -114,10 +135,6 @@ def _cached_object(dispatcher, sig) -> bytes:
     if kind != "object":
         raise ValueError(kind)
     return data[0]
-
-
-def _nogil(dispatcher) -> bool:
-    return dispatcher.targetoptions.get("nogil", False)
 
 
 def _llvm_name(t: str) -> str:

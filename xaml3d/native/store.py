@@ -26,7 +26,7 @@ from pathlib import Path
 
 from xaml3d.numba_env import set_cache_dir
 
-FORMAT = 1
+FORMAT = 2  # of the manifest
 
 
 def package_file(package: str, relative: str, extension: bool = False) -> Path:
@@ -93,3 +93,21 @@ def write_atomically(path: Path, data: bytes) -> None:
         except OSError:
             pass
         raise
+
+
+def prune(module: str, k: str) -> None:
+    """Remove the module's folders of other keys (older sources, another numba or processor):
+    nothing loads them again. Best effort: a folder another process still reads loses only
+    speed there (its manifest or objects are gone, so it runs those kernels through numba)."""
+    parent = folder(module, k).parent
+    for other in parent.glob(f"{module}-*"):
+        if other.name != f"{module}-{k}" and other.is_dir():
+            for f in other.iterdir():
+                try:
+                    f.unlink()
+                except OSError:
+                    pass
+            try:
+                other.rmdir()
+            except OSError:
+                pass

@@ -17,6 +17,7 @@ within one frame is harmless.
 
 from __future__ import annotations
 
+import importlib
 import importlib.util
 import sys
 
@@ -117,6 +118,14 @@ def for_set_up(triangles: int):
     if _kernels is None and "numba" in sys.modules and triangles >= SET_UP_WORTH:
         _load(required=m == "numba")
     return _kernels
+
+
+def companion(name: str):
+    """Another kernel module used once the kernels are loaded (``xaml3d.render.frame_kernels``):
+    its native stand-in (``xaml3d.native``) or, with XAML3D_NATIVE=0, the module itself."""
+    if native.enabled():
+        return native.kernels(name)
+    return importlib.import_module(name)
 
 
 def _worth() -> float:

@@ -154,10 +154,12 @@ def _facing(clip: np.ndarray, idx: np.ndarray, mirror: bool) -> tuple[np.ndarray
     edge-on triangles are neither. A big mesh, once numba is loaded, takes the compiled loop
     (``setup_kernels.facing``: the same expressions)."""
     if accel.for_set_up(idx.shape[0]) is not None:
-        from xaml3d.render.setup_kernels import facing  # with the kernels only
-
+        facing = accel.companion("xaml3d.render.setup_kernels").facing  # with the kernels only
         c = np.ascontiguousarray
-        return facing(c(clip, dtype=np.float64), c(idx, dtype=np.int64), mirror)
+        front = np.empty(idx.shape[0], dtype=np.bool_)
+        back = np.empty(idx.shape[0], dtype=np.bool_)
+        facing(c(clip, dtype=np.float64), c(idx, dtype=np.int64), bool(mirror), front, back)
+        return front, back
     # det [x y w] of the three vertices, expanded by the first column. Only its sign is used:
     # each vertex's (x, y, w) is first divided by its largest magnitude (a positive factor per
     # row keeps the sign), so coordinates near 1e308 cannot overflow the products, and a
@@ -449,9 +451,10 @@ class PassShader:
         else:
             source, colors = kernels.COLOR_PLANES, self._planes
         ro = _read_only
-        rows = kernels.shade_rows(
+        rows = np.empty((rtri.shape[0], 4), np.float32)
+        kernels.shade_rows(
             ro(rtri), ro(rw), source, ro(colors), ro(self.indices), ro(uvp), brush, ro(given),
-            ro(lay), ro(self._image),
+            ro(lay), ro(self._image), rows,
         )  # fmt: skip
         inverse = np.ascontiguousarray(inverse, dtype=np.int64)
         fb.fragments_drawn += kernels.blend_rows(
@@ -524,9 +527,12 @@ def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.
     (F, 3, K) gather, and the same arithmetic as the compiled kernel's)."""
     kernels = accel.active()
     if kernels is not None:
-        return kernels.interpolate(
-            planes, indices, np.ascontiguousarray(tri, dtype=np.int64), np.ascontiguousarray(w)
-        )
+        out = np.empty((tri.shape[0], planes.shape[0]))
+        kernels.interpolate(
+            planes, indices, np.ascontiguousarray(tri, dtype=np.int64), np.ascontiguousarray(w),
+            out,
+        )  # fmt: skip
+        return out
     ci = indices[tri]
     i0, i1, i2 = ci[:, 0], ci[:, 1], ci[:, 2]
     w0, w1, w2 = w[:, 0], w[:, 1], w[:, 2]

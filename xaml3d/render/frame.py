@@ -417,7 +417,7 @@ class FrameStore:
         s = int(ssaa)
         h, w = fb.height // s, fb.width // s
         if accel.active() is not None:
-            from xaml3d.render.frame_kernels import resolve_clear  # numba is loaded already
+            resolve_clear = accel.companion("xaml3d.render.frame_kernels").resolve_clear
 
             rgba = np.empty((h, w, 4), dtype=np.uint8)
             z = np.empty((h, w) if depth else (0, 0))
@@ -471,7 +471,8 @@ def _draw_blocks(fb: Framebuffer, sides: list, s: int, rgba, z, depth, premul) -
     the picture is one colour. The band's buffers (``Framebuffer.blocks``) are small enough to
     stay in the processor's cache from one band to the next, and are left clean; ``fb``'s own
     buffers are not touched."""
-    from xaml3d.render.frame_kernels import draw_blocks, resolve_blocks
+    fk = accel.companion("xaml3d.render.frame_kernels")
+    draw_blocks, resolve_blocks = fk.draw_blocks, fk.resolve_blocks
 
     h, w = rgba.shape[:2]
     band = max(1, min(h, BLOCK_BAND_BYTES // (8 * fb.width * s)))

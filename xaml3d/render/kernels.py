@@ -129,12 +129,12 @@ def raster_chunk(
 
 
 @numba.njit(cache=True, nogil=True)
-def interpolate(planes, indices, tri, w):
+def interpolate(planes, indices, tri, w, out):
     """Vertex attributes at the fragments: out[f, c] = w0 a[i0] + w1 a[i1] + w2 a[i2] with
-    a = planes[c] and (i0, i1, i2) the vertices of triangle tri[f] (``draw.interpolate``)."""
+    a = planes[c] and (i0, i1, i2) the vertices of triangle tri[f] (``draw.interpolate``),
+    written to ``out`` (F, K), which the caller allocates."""
     n = tri.shape[0]
     k = planes.shape[0]
-    out = np.empty((n, k))
     for f in range(n):
         t = tri[f]
         i0 = indices[t, 0]
@@ -145,7 +145,6 @@ def interpolate(planes, indices, tri, w):
         w2 = w[f, 2]
         for c in range(k):
             out[f, c] = w0 * planes[c, i0] + w1 * planes[c, i1] + w2 * planes[c, i2]
-    return out
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
@@ -164,21 +163,20 @@ def _corners(px, py, w, h):
 
 
 @numba.njit(cache=True, nogil=True)
-def bilinear(img, px, py):
+def bilinear(img, px, py, out):
     """Bilinear samples of a premultiplied (H, W, C) image at pixel coordinates (texel centres at
-    half-integers), neighbours beyond the edge clamped to it (``tiles.bilinear``)."""
+    half-integers), neighbours beyond the edge clamped to it (``tiles.bilinear``), written to
+    ``out`` (N, C), which the caller allocates."""
     h = img.shape[0]
     w = img.shape[1]
     k = img.shape[2]
     n = px.shape[0]
-    out = np.empty((n, k))
     for f in range(n):
         xi0, xi1, yi0, yi1, fx, fy = _corners(px[f], py[f], w, h)
         for c in range(k):
             top = img[yi0, xi0, c] * (1.0 - fx) + img[yi0, xi1, c] * fx
             bottom = img[yi1, xi0, c] * (1.0 - fx) + img[yi1, xi1, c] * fx
             out[f, c] = top * (1.0 - fy) + bottom * fy
-    return out
 
 
 # Colour sources of ``shade_rows``: Gouraud vertex colours (K, N) interpolated with the row's
@@ -266,13 +264,13 @@ _image_sample_inline = numba.njit(nogil=True, inline="always", error_model="nump
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
-def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
+def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img, out):
     """The float32 colour (R, 4) of every row (a fragment, or a multisampled (triangle,
-    pixel)): the pass's colour times its brush, in the arithmetic of
+    pixel)), written to ``out``: the pass's colour times its brush, in the arithmetic of
     ``draw.PassShader.__call__`` (Gouraud interpolation, ``sample_brush``, the product, then
-    float32)."""
+    float32). The caller allocates ``out``: a kernel that returns no array loads without
+    numba (``xaml3d.native``)."""
     n = rtri.shape[0]
-    out = np.empty((n, 4), np.float32)
     for r in range(n):
         t = rtri[r]
         i0 = 0
@@ -315,7 +313,6 @@ def shade_rows(rtri, rw, source, colors, indices, uvp, brush, given, lay, img):
         out[r, 1] = np.float32(c1)
         out[r, 2] = np.float32(c2)
         out[r, 3] = np.float32(c3)
-    return out
 
 
 @numba.njit(cache=True, nogil=True)

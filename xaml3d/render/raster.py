@@ -238,17 +238,24 @@ def set_up_side(indices, tris, sx, sy, dv, qv, vin, width: int, height: int):
 
 
 def _set_up_compiled(indices, tris, vx, vy, vz, vq, vin, width, height, persp):
-    from xaml3d.render.setup_kernels import CLIPPED, set_up_triangles  # with the kernels only
-
-    f64 = [np.ascontiguousarray(a, dtype=np.float64) for a in (vx, vy, vz, vq)]
+    sk = accel.companion("xaml3d.render.setup_kernels")  # with the kernels only
+    vx, vy, vz, vq = (np.ascontiguousarray(a, dtype=np.float64) for a in (vx, vy, vz, vq))
     verts = np.ascontiguousarray(indices, dtype=np.int64)
-    out = set_up_triangles(verts, tris, *f64, np.ascontiguousarray(vin, dtype=np.bool_),
-                           int(width), int(height))  # fmt: skip
-    status, A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, src, estimate = out
-    if status == CLIPPED:
+    keep = np.empty(tris.shape[0], dtype=np.uint8)
+    vin = np.ascontiguousarray(vin, dtype=np.bool_)
+    kept = sk.set_up_keep(verts, tris, vx, vy, vin, int(width), int(height), keep)
+    if kept == sk.CLIPPED:
         return NEEDS_CLIPPING
-    if status == 0:
+    if kept == 0:
         return None
+    A, B, C = (np.empty((3, kept), dtype=np.int64) for _ in range(3))
+    i0, i1, j0, j1, src = (np.empty(kept, dtype=np.int64) for _ in range(5))
+    gx, gy, zr, xr, yr, inv_area = (np.empty(kept) for _ in range(6))
+    q = np.empty((kept, 3))
+    estimate = sk.set_up_fill(
+        verts, tris, vx, vy, vz, vq, keep, int(width), int(height),
+        A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, src,
+    )  # fmt: skip
     if not persp:
         q = np.zeros((1, 3))
     return SetUp(src, (A, B, C), (i0, i1, j0, j1), (gx, gy, zr, xr, yr), inv_area, q, persp,

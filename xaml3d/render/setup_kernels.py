@@ -30,49 +30,49 @@ CLIPPED = -1  # status: a triangle has a vertex outside a clip plane
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
-def set_up_triangles(indices, tris, vx, vy, vz, vq, vin, width, height):
-    """Set up the triangles ``tris`` (indices into ``indices`` (M, 3): vertex indices into the
-    per-vertex screen x ``vx``, y ``vy``, depth ``vz`` and 1/w ``vq``), keeping, in order, those
-    that may cover a pixel centre (``raster._snap``: finite and within MAX_COORD, non-zero
-    snapped area, box on the ``width`` x ``height`` grid).
+def set_up_keep(indices, tris, vx, vy, vin, width, height, keep):
+    """First half of the set-up of the triangles ``tris`` (indices into ``indices`` (M, 3):
+    vertex indices into the per-vertex screen x ``vx`` and y ``vy``): which of them may cover
+    a pixel centre (``raster._snap``: finite and within MAX_COORD, non-zero snapped area, box
+    on the ``width`` x ``height`` grid), as 1 or 0 in ``keep`` (len(tris),) uint8. Returns how
+    many are kept, or CLIPPED when a vertex of some triangle is outside a clip plane (``vin``
+    false): such a side needs clipping, which the fragment path does.
 
-    Returns (status, A, B, C (3, K) int64, i0, i1, j0, j1 (K,) int64, gx, gy, zr, xr, yr,
-    inv_area (K,) float64, q (K, 3) float64, src (K,) int64: the entry of ``tris`` each kept
-    triangle is, estimate: half the kept boxes' samples). ``status``: K, or CLIPPED (and
-    empty arrays) when a vertex of some triangle is outside a clip plane (``vin`` false): such
-    a side needs clipping, which the fragment path does."""
+    The set-up is two kernels, so that the caller allocates the arrays of the kept triangles
+    between them: kernels that return no array load without numba (``xaml3d.native``)."""
     tcount = tris.shape[0]
-    keep = np.zeros(tcount, dtype=np.uint8)
     X = np.zeros(3, dtype=np.int64)
     Y = np.zeros(3, dtype=np.int64)
     kept = 0
     for k in range(tcount):
+        keep[k] = 0
         t = tris[k]
         v0 = indices[t, 0]
         v1 = indices[t, 1]
         v2 = indices[t, 2]
         if not (vin[v0] and vin[v1] and vin[v2]):
-            return _clipped()
+            return CLIPPED
         if _snap(vx, vy, v0, v1, v2, X, Y):
             area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0])
             if area != 0 and _box(X, Y, width, height)[4]:
                 keep[k] = 1
                 kept += 1
-    A = np.empty((3, kept), dtype=np.int64)
-    B = np.empty((3, kept), dtype=np.int64)
-    C = np.empty((3, kept), dtype=np.int64)
-    i0 = np.empty(kept, dtype=np.int64)
-    i1 = np.empty(kept, dtype=np.int64)
-    j0 = np.empty(kept, dtype=np.int64)
-    j1 = np.empty(kept, dtype=np.int64)
-    gx = np.empty(kept)
-    gy = np.empty(kept)
-    zr = np.empty(kept)
-    xr = np.empty(kept)
-    yr = np.empty(kept)
-    inv_area = np.empty(kept)
-    q = np.empty((kept, 3))
-    src = np.empty(kept, dtype=np.int64)
+    return kept
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def set_up_fill(
+    indices, tris, vx, vy, vz, vq, keep, width, height,
+    A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, src,
+):  # fmt: skip
+    """Second half: the kept triangles (``set_up_keep``), in order, set up into the caller's
+    arrays of their count K: A, B, C (3, K) int64 edge functions, i0, i1, j0, j1 (K,) int64
+    boxes, gx, gy, zr, xr, yr (K,) depth planes, inv_area (K,), q (K, 3) (1/w at the vertices,
+    from ``vq``; ``vz``: depth), src (K,) the entry of ``tris`` each is. Returns half the
+    kept boxes' samples (the estimate)."""
+    tcount = tris.shape[0]
+    X = np.zeros(3, dtype=np.int64)
+    Y = np.zeros(3, dtype=np.int64)
     z = np.zeros(3)
     estimate = 0.0
     n = 0
@@ -112,15 +112,7 @@ def set_up_triangles(indices, tris, vx, vy, vz, vq, vin, width, height):
         q[n, 2] = vq[v2]
         src[n] = k
         n += 1
-    return kept, A, B, C, i0, i1, j0, j1, gx, gy, zr, xr, yr, inv_area, q, src, 0.5 * estimate
-
-
-@numba.njit(cache=True, nogil=True, inline="always")
-def _clipped():
-    e = np.empty((3, 0), dtype=np.int64)
-    i = np.empty(0, dtype=np.int64)
-    f = np.empty(0)
-    return CLIPPED, e, e, e, i, i, i, i, f, f, f, f, f, f, np.empty((0, 3)), i, 0.0
+    return 0.5 * estimate
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
@@ -186,15 +178,15 @@ def _depth_plane(X, Y, z):
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
-def facing(clip, indices, mirror):
+def facing(clip, indices, mirror, front, back):
     """``draw._facing``: the facing of every triangle of ``indices`` (T, 3) from the
     homogeneous clip coordinates ``clip`` (N, 4), finite: each vertex's (x, y, w) divided by
     its largest magnitude, then the sign of det [x y w] expanded by the first column, the
-    same expressions in the same order. Returns (front, back) (T,) bool: counter-clockwise
-    (clockwise when ``mirror``) and the opposite; edge-on triangles (det 0) are neither."""
+    same expressions in the same order. Writes ``front`` and ``back`` (T,) bool (the caller
+    allocates them: a kernel that returns no array loads without numba, ``xaml3d.native``):
+    counter-clockwise (clockwise when ``mirror``) and the opposite; edge-on triangles (det 0)
+    are neither."""
     t_count = indices.shape[0]
-    front = np.empty(t_count, dtype=np.bool_)
-    back = np.empty(t_count, dtype=np.bool_)
     x = np.empty(3)
     y = np.empty(3)
     w = np.empty(3)
@@ -217,7 +209,6 @@ def facing(clip, indices, mirror):
         )
         front[t] = det < 0.0 if mirror else det > 0.0
         back[t] = det > 0.0 if mirror else det < 0.0
-    return front, back
 
 
 # cached machine code loaded without refreshing numba's registries (``numba_env``)

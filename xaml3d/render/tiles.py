@@ -122,11 +122,14 @@ def bilinear(img: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
     half-integers); neighbours beyond the edge are clamped to the edge texel."""
     kernels = accel.active()
     if kernels is not None:
-        return kernels.bilinear(
+        out = np.empty((px.shape[0], img.shape[2]))
+        kernels.bilinear(
             np.ascontiguousarray(img, dtype=np.float64),
             np.ascontiguousarray(px, dtype=np.float64),
             np.ascontiguousarray(py, dtype=np.float64),
+            out,
         )
+        return out
     h, w = img.shape[:2]
     x = px - 0.5
     y = py - 0.5
