@@ -115,6 +115,11 @@ class _NativeKernel:
 _stand_ins: dict[str, Kernels] = {}
 
 
+def linked() -> bool:
+    """Whether this process has linked native machine code (llvmlite loaded, the engine up)."""
+    return any(k.native_kernels for k in _stand_ins.values())
+
+
 def kernels(name: str) -> Kernels:
     """The stand-in of kernel module ``name`` with whatever native code this machine has for
     it (none: every kernel goes through numba, and is kept as it is used); one per process

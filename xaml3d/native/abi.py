@@ -28,6 +28,13 @@ _ARRAY_HEAD = ("ptr", "ptr", "i64", "i64", "ptr")
 # scalar numba types a kernel may take, with their LLVM argument type and block packing
 _SCALARS = {
     "int64": ("i64", "q"),
+    "uint64": ("i64", "Q"),
+    "int32": ("i32", "i4x"),
+    "uint32": ("i32", "I4x"),
+    "int16": ("i16", "h6x"),
+    "uint16": ("i16", "H6x"),
+    "int8": ("i8", "b7x"),
+    "uint8": ("i8", "B7x"),
     "float64": ("double", "d"),
     "float32": ("float", "f4x"),
     "bool": ("i8", "q"),  # numba passes a boolean as a byte
@@ -125,8 +132,8 @@ def trampoline_ir(symbol: str, native: str, args: list, triple: str, layout: str
         elif t == "float":
             lines.append(f"  %t{k} = trunc i64 %v{k} to i32")
             lines.append(f"  %a{k} = bitcast i32 %t{k} to float")
-        elif t == "i8":
-            lines.append(f"  %a{k} = trunc i64 %v{k} to i8")
+        elif t in ("i32", "i16", "i8"):
+            lines.append(f"  %a{k} = trunc i64 %v{k} to {t}")
         else:  # pragma: no cover - llvm_types makes only the types above
             raise Unsupported(t)
         call.append(f"{t} %a{k}")
@@ -211,6 +218,13 @@ class Signature:
 # int64 here, an int is not a float64 (each would be another compiled version).
 _SCALAR_CHECK = {
     "int64": (int, np.int64),
+    "uint64": (np.uint64,),
+    "int32": (np.int32,),
+    "uint32": (np.uint32,),
+    "int16": (np.int16,),
+    "uint16": (np.uint16,),
+    "int8": (np.int8,),
+    "uint8": (np.uint8,),
     "float64": (float, np.float64),
     "float32": (np.float32,),
     "bool": (bool, np.bool_),

@@ -95,9 +95,8 @@ def _exact_palette(rgba: np.ndarray, limit: int):
     here the palette is the colours in ascending order, so the file's bytes differ from the
     median cut's while every decoded pixel is the same. With numba loaded,
     ``gif_pass.exact_palette`` gives the same indices and palette in two compiled passes."""
-    if _compiled():
-        from xaml3d.output import gif_pass
-
+    gif_pass = _compiled()
+    if gif_pass is not None:
         idx = np.empty(rgba.shape[:2], dtype=np.uint8)
         keys = np.empty(256, dtype=np.int64)
         box = np.empty(4, dtype=np.int64)

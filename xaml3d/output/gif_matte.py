@@ -22,6 +22,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from xaml3d import native
+from xaml3d.numba_env import mode
+
 # Share of a frame's covered pixels that must be translucent inside a surface before the frame
 # counts as translucent: seams between faces can leave a few interior pixels slightly short of
 # full coverage, which GIF's opaque drawing shows correctly anyway.
@@ -116,9 +119,8 @@ def marks_and_clear(rgba: np.ndarray) -> tuple[tuple[bool, bool, bytes, bytes], 
     # (the byte order does not matter: only equality of the words counts).
     words = rgba.view(np.uint32).reshape(-1)
     opaque = np.frombuffer(np.array([0, 0, 0, 255], dtype=np.uint8).tobytes(), np.uint32)[0]
-    if _compiled():
-        from xaml3d.output import gif_pass
-
+    gif_pass = _compiled()
+    if gif_pass is not None:
         drawn = np.empty(alpha.size, dtype=np.uint32)
         alphas = np.empty(alpha.size, dtype=np.uint8)
         strays = np.empty(alpha.size, dtype=np.int64)
@@ -145,13 +147,19 @@ def marks_and_clear(rgba: np.ndarray) -> tuple[tuple[bool, bool, bytes, bytes], 
     return (partial, translucent, seen, rest.digest()), clear
 
 
-def _compiled() -> bool:
-    """Whether ``gif_pass`` may be used (numba already loaded, not refused)."""
+def _compiled():
+    """``gif_pass`` (or its native stand-in, ``xaml3d.native``) when it may be used: compiled
+    code already running in this process (the renderer's kernels of an animation's frames),
+    not refused by ``XAML3D_KERNELS=numpy``; else None."""
+    if mode() == "numpy":
+        return None
+    if native.linked() and native.enabled():
+        return native.kernels("xaml3d.output.gif_pass")
     if "numba" not in sys.modules:  # the common case of a lone GIF: no import at all
-        return False
+        return None
     from xaml3d.output import gif_pass
 
-    return gif_pass.available()
+    return gif_pass if gif_pass.available() else None
 
 
 class MatteWatch:

@@ -115,7 +115,7 @@ def for_set_up(triangles: int):
     m = mode()
     if m == "numpy":
         return None
-    if _kernels is None and "numba" in sys.modules and triangles >= SET_UP_WORTH:
+    if _kernels is None and _compiled_running() and triangles >= SET_UP_WORTH:
         _load(required=m == "numba")
     return _kernels
 
@@ -129,7 +129,14 @@ def companion(name: str):
 
 
 def _worth() -> float:
-    return IMPORTED_WORTH if "numba" in sys.modules else FRAGMENTS_WORTH
+    return IMPORTED_WORTH if _compiled_running() else FRAGMENTS_WORTH
+
+
+def _compiled_running() -> bool:
+    """Whether this process runs compiled code already (numba imported, or native machine code
+    linked, e.g. by the reader's number scanner for a big file): then loading the kernels costs
+    only their own machine code."""
+    return "numba" in sys.modules or native.linked()
 
 
 def _load(required: bool) -> None:

@@ -11,10 +11,13 @@ bit for bit (``tests/test_mesh.py``).
 
 from __future__ import annotations
 
+import sys
+
 import numba
 import numpy as np
 
 from xaml3d.numba_env import load_cached_lightly
+from xaml3d.xaml import number_lists
 
 
 @numba.njit(cache=True, nogil=True)
@@ -33,22 +36,10 @@ def _degenerate(p, tri, out):
         out[t] = not drawn
 
 
-def _read_only(a: np.ndarray) -> np.ndarray:
-    # one machine-code version: numba's cache is keyed on the read-only flag too
-    if a.flags.writeable:
-        a = a.view()
-        a.flags.writeable = False
-    return a
-
-
 def degenerate_faces(positions: np.ndarray, indices: np.ndarray) -> np.ndarray:
-    """(T,) bool, as ``xaml3d.scene.mesh.degenerate_faces``: positions (N, 3) float64, indices
-    (T, 3) int64, every index valid."""
-    p = _read_only(np.ascontiguousarray(positions, dtype=np.float64).reshape(-1, 3))
-    tri = _read_only(np.ascontiguousarray(indices, dtype=np.int64).reshape(-1, 3))
-    out = np.empty(tri.shape[0], dtype=np.bool_)
-    _degenerate(p, tri, out)
-    return out
+    """(T,) bool, as ``xaml3d.scene.mesh.degenerate_faces`` (``number_lists.degenerate_faces``
+    with this module's kernel)."""
+    return number_lists.degenerate_faces(sys.modules[__name__], positions, indices)
 
 
 # cached machine code loaded without refreshing numba's registries (``numba_env``)

@@ -13,9 +13,11 @@ import itertools
 import math
 import re
 from dataclasses import replace
+from functools import partial
 
 import numpy as np
 
+from xaml3d import native
 from xaml3d.errors import GeometryError
 from xaml3d.scene import tracks as K
 from xaml3d.scene import transforms as T
@@ -30,6 +32,7 @@ from xaml3d.scene.types import (
     SpotLight,
     frozen_array,
 )
+from xaml3d.xaml import number_lists
 from xaml3d.xaml import values as V
 from xaml3d.xaml.animation_tracks import built, group_of, node_of
 from xaml3d.xaml.context import element_name
@@ -236,6 +239,8 @@ COMPILED_MESH_MIN = 50_000
 def _compiled_degenerate(positions):
     if positions.shape[0] < COMPILED_MESH_MIN or not V.scanner_loaded():
         return None
+    if native.enabled():  # the same machine code, without numba's import (``xaml3d.native``)
+        return partial(number_lists.degenerate_faces, native.kernels("xaml3d.xaml.mesh_scan"))
     from xaml3d.xaml import mesh_scan
 
     return mesh_scan.degenerate_faces

@@ -19,9 +19,11 @@ import numba
 import numpy as np
 
 from xaml3d.numba_env import load_cached_lightly
+from xaml3d.xaml import number_lists
 
-OK = 0
-BAD = 1  # a grammar or separator error, or an Int32 out of range: the exact path words it
+OK = number_lists.OK
+BAD = number_lists.BAD  # a grammar or separator error, or an Int32 out of range
+MORE = number_lists.MORE  # a buffer is full: the caller grows it and calls again
 
 # 10**0 .. 10**22, all exact doubles (5**22 < 2**53).
 _POW10 = np.array([10.0**k for k in range(23)])
@@ -41,17 +43,21 @@ def _is_sep(c):
 
 
 @numba.njit(cache=True, nogil=True)
-def scan(buf, integer, out, iout, slow):
+def scan(buf, integer, out, iout, slow, state):
     """Convert the number list in ``buf`` (uint8). Doubles go to ``out`` (float64), Int32 values
     to ``iout`` (int64, when ``integer``), tokens needing ``float()`` to ``slow`` (rows of token
-    index, start, end); each is grown by doubling when full.
+    index, start, end). ``state`` (3,) int64 holds (position, values, slow rows) in and out:
+    when a buffer is full before a token, the scan stops with MORE at that token, and the
+    caller (``convert``) gives bigger buffers holding what was written and calls again; the
+    buffers belong to the caller (a kernel that returns no array loads without numba,
+    ``xaml3d.native``).
 
-    Returns (status, count, slow rows used, slow, out, iout)."""
+    Returns OK (``state`` then holds the count of values and of slow rows), BAD or MORE."""
     n = buf.shape[0]
     pow10 = _POW10
-    i = 0
-    count = 0
-    nslow = 0
+    i = state[0]
+    count = state[1]
+    nslow = state[2]
     while True:
         commas = 0
         while i < n:
@@ -59,24 +65,22 @@ def scan(buf, integer, out, iout, slow):
             if c == 44:
                 commas += 1
                 if commas > 1:
-                    return BAD, count, nslow, slow, out, iout
+                    return BAD
             elif not _is_blank(c):
                 break
             i += 1
         if commas > 0 and (i >= n or count == 0):
-            return BAD, count, nslow, slow, out, iout  # trailing or leading comma
+            return BAD  # trailing or leading comma
         if i >= n:
             break
-        # room for one more value: the buffers start at a typical size and double when full
-        if integer:
-            if count == iout.shape[0]:
-                grown_i = np.empty(2 * count + 16, np.int64)
-                grown_i[:count] = iout[:count]
-                iout = grown_i
-        elif count == out.shape[0]:
-            grown_f = np.empty(2 * count + 16)
-            grown_f[:count] = out[:count]
-            out = grown_f
+        # room for one more value (and one slow row): else the caller grows the buffers and
+        # the scan goes on from this token (the separators before it were checked)
+        full = count == iout.shape[0] if integer else count == out.shape[0]
+        if full or (not integer and nslow == slow.shape[0]):
+            state[0] = i
+            state[1] = count
+            state[2] = nslow
+            return MORE
         start = i
         c = buf[i]
         neg = False
@@ -94,33 +98,33 @@ def scan(buf, integer, out, iout, slow):
                 digits += 1
                 i += 1
             if digits == 0 or w > _INT32_LIMIT or (w == _INT32_LIMIT and not neg):
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             if i < n and not _is_sep(buf[i]):
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             iout[count] = -w if neg else w
             count += 1
             continue
         if i < n and buf[i] == 73:  # I: exactly "Infinity"
             if i + 8 > n:
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             word = buf[i : i + 8]
             if not (
                 word[0] == 73 and word[1] == 110 and word[2] == 102 and word[3] == 105
                 and word[4] == 110 and word[5] == 105 and word[6] == 116 and word[7] == 121
             ):  # fmt: skip
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             i += 8
             if i < n and not _is_sep(buf[i]):
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             out[count] = -np.inf if neg else np.inf
             count += 1
             continue
         if not signed and buf[i] == 78:  # N: exactly "NaN"
             if i + 3 > n or buf[i + 1] != 97 or buf[i + 2] != 78:
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             i += 3
             if i < n and not _is_sep(buf[i]):
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             out[count] = np.nan
             count += 1
             continue
@@ -155,7 +159,7 @@ def scan(buf, integer, out, iout, slow):
                     exact = False
                 i += 1
         if digits == 0:
-            return BAD, count, nslow, slow, out, iout
+            return BAD
         if i < n and (buf[i] == 101 or buf[i] == 69):  # e E
             i += 1
             eneg = False
@@ -170,10 +174,10 @@ def scan(buf, integer, out, iout, slow):
                 edigits += 1
                 i += 1
             if edigits == 0:
-                return BAD, count, nslow, slow, out, iout
+                return BAD
             scale += -ex if eneg else ex
         if i < n and not _is_sep(buf[i]):
-            return BAD, count, nslow, slow, out, iout
+            return BAD
         if w == 0 and exact:
             out[count] = -0.0 if neg else 0.0
         elif exact and w <= _TWO53 and -22 <= scale <= 22:
@@ -181,43 +185,23 @@ def scan(buf, integer, out, iout, slow):
             v = v * pow10[scale] if scale >= 0 else v / pow10[-scale]
             out[count] = -v if neg else v
         else:
-            if nslow == slow.shape[0]:
-                grown = np.empty((2 * nslow + 16, 3), np.int64)
-                grown[:nslow] = slow[:nslow]
-                slow = grown
             slow[nslow, 0] = count
             slow[nslow, 1] = start
             slow[nslow, 2] = i
             nslow += 1
             out[count] = 0.0
         count += 1
-    return OK, count, nslow, slow, out, iout
+    state[0] = i
+    state[1] = count
+    state[2] = nslow
+    return OK
 
 
 def convert(raw: bytes, integer: bool) -> np.ndarray | None:
     """The numbers of an ASCII number list (float64, or int64 for Int32 lists), or None when the
-    text breaks a rule (the caller's exact path then words the error)."""
-    buf = np.frombuffer(raw, np.uint8)
-    # A typical number and its separator take 6 bytes or more ("0.25, "); a list of shorter
-    # ones grows the buffer (the worst case, "1 2 3", would need half the text's length).
-    cap = buf.shape[0] // 6 + 16
-    out, iout = np.empty(0), np.empty(0, np.int64)
-    if integer:
-        iout = np.empty(cap, np.int64)
-    else:
-        out = np.empty(cap)
-    status, count, nslow, slow, out, iout = scan(
-        buf, integer, out, iout, np.empty((0, 3), np.int64)
-    )
-    if status != OK or count == 0:
-        return None
-    values = iout if integer else out
-    for k, a, b in slow[:nslow].tolist():  # rare: long mantissas, far exponents
-        values[k] = float(raw[a:b])
-    # The buffer is kept, not copied to its filled length: its unfilled end was never written,
-    # and a fresh big allocation is mapped page by page as it is first written, so it mostly
-    # holds no memory, while a copy would write the 12 MB of half a million points again.
-    return values[:count]
+    text breaks a rule (the caller's exact path then words the error): ``number_lists.convert``
+    with this module's ``scan``."""
+    return number_lists.convert(scan, raw, integer)
 
 
 # cached machine code loaded without refreshing numba's registries (``numba_env``)

@@ -21,15 +21,17 @@ token-by-token path (short strings, and to word the error when a fast path refus
 from __future__ import annotations
 
 import difflib
+import importlib.util
 import math
 import re
 import warnings
 
 import numpy as np
 
-from xaml3d import numba_env
+from xaml3d import native, numba_env
 from xaml3d.codes.values import VALUE_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import ValueSyntaxError
+from xaml3d.xaml import number_lists
 from xaml3d.xaml.colors import CANONICAL_NAMES, NAMED_COLORS, srgb_from_scrgb
 
 INF = math.inf
@@ -179,7 +181,7 @@ def number_array(s: str, what: str, integer: bool = False) -> np.ndarray:
     if len(s) >= _FAST_MIN_LENGTH:
         scanner = _scanner(len(s)) if s.isascii() else None
         if scanner is not None:
-            values = scanner.convert(s.encode("ascii"), integer)
+            values = number_lists.convert(scanner.scan, s.encode("ascii"), integer)
             return _exact(s, what, integer) if values is None else values
         with warnings.catch_warnings():
             # numpy warns (older) or raises (newer) when it cannot read the text to its end.
@@ -223,14 +225,19 @@ def _scanner(length: int):
         if m == "auto" and (_scan_failed or _scan_seen < SCAN_WORTH):
             return None
         numba_env.set_cache_dir()
-        try:
-            from xaml3d.xaml import number_scan
-        except ImportError:
+        if importlib.util.find_spec("numba") is None:
             _scan_failed = True
             if m == "numba":
-                raise
+                raise ImportError("numba is not installed")
             return None
-        _scan_module = number_scan
+        if native.enabled():
+            # the scan's machine code without numba's import when this machine kept it
+            # (``xaml3d.native``); else numba loads it, and it is kept for the next process
+            _scan_module = native.kernels("xaml3d.xaml.number_scan")
+        else:
+            from xaml3d.xaml import number_scan
+
+            _scan_module = number_scan
     return _scan_module
 
 
