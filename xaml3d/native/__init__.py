@@ -20,6 +20,7 @@ manifest, and every other attribute imports the real module (and numba) on first
 from __future__ import annotations
 
 import ctypes
+import functools
 import hashlib
 import importlib
 import importlib.util
@@ -101,15 +102,54 @@ class _NativeKernel:
         for sig, fn in self._versions:
             block = sig.pack(args)
             if block is not None:
-                result = ctypes.create_string_buffer(sig.rsize)
-                status = ctypes.c_int32(0)
-                fn(block, result, ctypes.byref(status))
-                return sig.result_of(status.value, result)
+                return _run(sig, fn, block)
+        return self._through_numba(*args)
+
+    def _through_numba(self, *args):
         if self._numba is None:
-            self._numba = _Remembering(
-                self._owner, self._name, getattr(self._owner.real(), self._name)
-            )
+            dispatcher = getattr(self._owner.real(), self._name)
+            self._numba = _Remembering(self._owner, self._name, dispatcher)
         return self._numba(*args)
+
+    def bind(self, *fixed):
+        """The kernel with its first arguments given once (``bind``): their part of the block
+        is packed at the first call and reused, so a loop calling the kernel with the same
+        arrays and a few changing values (a frame's bands) packs only those."""
+        n = len(fixed)
+        chosen = []
+
+        def call(*rest):
+            if chosen:
+                sig, fn, head, tail = chosen[0]
+                block = tail.pack(rest)
+                if block is not None:
+                    return _run(sig, fn, head + block)
+            else:
+                args = fixed + rest
+                for sig, fn in self._versions:
+                    block = sig.pack(args)
+                    if block is not None:
+                        chosen.append((sig, fn, block[: sig.head_size(n)], sig.tail(n)))
+                        return _run(sig, fn, block)
+            return self._through_numba(*fixed, *rest)
+
+        return call
+
+
+def _run(sig, fn, block: bytes):
+    result = ctypes.create_string_buffer(sig.rsize)
+    status = ctypes.c_int32(0)
+    fn(block, result, ctypes.byref(status))
+    return sig.result_of(status.value, result)
+
+
+def bind(kernel, *fixed):
+    """``kernel`` with its first arguments ``fixed`` (which must not change while the result is
+    used): a native kernel packs them once (``_NativeKernel.bind``); any other callable (numba's
+    dispatcher) is ``functools.partial``."""
+    if isinstance(kernel, _NativeKernel):
+        return kernel.bind(*fixed)
+    return functools.partial(kernel, *fixed)
 
 
 _stand_ins: dict[str, Kernels] = {}

@@ -18,6 +18,7 @@ code, so the caller falls back to numba's own dispatch) and packs them.
 from __future__ import annotations
 
 import struct
+import weakref
 
 import numpy as np
 
@@ -149,25 +150,39 @@ def trampoline_ir(symbol: str, native: str, args: list, triple: str, layout: str
 class Signature:
     """One compiled version of a kernel: checks a call's arguments and packs them."""
 
-    __slots__ = ("args", "result", "fmt", "rfmt", "rsize", "tuple", "_checks")
+    __slots__ = ("args", "result", "fmt", "rfmt", "rsize", "tuple", "_checks", "_formats", "_tails")
 
     def __init__(self, args: list, result: list):
         self.args = args
         self.tuple = result[:1] == ["tuple"]
         self.result = result = result[1:] if self.tuple else result
-        fmt = ["<"]
+        formats = []
         checks = []
         for spec in args:
             if spec[0] == "a":
-                fmt.append("QQqqQ" + "q" * (2 * spec[2]))
+                formats.append("QQqqQ" + "q" * (2 * spec[2]))
                 checks.append((True, (_DTYPES[spec[1]], spec[2], not spec[3])))
             else:
-                fmt.append(_SCALARS[spec[1]][1])
+                formats.append(_SCALARS[spec[1]][1])
                 checks.append((False, _SCALAR_CHECK[spec[1]]))
-        self.fmt = struct.Struct("".join(fmt))
+        self.fmt = struct.Struct("<" + "".join(formats))
         self.rfmt = struct.Struct("<" + "".join(_RESULTS[r] for r in result))
         self.rsize = max(8, self.rfmt.size)
         self._checks = checks
+        self._formats = formats
+        self._tails: dict[int, Signature] = {}
+
+    def head_size(self, n: int) -> int:
+        """Bytes of the block the first ``n`` arguments fill (each fills whole 8-byte slots)."""
+        return struct.calcsize("<" + "".join(self._formats[:n]))
+
+    def tail(self, n: int) -> Signature:
+        """A signature of the arguments from the ``n``-th on: packs a block's end (``bind``)."""
+        found = self._tails.get(n)
+        if found is None:
+            found = Signature(self.args[n:], [])
+            self._tails[n] = found
+        return found
 
     def result_of(self, status: int, buffer) -> object:
         """The kernel's result from its status and result buffer, as numba returns it."""
@@ -188,22 +203,10 @@ class Signature:
         extend = slots.extend
         for (array, check), v in zip(self._checks, values, strict=True):
             if array:
-                if type(v) is not np.ndarray:
+                fields = _array_fields(v, check)
+                if fields is None:
                     return None
-                dtype, ndim, writable = check
-                flags = v.flags
-                if (
-                    v.ndim != ndim
-                    or v.dtype != dtype
-                    or not flags.c_contiguous
-                    or not flags.aligned
-                    or flags.writeable != writable
-                ):
-                    return None
-                # meminfo and parent stay NULL: the kernel only reads and writes the data
-                extend((0, 0, v.size, v.itemsize, v.__array_interface__["data"][0]))
-                extend(v.shape)
-                extend(v.strides)
+                extend(fields)
             else:
                 if type(v) not in check:
                     return None
@@ -212,6 +215,47 @@ class Signature:
             return self.fmt.pack(*slots)
         except (struct.error, OverflowError):  # an int beyond int64: numba types it uint64
             return None
+
+
+# The flattened fields of arrays seen lately, by id, with a weak reference that proves the
+# array is the same object (an id is reused only after its object died, which kills the
+# reference): loops pass the same buffers call after call (a frame's bands, a pass's chunks),
+# and reading an array's fields and flags costs several times the call itself. An array's data
+# pointer cannot move while the array lives (numpy refuses to resize a referenced array); its
+# shape, strides and dtype are compared again on every use.
+_FIELDS: dict[int, tuple] = {}
+_FIELDS_MAX = 512
+
+
+def _array_fields(v, check) -> tuple | None:
+    hit = _FIELDS.get(id(v))
+    if (
+        hit is not None
+        and hit[0]() is v
+        and hit[1] is check
+        and v.shape == hit[2]
+        and v.strides == hit[3]
+        and v.dtype is hit[4]
+    ):
+        return hit[5]
+    if type(v) is not np.ndarray:
+        return None
+    dtype, ndim, writable = check
+    flags = v.flags
+    if (
+        v.ndim != ndim
+        or v.dtype != dtype
+        or not flags.c_contiguous
+        or not flags.aligned
+        or flags.writeable != writable
+    ):
+        return None
+    # meminfo and parent stay NULL: the kernel only reads and writes the data
+    fields = (0, 0, v.size, v.itemsize, v.__array_interface__["data"][0], *v.shape, *v.strides)
+    if len(_FIELDS) >= _FIELDS_MAX:
+        _FIELDS.clear()
+    _FIELDS[id(v)] = (weakref.ref(v), check, v.shape, v.strides, v.dtype, fields)
+    return fields
 
 
 # Python values numba types as each scalar (numba.typeof), by exact type: a bool is not an

@@ -38,6 +38,7 @@ import sys
 
 import numpy as np
 
+from xaml3d import native
 from xaml3d.render import accel
 
 DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = empty
@@ -498,17 +499,19 @@ def _draw_blocks(fb: Framebuffer, sides: list, s: int, rgba, z, depth, premul) -
         source, colors, brush, uvp, lay, img, _additive = args
         geometry = (*st.edges, *st.box, *st.plane, st.inv_area, st.q, st.persp, s, fb.width)
         head = (*geometry, side.mtri, side.indices, source, colors, brush, uvp, lay, img, *buffers)
-        calls.append((side.first_row, side.last_row, head))
+        # the side's arguments packed once for all the bands (``native.bind``)
+        calls.append((side.first_row, side.last_row, native.bind(draw_blocks, *head)))
+    resolve = native.bind(
+        resolve_blocks, color, zbuf, state, pcol, fb.width, s, words, z, depth, premul
+    )
     uniform = True
     for y0 in range(0, h, band):
         y1 = min(y0 + band, h)
         r0, r1 = y0 * s, y1 * s
-        for first_row, last_row, head in calls:
+        for first_row, last_row, draw in calls:
             if r0 <= last_row and r1 > first_row:
-                fb.fragments_drawn += draw_blocks(*head, r0, r1, *scratch)
-        uniform &= resolve_blocks(
-            color, zbuf, state, pcol, fb.width, s, words, z, depth, premul, y0, y1, *sums, _SHIFTS
-        )
+                fb.fragments_drawn += draw(r0, r1, *scratch)
+        uniform &= resolve(y0, y1, *sums, _SHIFTS)
     return uniform
 
 
