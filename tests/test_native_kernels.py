@@ -180,8 +180,13 @@ g = np.empty((3, 4)); k.grid(g)
 # a float32 vector is another compiled version: numba's dispatch takes it
 x32 = np.arange(6, dtype=np.float32); out2 = np.empty(6)
 second = k.axpy(2.0, x32, y, out2, False)
+# the first arguments packed once for a loop; the rest per call
+bound = native.bind(k.axpy, 2.0, x, y)
+loop = [list(bound(np.empty(6), flip)) for flip in (False, True, False)]
+o3 = np.empty(6); bound(o3, True)
 print(json.dumps({"first": list(first), "out": out.tolist(), "grid": g.tolist(),
                   "second": list(second), "out2": out2.tolist(), "SCALE": k.SCALE,
+                  "loop": loop, "o3": o3.tolist(),
                   "native": k.native_kernels, "through_numba": sorted(k.numba_kernels),
                   "numba": "numba" in sys.modules}))
 """
@@ -214,6 +219,7 @@ def test_a_kernel_module_is_kept_then_called_without_numba(tmp_path):
         assert r["first"] == [0, 6] and r["out"] == want_out and r["grid"] == want_grid
         assert r["second"] == [6, 6] and r["out2"] == [2.0 * i + 1.0 for i in range(6)]
         assert r["SCALE"] == 3
+        assert r["loop"] == [[6, 6], [0, 6], [6, 6]] and r["o3"] == want_out
     # a damaged object is not linked (LLVM would stop the process): numba runs that kernel,
     # and keeps it again for the next process
     (folder,) = (tmp_path / "cache" / "native").glob("probe_kernels-*")

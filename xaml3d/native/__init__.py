@@ -155,6 +155,24 @@ def bind(kernel, *fixed):
 _stand_ins: dict[str, Kernels] = {}
 
 
+def kept(name: str) -> bool:
+    """Whether this machine kept native code for kernel module ``name`` (a folder of it in the
+    cache, whatever its key): a cheap hint, no llvmlite import."""
+    found = _kept.get(name)
+    if found is None:
+        from xaml3d.native import store
+
+        try:
+            found = any(store.folder(name, "").parent.glob(f"{name}-*"))
+        except OSError:
+            found = False
+        _kept[name] = found
+    return found
+
+
+_kept: dict[str, bool] = {}
+
+
 def linked() -> bool:
     """Whether this process has linked native machine code (llvmlite loaded, the engine up)."""
     return any(k.native_kernels for k in _stand_ins.values())

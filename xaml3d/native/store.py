@@ -21,7 +21,6 @@ import importlib.util
 import json
 import os
 import sys
-import tempfile
 from pathlib import Path
 
 from xaml3d.numba_env import set_cache_dir
@@ -81,6 +80,8 @@ def read_manifest(where: Path) -> dict | None:
 
 
 def write_atomically(path: Path, data: bytes) -> None:
+    import tempfile  # writers only
+
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name + ".", suffix=".tmp")
     try:

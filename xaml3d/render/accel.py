@@ -44,6 +44,11 @@ TRIANGLES_WORTH = 2_000_000
 # Once numba is imported and running (the reader's number scanner loads it for big files), the
 # kernels cost only their cached machine code, about 0.02 s: far less work pays.
 IMPORTED_WORTH = 500_000
+# When this machine kept the kernels' machine code for native loading (``xaml3d.native``: no
+# numba import, ~0.03 s), a frame pays for them from far less work than numba's start-up
+# needs. The folder's presence is the cheap hint (its key may not match the sources any more:
+# then numba loads them once, and they are kept again).
+NATIVE_WORTH = 1_500_000
 # From this many triangles a side is set up (``raster.set_up``) and a mesh's facing computed by
 # the compiled set-up (``setup_kernels``), the latter as soon as numba is imported: numpy takes
 # about 0.1 s each for a million triangles (gathers, products and sorts of (T, 3) arrays), the
@@ -129,7 +134,11 @@ def companion(name: str):
 
 
 def _worth() -> float:
-    return IMPORTED_WORTH if _compiled_running() else FRAGMENTS_WORTH
+    if _compiled_running():
+        return IMPORTED_WORTH
+    if native.enabled() and native.kept("xaml3d.render.kernels"):
+        return NATIVE_WORTH
+    return FRAGMENTS_WORTH
 
 
 def _compiled_running() -> bool:
