@@ -25,13 +25,19 @@ import hashlib
 import importlib
 import importlib.util
 import os
+import sys
 from pathlib import Path
 
 ENV = "XAML3D_NATIVE"
 
 
 def enabled() -> bool:
-    return os.environ.get(ENV, "1").strip().lower() not in ("0", "no", "off", "false")
+    """Not turned off (``XAML3D_NATIVE=0``) and on a platform this was checked on: Linux on
+    x86-64 (numba links its code with other relocation models and memory managers elsewhere;
+    there the kernels keep numba's own loading)."""
+    if os.environ.get(ENV, "1").strip().lower() in ("0", "no", "off", "false"):
+        return False
+    return sys.platform.startswith("linux") and os.uname().machine.lower() in ("x86_64", "amd64")
 
 
 class Kernels:

@@ -25,6 +25,10 @@ _done: set[tuple[str, str, str]] = set()  # (module, kernel, signature) saved by
 def remember(module, names: list[str]) -> None:
     """Save the compiled versions of ``module``'s kernels ``names`` (numba dispatchers that
     have run in this process) that the manifest does not list yet."""
+    from xaml3d import native
+
+    if not native.enabled():
+        return
     try:
         _remember(module, names)
     except Exception:  # noqa: BLE001 - a cache that cannot be written costs speed, not results
