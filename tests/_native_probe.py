@@ -3,6 +3,7 @@ tests/test_native_kernels.py): per case the SHA-256 of the picture and depth arr
 whether this process imported numba and which kernels it ran natively or through numba.
 
     python tests/_native_probe.py CASE.xaml... > out.json
+    python tests/_native_probe.py --animate SCENE.xaml OUT.gif > out.json
 """
 
 from __future__ import annotations
@@ -20,12 +21,20 @@ def main(paths: list[str]) -> None:
     # reader's number scanner import numba for every list)
     accel.plan(float("inf"), 0)
     drawn = {}
-    for path in paths:
-        for opts in ({}, {"mode": "flat"}, {"ssaa": 2}):
-            r = xaml3d.render_arrays(path, **opts)
-            h = hashlib.sha256(r.rgba.tobytes())
-            h.update(r.depth.tobytes())
-            drawn[f"{path} {sorted(opts.items())}"] = h.hexdigest()
+    if paths[0] == "--animate":  # an animation's frames (frame sessions) and its GIF
+        scene = xaml3d.load(paths[1])
+        frames = []
+        for t, r in xaml3d.render_frames(scene, xaml3d.frame_times(0, 1, 30)):
+            drawn[f"{t:.4f}"] = hashlib.sha256(r.rgba.tobytes()).hexdigest()
+            frames.append(r.rgba)
+        xaml3d.save_animation(frames, paths[2], 1.0)
+    else:
+        for path in paths:
+            for opts in ({}, {"mode": "flat"}, {"ssaa": 2}):
+                r = xaml3d.render_arrays(path, **opts)
+                h = hashlib.sha256(r.rgba.tobytes())
+                h.update(r.depth.tobytes())
+                drawn[f"{path} {sorted(opts.items())}"] = h.hexdigest()
     k = accel.active()
     print(
         json.dumps(

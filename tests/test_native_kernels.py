@@ -289,3 +289,26 @@ def test_reference_cases_draw_the_same_natively_without_numba(tmp_path):
     assert {"draw_pass", "resolve", "blend_rows", "shade_rows"} <= set(native["native"])
     assert native["drawn"] == numba_own["drawn"]
     assert len(numba_own["drawn"]) == 3 * len(_CASES)
+
+
+def test_an_animation_draws_the_same_natively_without_numba(tmp_path):
+    """An animation's frames (frame sessions: colour blocks, resolve passes, facing) and its
+    GIF (the compiled GIF passes) natively, the same frames and bytes as numba's loading."""
+    env = dict(os.environ, XAML3D_KERNELS="auto", PYTHONPATH=str(ROOT))
+    scene = ROOT / "samples" / "spinning-cube.xaml"
+
+    def run(native: str) -> tuple[dict, bytes]:
+        gif = tmp_path / f"spin-{native}.gif"
+        probe = [sys.executable, str(ROOT / "tests" / "_native_probe.py"), "--animate",
+                 str(scene), str(gif)]  # fmt: skip
+        proc = subprocess.run(probe, env=dict(env, XAML3D_NATIVE=native), capture_output=True,
+                              text=True, timeout=600, cwd=tmp_path)  # fmt: skip
+        assert proc.returncode == 0, proc.stderr
+        return json.loads(proc.stdout), gif.read_bytes()
+
+    numba_own, gif0 = run("0")
+    run("1")
+    native, gif1 = run("1")
+    assert not native["numba_imported"], native["through_numba"]
+    assert native["drawn"] == numba_own["drawn"] and len(native["drawn"]) == 30
+    assert gif1 == gif0

@@ -43,11 +43,16 @@ def enabled() -> bool:
 class Kernels:
     """A kernel module's stand-in (see the package's docstring)."""
 
-    def __init__(self, name: str, native: dict | None = None, constants: dict | None = None):
+    def __init__(
+        self, name: str, native: dict | None = None, constants: dict | None = None,
+        kernels: list | None = None,
+    ):  # fmt: skip
         self._name = name
         self._module = None
         self.native_kernels = sorted(native or ())
         self.numba_kernels: set[str] = set()  # the kernels this process ran through numba
+        for kernel in kernels or ():  # known kernels without native code: numba when called
+            setattr(self, kernel, _NativeKernel(self, kernel, []))
         for kernel, versions in (native or {}).items():
             setattr(self, kernel, _NativeKernel(self, kernel, versions))
         for key, value in (constants or {}).items():
@@ -195,20 +200,20 @@ def kernels(name: str) -> Kernels:
         found = Kernels(name)
     else:
         try:
-            native, constants = _load(name)
+            native, constants, names = _load(name)
         except Exception:  # noqa: BLE001 - no native code (no llvmlite, a damaged cache): numba
-            native, constants = {}, {}
-        found = Kernels(name, native, constants)
+            native, constants, names = {}, {}, []
+        found = Kernels(name, native, constants, names)
     _stand_ins[name] = found
     return found
 
 
-def _load(name: str) -> tuple[dict, dict]:
+def _load(name: str) -> tuple[dict, dict, list]:
     from xaml3d.native import abi, engine, store
 
     spec = importlib.util.find_spec(name)
     if spec is None or not spec.origin:
-        return {}, {}
+        return {}, {}, []
     import llvmlite.binding as llvm
 
     k = store.key(
@@ -217,7 +222,7 @@ def _load(name: str) -> tuple[dict, dict]:
     where = store.folder(name, k)
     manifest = store.read_manifest(where)
     if manifest is None:
-        return {}, {}
+        return {}, {}, []
     linked = []
     for kernel, versions in manifest.get("kernels", {}).items():
         for entry in versions:
@@ -234,5 +239,6 @@ def _load(name: str) -> tuple[dict, dict]:
     for kernel, entry in linked:
         fn = engine.function(entry["symbol"])
         native.setdefault(kernel, []).append((abi.Signature(entry["args"], entry["result"]), fn))
-    constants = manifest.get("constants", {}) if native else {}
-    return native, constants
+    if not native:
+        return {}, {}, []
+    return native, manifest.get("constants", {}), manifest.get("dispatchers", [])

@@ -46,6 +46,9 @@ def _remember(module, names: list[str]) -> None:
         "format": store.FORMAT, "module": module.__name__, "kernels": {}, "constants": {},
     }  # fmt: skip
     manifest["constants"] = _constants(module)
+    manifest["dispatchers"] = sorted(
+        name for name, value in vars(module).items() if _is_dispatcher(value)
+    )
     changed = False
     for name in names:
         dispatcher = getattr(module, name, None)
@@ -70,6 +73,10 @@ def _remember(module, names: list[str]) -> None:
     if changed:
         store.write_atomically(where / "manifest.json", json.dumps(manifest, indent=1).encode())
         store.prune(module.__name__, k)
+
+
+def _is_dispatcher(value) -> bool:
+    return hasattr(value, "py_func") and hasattr(value, "signatures")
 
 
 def _intact(where: Path, entry: dict) -> bool:

@@ -25,7 +25,7 @@ from pathlib import Path
 
 from xaml3d.numba_env import set_cache_dir
 
-FORMAT = 2  # of the manifest
+FORMAT = 3  # of the manifest
 
 
 def package_file(package: str, relative: str, extension: bool = False) -> Path:

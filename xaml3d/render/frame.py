@@ -418,8 +418,6 @@ class FrameStore:
         s = int(ssaa)
         h, w = fb.height // s, fb.width // s
         if accel.active() is not None:
-            resolve_clear = accel.companion("xaml3d.render.frame_kernels").resolve_clear
-
             rgba = np.empty((h, w, 4), dtype=np.uint8)
             z = np.empty((h, w) if depth else (0, 0))
             sides, fb.deferred = fb.deferred or [], None
@@ -433,6 +431,7 @@ class FrameStore:
             if _blocks_apply(fb, sides, s):
                 uniform = _draw_blocks(fb, sides, s, rgba, z, depth, premul)
             else:
+                resolve_clear = accel.companion("xaml3d.render.frame_kernels").resolve_clear
                 for y0 in range(0, h, band):
                     y1 = min(y0 + band, h)
                     for side, kernels, args in sides:
