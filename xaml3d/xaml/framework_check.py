@@ -146,8 +146,10 @@ def check_style_property(
     that WPF cannot resolve as a dependency property: ``Owner.Name`` against the owner when it
     has a table, a bare name against the Style's TargetType (none: WPF cannot resolve it)."""
     written = (node.get("Property") or "").strip()
-    if not written or written.startswith("{") or node.get("SourceName") is not None:
+    if not written or written.startswith("{"):
         return
+    if node.get("SourceName") is not None or node.get("TargetName") is not None:
+        return  # resolved on the named element's type, which a Style does not have
     owner, _, name = written.rpartition(".")
     if owner:
         typ = presentation_type(node, owner)

@@ -6,8 +6,9 @@ are CLOSED: a property not listed is reported (with the closest known name as a 
 ``LookDirecton`` says "did you mean LookDirection?"). Framework types (Window, Grid, Button ...)
 are OPEN here: xaml3d walks through them for Viewport3Ds, resources and triggers and reads no
 value kinds for them; their member names are checked against the tables of WPF's class
-hierarchy in framework_members.py (XAML024, framework_check.py). Known-but-unsupported types and properties (VisualBrush content,
-DoubleAnimationUsingPath ...) are reported as such: this table is documentation too.
+hierarchy in framework_members.py (XAML024, framework_check.py). Known-but-unsupported types and
+properties (VisualBrush content, DoubleAnimationUsingPath ...) are reported as such: this table is
+documentation too.
 """
 
 from __future__ import annotations
