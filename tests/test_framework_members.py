@@ -151,13 +151,29 @@ def test_template_bodies_are_not_checked_but_the_template_is():
     body = """<Grid.Resources>
   <ControlTemplate x:Key="t" TargetType="Button" Foo="1">
     <Border Bakground="Red"/>
+    <ControlTemplate.Trigers/>
   </ControlTemplate>
   <DataTemplate x:Key="d"><TextBlock Txt="a"/></DataTemplate>
 </Grid.Resources>"""
     found = _found(body)
     assert [(ln, m.split(";")[0]) for ln, _, m in found] == [
-        (3, "property 'Foo' is not a property of ControlTemplate")
-    ]
+        (3, "property 'Foo' is not a property of ControlTemplate"),
+        (5, "property element <ControlTemplate.Trigers>: 'Trigers' is not a property of "
+            "ControlTemplate (did you mean 'Triggers'?)"),
+    ]  # fmt: skip
+
+
+def test_what_wpf_does_not_read_is_not_checked():
+    extra = (
+        'xmlns:mc="http://schemas.openxmlformats.org/markup-compatibility/2006" '
+        'xmlns:d="http://schemas.microsoft.com/expression/blend/2008" mc:Ignorable="d"'
+    )
+    body = """<d:Designer><TextBlock Foregrund="Red"/></d:Designer>
+<mc:AlternateContent><mc:Choice Requires="d"><TextBlock Foregrund="Red"/></mc:Choice>
+</mc:AlternateContent>
+<Grid.Resources><XmlDataProvider x:Key="x"><x:XData><Item Foregrund="1"/></x:XData>
+</XmlDataProvider></Grid.Resources>"""
+    assert _found(body, extra=extra) == []
 
 
 def _style(setters: str, target: str | None = "Button") -> str:

@@ -28,7 +28,7 @@ from lxml import etree
 
 from xaml3d.xaml import framework_members as fm
 from xaml3d.xaml import vocabulary as voc
-from xaml3d.xaml.context import ReadContext, is_presentation, qname
+from xaml3d.xaml.context import ReadContext, ignorable_namespaces, is_presentation, qname
 from xaml3d.xaml.parser import MC_NS, XAML_NS
 
 CODE = "XAML024"
@@ -52,49 +52,59 @@ def not_a_member(type_name: str, prop: str) -> str | None:
     return f"{prop!r} is not a property of {type_name}{_hint(prop, names)}"
 
 
-def _ignorable(el: etree._Element, inherited: frozenset[str]) -> frozenset[str]:
-    val = el.get(f"{{{MC_NS}}}Ignorable")
-    if not val:
-        return inherited
-    found = {el.nsmap.get(p) for p in val.split()}
-    return inherited | {u for u in found if u}
-
-
 def check_framework(ctx: ReadContext, root: etree._Element) -> None:
     """Report the members WPF cannot resolve on framework elements (module docstring)."""
-    stack = [(root, frozenset())]
-    while stack:
-        el, ignorable = stack.pop()
-        ns, local = qname(el.tag)
-        ignorable = _ignorable(el, ignorable)
-        if el.tag in _UNREAD or (ns is not None and ns in ignorable):
+    # one pass in lxml's walker, what a tag says computed once per tag: a document may hold a
+    # million elements, nearly all of them 3D objects with nothing to check here
+    known: dict[str, tuple[str | None, str, bool]] = {}
+    walk = etree.iterwalk(root, events=("start",))
+    for _, el in walk:
+        tag = el.tag
+        if not isinstance(tag, str):
+            continue  # a comment or processing instruction
+        info = known.get(tag)
+        if info is None:
+            ns, local = qname(tag)
+            info = known[tag] = (ns, local, is_presentation(ns))
+        ns, local, presentation = info
+        if not presentation:
+            if tag in _UNREAD or (ns is not None and ns in ignorable_namespaces(el)):
+                walk.skip_subtree()  # WPF's loader does not read it
             continue
-        if is_presentation(ns) and "." not in local:
-            _check_element(ctx, el, local, ignorable)
-            if local in _TEMPLATES:
-                continue  # the template's own attributes only: its body is built on use
-        stack.extend((k, ignorable) for k in reversed(el) if isinstance(k.tag, str))
+        if "." in local:
+            parent = el.getparent()
+            if parent is not None and isinstance(parent.tag, str):
+                pns, plocal = qname(parent.tag)
+                if is_presentation(pns) and "." not in plocal:
+                    _check_property_element(ctx, el, plocal, local)
+            continue
+        _check_attributes(ctx, el, local)
+        if local in _TEMPLATES:
+            # the template's own members only: its body is built when it is applied
+            for k in el:
+                kns, klocal = qname(k.tag) if isinstance(k.tag, str) else (None, "")
+                if "." in klocal and is_presentation(kns):
+                    _check_property_element(ctx, k, local, klocal)
+            walk.skip_subtree()
 
 
-def _check_element(ctx: ReadContext, el, local: str, ignorable: frozenset[str]) -> None:
+def _check_attributes(ctx: ReadContext, el, local: str) -> None:
     own = fm.members(local)
-    chain = fm.bases(local)
     for key, value in el.attrib.items():
+        if own is None and (key[0] == "{" or "." not in key):
+            continue  # a type without a table: only Owner.Name attributes are checked
         ans, name = qname(key)
         if ans is not None and not is_presentation(ans):
             continue  # x:, xml:, mc:, d: and other namespaces' attributes
-        msg = _member_problem(local, own, chain, name, value)
+        msg = _member_problem(local, own, fm.bases(local), name, value)
         if msg is not None:
             ctx.diag(CODE, f"property {msg}{_REFUSED}", el, attr=key)
-    for k in el:
-        if not isinstance(k.tag, str):
-            continue
-        kns, klocal = qname(k.tag)
-        if not is_presentation(kns) or "." not in klocal or kns in ignorable:
-            continue
-        msg = _member_problem(local, own, chain, klocal, None)
-        if msg is not None:
-            ctx.diag(CODE, f"property element <{klocal}>: {msg}{_REFUSED}", k)
+
+
+def _check_property_element(ctx: ReadContext, el, local: str, written: str) -> None:
+    msg = _member_problem(local, fm.members(local), fm.bases(local), written, None)
+    if msg is not None:
+        ctx.diag(CODE, f"property element <{written}>: {msg}{_REFUSED}", el)
 
 
 def _member_problem(local, own, chain, name: str, value: str | None) -> str | None:

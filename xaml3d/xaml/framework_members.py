@@ -543,6 +543,7 @@ def _names(text: str) -> frozenset[str]:
     return frozenset(out)
 
 
+@functools.cache
 def bases(name: str) -> tuple[str, ...]:
     """``name`` and its base classes that have a table, nearest first (empty when unknown)."""
     out: list[str] = []
