@@ -142,6 +142,21 @@ def test_custom_namespace_elements_are_untouched_but_wpf_elements_inside_are_che
     ]
 
 
+def test_an_owner_of_another_type_on_a_3d_element_is_resolved_once():
+    scene = load(
+        f"""<Grid {NS}><Viewport3D FrameworkElement.Widht="9" Grid.Row="0">
+  <FrameworkElement.Heigth>9</FrameworkElement.Heigth>
+</Viewport3D></Grid>""",
+        text=True,
+    )
+    found = [(d.code, d.line, d.message.split(" (")[0]) for d in scene.diagnostics
+             if d.severity == "error"]  # fmt: skip
+    assert found == [
+        ("XAML024", 1, "property 'Widht' is not a property of FrameworkElement"),
+        ("XAML004", 2, "Viewport3D has no property 'Heigth'"),
+    ]
+
+
 def test_types_without_a_table_keep_the_open_vocabulary():
     # DataGrid, Calendar ... have no table: their members are not checked
     assert _found('<DataGrid Foo="1"/><Calendar Bar="2"/>') == []

@@ -75,7 +75,9 @@ def check_framework(ctx: ReadContext, root: etree._Element) -> None:
             parent = el.getparent()
             if parent is not None and isinstance(parent.tag, str):
                 pns, plocal = qname(parent.tag)
-                if is_presentation(pns) and "." not in plocal:
+                closed = voc.lookup(plocal)
+                # a closed 3D type's property elements are its reader's (XAML004)
+                if is_presentation(pns) and "." not in plocal and (closed is None or closed.open):
                     _check_property_element(ctx, el, plocal, local)
             continue
         _check_attributes(ctx, el, local)
