@@ -246,6 +246,28 @@ def test_trigger_and_condition_properties_are_resolved_like_setters():
     ]
 
 
+def test_a_control_templates_triggers_are_resolved_on_its_target_type():
+    body = """<Grid.Resources><ControlTemplate x:Key="t" TargetType="{x:Type CheckBox}">
+  <Border x:Name="b"/>
+  <ControlTemplate.Triggers>
+    <Trigger Property="IsChecked" Value="True"><Setter Property="Foregound" Value="Red"/>
+      <Setter TargetName="b" Property="Background" Value="Red"/></Trigger>
+    <MultiTrigger><MultiTrigger.Conditions><Condition Property="IsMouseOvr" Value="True"/>
+    </MultiTrigger.Conditions></MultiTrigger>
+  </ControlTemplate.Triggers>
+</ControlTemplate>
+<ControlTemplate x:Key="u"><ControlTemplate.Triggers>
+  <Trigger Property="Anything" Value="1"/></ControlTemplate.Triggers></ControlTemplate>
+</Grid.Resources>"""
+    found = _found(body)
+    assert [(ln, m.split(";")[0]) for ln, _, m in found] == [
+        (5, "Setter Property 'Foregound': 'Foregound' is not a property of CheckBox, the "
+            "ControlTemplate's TargetType (did you mean 'Foreground'?)"),
+        (7, "Condition Property 'IsMouseOvr': 'IsMouseOvr' is not a property of CheckBox, the "
+            "ControlTemplate's TargetType (did you mean 'IsMouseOver'?)"),
+    ]  # fmt: skip
+
+
 def test_setters_of_a_custom_target_type_or_a_named_target_are_not_checked():
     extra = 'xmlns:local="clr-namespace:App.Controls"'
     body = _style('<Setter Property="Needle" Value="1"/>', target="local:Button")

@@ -154,9 +154,10 @@ def presentation_type(node: etree._Element, written: str) -> str | None:
 def check_style_property(
     ctx: ReadContext, style: etree._Element, node: etree._Element, what: str
 ) -> None:
-    """Report a Setter's, Trigger's or Condition's ``Property`` (``node``, inside ``style``)
-    that WPF cannot resolve as a dependency property: ``Owner.Name`` against the owner when it
-    has a table, a bare name against the Style's TargetType (none: WPF cannot resolve it)."""
+    """Report a Setter's, Trigger's or Condition's ``Property`` (``node``, inside ``style``, a
+    Style or a ControlTemplate) that WPF cannot resolve as a dependency property:
+    ``Owner.Name`` against the owner when it has a table, a bare name against the TargetType
+    (a Style without one: WPF cannot resolve it)."""
     written = (node.get("Property") or "").strip()
     if not written or written.startswith("{"):
         return
@@ -179,5 +180,6 @@ def check_style_property(
     typ = presentation_type(style, target)
     msg = not_a_member(typ, name) if typ is not None else None
     if msg is not None:
-        msg = msg.replace(f"of {typ}", f"of {typ}, the Style's TargetType", 1)
+        holder = qname(style.tag)[1]
+        msg = msg.replace(f"of {typ}", f"of {typ}, the {holder}'s TargetType", 1)
         ctx.diag(CODE, f"{what} Property {written!r}: {msg}{_REFUSED}", node, attr="Property")

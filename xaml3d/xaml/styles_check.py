@@ -9,8 +9,9 @@ panels_reader.py).
 - A Setter, Trigger or Condition whose ``Property`` names no dependency property of a 2D
   framework type xaml3d has a table for (the Style's TargetType, or the owner written in
   ``Button.Background``), or a bare name in a Style without TargetType: XAML024
-  (framework_check.py). Styles inside template content are built when the template is applied
-  and are not checked.
+  (framework_check.py). The same for the Triggers of a ControlTemplate with a TargetType (its
+  Triggers are read at load, its content when it is applied). Styles and templates inside
+  template content are built when that template is applied and are not checked.
 """
 
 from __future__ import annotations
@@ -22,7 +23,8 @@ from xaml3d.xaml.resources import Resources, type_name
 
 _SETTER_HOLDERS = {"Style.Setters", "Style.Triggers", "Trigger", "MultiTrigger", "DataTrigger",
                    "MultiDataTrigger", "Trigger.Setters", "MultiTrigger.Setters",
-                   "DataTrigger.Setters", "MultiDataTrigger.Setters"}  # fmt: skip
+                   "DataTrigger.Setters", "MultiDataTrigger.Setters",
+                   "ControlTemplate.Triggers"}  # fmt: skip
 _CONDITION_HOLDERS = {"MultiTrigger.Conditions", "MultiDataTrigger.Conditions"}
 _TEMPLATES = {"ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "HierarchicalDataTemplate", "ItemContainerTemplate"}  # fmt: skip
@@ -42,6 +44,14 @@ def check_styles(ctx: ReadContext, resources: Resources, root) -> None:
         elif not _in_template(style):
             for node, what in _members_named(style):
                 check_style_property(ctx, style, node, what)
+    for template in root.iter("{*}ControlTemplate"):
+        # without a TargetType WPF resolves the names on the template's default type, and only
+        # once its content is read: not checked
+        if (is_presentation(qname(template.tag)[0]) and template.get("TargetType")
+                and not _in_template(template)):  # fmt: skip
+            triggers = [k for k in template if qname(str(k.tag))[1] == "ControlTemplate.Triggers"]
+            for node, what in _members_named(template, triggers):
+                check_style_property(ctx, template, node, what)
 
 
 def _in_template(el) -> bool:
@@ -49,10 +59,11 @@ def _in_template(el) -> bool:
                for up in el.iterancestors())  # fmt: skip
 
 
-def _members_named(style):
-    """The Setters, Triggers and Conditions of a Style, with what they are (not those of
-    nested Styles, nor what a Setter's Value holds)."""
-    stack = [k for k in style if isinstance(k.tag, str)]
+def _members_named(holder, roots=None):
+    """The Setters, Triggers and Conditions of a Style (of ``roots``, its elements to search,
+    when given), with what they are (not those of nested Styles, nor what a Setter's Value
+    holds)."""
+    stack = [k for k in (holder if roots is None else roots) if isinstance(k.tag, str)]
     while stack:
         el = stack.pop()
         if not is_presentation(qname(el.tag)[0]):
