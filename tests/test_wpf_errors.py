@@ -50,6 +50,9 @@ CASES = {
     "camera-in-material-group": ("XAML013", 13, 15, "cannot add the OrthographicCamera"),
     # <Model3D.Transform> on a GeometryModel3D is fine (a base type); Viewport is no type
     "property-element-owner-unknown": ("XAML004", 2, 3, "<Viewport.Camera>"),
+    # the 2D framework types' members are closed too (framework_members.py)
+    "framework-property-misspelt": ("XAML024", 3, 28, "did you mean 'Foreground'?"),
+    "setter-property-misspelt": ("XAML024", 4, 15, "did you mean 'FontWeight'?"),
 }
 NOT_RENDERABLE = {
     "malformed-xml",

@@ -95,4 +95,9 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "ANI003": (INFO, "EasingFunction of a custom type ignored (linear timing used)"),
     "ANI004": (WARNING, "storyboard element of an unexpected kind ignored"),
     "XAML023": (ERROR, "text inside an element whose content is a collection of objects"),
+    "XAML024": (
+        ERROR,
+        "unknown property of a WPF 2D framework type (attribute, property element, Style "
+        "Setter or Trigger Property; closest known name suggested)",
+    ),
 }

@@ -42,6 +42,7 @@ from xaml3d.xaml.context import (
     split_markup,
     x_attr,
 )
+from xaml3d.xaml.framework_check import check_framework
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
@@ -466,6 +467,7 @@ def build_scene(
     check_names(ctx, doc.root)
     check_styles(ctx, resources, doc.root)
     check_content(ctx, doc.root)
+    check_framework(ctx, doc.root)
     walk = _Walk(r)
     walk.visit(doc.root)
     # the storyboards first: the viewports' build notes where what they animate lands

@@ -6,17 +6,28 @@ panels_reader.py).
 - A Setter whose ``Property`` names no property of the Style's ``TargetType``, when that type is
   one whose properties xaml3d lists in full (the 3D types, not the open framework ones): WPF
   cannot resolve the property and refuses the file (XAML004, with the closest name).
+- A Setter, Trigger or Condition whose ``Property`` names no dependency property of a 2D
+  framework type xaml3d has a table for (the Style's TargetType, or the owner written in
+  ``Button.Background``), or a bare name in a Style without TargetType: XAML024
+  (framework_check.py). The same for the Triggers of a ControlTemplate with a TargetType (its
+  Triggers are read at load, its content when it is applied). Styles and templates inside
+  template content are built when that template is applied and are not checked.
 """
 
 from __future__ import annotations
 
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import ReadContext, is_presentation, markup_key, qname, split_markup
+from xaml3d.xaml.framework_check import check_style_property
 from xaml3d.xaml.resources import Resources, type_name
 
 _SETTER_HOLDERS = {"Style.Setters", "Style.Triggers", "Trigger", "MultiTrigger", "DataTrigger",
                    "MultiDataTrigger", "Trigger.Setters", "MultiTrigger.Setters",
-                   "DataTrigger.Setters", "MultiDataTrigger.Setters"}  # fmt: skip
+                   "DataTrigger.Setters", "MultiDataTrigger.Setters",
+                   "ControlTemplate.Triggers"}  # fmt: skip
+_CONDITION_HOLDERS = {"MultiTrigger.Conditions", "MultiDataTrigger.Conditions"}
+_TEMPLATES = {"ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
+              "HierarchicalDataTemplate", "ItemContainerTemplate"}  # fmt: skip
 
 
 def check_styles(ctx: ReadContext, resources: Resources, root) -> None:
@@ -30,6 +41,41 @@ def check_styles(ctx: ReadContext, resources: Resources, root) -> None:
         if etype is not None and not etype.open:
             for setter in _setters(style):
                 _check_setter(ctx, etype, setter)
+        elif not _in_template(style):
+            for node, what in _members_named(style):
+                check_style_property(ctx, style, node, what)
+    for template in root.iter("{*}ControlTemplate"):
+        # without a TargetType WPF resolves the names on the template's default type, and only
+        # once its content is read: not checked
+        if (is_presentation(qname(template.tag)[0]) and template.get("TargetType")
+                and not _in_template(template)):  # fmt: skip
+            triggers = [k for k in template if qname(str(k.tag))[1] == "ControlTemplate.Triggers"]
+            for node, what in _members_named(template, triggers):
+                check_style_property(ctx, template, node, what)
+
+
+def _in_template(el) -> bool:
+    return any(isinstance(up.tag, str) and qname(up.tag)[1] in _TEMPLATES
+               for up in el.iterancestors())  # fmt: skip
+
+
+def _members_named(holder, roots=None):
+    """The Setters, Triggers and Conditions of a Style (of ``roots``, its elements to search,
+    when given), with what they are (not those of nested Styles, nor what a Setter's Value
+    holds)."""
+    stack = [k for k in (holder if roots is None else roots) if isinstance(k.tag, str)]
+    while stack:
+        el = stack.pop()
+        if not is_presentation(qname(el.tag)[0]):
+            continue
+        local = qname(el.tag)[1]
+        if local in ("Setter", "Condition"):
+            yield el, local
+            continue
+        if local == "Trigger":
+            yield el, local
+        if local in _SETTER_HOLDERS or local in _CONDITION_HOLDERS:
+            stack.extend(k for k in el if isinstance(k.tag, str))
 
 
 def _based_on_itself(ctx: ReadContext, resources: Resources, style) -> None:

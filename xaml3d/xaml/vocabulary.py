@@ -4,9 +4,11 @@ Each known type lists its properties and their value kinds, its content property
 supports it, and what kind of object it is. The 3D types, brushes, 2D transforms and animations
 are CLOSED: a property not listed is reported (with the closest known name as a suggestion, so
 ``LookDirecton`` says "did you mean LookDirection?"). Framework types (Window, Grid, Button ...)
-are OPEN: xaml3d only walks through them for Viewport3Ds, resources and triggers, so their many
-properties are not checked. Known-but-unsupported types and properties (VisualBrush content,
-DoubleAnimationUsingPath ...) are reported as such: this table is documentation too.
+are OPEN here: xaml3d walks through them for Viewport3Ds, resources and triggers and reads no
+value kinds for them; their member names are checked against the tables of WPF's class
+hierarchy in framework_members.py (XAML024, framework_check.py). Known-but-unsupported types and
+properties (VisualBrush content, DoubleAnimationUsingPath ...) are reported as such: this table is
+documentation too.
 """
 
 from __future__ import annotations
