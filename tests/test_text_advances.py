@@ -57,3 +57,12 @@ def test_text_width_uses_the_tables_and_keeps_skia_for_odd_sizes():
     assert text_width("Button", 12.0) == skia_width("Button", 12.0, 400, False)
     assert text_width("Button", 0.0) == skia_width("Button", 0.0, 400, False)
     assert text_width("", 12.0) == 0.0
+
+
+def test_font_file_is_ttf_opensans_choice():
+    import ttf_opensans
+
+    for weight in range(-50, 1100, 7):
+        for italic in (False, True):
+            chosen = ttf_opensans.opensans(font_weight=weight, italic=italic)
+            assert font_file(weight, italic) == str(chosen.path), (weight, italic)
