@@ -42,6 +42,7 @@ READING = NEVER | {
     "xaml3d.output.buffers",
     "xaml3d.output.atomic",
     "difflib",  # suggestions for a misspelt name: these scenes have none
+    "json",  # --json only
 }
 NO_TEXT = {"xaml3d.layout.advances", "ttf_opensans", "PIL.ImageFont"}
 
