@@ -44,6 +44,12 @@ def test_a_fine_scan_of_sizes_equals_skia():
         assert advances.measure(path, text, size) == skia_width(text, size, 400, False), size
 
 
+def test_a_size_near_float32s_limit_gives_skias_infinity():
+    path = font_file(400, False)
+    for size in (1e37, 2e38, 3e38):
+        assert advances.measure(path, "Wide", size) == skia_width("Wide", size, 400, False)
+
+
 def test_known_widths():
     # Open Sans Regular: 'H' advances 1511 units of 2048; at 12 px FreeType's 26.6 size is
     # exact, x_scale = FT_DivFix(768, 2048) = 24576, and FT_MulDiv(1511, 24576, 64) = 580224

@@ -104,7 +104,9 @@ def measure(path: str, text: str, size: float) -> float:
     size32 = np.float32(size)
     if size32 > 256:  # skia measures large text on its canonical 64 px strike, then scales
         widths = _linear(units, np.float32(64), tables.units_per_em)
-        return float(np.add.accumulate(widths, dtype=np.float32)[-1] * (size32 / np.float32(64)))
+        total = np.add.accumulate(widths, dtype=np.float32)[-1]
+        with np.errstate(over="ignore"):  # a size near float32's limit: inf, as skia gives
+            return float(total * (size32 / np.float32(64)))
     if size32 < 1:  # FreeType is set to 1 px; skia's matrix scales each advance down
         widths = _linear(units, np.float32(1), tables.units_per_em) * size32
     else:
