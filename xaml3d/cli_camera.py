@@ -9,7 +9,6 @@ Mwind, the world-to-pixel product and WPF's own view and projection matrices (ro
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 
 import click
@@ -328,6 +327,8 @@ def camera_command(
         if lens_info is not None:
             report["lens"] = lens_info
     if as_json:
+        import json  # for --json only
+
         click.echo(json.dumps(report, indent=2))
     else:
         text = _camera_text(vp, cam, pipe, report["points"])

@@ -5,7 +5,6 @@ reader's, the camera checks' and the scene checks' of WPF's first frame)."""
 
 from __future__ import annotations
 
-import json
 import math
 from collections import Counter
 
@@ -240,6 +239,8 @@ def info_command(scene, resources, no_app, window_size, as_json) -> None:
         findings = findings_of(sc, name)
     info = scene_info(sc, name, findings)
     if as_json:
+        import json  # for --json only
+
         click.echo(json.dumps(info, indent=2))
     else:
         click.echo("\n".join(_text(info)))

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import click
 
-from xaml3d.cli_common import same_file
+from xaml3d.cli_common import _resolved, same_file
 from xaml3d.codes.outputs import OUTPUT_CODES  # noqa: F401 (the stage's table)
 from xaml3d.output.animation import ANIMATED_FORMATS, FRAME_FILE
 from xaml3d.output.atomic import Staged, together, write_atomically
@@ -44,13 +44,6 @@ def animation_target(output: str) -> bool:
             "or DIR/ for numbered PNG frames"
         )
     return False
-
-
-def _resolved(path: Path) -> Path:
-    try:
-        return path.resolve()
-    except OSError:
-        return Path(os.path.abspath(path))
 
 
 def overwritten_input(outputs: Iterable[Path], inputs: Iterable[Path]) -> tuple[Path, Path] | None:

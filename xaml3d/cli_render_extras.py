@@ -20,13 +20,12 @@ import numpy as np
 from xaml3d.cli_common import (
     FiniteFloat,
     ProgressLines,
+    _resolved,
     output_path,
     parse_background,
     warn_option,
 )
-from xaml3d.cli_outputs import _resolved
 from xaml3d.errors import INFO, WARNING, Diagnostic, RenderError, XamlError
-from xaml3d.output.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
 from xaml3d.scene.lens import (
     MAX_LENS_SAMPLES,
     STEREO_FRACTION,
@@ -356,6 +355,9 @@ def write_buffers(ex: Extras, result, vp, file: str, surfaces=None) -> list[Diag
     (wireframe mode: its depth buffer holds no surfaces unless hidden lines are removed).
     A render whose camera could not produce an image (drawn anyway under --lenient) has no
     buffers: they are written as WPF's picture is, empty (no distance, no model anywhere)."""
+    # the buffers' encoders (Pillow's PNG) only when asked for: ``camera`` shares these options
+    from xaml3d.output.buffers import depth_npy, depth_png, depth_range, ids_png, write_atomic
+
     notes = []
     if result.distance is None:
         shape = result.depth.shape
@@ -382,6 +384,7 @@ def write_svg(scene, vp, size, settings, target) -> list:
     or '-' for stdout)."""
     # imported here: the SVG writer's XML escaping pulls in urllib.request, http.client and
     # email (about 15-35 ms), which a PNG render does not need
+    from xaml3d.output.buffers import write_atomic
     from xaml3d.render.svg import wireframe_svg
 
     text, diags = wireframe_svg(scene, settings=settings.replace(viewport=vp.index), size=size)

@@ -21,6 +21,7 @@ from PIL import Image
 from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     Sizes,
+    _resolved,
     describe_os_error,
     display_name,
     echo_diagnostics,
@@ -30,7 +31,6 @@ from xaml3d.cli_common import (
     scene_files_read,
     stderr_is_terminal,
 )
-from xaml3d.cli_outputs import _resolved
 from xaml3d.cli_render_extras import (
     Extras,
     Progress,

@@ -9,8 +9,6 @@ they go to stdout (text lines or JSON); a one-line summary goes to stderr.
 
 from __future__ import annotations
 
-import json
-
 import click
 
 from xaml3d.animation.moment import scene_at
@@ -101,6 +99,8 @@ def validate_command(scenes, resources, no_app, fmt, strict, width, height) -> N
         findings.extend(found)
     findings = sort_findings(findings)
     if fmt == "json":
+        import json  # for --json only
+
         click.echo(json.dumps([d.to_dict() for d in findings], indent=2))
     else:
         for d in findings:

@@ -12,6 +12,7 @@ Only file names and numbers live here; ``typeface`` imports skia when text is me
 from __future__ import annotations
 
 import functools
+import os
 
 # Segoe UI's hhea metrics in em units (2048 per em): WPF's FontFamily.LineSpacing is
 # (ascender + descender) / em = 1.33, and the first baseline sits at ascender / em below the top.
@@ -27,11 +28,37 @@ WEIGHTS = {
 }  # fmt: skip
 
 
-def font_file(weight: int = 400, italic: bool = False) -> str:
-    """The Open Sans file nearest ``weight`` (and italic or not)."""
-    import ttf_opensans
+# The files of the ``ttf-opensans`` package, by (weight, italic). They are found in its folder
+# without importing it: its module imports Pillow's ImageFont (with PIL.Image about 10 ms),
+# which a command that only lays text out (``validate`` of a window with a Button) never needs.
+_FILES = {
+    (300, False): "OpenSans-Light", (300, True): "OpenSans-LightItalic",
+    (400, False): "OpenSans-Regular", (400, True): "OpenSans-Italic",
+    (600, False): "OpenSans-SemiBold", (600, True): "OpenSans-SemiBoldItalic",
+    (700, False): "OpenSans-Bold", (700, True): "OpenSans-BoldItalic",
+    (800, False): "OpenSans-ExtraBold", (800, True): "OpenSans-ExtraBoldItalic",
+}  # fmt: skip
 
-    return str(ttf_opensans.opensans(font_weight=int(weight), italic=bool(italic)).path)
+
+@functools.lru_cache(maxsize=64)
+def font_file(weight: int = 400, italic: bool = False) -> str:
+    """The Open Sans file nearest ``weight`` (and italic or not): ``ttf_opensans.opensans``'s
+    choice (the nearest weight, the heavier of two as near)."""
+    weight, italic = int(weight), bool(italic)
+    _, name = min(
+        ((w, n) for (w, i), n in _FILES.items() if i == italic),
+        key=lambda f: (abs(f[0] - weight), f[0] < weight),
+    )
+    import importlib.util
+
+    spec = importlib.util.find_spec("ttf_opensans")
+    for folder in (spec and spec.submodule_search_locations) or ():
+        path = os.path.join(folder, "ttf", name + ".ttf")
+        if os.path.isfile(path):
+            return path
+    import ttf_opensans  # a layout of the package other than this one's
+
+    return str(ttf_opensans.opensans(font_weight=weight, italic=italic).path)
 
 
 @functools.lru_cache(maxsize=16)

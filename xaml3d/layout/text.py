@@ -2,7 +2,9 @@
 
 Widths are the advance widths of the package's font (``xaml3d.fonts``: Open Sans, within a few
 percent of Segoe UI's); the line height and baseline are Segoe UI's, as WPF lays a line out
-(FontFamily.LineSpacing x FontSize). skia is imported on the first measurement only.
+(FontFamily.LineSpacing x FontSize). Widths come from the font's own tables
+(``xaml3d.layout.advances``: skia's numbers without importing skia); skia is imported only for
+an underline's metrics and for a size those tables do not cover (not above 0, or not finite).
 """
 
 from __future__ import annotations
@@ -17,6 +19,11 @@ def text_width(text: str, size: float, weight: int = 400, italic: bool = False) 
     """The advance width (DIPs) of one line of ``text`` at ``size`` px."""
     if not text:
         return 0.0
+    if 0 < size < 3e38:  # finite in float32, as skia holds a size
+        from xaml3d.fonts import font_file
+        from xaml3d.layout.advances import measure
+
+        return measure(font_file(weight, italic), text, size)
     import skia
 
     from xaml3d.fonts import typeface

@@ -15,7 +15,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from PIL import Image
 
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene import tracks as K
@@ -293,6 +292,10 @@ def _load_image(r, source: str, el, attr: str | None) -> tuple[str | None, np.nd
             return str(path), None
         path = alt
     r.ctx.images_used.append(str(path))
+    # Pillow only for a scene that has an image to decode: ``validate``, ``info`` and
+    # ``camera`` of the others never import it (about 10 ms of a process's start)
+    from PIL import Image
+
     try:
         with Image.open(path) as im:
             arr = np.asarray(im.convert("RGBA"), dtype=np.uint8)

@@ -1,32 +1,16 @@
-"""The content size of the 2D controls, as their templates measure it (layout's measure pass).
+"""The panel reader that measures the 2D controls' content (layout's measure pass).
 
-One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
-beside the viewports (``render --window``): text by the package font's advance widths and
-Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
-Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox
-(a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
-and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
-the geometry's render bounds, Stretch). skia is imported only when there is text or a shape
-to measure.
+``MeasuringPanels`` is the reader for the controls inside a visual (VisualBrush,
+Viewport2DVisual3D) and those beside the viewports (``render --window``): what a control's
+template measures is in ``control_content`` (text by the package font's advance widths, the
+Aero2 chrome, the shapes' geometry), and a control that holds content is laid out through its
+template's parts (``templates``, ``date_templates``). Those modules are imported when the first
+control is built: a document of viewports and panels alone never loads them.
 """
 
 from __future__ import annotations
 
-import math
-
 from xaml3d.layout import tree as L
-from xaml3d.layout.text import line_height, text_width
-from xaml3d.xaml import date_templates, templates
-from xaml3d.xaml import values as V
-from xaml3d.xaml.controls_reader import (
-    _COMBO_BUTTON,
-    _OPTION_MARK,
-    _TEXT_BOX_INSET,
-    AERO2,
-    _combo_items,
-    scroll_bar_upright,
-)
-from xaml3d.xaml.inline_text import has_inlines, size_of
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
@@ -35,32 +19,26 @@ from xaml3d.xaml.panels_reader import (
     _turns,
     parse_thickness,
 )
-from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
-from xaml3d.xaml.visual_text import (
-    _font_style,
-    _lines,
-    _text_of,
-    base_format,
-    trim,
-    trimming,
-    wraps,
-)
-
-TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
-                 "CheckBox", "RadioButton"}  # fmt: skip
 
 
 class MeasuringPanels(PanelsReader):
     """The panel reader with the controls' content measured as WPF's templates do, and the
     controls that hold content laid out through their template's parts (``templates``)."""
 
+    built_controls = False  # True once a control was built (``layout_step`` asks)
+
     def build(self, el, font: float = FONT_SIZE):
         n = super().build(el, font)
+        if n is not None and n.kind == L.CONTROL:
+            self.built_controls = True
         if n is not None and n.type == "Separator" and n.kind == L.CONTROL:
             v = ElementValues(self.r, el, self.style_setters(el, n.type))
             n.margin = v.get("Margin", parse_thickness, (0.0, 2.0, 0.0, 2.0))  # Aero2's Style
-        if (n is not None and n.kind == L.CONTROL and not self._in_bar
-                and templates.expands(self, el, n.type)):  # fmt: skip
+        if n is None or n.kind != L.CONTROL or self._in_bar:
+            return n
+        from xaml3d.xaml import date_templates, templates
+
+        if templates.expands(self, el, n.type):
             v = ElementValues(self.r, el, self.style_setters(el, n.type))
             if not _turns(_layout_transform(self.r, v)):
                 font = self.elements[id(n)][1]
@@ -80,60 +58,6 @@ class MeasuringPanels(PanelsReader):
             self._in_bar = False
 
     def content_size(self, n, v, el, font: float):
-        local = n.type
-        if not self._in_bar and templates.expands(self, el, local):
-            return (0.0, 0.0)  # laid out through its template's parts (build)
-        if local == "ScrollBar":  # 17 px across (SystemParameters' scroll bar size)
-            return (17.0, 0.0) if scroll_bar_upright(v) else (0.0, 17.0)
-        if local == "Separator":
-            return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
-        if local in SHAPES:  # measured and arranged as WPF's Shape (shapes_reader)
-            return attach_layout(self.r, v, n, local)
-        if local == "Slider":
-            # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
-            return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
-        if local == "ComboBox":
-            items = [_text_of(k) for k in _combo_items(el)] or [""]
-            widest = max(text_width(t, font, *_font_style(el, self.r)) for t in items)
-            # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
-            return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
-        if local in TEXT_CONTROLS:
-            if local == "TextBlock" and (wraps(v) or trimming(v) != "None"):
-                # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
-                # own Width or MaxWidth, else its parent's room), less its Padding
-                n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
-            return _text_control_size(v, el, local, font)
-        return None
+        from xaml3d.xaml.control_content import content_size
 
-
-def vertical(v) -> bool:
-    return v.get("Orientation", lambda s: V.parse_enum(s, ("Horizontal", "Vertical")),
-                 "Horizontal") == "Vertical"  # fmt: skip
-
-
-def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
-    """(width, height) of a text control's content and chrome; a wrapping TextBlock's lines
-    broken to ``room`` less its Padding."""
-    pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
-    inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
-    block = local == "TextBlock"
-    if block and has_inlines(el):  # runs in their own fonts, LineBreaks (inline_text)
-        w, h = size_of(v.r, el, base_format(v.r, el, font), inner if wraps(v) else math.inf)
-        return w + pad[0] + pad[2], max(h, line_height(font)) + pad[1] + pad[3]
-    text = _text_of(el)
-    weight, italic = _font_style(el, v.r)
-    lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf)
-    if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
-        mode = trimming(v)
-        lines = [trim(t, font, weight, italic, inner, mode) for t in lines]
-    w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
-    h = line_height(font) * max(1, len(lines))
-    border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
-    if local in ("CheckBox", "RadioButton"):
-        # the mark, then the content with Aero2's Padding 4,-1,0,0
-        return _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
-    w += pad[0] + pad[2] + 2 * border
-    h += pad[1] + pad[3] + 2 * border
-    if local == "TextBox":
-        w += 2 * _TEXT_BOX_INSET
-    return w, h
+        return content_size(self, n, v, el, font)

@@ -1,5 +1,5 @@
 """A TextBlock's inlines as WPF lays them out: Run, Span, Bold, Italic, Underline, Hyperlink and
-LineBreak (visuals_reader, control_sizes; the TextBlock step of the 2D layer).
+LineBreak (visuals_reader, control_content; the TextBlock step of the 2D layer).
 
 Each inline takes its own FontWeight, FontStyle, FontSize, Foreground and TextDecorations
 (Underline) over those it inherits; Bold, Italic and Underline set theirs, a Hyperlink draws

@@ -19,7 +19,7 @@ from xaml3d.layout.transform import placed_by_layout
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
 from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout, own_unit
 from xaml3d.scene.drawing import Around, Layer2D
-from xaml3d.xaml.panels_reader import ElementValues, parse_length, read_layout
+from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
 DEFAULT_SIZE = (640.0, 480.0)
 _PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM)
@@ -113,16 +113,17 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
     # the controls beside the viewports are measured as those inside visuals are
     from xaml3d.xaml.control_sizes import MeasuringPanels
 
-    root, nodes, elements = (
-        read_layout(r, root_el, viewport_elements, MeasuringPanels)
-        if viewport_elements
-        else (None, {}, {})
-    )
+    reader = MeasuringPanels(r, viewport_elements) if viewport_elements else None
+    root = reader.build(root_el) if reader is not None else None
+    nodes, elements = (reader.viewports, reader.elements) if reader is not None else ({}, {})
     result = layout(root, window_size) if root is not None else None
-    if result is not None:
+    if result is not None and reader.built_controls:
+        # only controls get drawings (and only their templates make the parts drawn after
+        # layout): viewports and panels alone need none of the 2D visual readers
         from xaml3d.xaml.visuals_reader import attach_control_drawings
 
         attach_control_drawings(r, root, elements)
+    if result is not None:
         # a VisualBrush bound to an element of the window draws it at its laid-out size
         r.laid_out_sizes = {
             id(el): n.ink

@@ -525,7 +525,7 @@ class PanelsReader:
     def content_size(self, n: L.Node, v: ElementValues, el, font: float):
         """A control's content size as its template measures it, None when it is not known
         (the documented estimate then stands in). The 2D layer's reader measures text and
-        shapes (``control_sizes``); this plain reader knows none."""
+        shapes (``control_content``); this plain reader knows none."""
         return None
 
     def _estimated_size(self, n: L.Node, v: ElementValues, el, font: float):

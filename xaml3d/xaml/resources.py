@@ -15,10 +15,8 @@ them: a reference inside an App.xaml entry resolves from App.xaml's tree.
 
 from __future__ import annotations
 
-import difflib
 import os
 import re
-import shlex
 from dataclasses import replace
 from pathlib import Path
 
@@ -456,6 +454,8 @@ class Resources:
             msg = f"DynamicResource {key!r} not found: the property keeps its default"
             self.ctx.diag("RES010", msg, from_el, attr=attr)
         else:
+            import difflib  # only for a key not found: a scene without one never needs it
+
             near = difflib.get_close_matches(key, sorted(self._keys_in_scope(from_el)), 1, 0.8)
             hint = f" (did you mean {near[0]}?)" if near else ""
             # a near key in scope is the likelier cause than an application resource
@@ -610,6 +610,8 @@ def typable_path(path: Path) -> str:
         relative = os.path.relpath(absolute)
     except ValueError:  # another drive (Windows): no relative path
         relative = absolute
+    import shlex  # only for this message
+
     return shlex.quote(relative if len(relative) <= len(absolute) else absolute)
 
 

@@ -20,7 +20,6 @@ token-by-token path (short strings, and to word the error when a fast path refus
 
 from __future__ import annotations
 
-import difflib
 import importlib.util
 import math
 import re
@@ -477,6 +476,8 @@ def parse_color(s: str) -> tuple[float, float, float, float]:
         return (r, g, b, a)
     argb = NAMED_COLORS.get(t.lower())
     if argb is None:
+        import difflib  # only for a colour that is not one: the rest never need it
+
         near = difflib.get_close_matches(t.lower(), list(NAMED_COLORS), n=1, cutoff=0.75)
         hint = f" (did you mean {CANONICAL_NAMES[near[0]]}?)" if near else ""
         raise _color_fail(

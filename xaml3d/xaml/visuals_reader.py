@@ -2,7 +2,7 @@
 
 WPF renders a UIElement by playing the drawing its OnRender produces, children over parents.
 xaml3d does the same ahead of time: the visual's panels are read by ``panels_reader`` (text
-measured with the package's font, shapes by their geometry: ``control_sizes``; the controls
+measured with the package's font, shapes by their geometry: ``control_content``; the controls
 that hold content built as their template's parts: ``templates``), laid out by
 ``xaml3d.layout`` as WPF lays out a brush's visual (measured with infinite room, arranged at
 its desired size), and each element becomes the drawing WPF's would: panel and Border
@@ -40,7 +40,8 @@ from xaml3d.xaml import templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import image_source, load_image
 from xaml3d.xaml.context import qname
-from xaml3d.xaml.control_sizes import SHAPES, TEXT_CONTROLS, MeasuringPanels
+from xaml3d.xaml.control_content import TEXT_CONTROLS
+from xaml3d.xaml.control_sizes import MeasuringPanels
 from xaml3d.xaml.controls_reader import (
     AERO2,
     _combo_box,
@@ -56,7 +57,7 @@ from xaml3d.xaml.panels_reader import (
     parse_thickness,
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
-from xaml3d.xaml.shapes_reader import shape_drawing
+from xaml3d.xaml.shapes_reader import SHAPES, shape_drawing
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,

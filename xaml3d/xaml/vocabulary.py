@@ -13,7 +13,6 @@ documentation too.
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass
 
 from xaml3d.codes.reader import READER_CODES  # noqa: F401 (the stage's table)
@@ -326,6 +325,8 @@ def suggest(name: str, candidates) -> str | None:
     by_lower: dict[str, str] = {}
     for c in candidates:
         by_lower.setdefault(c.lower(), c)
+    import difflib  # only for a misspelt name: a scene without one never needs it
+
     found = difflib.get_close_matches(name.lower(), list(by_lower), n=1, cutoff=0.75)
     return by_lower[found[0]] if found else None
 
