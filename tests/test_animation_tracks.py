@@ -405,3 +405,43 @@ def test_decoded_images_are_reused_by_frames(tmp_path):
     for t in (0.25, 0.5):
         brush = xaml3d.scene_at(s, t).viewports[0].models[0].material[0].brush
         assert brush.opacity == 1.0 - t and brush.image is loaded.image
+
+
+def test_brushes_inside_a_drawing_brush_animate():
+    # a DrawingBrush is drawn again in every frame: the fill and pen brushes of its drawings
+    # are tracks as a material's own brush is (WPF animates them), not ANIM014
+    body = """<ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+      <AmbientLight Color="White"/>
+      <GeometryModel3D><GeometryModel3D.Geometry><MeshGeometry3D TriangleIndices="0 1 2 0 2 3"
+          Positions="-8,-8,0 8,-8,0 8,8,0 -8,8,0" TextureCoordinates="0,1 1,1 1,0 0,0"/>
+        </GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><DiffuseMaterial><DiffuseMaterial.Brush><DrawingBrush><DrawingBrush.Drawing><DrawingGroup>
+          <GeometryDrawing><GeometryDrawing.Brush><LinearGradientBrush EndPoint="1,0">
+              <GradientStop Color="Red" Offset="0"/>
+              <GradientStop x:Name="stop" Color="Red" Offset="1"/></LinearGradientBrush>
+            </GeometryDrawing.Brush>
+            <GeometryDrawing.Geometry><RectangleGeometry Rect="0,0,1,1"/>
+            </GeometryDrawing.Geometry></GeometryDrawing>
+          <GeometryDrawing><GeometryDrawing.Pen><Pen Thickness="0.01">
+              <Pen.Brush><SolidColorBrush x:Name="ink" Color="Black"/></Pen.Brush></Pen>
+            </GeometryDrawing.Pen>
+            <GeometryDrawing.Geometry><LineGeometry StartPoint="0,0.5" EndPoint="1,0.5"/>
+            </GeometryDrawing.Geometry></GeometryDrawing>
+        </DrawingGroup></DrawingBrush.Drawing></DrawingBrush>
+      </DiffuseMaterial.Brush></DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>"""
+    anims = (hold("stop", "Color", "#0000FF", "Color")
+             + hold("ink", "Color", "#00FF00", "Color"))  # fmt: skip
+    s = xaml3d.load(scene(body, anims), text=True)
+    assert not [d for d in s.diagnostics if d.code.startswith("ANIM")]
+    drawing = xaml3d.scene_at(s, 0.1).viewports[0].models[0].material[0].brush.drawing
+    fill, line = drawing.children
+    assert fill.brush.stops[1].color == (0.0, 0.0, 1.0, 1.0)
+    assert line.pen.brush.color == (0.0, 1.0, 0.0, 1.0)
+    base = s.viewports[0].models[0].material[0].brush.drawing
+    assert base.children[0].brush.stops[1].color == (1.0, 0.0, 0.0, 1.0)
+    # the picture follows: the quad's right edge is blue at t, red as loaded
+    img = np.asarray(xaml3d.render(s, time=0.1))
+    loaded = np.asarray(xaml3d.render(s, time=None))
+    assert img[24, 39, 2] > 200 and img[24, 39, 0] < 60
+    assert loaded[24, 39, 0] > 200 and loaded[24, 39, 2] < 60

@@ -100,3 +100,40 @@ def test_passes_rasterized_again_draw_the_same(monkeypatch):
         again = render_arrays(scene)
         monkeypatch.undo()
         assert np.array_equal(kept.rgba, again.rgba) and np.array_equal(kept.depth, again.depth)
+
+
+@pytest.mark.parametrize(
+    "brush",
+    [
+        '<ImageBrush ImageSource="blue.png"/>',
+        '<DrawingBrush><DrawingBrush.Drawing><GeometryDrawing Brush="#000080">'
+        '<GeometryDrawing.Geometry><RectangleGeometry Rect="0,0,8,8"/>'
+        "</GeometryDrawing.Geometry></GeometryDrawing></DrawingBrush.Drawing></DrawingBrush>",
+    ],
+)
+def test_a_brush_extends_its_edge_texels_at_multisampled_edges(tmp_path, brush):
+    # Two quads meeting at x = 0.3 (between pixel centres), each with the whole of one opaque
+    # brush (TileMode None). A pixel of the shared edge is shaded at its centre, outside one of
+    # the two triangles: the texture coordinates there leave the mesh's box by a fraction of a
+    # pixel. WPF samples the brush with Extend addressing (its edge texels continue), so the
+    # edge is as opaque and blue as the rest; the transparency beyond the tile made a light seam.
+    from PIL import Image
+
+    Image.new("RGB", (8, 8), (0, 0, 128)).save(tmp_path / "blue.png")
+    quad = """<GeometryModel3D><GeometryModel3D.Geometry><MeshGeometry3D Positions="{x0},-10,0
+        {x1},-10,0 {x1},10,0 {x0},10,0" TextureCoordinates="0,1 1,1 1,0 0,0"
+        TriangleIndices="0 1 2 0 2 3"/></GeometryModel3D.Geometry>
+      <GeometryModel3D.Material><DiffuseMaterial><DiffuseMaterial.Brush>{brush}
+        </DiffuseMaterial.Brush></DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>"""
+    path = tmp_path / "seam.xaml"
+    path.write_text(f"""<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+  Width="64" Height="48">
+  <Viewport3D.Camera><OrthographicCamera Position="0,0,10" LookDirection="0,0,-1" Width="64"/>
+  </Viewport3D.Camera>
+  <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>
+    {quad.format(x0=-20.3, x1=0.3, brush=brush)}{quad.format(x0=0.3, x1=20.3, brush=brush)}
+  </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+</Viewport3D>""")
+    rgba = render_arrays(load(path)).rgba
+    inside = rgba[16:32, 13:52]  # rows y -8..8, columns x -19..20: away from the outer edges
+    assert (inside == [0, 0, 128, 255]).all()

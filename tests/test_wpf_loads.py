@@ -347,3 +347,53 @@ def test_a_styles_font_weight_and_style_are_measured_and_drawn(tmp_path):
     assert (inherited.weight, inherited.italic) == (700, False)  # from the Button's Style
     # the Label starts where the TextBlock ends: the TextBlock measured in bold italic
     assert after_x == pytest.approx(text_width("Bold italic", 12.0, 700, True))
+
+
+def test_markup_extensions_written_as_elements_are_their_attribute_form():
+    # <PerspectiveCamera.Position><MultiBinding .../></PerspectiveCamera.Position>: XAML calls
+    # the extension's ProvideValue as for Position="{MultiBinding}"; it was XAML013 "expected a
+    # value" (an error, the render refused), and "<Binding> is not a Material"
+    scene = load(
+        f"""<Viewport3D {NS} xmlns:sys="clr-namespace:System;assembly=mscorlib" Width="64"
+    Height="48">
+  <Viewport3D.Resources>
+    <sys:Double x:Key="fov">60</sys:Double>
+    <Point3D x:Key="look">0,0,-1</Point3D>
+  </Viewport3D.Resources>
+  <Viewport3D.Camera>
+    <PerspectiveCamera>
+      <PerspectiveCamera.Position>
+        <MultiBinding><Binding Path="X"/><Binding Path="Y"/></MultiBinding>
+      </PerspectiveCamera.Position>
+      <PerspectiveCamera.LookDirection><StaticResource ResourceKey="look"/>
+      </PerspectiveCamera.LookDirection>
+      <PerspectiveCamera.FieldOfView><DynamicResource ResourceKey="fov"/>
+      </PerspectiveCamera.FieldOfView>
+      <PerspectiveCamera.NearPlaneDistance><x:Static Member="Limits.Near"/>
+      </PerspectiveCamera.NearPlaneDistance>
+    </PerspectiveCamera>
+  </Viewport3D.Camera>
+  <ModelVisual3D>
+    <ModelVisual3D.Transform><Binding Path="T"/></ModelVisual3D.Transform>
+    <ModelVisual3D.Content>
+      <GeometryModel3D>
+        <GeometryModel3D.Geometry><MeshGeometry3D Positions="0,0,-5 1,0,-5 0,1,-5"
+            TriangleIndices="0 1 2"/></GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><DiffuseMaterial Brush="Red"/></GeometryModel3D.Material>
+        <GeometryModel3D.BackMaterial><x:Null/></GeometryModel3D.BackMaterial>
+      </GeometryModel3D>
+    </ModelVisual3D.Content>
+  </ModelVisual3D>
+</Viewport3D>""",
+        text=True,
+    )
+    assert _errors(scene) == []
+    cam = scene.viewports[0].camera
+    assert cam.position == (0.0, 0.0, 0.0)  # the bindings' defaults
+    assert cam.look_direction == (0.0, 0.0, -1.0) and cam.field_of_view == 60.0
+    assert cam.near_plane_distance == 0.125
+    found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code in
+             ("XAML009", "XAML010")]  # fmt: skip
+    # each said once, where its element is
+    assert found == [("XAML009", 10, 9), ("XAML010", 16, 44), ("XAML009", 21, 30)]
+    assert scene.viewports[0].models[0].back_material == ()

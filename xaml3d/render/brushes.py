@@ -32,6 +32,7 @@ from xaml3d.render.tiles import (
     Bounds,
     bilinear,
     brush_to_texture_matrix,
+    edge_mode,
     inverse_map,
     place_tile,
     tile_fraction,
@@ -208,6 +209,7 @@ def premultiplied_image(image: np.ndarray) -> np.ndarray:
 
 # TileMode codes of ``image_layout`` (and of the compiled kernel, ``kernels.shade_rows``).
 TILE_CODES = {"None": 0, "Tile": 1, "FlipX": 2, "FlipY": 3, "FlipXY": 4}
+_TILE_NAMES = {v: k for k, v in TILE_CODES.items()}
 # Layout vector of ``image_layout``: the inverse brush map (a, b, c; d, e, f), the viewport
 # (x, y, w, h), the viewbox origin (x, y), the stretch scales (sx, sy), the content origin
 # (ox, oy), the image size (w, h), the opacity and the TileMode code.
@@ -232,16 +234,19 @@ def image_layout(brush: ImageBrush, bounds: Bounds) -> np.ndarray | None:
     if not np.isfinite(det) or abs(det) < 1e-300:
         return None
     inv = np.linalg.inv(matrix)
+    # TileMode None just beyond the mesh's box: WPF's Extend addressing (``edge_mode``)
+    code = TILE_CODES.get(edge_mode(brush.tile_mode, matrix, bounds, (vpx, vpy, vpw, vph)), 0)
     return np.array(
         [*inv[0], *inv[1], vpx, vpy, vpw, vph, vbx, vby, sx, sy, ox, oy, float(w), float(h),
-         float(brush.opacity), float(TILE_CODES.get(brush.tile_mode, 0))]
+         float(brush.opacity), float(code)]
     )  # fmt: skip
 
 
 def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarray:
     """The image brush at ``uv``: TileMode None leaves everything outside the tile
-    transparent; inside the tile, points outside the image (Uniform letterboxing) are
-    transparent too. Opacity is NOT applied (``sample_brush`` does)."""
+    transparent (except just beyond the mesh's box when the tile covers it: ``image_layout``);
+    inside the tile, points outside the image (Uniform letterboxing) are transparent too.
+    Opacity is NOT applied (``sample_brush`` does)."""
     m = uv.shape[0]
     out = np.zeros((m, 4))
     lay = image_layout(brush, bounds)
@@ -251,7 +256,7 @@ def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarr
     # inverse_map's arithmetic, with the matrix already inverted
     qx = uv[:, 0] * a + uv[:, 1] * b + c
     qy = uv[:, 0] * d + uv[:, 1] * e + f
-    mode = brush.tile_mode
+    mode = _TILE_NAMES[int(lay[19])]
     fx, in_x = tile_fraction((qx - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
     fy, in_y = tile_fraction((qy - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     px = vbx + (vpx + fx * vpw - ox) / sx

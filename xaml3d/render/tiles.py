@@ -106,6 +106,31 @@ def inverse_map(matrix: np.ndarray, uv: np.ndarray) -> np.ndarray | None:
     return q
 
 
+def edge_mode(mode: str, matrix: np.ndarray, bounds: Bounds, viewport) -> str:
+    """The TileMode a brush is sampled with. WPF samples a TileMode None brush with its edge
+    texels extended (Extend addressing): where multisampling shades an edge pixel at a centre
+    just outside its triangle, the texture coordinates leave the mesh's box by less than a pixel
+    and take the edge's colour, not the transparency beyond the tile (a light seam along every
+    textured edge and silhouette). When the tile (``viewport``, brush space) covers the whole
+    box, it is mirrored there instead (FlipXY: the same texels, nearest first); inside the box
+    nothing changes. ``matrix`` takes brush space into texture space."""
+    if mode != "None":
+        return mode
+    (x0, y0), (x1, y1) = (np.asarray(b, dtype=np.float64) for b in bounds)
+    q = inverse_map(matrix, np.array([[x0, y0], [x1, y0], [x0, y1], [x1, y1]]))
+    if q is None:
+        return mode
+    vpx, vpy, vpw, vph = viewport
+    tol = 1e-9 * max(abs(vpw), abs(vph), 1.0)
+    inside = (
+        (q[:, 0] >= vpx - tol)
+        & (q[:, 0] <= vpx + vpw + tol)
+        & (q[:, 1] >= vpy - tol)
+        & (q[:, 1] <= vpy + vph + tol)
+    )
+    return "FlipXY" if bool(inside.all()) else mode
+
+
 def tile_fraction(local: np.ndarray, mode: str, flip: bool) -> tuple[np.ndarray, np.ndarray]:
     """Position inside the tile (0..1) and whether the point is drawn at all."""
     if mode == "None":

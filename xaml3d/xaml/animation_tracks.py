@@ -246,6 +246,23 @@ def tracks(res: Resolution, viewports: tuple[Viewport, ...], layout=None) -> Tra
         visit(brush, vi, steps)
         for si, stop in enumerate(getattr(brush, "stops", ())):
             visit(stop, vi, (*steps, ("stops", si)))
+        # a DrawingBrush (or a VisualBrush turned into a drawing) is drawn again in every
+        # frame, so the brushes its drawing paints with animate as WPF animates them
+        if getattr(brush, "drawing", None) is not None:
+            visit_drawing(brush.drawing, vi, (*steps, ("drawing", None)))
+
+    def visit_drawing(drawing, vi: int, steps: tuple) -> None:
+        visit(drawing, vi, steps)
+        for ci, child in enumerate(getattr(drawing, "children", ())):
+            visit_drawing(child, vi, (*steps, ("children", ci)))
+        for side in ("brush", "opacity_mask"):
+            if getattr(drawing, side, None) is not None:
+                visit_brush(getattr(drawing, side), vi, (*steps, (side, None)))
+        pen = getattr(drawing, "pen", None)
+        if pen is not None:
+            visit(pen, vi, (*steps, ("pen", None)))
+            if pen.brush is not None:
+                visit_brush(pen.brush, vi, (*steps, ("pen", None), ("brush", None)))
 
     for vi, vp in enumerate(viewports):
         if vp.camera is not None:

@@ -58,6 +58,8 @@ class Props:
         self.elem_text: dict[str, str] = {}
         self.prop_el: dict[str, etree._Element] = {}
         self.content: list[etree._Element] = []
+        # property -> the markup extension element that gave its attrs entry (<Binding/>)
+        self.ext_el: dict[str, etree._Element] = {}
         self.text = (el.text or "").strip()
         # properties whose value WPF's loader refuses: an error was reported while reading it
         # and the default stands in. The scene objects carry them, so that the checks do not
@@ -181,6 +183,14 @@ class Props:
                     )
                     del self.attrs[prop]
                 kids = [k for k in child if isinstance(k.tag, str)]
+                ext = _extension_text(kids[0]) if len(kids) == 1 else None
+                if ext is not None:
+                    # a markup extension written as an element (<Binding Path="P"/>,
+                    # <x:Null/>) is the attribute form's value: XAML calls its ProvideValue
+                    self.attrs[prop] = ext
+                    self.ext_el[prop] = kids[0]
+                    self.prop_el[prop] = child
+                    continue
                 self.elems.setdefault(prop, []).extend(kids)
                 self.prop_el[prop] = child
                 if not kids and (child.text or "").strip():
@@ -212,14 +222,15 @@ class Props:
         name, args = m
         ctx = self.r.ctx
         attr = self.attr_keys.get(prop)
+        at = self.ext_el.get(prop, self.el)
         if name == "Null":
             return ("null", None)
         if name in ("StaticResource", "DynamicResource"):
             key = markup_key(args)
             dynamic = name == "DynamicResource"
-            entry = self.r.resources.lookup(key, self.el, dynamic=dynamic, attr=attr)
+            entry = self.r.resources.lookup(key, at, dynamic=dynamic, attr=attr)
             return ("element", entry) if entry is not None else ("default", None)
-        if name == "Binding":
+        if name in ("Binding", "MultiBinding", "PriorityBinding"):
             code = "XAML009"
         elif name == "Static":
             code = "XAML010"
@@ -230,7 +241,7 @@ class Props:
         else:
             code = "XAML011"
         msg = f"{self.type}.{prop}={value!r} cannot be evaluated: default kept"
-        ctx.diag(code, msg, self.el, attr=attr)
+        ctx.diag(code, msg, at, attr=attr)
         return ("default", None)
 
     def value(self, prop: str, conv: Callable[[str], object], default=None):
@@ -279,6 +290,20 @@ class Props:
                 return self._convert(conv, text, node, prop, default)
             if is_struct_element(node):
                 return self._struct(conv, node, prop, default)
+            key = _resource_key(node)
+            if key is not None:  # <StaticResource ResourceKey="fov"/>: the entry's value
+                dynamic = qname(node.tag)[1] == "DynamicResource"
+                entry = self.r.resources.lookup(key, node, dynamic=dynamic, attr="ResourceKey")
+                if entry is None:
+                    return default
+                text = (entry.text or "").strip()
+                if text and len(entry) == 0:
+                    return self._convert(conv, text, entry, prop, default)
+                if is_struct_element(entry):
+                    return self._struct(conv, entry, prop, default)
+                msg = f"resource for {self.type}.{prop} is not a value"
+                self.r.ctx.diag("RES008", msg, node, attr="ResourceKey")
+                return default
             self.r.ctx.diag("XAML013", f"{self.type}.{prop}: expected a value", node)
         return default
 
@@ -355,3 +380,34 @@ class Props:
             kind, payload = self.markup(prop, self.attrs[prop])
             return payload if kind == "plain" else default
         return self.elem_text.get(prop, default)
+
+
+# markup extensions that may be written as elements, by namespace: what their attribute form's
+# argument is (the element's attribute of that name)
+_EXTENSION_ELEMENTS = {
+    "Binding": "Path", "MultiBinding": None, "PriorityBinding": None,
+    "TemplateBindingExtension": "Property", "RelativeSource": "Mode",
+}  # fmt: skip
+_X_EXTENSION_ELEMENTS = {"Null": None, "Static": "Member", "Reference": "Name", "Type": "TypeName"}
+
+
+def _extension_text(el: etree._Element) -> str | None:
+    """The attribute form of a markup extension written as an element (``<Binding Path="P"/>``
+    -> ``{Binding P}``, ``<x:Null/>`` -> ``{x:Null}``); None for any other element."""
+    ns, local = qname(el.tag)
+    if ns == XAML_NS and local in _X_EXTENSION_ELEMENTS:
+        arg, name = _X_EXTENSION_ELEMENTS[local], f"x:{local}"
+    elif is_presentation(ns) and local in _EXTENSION_ELEMENTS:
+        arg, name = _EXTENSION_ELEMENTS[local], local
+    else:
+        return None
+    value = el.get(arg) if arg is not None else None
+    return f"{{{name} {value}}}" if value else f"{{{name}}}"
+
+
+def _resource_key(el: etree._Element) -> str | None:
+    """The key of a ``<StaticResource ResourceKey="k"/>`` or ``<DynamicResource .../>``."""
+    ns, local = qname(el.tag)
+    if is_presentation(ns) and local in ("StaticResource", "DynamicResource"):
+        return el.get("ResourceKey")
+    return None

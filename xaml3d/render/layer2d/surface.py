@@ -20,7 +20,13 @@ import skia
 
 from xaml3d.render.layer2d.paths import matrix
 from xaml3d.render.layer2d.shaders import brush_tile, draw_content
-from xaml3d.render.tiles import bilinear, brush_to_texture_matrix, inverse_map, tile_fraction
+from xaml3d.render.tiles import (
+    bilinear,
+    brush_to_texture_matrix,
+    edge_mode,
+    inverse_map,
+    tile_fraction,
+)
 from xaml3d.scene.drawing import DrawingBrush
 
 MAX_TILE = 4096  # texels per side of a rasterized tile
@@ -89,10 +95,11 @@ def sample_drawing_brush(brush: DrawingBrush, uv: np.ndarray, bounds, density=No
     if found is None:
         return out
     (vpx, vpy, vpw, vph), tile = found
-    q = inverse_map(brush_to_texture_matrix(brush, bounds, False), uv)
+    matrix = brush_to_texture_matrix(brush, bounds, False)
+    q = inverse_map(matrix, uv)
     if q is None:
         return out
-    mode = brush.tile_mode
+    mode = edge_mode(brush.tile_mode, matrix, bounds, (vpx, vpy, vpw, vph))
     fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
     fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     keep = in_x & in_y
