@@ -56,8 +56,14 @@ def blocks(data: bytes) -> tuple[tuple[int, int], list[dict]]:
         size = 3 << ((packed & 7) + 1)
         table = data[pos + 10 : pos + 10 + size]
         end = sub_blocks(pos + 11 + size)
-        alone = (b"GIF89a" + struct.pack("<HHBBB", w, h, 0, 0, 0) + b","
-                 + struct.pack("<HHHHB", 0, 0, w, h, packed) + data[pos + 10 : end] + b";")
+        alone = (
+            b"GIF89a"
+            + struct.pack("<HHBBB", w, h, 0, 0, 0)
+            + b","
+            + struct.pack("<HHHHB", 0, 0, w, h, packed)
+            + data[pos + 10 : end]
+            + b";"
+        )
         with Image.open(BytesIO(alone)) as im:  # fmt: skip
             indices = np.array(im)
         images.append({"box": (x, y, w, h), "table": table, "indices": indices, **control})
@@ -144,8 +150,10 @@ def noisy(count: int = 5) -> list[np.ndarray]:
 CASES = {
     "opaque": scene((250, 250, 240, 255)),
     "transparent": scene((0, 0, 0, 0)),
-    "translucent": [f * np.array([1, 1, 1, 0], np.uint8) + np.array([0, 0, 0, 140], np.uint8)
-                    for f in scene((10, 80, 10, 255))],  # fmt: skip
+    "translucent": [
+        f * np.array([1, 1, 1, 0], np.uint8) + np.array([0, 0, 0, 140], np.uint8)
+        for f in scene((10, 80, 10, 255))
+    ],  # fmt: skip
     "median-cut": noisy(),
     "one-frame": scene((250, 250, 240, 255))[:1],
 }

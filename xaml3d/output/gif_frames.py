@@ -6,9 +6,10 @@ frame before.
 that tells a frame showing the same picture as the one before). ``encode_gif`` makes its image
 block (a ``GifFrame``): with the frame before known and both frames opaque (no transparent
 pixel in either), only the box around the pixels whose shown colour differs is written, over
-the frame before, which is kept (disposal 1), as Pillow's writer does. Frames with transparent pixels are written as they stand: the box
-around their drawn pixels, the rest showing the background they are disposed to (disposal 2;
-a pixel that becomes transparent can only be shown by disposing the frame before it).
+the frame before, which is kept (disposal 1), as Pillow's writer does. Frames with transparent
+pixels are written as they stand: the box around their drawn pixels, the rest showing the
+background they are disposed to (disposal 2: a pixel that becomes transparent can only be
+shown by disposing the frame before it, and a moving model uncovers some in every frame).
 
 ``link_gif`` encodes a run of consecutive pictures drawn in one process: each against the one
 before it, the run's first opaque picture left for the writer (which knows the frame before
