@@ -11,9 +11,9 @@ x.png``, run by run interleaved; printed: the animate/render ratio of each run (
 both wall times, animate's peak RSS (``os.wait4``: on Linux the largest of the process
 and of its worker processes) and the GIF's size; then the same ratio of CPU seconds (user +
 system, the workers included), which the other jobs of a shared machine disturb far less than
-wall times, and the load average during the runs. ``--base TREE``: the xaml3d of another source tree (``git archive
-main | tar -x -C /tmp/before``) is timed too, interleaved run by run, so that a before/after is
-measured in the same minutes. ``--animate-option``: an option of ``animate`` (repeatable:
+wall times, and the load average during the runs. ``--base TREE``: the xaml3d of another
+source tree (``git archive main | tar -x -C /tmp/before``) is timed too, interleaved run by
+run, so that a before/after is measured in the same minutes. ``--animate-option``: an option of ``animate`` (repeatable:
 ``--animate-option=--background --animate-option=White`` for opaque frames). Targets: 005
 within 12x one render, under 500 MB.
 
