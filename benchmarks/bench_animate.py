@@ -5,17 +5,17 @@
         [--animate-option=OPT ...] [FILE ...]
 
 ``--whole``: for each FILE (default: the shared corpus's 005 spinning cubes, 543 frames at
-600x600; ``samples/spinning-cube.xaml``; the corpus's textured 001), whole processes of
-``python -m xaml3d animate FILE -o x.gif`` (its defaults) and ``python -m xaml3d render FILE -o
-x.png``, run by run interleaved; printed: the animate/render ratio of each run (median, min..max),
-both wall times, animate's peak RSS (``os.wait4``: on Linux the largest of the process
-and of its worker processes) and the GIF's size; then the same ratio of CPU seconds (user +
-system, the workers included), which the other jobs of a shared machine disturb far less than
-wall times, and the load average during the runs. ``--base TREE``: the xaml3d of another
-source tree (``git archive main | tar -x -C /tmp/before``) is timed too, interleaved run by
-run, so that a before/after is measured in the same minutes. ``--animate-option``: an option of ``animate`` (repeatable:
-``--animate-option=--background --animate-option=White`` for opaque frames). Targets: 005
-within 12x one render, under 500 MB.
+600x600; ``samples/spinning-cube.xaml``; the corpus's textured 001), whole processes of ``python
+-m xaml3d animate FILE -o x.gif`` (its defaults) and ``python -m xaml3d render FILE -o x.png``,
+run by run interleaved; printed: the animate/render ratio of each run (median, min..max), both
+wall times, animate's peak RSS (``os.wait4``: on Linux the largest of the process and of its
+worker processes) and the GIF's size; then the same ratio of CPU seconds (user + system, the
+workers included), which the other jobs of a shared machine disturb far less than wall times,
+and the load average during the runs. ``--base TREE``: the xaml3d of another source tree (``git
+archive main | tar -x -C /tmp/before``) is timed too, interleaved run by run, so that a
+before/after is measured in the same minutes. ``--animate-option``: an option of ``animate``
+(repeatable: ``--animate-option=--background --animate-option=White`` for opaque frames).
+Targets: 005 within 12x one render, under 500 MB.
 
 Without ``--whole``:
 The scene is a UV sphere of about 10k triangles (a DiffuseMaterial, a DirectionalLight), turned
