@@ -139,10 +139,14 @@ def _write_gif(fh, *, source, plan: GifPlan, made: GifPlan, durations: list[int]
     held_ms = durations[0]
     for ms, f in zip(durations[1:], frames, strict=False):
         g = checked(f)
-        if held.same_picture(g):
+        if isinstance(g, GifPicture):
+            same = before is not None and g.same(before)
+        else:
+            same = held.same_picture(g)
+        if same:  # one frame showing the picture longer
             held_ms += ms
-            if isinstance(g, GifPicture) or g.picture is not None:
-                before = g if isinstance(g, GifPicture) else g.picture
+            if isinstance(g, GifFrame) and g.picture is not None:
+                before = g.picture
             continue
         _put_gif_frame(fh, held, held_ms)
         held, held_ms = encoded(g), ms

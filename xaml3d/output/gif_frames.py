@@ -2,14 +2,15 @@
 its image block LZW-compressed where it was drawn, written as the part that differs from the
 frame before.
 
-``gif_picture`` quantizes one frame (a ``GifPicture``: its indices, colour table and the key
-that tells a frame showing the same picture as the one before). ``encode_gif`` makes its image
-block (a ``GifFrame``): with the frame before known and both frames opaque (no transparent
-pixel in either), only the box around the pixels whose shown colour differs is written, over
-the frame before, which is kept (disposal 1), as Pillow's writer does. Frames with transparent
-pixels are written as they stand: the box around their drawn pixels, the rest showing the
-background they are disposed to (disposal 2: a pixel that becomes transparent can only be
-shown by disposing the frame before it, and a moving model uncovers some in every frame).
+``gif_picture`` quantizes one frame (a ``GifPicture``: its indices and colour table;
+``GifPicture.same`` tells a frame the writer merges into the one before). ``encode_gif`` makes
+its image block (a ``GifFrame``): with the frame before known and both frames opaque (no
+transparent pixel in either), only the box around the pixels whose shown colour differs is
+written, over the frame before, which is kept (disposal 1), as Pillow's writer does. Frames with
+transparent pixels are written as they stand: the box around their drawn pixels, the rest
+showing the background they are disposed to (disposal 2: a pixel that becomes transparent can
+only be shown by disposing the frame before it, and a moving model uncovers some in every
+frame).
 
 ``link_gif`` encodes a run of consecutive pictures drawn in one process: each against the one
 before it, the run's first opaque picture left for the writer (which knows the frame before
@@ -20,8 +21,6 @@ same whichever process encoded which frame.
 
 from __future__ import annotations
 
-import hashlib
-import struct
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -122,8 +121,7 @@ class GifPicture:
     ``indices`` (H, W uint8), ``palette`` (the local colour table, 768 bytes), ``transparent``
     (its transparent index, or None: every pixel opaque), ``drawn`` (x, y, width, height of the
     part written when the frame stands alone: the box around its drawn pixels, the whole frame
-    when opaque), ``key`` (a digest of that block: two frames with the same key are merged,
-    their display times added), whether the frame has empty pixels (``clear``), its
+    when opaque), whether the frame has empty pixels (``clear``), its
     ``gif_matte.frame_marks``, and ``flattened``/``reserve``: how it was made."""
 
     width: int
@@ -132,7 +130,6 @@ class GifPicture:
     palette: bytes
     transparent: int | None
     drawn: tuple[int, int, int, int]
-    key: bytes
     clear: bool
     marks: tuple
     flattened: bool
@@ -142,14 +139,28 @@ class GifPicture:
     def nbytes(self) -> int:
         return self.indices.nbytes + len(self.palette)
 
-    def shown(self) -> np.ndarray:
-        """The colour each pixel shows (H, W uint32: 0xRRGGBB, ``SHOWN_CLEAR`` where
-        transparent)."""
+    def same(self, other: GifPicture) -> bool:
+        """Whether ``other`` is written as the same block when standing alone (the writer
+        merges such a frame into the one before, its display time added). Outside the drawn
+        box every index is the transparent one, so the whole indices are compared."""
+        return (
+            (self.drawn, self.transparent, self.palette) == (other.drawn, other.transparent,
+                                                             other.palette)
+            and np.array_equal(self.indices, other.indices)
+        )  # fmt: skip
+
+    def colours(self) -> np.ndarray:
+        """The colour of each palette index (256 uint32: 0xRRGGBB, ``SHOWN_CLEAR`` for the
+        transparent index)."""
         rgb = np.frombuffer(self.palette, np.uint8).reshape(256, 3).astype(np.uint32)
         table = (rgb[:, 0] << 16) | (rgb[:, 1] << 8) | rgb[:, 2]
         if self.transparent is not None:
             table[self.transparent] = SHOWN_CLEAR
-        return table[self.indices]
+        return table
+
+    def shown(self) -> np.ndarray:
+        """The colour each pixel shows (H, W uint32, as ``colours``)."""
+        return np.take(self.colours(), self.indices)
 
 
 @dataclass
@@ -157,11 +168,13 @@ class GifFrame:
     """One frame's image block, made ready for the GIF writer where it was drawn: ``box`` (x,
     y, width, height of the part written), ``palette`` (the local colour table, 768 bytes),
     ``data`` (the LZW-compressed indices, as GIF's image data sub-blocks), ``transparent``
-    (the block's transparent index, or None), ``disposal`` (KEEP or CLEAR), ``key``, ``clear``,
-    ``marks``, ``flattened`` and ``reserve`` as its ``GifPicture`` has them, and ``picture``:
-    that picture, given with the last frame of a run so that the writer can encode the next
-    frame against it (else None). A fraction of the RGBA's bytes to send between processes,
-    and compressed in parallel: the writer only puts the blocks together."""
+    (the block's transparent index, or None), ``disposal`` (KEEP or CLEAR), whether it is the
+    frame standing alone (``alone``: the block ``same_picture`` compares) or a ``repeat`` of
+    the frame before (no block: merged into it), ``clear``, ``marks``, ``flattened`` and
+    ``reserve`` as its ``GifPicture`` has them, and ``picture``: that picture, given with the
+    last frame of a run so that the writer can encode the next frame against it (else None).
+    A fraction of the RGBA's bytes to send between processes, and compressed in parallel: the
+    writer only puts the blocks together."""
 
     width: int
     height: int
@@ -170,21 +183,27 @@ class GifFrame:
     data: bytes
     transparent: int | None
     disposal: int
-    key: bytes
+    alone: bool
     clear: bool
     marks: tuple
     flattened: bool
     reserve: bool
+    repeat: bool = False
     picture: GifPicture | None = None
 
     @property
     def nbytes(self) -> int:
         return len(self.data) + len(self.palette) + (self.picture.nbytes if self.picture else 0)
 
-    def same_picture(self, other) -> bool:
-        """Whether ``other`` (a GifFrame or GifPicture) shows the same picture (the same block
-        when standing alone: the encoding is a function of the pixels)."""
-        return self.key == other.key
+    def same_picture(self, other: GifFrame) -> bool:
+        """Whether ``other`` is a repeat of this frame, or both stand alone with the same block
+        (the encoding is a function of the pixels)."""
+        if other.repeat:
+            return True
+        return self.alone and other.alone and (
+            (self.box, self.palette, self.transparent, self.data)
+            == (other.box, other.palette, other.transparent, other.data)
+        )  # fmt: skip
 
 
 def gif_picture(rgba: np.ndarray, plan: GifPlan | None = None) -> GifPicture:
@@ -201,15 +220,9 @@ def gif_picture(rgba: np.ndarray, plan: GifPlan | None = None) -> GifPicture:
     )
     indices = np.asarray(image)
     w, h = image.size
-    box = _drawn_box(indices, transparent, drawn)
     palette = bytes(image.getpalette() or [])[:768]
     palette += bytes(768 - len(palette))
-    x, y, bw, bh = box
-    digest = hashlib.sha1(struct.pack("<4hh", *box, -1 if transparent is None else transparent),
-                          usedforsecurity=False)  # fmt: skip
-    digest.update(palette)
-    digest.update(np.ascontiguousarray(indices[y : y + bh, x : x + bw]))
-    return GifPicture(w, h, indices, palette, transparent, box, digest.digest(),
+    return GifPicture(w, h, indices, palette, transparent, _drawn_box(indices, transparent, drawn),
                       clear and not plan.flatten, marks, plan.flatten,
                       bool(plan.reserve))  # fmt: skip
 
@@ -250,24 +263,45 @@ def encode_gif(pic: GifPicture, before: GifPicture | None = None) -> GifFrame:
         x, y, w, h = pic.drawn
         data = _lzw(pic.indices[y : y + h, x : x + w], pic.palette)
         disposal = KEEP if pic.transparent is None else CLEAR
-        return _frame(pic, pic.drawn, data, pic.transparent, disposal)
-    changed = pic.shown() != before.shown()
-    rows = np.flatnonzero(changed.any(axis=1))
-    if rows.size == 0:  # the same colours (a block of its own all the same): one pixel
+        return _frame(pic, pic.drawn, data, pic.transparent, disposal, alone=True)
+    x0, y0, x1, y1 = _changed_box(pic, before)
+    if x1 < 0:  # the same colours (a block of its own all the same): one pixel
         box = (0, 0, 1, 1)
     else:
-        y0, y1 = int(rows[0]), int(rows[-1]) + 1
-        cols = np.flatnonzero(changed[y0:y1].any(axis=0))
-        box = (int(cols[0]), y0, int(cols[-1]) + 1 - int(cols[0]), y1 - y0)
+        box = (x0, y0, x1 + 1 - x0, y1 + 1 - y0)
     x, y, w, h = box
     # The unchanged pixels inside the box keep their own indices: set to a transparent index
     # (Pillow's optimize) they made 005's flat-coloured faces speckled and its file 3 % larger.
-    return _frame(pic, box, _lzw(pic.indices[y : y + h, x : x + w], pic.palette), None, KEEP)
+    data = _lzw(pic.indices[y : y + h, x : x + w], pic.palette)
+    return _frame(pic, box, data, None, KEEP, alone=False)
 
 
-def _frame(pic: GifPicture, box, data: bytes, transparent, disposal: int) -> GifFrame:
-    return GifFrame(pic.width, pic.height, box, pic.palette, data, transparent, disposal,
-                    pic.key, pic.clear, pic.marks, pic.flattened, pic.reserve)  # fmt: skip
+def _changed_box(pic: GifPicture, before: GifPicture) -> tuple[int, int, int, int]:
+    """The first and last column and row of the pixels whose colour differs between two
+    pictures of one size (x1 = -1 when none): one compiled pass when numba is loaded."""
+    if _compiled():
+        from xaml3d.output import gif_pass
+
+        box = np.empty(4, dtype=np.int64)
+        gif_pass.changed_box(pic.indices, pic.colours(), before.indices, before.colours(), box)
+        return tuple(int(v) for v in box)
+    changed = pic.shown() != before.shown()
+    rows = np.flatnonzero(changed.any(axis=1))
+    if rows.size == 0:
+        return (0, 0, -1, -1)
+    cols = np.flatnonzero(changed[rows[0] : rows[-1] + 1].any(axis=0))
+    return (int(cols[0]), int(rows[0]), int(cols[-1]), int(rows[-1]))
+
+
+def _frame(pic: GifPicture, box, data: bytes, transparent, disposal: int, alone: bool) -> GifFrame:
+    return GifFrame(pic.width, pic.height, box, pic.palette, data, transparent, disposal, alone,
+                    pic.clear, pic.marks, pic.flattened, pic.reserve)  # fmt: skip
+
+
+def _repeat(pic: GifPicture) -> GifFrame:
+    """A frame showing the picture of the one before (``GifPicture.same``): no block."""
+    return GifFrame(pic.width, pic.height, (0, 0, 1, 1), b"", b"", pic.transparent, KEEP, False,
+                    pic.clear, pic.marks, pic.flattened, pic.reserve, repeat=True)  # fmt: skip
 
 
 def _lzw(indices: np.ndarray, palette: bytes) -> bytes:
@@ -285,14 +319,17 @@ def _lzw(indices: np.ndarray, palette: bytes) -> bytes:
 
 def link_gif(pictures):
     """GIF frames of a run of consecutive ``GifPicture``s drawn in one process, in order, one
-    for each: every picture encoded against the one before it (``encode_gif``) but the run's
-    first when it is opaque, which is given as it is (the writer encodes it against the frame
-    before the run); the last frame carries its picture (the frame before the next run)."""
+    for each: every picture encoded against the one before it (``encode_gif``; a repeat of it
+    marked so) but the run's first when it is opaque, which is given as it is (the writer
+    encodes it against the frame before the run); the last frame carries its picture (the
+    frame before the next run)."""
     before = held = None
     for pic in pictures:
         if held is not None:
             yield held
-        if before is None and pic.transparent is None:
+        if before is not None and pic.same(before):
+            held = _repeat(pic)
+        elif before is None and pic.transparent is None:
             held = pic
         else:
             held = encode_gif(pic, before)
