@@ -293,6 +293,23 @@ def _changed_box(pic: GifPicture, before: GifPicture) -> tuple[int, int, int, in
     return (int(cols[0]), int(rows[0]), int(cols[-1]), int(rows[-1]))
 
 
+_LOADED: list = []
+
+
+def _ready_to_compare() -> None:
+    """Load ``gif_pass.changed_box``'s machine code (about 40 ms from numba's cache) once in
+    this process: done by the parent for its first frame, before the worker processes are
+    forked, they start with it loaded instead of each loading it while drawing."""
+    if _LOADED or not _compiled():
+        return
+    from xaml3d.output import gif_pass
+
+    one, colours = np.zeros((1, 1), np.uint8), np.zeros(256, np.uint32)
+    one.flags.writeable = False  # as a picture's indices (Pillow's buffer): the same signature
+    gif_pass.changed_box(one, colours, one, colours, np.empty(4, dtype=np.int64))
+    _LOADED.append(True)
+
+
 def _frame(pic: GifPicture, box, data: bytes, transparent, disposal: int, alone: bool) -> GifFrame:
     return GifFrame(pic.width, pic.height, box, pic.palette, data, transparent, disposal, alone,
                     pic.clear, pic.marks, pic.flattened, pic.reserve)  # fmt: skip
@@ -330,6 +347,7 @@ def link_gif(pictures):
         if before is not None and pic.same(before):
             held = _repeat(pic)
         elif before is None and pic.transparent is None:
+            _ready_to_compare()
             held = pic
         else:
             held = encode_gif(pic, before)
