@@ -1,18 +1,21 @@
 """Frames per second of an animation, and whole ``animate`` processes against ``render``.
 
     python benchmarks/bench_animate.py [--frames 30] [--runs 5] [--triangles 10000] [--ssaa 2]
-    python benchmarks/bench_animate.py --whole [--runs 3] [--base TREE] [FILE ...]
+    python benchmarks/bench_animate.py --whole [--runs 3] [--base TREE]
+        [--animate-option=OPT ...] [FILE ...]
 
 ``--whole``: for each FILE (default: the shared corpus's 005 spinning cubes, 543 frames at
-600x600; ``samples/spinning-cube.xaml``; the corpus's textured 001), whole processes of
-``python -m xaml3d animate FILE -o x.gif`` (its defaults) and ``python -m xaml3d render FILE -o
-x.png``, run by run interleaved; printed: the animate/render ratio of each run (median, min..max),
-both wall times, and animate's peak RSS (``os.wait4``: on Linux the largest of the process
-and of its worker processes); then the same ratio of CPU seconds (user + system, the workers
-included), which the other jobs of a shared machine disturb far less than wall times, and the
-load average during the runs. ``--base TREE``: the xaml3d of another source tree (``git archive
-main | tar -x -C /tmp/before``) is timed too, interleaved run by run, so that a before/after is
-measured in the same minutes. Targets: 005 within 12x one render, under 500 MB.
+600x600; ``samples/spinning-cube.xaml``; the corpus's textured 001), whole processes of ``python
+-m xaml3d animate FILE -o x.gif`` (its defaults) and ``python -m xaml3d render FILE -o x.png``,
+run by run interleaved; printed: the animate/render ratio of each run (median, min..max), both
+wall times, animate's peak RSS (``os.wait4``: on Linux the largest of the process and of its
+worker processes) and the GIF's size; then the same ratio of CPU seconds (user + system, the
+workers included), which the other jobs of a shared machine disturb far less than wall times,
+and the load average during the runs. ``--base TREE``: the xaml3d of another source tree (``git
+archive main | tar -x -C /tmp/before``) is timed too, interleaved run by run, so that a
+before/after is measured in the same minutes. ``--animate-option``: an option of ``animate``
+(repeatable: ``--animate-option=--background --animate-option=White`` for opaque frames).
+Targets: 005 within 12x one render, under 500 MB.
 
 Without ``--whole``:
 The scene is a UV sphere of about 10k triangles (a DiffuseMaterial, a DirectionalLight), turned
@@ -107,10 +110,12 @@ def process(cmd: list[str], tree: Path | None = None) -> tuple[float, float, flo
     return wall, usage.ru_maxrss / 1024.0, usage.ru_utime + usage.ru_stime
 
 
-def whole(files: list[Path], runs: int, base: Path | None = None) -> int:
+def whole(files: list[Path], runs: int, base: Path | None = None, extra=()) -> int:
     """Whole ``animate`` and ``render`` processes of each file, run by run interleaved (with
-    ``base``: the same of that source tree too, in the same minutes)."""
+    ``base``: the same of that source tree too, in the same minutes); ``extra``: more options
+    of ``animate`` (``--background White``...)."""
     xaml3d_cmd = [sys.executable, "-m", "xaml3d"]
+    extra = list(extra)
     trees = [("now", None)] + ([("base", base)] if base is not None else [])
     with tempfile.TemporaryDirectory() as tmp:
         for f in files:
@@ -121,14 +126,16 @@ def whole(files: list[Path], runs: int, base: Path | None = None) -> int:
             loads = []
             for _, tree in trees:  # caches warm (bytecode, numba's kernels)
                 process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"], tree)
-                process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"], tree)
+                process([*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q", *extra], tree)
+            sizes = {}
             for _ in range(runs):
                 for name, tree in trees:
                     anim, rend, ratio, anim_cpu, rend_cpu, cpu_ratio, peak = got[name]
                     r, _, rc = process([*xaml3d_cmd, "render", str(f), "-o", f"{tmp}/x.png"], tree)
                     a, m, ac = process(
-                        [*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q"], tree
+                        [*xaml3d_cmd, "animate", str(f), "-o", f"{tmp}/x.gif", "-q", *extra], tree
                     )
+                    sizes[name] = (Path(tmp) / "x.gif").stat().st_size
                     anim.append(a)
                     rend.append(r)
                     ratio.append(a / r)
@@ -141,7 +148,7 @@ def whole(files: list[Path], runs: int, base: Path | None = None) -> int:
                 anim, rend, ratio, anim_cpu, rend_cpu, cpu_ratio, peak = got[name]
                 print(f"{f.name} [{name}]: animate / render {_span(ratio, 'x')}; animate "
                       f"{_span(anim, 's')}, render {_span(rend, 's')}; animate peak RSS "
-                      f"{peak[0]:.0f} MiB")  # fmt: skip
+                      f"{peak[0]:.0f} MiB; GIF {sizes[name]} bytes")  # fmt: skip
                 print(f"{f.name} [{name}]: CPU (user + system, workers included): animate / "
                       f"render {_span(cpu_ratio, 'x')}; animate {_span(anim_cpu, 's')}, "
                       f"render {_span(rend_cpu, 's')}")  # fmt: skip
@@ -164,10 +171,14 @@ def main(argv=None) -> int:
     ap.add_argument("files", nargs="*", type=Path, help="with --whole (default: see above)")
     ap.add_argument("--base", type=Path, help="with --whole: a source tree to time as well "
                     "(git archive main | tar -x -C /tmp/before)")  # fmt: skip
+    ap.add_argument("--animate-option", action="append", default=[], metavar="OPT",
+                    help="with --whole: an option given to animate (repeatable), e.g. "
+                    "--animate-option=--background --animate-option=White")  # fmt: skip
     args = ap.parse_args(argv)
     if args.whole:
         files = [f.resolve() for f in args.files] or WHOLE
-        return whole(files, args.runs, args.base.resolve() if args.base else None)
+        base = args.base.resolve() if args.base else None
+        return whole(files, args.runs, base, args.animate_option)
     scene = xaml3d.load(sphere_xaml(args.triangles), text=True)
     tris = scene.viewports[0].triangle_count
     times = xaml3d.frame_times(0.0, args.frames / 30.0, 30.0)

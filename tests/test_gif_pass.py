@@ -96,3 +96,26 @@ def test_the_rest_digest_tells_frames_that_differ_only_in_alpha(monkeypatch):
     assert len({m[2] for m in marks.values()}) == 1  # GIF draws them alike
     assert len({m[3] for m in marks.values()}) == 4  # yet all four differ
     assert frame_marks(base.copy()) == marks["base"]
+
+
+def test_the_changed_box_is_that_of_numpy(monkeypatch):
+    from xaml3d.output.gif_frames import _changed_box, gif_picture
+
+    rng = np.random.default_rng(8)
+    colours = rng.integers(0, 256, (50, 4), dtype=np.uint8)
+    colours[:, 3] = 255
+    base = colours[rng.integers(0, 50, (23, 31))]  # few colours: each kept exactly
+    pairs = []
+    for box in ((0, 0, 1, 1), (5, 7, 9, 12), (30, 22, 31, 23), (0, 10, 31, 11), (3, 0, 4, 23)):
+        other = base.copy()
+        x0, y0, x1, y1 = box
+        other[y0:y1, x0:x1] = (1, 2, 3, 255)  # a colour of its own
+        pairs.append((other, box))
+    pairs.append((base.copy(), None))
+    first = gif_picture(base)
+    for other, box in pairs:
+        pic = gif_picture(other)
+        compiled, plain = both(lambda p=pic: _changed_box(p, first), monkeypatch)
+        assert compiled == plain
+        want = (0, 0, -1, -1) if box is None else (box[0], box[1], box[2] - 1, box[3] - 1)
+        assert compiled == want

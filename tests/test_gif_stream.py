@@ -12,7 +12,14 @@ import numpy as np
 from PIL import Image
 
 import xaml3d
-from xaml3d.output.animation import GifPlan, gif_frame, save_animation, write_gif
+from xaml3d.output.animation import (
+    GifPlan,
+    gif_frame,
+    gif_picture,
+    link_gif,
+    save_animation,
+    write_gif,
+)
 from xaml3d.output.gif_matte import MatteWatch, frame_marks, needs_matte
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -50,6 +57,13 @@ def test_the_watch_decides_as_needs_matte_on_every_prefix():
                 assert watch.add(frame_marks(f)) == needs_matte(list(seq[:n]))
 
 
+def in_runs(frames, plan, size: int):
+    """The frames as workers give them to the GIF writer: quantized, and compressed in runs of
+    ``size`` consecutive frames (``link_gif``)."""
+    for i in range(0, len(frames), size):
+        yield from link_gif(gif_picture(f, plan) for f in frames[i : i + size])
+
+
 def gif_bytes(path: Path) -> bytes:
     return path.read_bytes()
 
@@ -72,7 +86,7 @@ def test_a_late_translucent_frame_restarts_the_stream_flattened(tmp_path):
 
     def source(plan):
         calls.append((plan.flatten, plan.reserve))
-        return (gif_frame(f, plan) for f in frames)  # as workers make them
+        return in_runs(frames, plan, 4)  # as workers make them
 
     assert write_gif(source, tmp_path / "s.gif", 0.6, len(frames), matte=(10, 20, 30))
     assert calls == [(False, None), (True, None)]  # asked again from the first frame

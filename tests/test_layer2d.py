@@ -1088,3 +1088,79 @@ def test_calendar_month_view_texts_and_marks(tmp_path):
     blue = (0xBA / 255, 0xDD / 255, 0xE9 / 255, 0.75)
     (cell,) = [g for _, g in _placed_rects(drawing) if getattr(g.brush, "color", None) == blue]
     assert cell.geometry.rect[3] == pytest.approx(line_height(10.0) + 2)
+
+
+RADIAL_MASK = """<RadialGradientBrush><GradientStop Offset="0" Color="#FF000000"/>
+  <GradientStop Offset="1" Color="#00000000"/></RadialGradientBrush>"""
+
+
+def test_an_opacity_mask_hides_the_antialiased_edge_where_it_is_clear(tmp_path):
+    """Corpus 009's faint line: a Rectangle at half-pixel offsets (its edge pixels half
+    covered) masked by a RadialGradientBrush, clear at the rectangle's edge. WPF multiplies
+    the content by the mask wherever it is: the edge pixels, whose centres lie on the edge
+    (offset 1: alpha 0), show the background alone, not a quarter of the fill."""
+    text = f"""<Canvas xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+        Width="64" Height="44" Background="Black">
+      <Rectangle Canvas.Left="10.5" Canvas.Top="10.5" Width="40" Height="20" Fill="White">
+        <Rectangle.OpacityMask>{RADIAL_MASK}</Rectangle.OpacityMask></Rectangle>
+      <Viewport3D Canvas.Left="60" Canvas.Top="40" Width="2" Height="2"/></Canvas>"""
+    path = tmp_path / "m.xaml"
+    path.write_text(text)
+    from xaml3d.render.window import compose_window
+
+    rgba, _ = compose_window(xaml3d.load(path))
+    assert rgba.shape == (44, 64, 4)
+    black = (0, 0, 0, 255)
+    for row in (10, 30):  # the top and bottom edges, each pixel half covered
+        assert {tuple(p) for p in rgba[row, 8:54]} == {black}
+    for col in (10, 50):  # the left and right edges
+        assert {tuple(p) for p in rgba[8:34, col]} == {black}
+    assert tuple(rgba[20, 30]) == (255, 255, 255, 255)  # the centre: the mask's first stop
+    # the mask fades towards the edges: along the middle row, bright in, dark out
+    mid = rgba[20, 11:30, 0].astype(int)
+    assert (np.diff(mid) >= 0).all() and mid[0] < 40 and mid[-1] > 240
+
+
+def test_a_viewports_opacity_mask_covers_its_edge_pixels(tmp_path):
+    """The same for a Viewport3D's own OpacityMask (``layer2d.picture``): a viewport at a
+    half-pixel offset whose picture is a white quad filling it."""
+    quad = "-20,-10,0 20,-10,0 20,10,0 -20,10,0"
+    text = f"""<Canvas xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+        Width="64" Height="44" Background="Black">
+      <Viewport3D Canvas.Left="10.5" Canvas.Top="10.5" Width="40" Height="20">
+        <Viewport3D.OpacityMask>{RADIAL_MASK}</Viewport3D.OpacityMask>
+        <Viewport3D.Camera><OrthographicCamera Position="0,0,10" LookDirection="0,0,-1"
+          Width="40"/></Viewport3D.Camera>
+        <ModelVisual3D><ModelVisual3D.Content><GeometryModel3D>
+          <GeometryModel3D.Geometry><MeshGeometry3D Positions="{quad}"
+            TriangleIndices="0 1 2  0 2 3"/></GeometryModel3D.Geometry>
+          <GeometryModel3D.Material><EmissiveMaterial Brush="White"/></GeometryModel3D.Material>
+        </GeometryModel3D></ModelVisual3D.Content></ModelVisual3D></Viewport3D></Canvas>"""
+    path = tmp_path / "v.xaml"
+    path.write_text(text)
+    from xaml3d.render.window import compose_window
+
+    rgba, _ = compose_window(xaml3d.load(path))
+    black = (0, 0, 0, 255)
+    for row in (10, 30):  # half covered by the picture (a quarter shown before: 127 here)
+        assert {tuple(p) for p in rgba[row, 8:54]} == {black}
+    for col in (10, 50):
+        assert {tuple(p) for p in rgba[8:34, col]} == {black}
+    assert rgba[20, 30, 0] >= 250 and rgba[11, 30, 0] > 0  # the picture inside, faded out
+
+
+def test_a_drawing_groups_opacity_mask_covers_the_edge_pixels_of_its_content():
+    """``layer2d.paint``: a DrawingGroup's OpacityMask multiplies all of its content, the
+    antialiased edge pixels half outside the group's bounds too."""
+    from xaml3d.render.layer2d.paint import rasterize
+    from xaml3d.scene.types import GradientStop, RadialGradientBrush
+
+    mask = RadialGradientBrush(
+        stops=(GradientStop((0, 0, 0, 1.0), 0.0), GradientStop((0, 0, 0, 0.0), 1.0))
+    )
+    square = GeometryDrawing(RectangleGeometry((2.5, 2.5, 12.0, 12.0)), brush=LIME)
+    a = rasterize(DrawingGroup(children=(square,), opacity_mask=mask), 18, 18)[..., 3]
+    # pixels 2 and 14 are half covered, their centres on the edge (offset 1: alpha 0)
+    assert (a[2, :] == 0).all() and (a[14, :] == 0).all()
+    assert (a[:, 2] == 0).all() and (a[:, 14] == 0).all()
+    assert a[8, 8] == 1.0 and 0 < a[8, 3] < a[8, 5] < a[8, 8]

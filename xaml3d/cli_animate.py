@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections import deque
 from pathlib import Path
 
 import click
@@ -63,7 +64,8 @@ from xaml3d.findings import begun_by_name, has_errors, scene_findings
 from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.animation import (
     frame_names,
-    gif_frame,
+    gif_picture,
+    link_gif,
     png_frame,
     write_apng,
     write_gif,
@@ -212,14 +214,15 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if not quiet and (verbose or len(times) >= LONG_RUN):
             click.echo(_plan_line(name, sc, storyboard, len(times), fps, end - start), err=True)
 
-        def drawn(prepare):
-            """The frames in time order, each ``prepare``d in the process that drew it, with
-            the progress shown and the render's diagnostics kept (counted again from zero when
-            the GIF writer asks for the frames again)."""
+        def drawn(prepare, link=None):
+            """The frames in time order, each ``prepare``d in the process that drew it (and
+            each run of them ``link``ed there), with the progress shown and the render's
+            diagnostics kept (counted again from zero when the GIF writer asks for the frames
+            again)."""
             diags[:] = [d for d in diags if d.code != "RND002"]
             it = frames_module.render_frames(  # looked up at call time: it may be wrapped
                 sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder],
-                prepare=prepare, depth=False, window=window,
+                prepare=prepare, link=link, depth=False, window=window,
             )  # fmt: skip
             for r in _progress(it, len(times), name, quiet):
                 yield _keep(r, diags, file)
@@ -227,14 +230,18 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         gif = Path(output).suffix.lower() == ".gif" and not to_dir
         apng = Path(output).suffix.lower() in (".png", ".apng") and not to_dir
         if gif:
-            # Streamed: each frame is quantized and compressed by the worker that drew it and
+            # Streamed: each frame is quantized by the worker that drew it, compressed there as
+            # its difference from the frame before (``output.gif_frames.link_gif``), and
             # written as it comes (``output.animation.write_gif``).
             beneath = None if bg is not None or window else _opaque_beneath(vp)
             if bg is not None:
                 matte = tuple(round(255 * c) for c in bg[:3])
             else:
                 matte = beneath or (255, 255, 255)
-            source = lambda plan: drawn(functools.partial(_gif_ready, plan=plan))  # noqa: E731
+
+            def source(plan):
+                return drawn(functools.partial(_gif_ready, plan=plan), _gif_linked)
+
             flattened = write_gif(source, output, end - start, len(times), loop=loop, matte=matte)
         elif sequence is not None:  # to disk frame by frame, encoded by the workers
             for png in drawn(_png_ready):
@@ -372,11 +379,28 @@ def _lean(r):
 
 
 def _gif_ready(r, plan):
-    """A frame's Rendering with its picture made ready for the GIF writer under ``plan``
-    (quantized and compressed where it was drawn: in parallel, and few bytes to send back)."""
+    """A frame's Rendering with its picture quantized for the GIF writer under ``plan``
+    (``gif_picture``) where it was drawn: in parallel."""
     r = _lean(r)
-    r.rgba = gif_frame(r.rgba, plan)
+    r.rgba = gif_picture(r.rgba, plan)
     return r
+
+
+def _gif_linked(results):
+    """A run of consecutive frames' Renderings (``_gif_ready``) with their pictures compressed
+    as GIF frames where they were drawn, each as its difference from the one before
+    (``link_gif``): few bytes to send back."""
+    kept: deque = deque()
+
+    def pictures():
+        for r in results:
+            kept.append(r)
+            yield r.rgba
+
+    for g in link_gif(pictures()):
+        r = kept.popleft()
+        r.rgba = g
+        yield r
 
 
 def _png_ready(r):

@@ -6,12 +6,13 @@ transparency, any other pixel is opaque; frames with translucent surfaces are fl
 (``frame_names``), atomically: a temporary file in the target's folder is written, fsynced and
 renamed, so a failure leaves no partial file and an existing one untouched.
 
-``write_gif`` streams: the frames come one by one (``gif_frame`` quantizes and compresses each
-where it was drawn, e.g. in a worker process) and each is written as it comes, one held; the
-matte and the transparent index are decided from the frames as they come
-(``GifPlan``), and the frames are asked for again from the first should a later frame show the
-decision wrong. ``write_apng`` streams APNG likewise (one frame held), and ``write_webp`` WebP
-(one RGBA frame held; libwebp's encoder keeps the encoded frames).
+``write_gif`` streams: the frames come one by one (quantized and compressed where they were
+drawn, e.g. in a worker process, each cropped to what differs from the frame before:
+``xaml3d.output.gif_frames``) and each is written as it comes, one held; the matte and the
+transparent index are decided from the frames as they come (``GifPlan``), and the frames are
+asked for again from the first should a later frame show the decision wrong. ``write_apng``
+streams APNG likewise (one frame held), and ``write_webp`` WebP (one RGBA frame held; libwebp's
+encoder keeps the encoded frames).
 """
 
 from __future__ import annotations
@@ -26,11 +27,22 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from PIL import GifImagePlugin, Image
+from PIL import Image
 
 from xaml3d.errors import RenderError
 from xaml3d.output.atomic import write_atomically
-from xaml3d.output.gif_matte import MatteWatch, _compiled, flatten, marks_and_clear, needs_matte
+from xaml3d.output.gif_frames import (  # noqa: F401 (_gif_frame, link_gif: this module's interface)
+    GifFrame,
+    GifPicture,
+    GifPlan,
+    GifRestart,
+    _gif_frame,
+    encode_gif,
+    gif_frame,
+    gif_picture,
+    link_gif,
+)
+from xaml3d.output.gif_matte import MatteWatch, needs_matte
 from xaml3d.output.images import save_image
 
 ANIMATED_FORMATS = {".gif": "GIF", ".png": "PNG", ".apng": "PNG", ".webp": "WEBP"}
@@ -51,172 +63,6 @@ def frame_names(count: int) -> list[str]:
     return [f"frame_{i:0{digits}d}.png" for i in range(count)]
 
 
-def _gif_frame(rgba: np.ndarray, reserve: bool = False, clear: bool | None = None):
-    """A palette image for GIF: 255 adaptive colours, index 255 for transparent pixels. GIF
-    has no partial transparency: a pixel with any coverage keeps its (straight) colour, fully,
-    so translucent surfaces stay visible; only empty pixels become transparent. A frame without
-    empty pixels gets 256 colours, unless ``reserve``: index 255 is then kept free (the file's
-    transparent index) all the same. ``clear``: whether the frame has empty pixels, when the
-    caller knows already. Returns (the image, its transparent index or None)."""
-    return _gif_frame_parts(rgba, reserve, clear)[:2]
-
-
-def _gif_frame_parts(rgba: np.ndarray, reserve: bool = False, clear: bool | None = None):
-    """``_gif_frame``'s (image, transparent index or None), and the box (x0, y0, x1, y1) of
-    the pixels that are not transparent when the compiled palette pass found it, else None."""
-    alpha = rgba[..., 3]
-    if clear is None:
-        clear = bool((alpha == 0).any())
-    opaque = not clear and not reserve
-    exact = _exact_palette(rgba, 256 if opaque else 255)
-    if exact is not None:
-        idx, pal, box = exact
-        out = Image.fromarray(idx, mode="P")
-        out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
-        return out, (None if opaque else 255), box
-    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
-    if opaque:
-        q = rgb.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
-        return q, None, None
-    # the colours of visible pixels only choose the palette
-    q = rgb.quantize(255, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
-    idx = np.array(q, dtype=np.uint8)
-    idx[alpha == 0] = 255
-    out = Image.fromarray(idx, mode="P")
-    pal = q.getpalette()[: 255 * 3]
-    out.putpalette(pal + [0, 0, 0] * (256 - len(pal) // 3))
-    return out, 255, None
-
-
-def _exact_palette(rgba: np.ndarray, limit: int):
-    """(indices, palette, box) of a frame with at most ``limit`` distinct colours (empty pixels
-    at index 255; ``box``: see ``_gif_frame_parts``), else None. The median cut gives such a
-    frame its exact colours too (every colour a box of its own), at several times the cost;
-    here the palette is the colours in ascending order, so the file's bytes differ from the
-    median cut's while every decoded pixel is the same. With numba loaded,
-    ``gif_pass.exact_palette`` gives the same indices and palette in two compiled passes."""
-    gif_pass = _compiled()
-    if gif_pass is not None:
-        idx = np.empty(rgba.shape[:2], dtype=np.uint8)
-        keys = np.empty(256, dtype=np.int64)
-        box = np.empty(4, dtype=np.int64)
-        n = gif_pass.exact_palette(np.ascontiguousarray(rgba), limit, idx, keys, box)
-        if n < 0:
-            return None
-        return idx, [int(k >> s) & 255 for k in keys[:n] for s in (16, 8, 0)], tuple(box)
-    rgb = Image.fromarray(np.ascontiguousarray(rgba[..., :3]), mode="RGB")
-    found = rgb.getcolors(limit)
-    if found is None:
-        return None
-    colours = sorted(c for _, c in found)
-    keys = np.array([(r << 16) | (g << 8) | b for r, g, b in colours], dtype=np.uint32)
-    px = rgba[..., :3].astype(np.uint32)
-    idx = np.searchsorted(keys, (px[..., 0] << 16) | (px[..., 1] << 8) | px[..., 2])
-    idx = idx.astype(np.uint8)
-    idx[rgba[..., 3] == 0] = 255
-    return idx, [v for c in colours for v in c], None
-
-
-@dataclass
-class GifFrame:
-    """One frame made ready for the GIF writer where it was drawn (``gif_frame``): its image
-    block encoded (``box``: x, y, width, height of the part written, the rest showing the
-    transparent background or, for opaque frames, the whole frame; ``palette``: the local
-    colour table, 768 bytes; ``data``: the LZW-compressed indices, as GIF's image data
-    sub-blocks; ``transparent``: the transparent index or None), whether the frame has empty
-    (transparent) pixels, and its ``gif_matte.frame_marks``. ``flattened``/``reserve``: how it
-    was made. A fraction of the RGBA's bytes to send between processes, and compressed in
-    parallel: the writer only puts the blocks together."""
-
-    width: int
-    height: int
-    box: tuple[int, int, int, int]
-    palette: bytes
-    data: bytes
-    transparent: int | None
-    clear: bool
-    marks: tuple
-    flattened: bool
-    reserve: bool
-
-    @property
-    def nbytes(self) -> int:
-        return len(self.data) + len(self.palette)
-
-    def same_picture(self, other: GifFrame) -> bool:
-        """Whether ``other`` shows the same picture (the same encoded block: the encoding is
-        a function of the pixels)."""
-        return (self.box, self.palette, self.transparent, self.data) == (
-            other.box, other.palette, other.transparent, other.data
-        )  # fmt: skip
-
-
-@dataclass
-class GifPlan:
-    """How every frame of one GIF is made: flattened onto ``matte`` or not, index 255 kept for
-    transparency in every frame or not (None: as the frame needs). The writer decides it from
-    the frames and starts again with a new plan when a later frame shows the one in use wrong
-    (``GifRestart``)."""
-
-    matte: tuple[int, int, int] = (255, 255, 255)
-    flatten: bool = False
-    reserve: bool | None = None
-
-
-class GifRestart(Exception):
-    """The frames written so far were made under a plan a later frame showed wrong."""
-
-
-def gif_frame(rgba: np.ndarray, plan: GifPlan | None = None) -> GifFrame:
-    """``rgba`` (H, W, 4 uint8) as the GIF writer takes it under ``plan`` (default: not
-    flattened, index 255 reserved only when the frame has empty pixels)."""
-    plan = GifPlan() if plan is None else plan
-    marks, clear = marks_and_clear(rgba)
-    if plan.flatten:
-        rgba, clear_now = flatten([rgba], plan.matte)[0], False
-    else:
-        clear_now = clear
-    image, transparent, drawn = _gif_frame_parts(
-        rgba, reserve=bool(plan.reserve) and not plan.flatten, clear=clear_now
-    )
-    box, palette, data = _gif_block(image, transparent, drawn)
-    w, h = image.size
-    return GifFrame(w, h, box, palette, data, transparent, clear and not plan.flatten, marks,
-                    plan.flatten, bool(plan.reserve))  # fmt: skip
-
-
-def _gif_block(
-    image: Image.Image, transparent: int | None, drawn: tuple | None = None
-) -> tuple[tuple, bytes, bytes]:
-    """(box, local colour table, LZW image data) of a palette image: with a transparent index,
-    only the box around its other pixels is written (the rest shows the cleared background:
-    the writer disposes every frame to it; ``drawn``: that box's first and last column and
-    row when known), else the whole frame. The compression is Pillow's GIF encoder
-    (``GifImagePlugin.getdata``, whose image descriptor and code size byte are left out: the
-    writer writes its own)."""
-    w, h = image.size
-    box = (0, 0, w, h)
-    if transparent is not None:
-        if drawn is None:
-            seen = np.asarray(image) != transparent
-            rows, cols = np.flatnonzero(seen.any(axis=1)), np.flatnonzero(seen.any(axis=0))
-            drawn = (cols[0], rows[0], cols[-1], rows[-1]) if rows.size else (0, 0, -1, -1)
-        x0, y0, x1, y1 = (int(v) for v in drawn)
-        if x1 < 0:  # nothing drawn: one transparent pixel
-            box = (0, 0, 1, 1)
-        else:
-            box = (x0, y0, x1 - x0 + 1, y1 - y0 + 1)
-        if box != (0, 0, w, h):
-            image = image.crop((box[0], box[1], box[0] + box[2], box[1] + box[3]))
-    pal = bytes(image.getpalette() or [])[:768]
-    pal += bytes(768 - len(pal))
-    chunks = GifImagePlugin.getdata(image)
-    # [image descriptor (10 bytes), LZW code size (1 byte), the data sub-blocks..., b"\0"]
-    if len(chunks[0]) != 10 or chunks[0][:1] != b"," or chunks[1] != b"\x08":
-        raise RuntimeError("Pillow's GIF frame data is not laid out as expected")
-    return box, pal, b"".join(chunks[2:])
-
-
 def write_gif(
     source,
     path,
@@ -228,12 +74,13 @@ def write_gif(
     flatten: bool = False,
 ) -> bool:
     """Write ``count`` frames lasting ``total`` seconds as a GIF at ``path``, atomically, frame
-    by frame: ``source(plan)`` gives the frames (RGBA arrays, or ``GifFrame``s made under
-    ``plan`` by ``gif_frame``) in order, and is called again, from the first frame, when a
-    frame shows the plan wrong (a translucent frame after opaque ones: the whole animation is
-    flattened onto ``matte``; a frame without empty pixels among ones with: index 255 kept in
-    every frame). Each frame is written as it comes (its block compressed by ``gif_frame``,
-    where it was made) and one frame is held. ``flatten``: flatten from the first frame (the
+    by frame: ``source(plan)`` gives the frames (RGBA arrays, ``GifPicture``s made under
+    ``plan`` by ``gif_picture``, or what ``link_gif`` makes of runs of them where they were
+    drawn) in order, and is called again, from the first frame, when a frame shows the plan
+    wrong (a translucent frame after opaque ones: the whole animation is flattened onto
+    ``matte``; a frame without empty pixels among ones with: index 255 kept in every frame).
+    Each frame is written as it comes (its block compressed where it was made, or here for the
+    frames given as pictures) and one frame is held. ``flatten``: flatten from the first frame (the
     caller knows already). Returns whether the frames were flattened."""
     plan = GifPlan(matte=tuple(matte), flatten=bool(flatten))
     durations = [10 * d for d in frame_durations(count, total, 0.01)]
@@ -250,14 +97,16 @@ def write_gif(
 
 def _write_gif(fh, *, source, plan: GifPlan, made: GifPlan, durations: list[int], loop: int):
     """Write the GIF of ``source(made)``'s frames; ``plan`` is updated from them, and
-    GifRestart raised when the frames show ``made`` wrong. Each frame's encoded block is
-    written as it comes (one frame held: a frame showing the picture of the one before is
-    merged into it, its display time added), so nothing is left to compress at the end."""
+    GifRestart raised when the frames show ``made`` wrong. Each frame's block is written as it
+    comes (one frame held: a frame showing the picture of the one before is merged into it, its
+    display time added); a frame that comes as a picture (an array, or a ``GifPicture`` a run
+    of ``link_gif`` left for the writer) is encoded here against the picture before it."""
     watch = MatteWatch()
     frames = iter(source(made))
+    before: GifPicture | None = None  # the last frame's picture, when known
 
-    def checked(f) -> GifFrame:
-        g = f if isinstance(f, GifFrame) else gif_frame(f, made)
+    def checked(f):
+        g = gif_picture(f, made) if isinstance(f, np.ndarray) else f
         if g.flattened != made.flatten or g.reserve != bool(made.reserve):
             raise ValueError("a GIF frame made under another plan")
         if not plan.flatten and watch.add(g.marks):
@@ -270,8 +119,16 @@ def _write_gif(fh, *, source, plan: GifPlan, made: GifPlan, durations: list[int]
             raise GifRestart
         return g
 
+    def encoded(g) -> GifFrame:
+        nonlocal before
+        if isinstance(g, GifPicture):
+            g, before = encode_gif(g, before), g
+        else:
+            before = g.picture
+        return g
+
     try:
-        held = checked(next(frames))
+        held = encoded(checked(next(frames)))
     except StopIteration:
         raise ValueError("no frames to write") from None
     # Logical screen: the frames' size, no global colour table (each frame has its own).
@@ -282,23 +139,30 @@ def _write_gif(fh, *, source, plan: GifPlan, made: GifPlan, durations: list[int]
     held_ms = durations[0]
     for ms, f in zip(durations[1:], frames, strict=False):
         g = checked(f)
-        if g.same_picture(held):
+        if isinstance(g, GifPicture):
+            same = before is not None and g.same(before)
+        else:
+            same = held.same_picture(g)
+        if same:  # one frame showing the picture longer
             held_ms += ms
+            if isinstance(g, GifFrame) and g.picture is not None:
+                before = g.picture
             continue
-        _put_gif_frame(fh, held, held_ms, bool(plan.reserve))
-        held, held_ms = g, ms
+        _put_gif_frame(fh, held, held_ms)
+        held, held_ms = encoded(g), ms
     for _ in frames:  # more frames than durations: a caller's mistake
         raise ValueError("more GIF frames than their count")
-    _put_gif_frame(fh, held, held_ms, bool(plan.reserve))
+    _put_gif_frame(fh, held, held_ms)
     fh.write(b";")
 
 
-def _put_gif_frame(fh, g: GifFrame, ms: int, transparent: bool) -> None:
-    """One frame's graphic control extension (display time in 10 ms units; with
-    ``transparent``, index 255 transparent and the frame disposed to the background), its image
-    descriptor with its local colour table, and its image data."""
-    flags = (1 | 2 << 2) if transparent else 0
-    fh.write(b"!\xf9\x04" + struct.pack("<BHBB", flags, ms // 10, 255 if transparent else 0, 0))
+def _put_gif_frame(fh, g: GifFrame, ms: int) -> None:
+    """One frame's graphic control extension (display time in 10 ms units, its disposal, its
+    transparent index if any), its image descriptor with its local colour table, and its image
+    data."""
+    t = g.transparent
+    flags = g.disposal << 2 | (t is not None)
+    fh.write(b"!\xf9\x04" + struct.pack("<BHBB", flags, ms // 10, t or 0, 0))
     x, y, w, h = g.box
     fh.write(b"," + struct.pack("<HHHHB", x, y, w, h, 0x80 | 7) + g.palette + b"\x08")
     fh.write(g.data)

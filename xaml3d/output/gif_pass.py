@@ -1,6 +1,7 @@
-"""Compiled passes (numba) over one GIF frame: what ``gif_matte.frame_marks`` and the exact
-palette of ``animation._gif_frame`` compute, in one or two passes over the pixels instead of a
-dozen numpy passes and temporaries.
+"""Compiled passes (numba) over one GIF frame: what ``gif_matte.frame_marks``, the exact
+palette of ``gif_frames._gif_frame`` and the box of what changed since the frame before
+(``gif_frames._changed_box``) compute, in one or two passes over the pixels instead of a dozen
+numpy passes and temporaries.
 
 Importing this module imports numba: ``available`` says whether that may be done, which is
 only when numba is already loaded (the renderer's kernels of an animation's frames: numba's
@@ -138,3 +139,39 @@ def exact_palette(rgba, limit, idx, keys, box):
             idx[y, x] = code
     box[0], box[1], box[2], box[3] = x0, y0, x1, y1
     return n
+
+
+@numba.njit(cache=True, nogil=True)
+def changed_box(now, now_colours, before, before_colours, box):
+    """The first and last column and row (x0, y0, x1, y1 into ``box``, int64 (4,); 0, 0, -1, -1
+    when none) of the pixels whose colour differs between two palette images of one size
+    (``now``/``before``: H x W uint8 indices; ``*_colours``: 256 uint32 colours each)."""
+    h = now.shape[0]
+    w = now.shape[1]
+    x0 = w
+    y0 = h
+    x1 = -1
+    y1 = -1
+    for y in range(h):
+        first = -1
+        for x in range(w):
+            if now_colours[now[y, x]] != before_colours[before[y, x]]:
+                first = x
+                break
+        if first < 0:
+            continue
+        if y0 == h:
+            y0 = y
+        y1 = y
+        if first < x0:
+            x0 = first
+        # from the right, down to the furthest column already known to change
+        for x in range(w - 1, max(first, x1), -1):
+            if now_colours[now[y, x]] != before_colours[before[y, x]]:
+                x1 = x
+                break
+        if first > x1:
+            x1 = first
+    if x1 < 0:
+        x0 = y0 = 0
+    box[0], box[1], box[2], box[3] = x0, y0, x1, y1

@@ -10,7 +10,7 @@ knows nothing of animation). The files are written by ``xaml3d.output.animation`
 from __future__ import annotations
 
 import copy
-from collections import OrderedDict
+from collections import OrderedDict, deque
 from collections.abc import Iterator
 
 from xaml3d.animation.moment import scene_and_values_at, scene_at
@@ -40,6 +40,7 @@ def render_frames(
     settings=None,
     folders=(),
     prepare=None,
+    link=None,
     depth: bool = True,
     window: bool = False,
     **options,
@@ -58,7 +59,10 @@ def render_frames(
     workers remove its temporaries there). ``prepare``: a module-level function applied to each
     Rendering where it was drawn (in the worker), whose result is yielded instead (e.g. the
     frame already encoded, so that less crosses between processes and the encoding runs in
-    parallel too). ``depth=False``: the caller uses the pictures alone (the Renderings' depth
+    parallel too). ``link``: a module-level function given, where they were drawn, the
+    prepared results of each run of consecutive frames one process draws (an iterator, in
+    order), yielding one result for each (e.g. a frame encoded as its difference from the
+    frame before). ``depth=False``: the caller uses the pictures alone (the Renderings' depth
     and distance are None, not computed). ``window``: each frame is the root's whole client area
     at that moment (``render.window.compose_window``: every viewport at its laid-out box, the
     panels, controls and the layers around them), as ``render --window --time t`` draws it;
@@ -69,7 +73,7 @@ def render_frames(
     process draws, not for one frame's."""
     chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
     if executor is not None:
-        items = [(scene, t, storyboard, chosen, prepare, window) for t in times]
+        items = [(scene, t, storyboard, chosen, prepare, window, link) for t in times]
         yield from ordered(executor, render_frame, items)
         return
     times = list(times)
@@ -82,7 +86,7 @@ def render_frames(
         # loading numba again (about a second of CPU each), and with its warmed-up memory.
         accel.expect_frames(share)
         try:
-            first = session.frame(times[0])
+            first = next(_linked([session.frame(times[0])], link))
         finally:
             accel.expect_frames(1)
         yield first
@@ -92,15 +96,14 @@ def render_frames(
         # hand-off costs nothing; runs of consecutive frames keep the output streaming.
         size = max(1, min(CHUNK, -(-len(rest) // (4 * workers))))
         runs = [(tuple(rest[i : i + size]),) for i in range(0, len(rest), size)]
-        kept = (scene, storyboard, chosen, share, prepare, depth, window)  # once per worker
+        kept = (scene, storyboard, chosen, share, prepare, depth, window, link)  # once a worker
         with worker_pool(workers, _keep_scene, kept, folders=folders) as pool:
             for run in ordered(pool, _kept_frames, runs):
                 yield from run
         return
     accel.expect_frames(len(times))
     try:
-        for t in times:
-            yield session.frame(t)
+        yield from _linked((session.frame(t) for t in times), link)
     finally:
         accel.expect_frames(1)
 
@@ -163,11 +166,31 @@ def _nbytes(result) -> int:
     return total
 
 
-def render_frame(scene, t: float, storyboard, settings, prepare=None, window=False) -> tuple:
+def render_frame(
+    scene, t: float, storyboard, settings, prepare=None, window=False, link=None
+) -> tuple:
     """(t, the Rendering of ``scene_at(scene, t, storyboard)`` with ``settings``: its viewport,
-    or with ``window`` the whole client area), passed through ``prepare`` when given."""
+    or with ``window`` the whole client area), passed through ``prepare`` when given, and
+    through ``link`` as a run of one frame."""
     r = _draw(scene_at(scene, t, storyboard), settings, window)
-    return t, (r if prepare is None else prepare(r))
+    return next(_linked([(t, r if prepare is None else prepare(r))], link))
+
+
+def _linked(frames, link):
+    """(t, result) of each of ``frames`` ((t, result) pairs of one run), the results passed
+    through ``link`` when given."""
+    if link is None:
+        yield from frames
+        return
+    times: deque = deque()
+
+    def results():
+        for t, r in frames:
+            times.append(t)
+            yield r
+
+    for r in link(results()):
+        yield times.popleft(), r
 
 
 def _draw(frame, settings, window: bool, store=None, depth: bool = True) -> Rendering:
@@ -183,12 +206,13 @@ _KEPT: dict = {}  # a pool worker's FrameSession (sent once, not per frame)
 
 
 def _keep_scene(
-    scene, storyboard, settings, share: int = 1, prepare=None, depth=True, window=False
+    scene, storyboard, settings, share: int = 1, prepare=None, depth=True, window=False, link=None
 ) -> None:
     _KEPT["session"] = FrameSession(scene, storyboard, settings, prepare, depth, window)
+    _KEPT["link"] = link
     accel.expect_frames(share)  # about this many frames each: they pay for the kernels together
 
 
 def _kept_frames(times) -> list:
     session = _KEPT["session"]
-    return [session.frame(t) for t in times]
+    return list(_linked((session.frame(t) for t in times), _KEPT.get("link")))

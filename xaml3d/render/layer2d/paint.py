@@ -117,7 +117,10 @@ def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
         mask = paint_of(g.opacity_mask, box) if box is not None else None
         if mask is not None:
             mask.setBlendMode(skia.BlendMode.kDstIn)
-            canvas.drawRect(box, mask)
+            # over the whole layer, as WPF multiplies the content by the mask brush wherever it
+            # is (a gradient pads beyond its box): a rectangle's own antialiased edge would
+            # leave the content's edge pixels outside it, and half of those on it, unmasked
+            canvas.drawPaint(mask)
     if layered:
         canvas.restore()
     canvas.restore()

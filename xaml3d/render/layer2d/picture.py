@@ -100,7 +100,7 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=N
                 mask = skia.Paint()
                 mask.setColor(skia.ColorTRANSPARENT)
             mask.setBlendMode(skia.BlendMode.kDstIn)
-            canvas.drawRect(box, mask)
+            canvas.drawPaint(mask)  # the whole layer: its edge pixels too (paint._draw_group)
         canvas.restore()  # the layer: faded and filtered into its parent
         canvas.restore()
     return surface.makeImageSnapshot().toarray(
