@@ -238,17 +238,30 @@ def test_a_kernel_module_is_kept_then_called_without_numba(tmp_path):
     assert e["numba"] and e["native"] == [] and e["grid"] == want_grid
 
 
-def test_a_new_source_is_a_new_key_and_the_old_folder_goes(tmp_path):
-    (tmp_path / "probe_kernels.py").write_text(_KERNELS)
+def test_a_new_source_is_a_new_key_and_old_folders_go_beyond_a_few(tmp_path, monkeypatch):
+    from xaml3d.native import store
+
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), XAML3D_NATIVE="1",
                PYTHONPATH=f"{tmp_path}{os.pathsep}{ROOT}")  # fmt: skip
+    native = tmp_path / "cache" / "native"
+    (tmp_path / "probe_kernels.py").write_text(_KERNELS)
     _run(_CALL, env, tmp_path)
-    (old,) = (tmp_path / "cache" / "native").glob("probe_kernels-*")
+    (first,) = native.glob("probe_kernels-*")
     (tmp_path / "probe_kernels.py").write_text(_KERNELS.replace("SCALE = 3", "SCALE = 4"))
     r = _run(_CALL, env, tmp_path)
     assert r["native"] == [] and r["SCALE"] == 4  # the old code is not used
-    (new,) = (tmp_path / "cache" / "native").glob("probe_kernels-*")
-    assert new != old and not old.exists()
+    # another install sharing the cache keeps its folder: the last used few are kept
+    assert len(list(native.glob("probe_kernels-*"))) == 2 and first.exists()
+    for k in range(store.KEEP_OTHERS + 2):  # more keys than are kept: the oldest go first
+        old = native / f"probe_kernels-old{k}"
+        old.mkdir()
+        (old / "manifest.json").write_text("{}")
+        os.utime(old / "manifest.json", (1000 + k, 1000 + k))
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "cache"))
+    store.prune("probe_kernels", "none")
+    kept = sorted(p.name for p in native.glob("probe_kernels-*"))
+    assert len(kept) == store.KEEP_OTHERS
+    assert "probe_kernels-old0" not in kept and first.name in kept
 
 
 def test_native_modules_do_not_import_numba():

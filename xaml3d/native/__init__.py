@@ -241,4 +241,5 @@ def _load(name: str) -> tuple[dict, dict, list]:
         native.setdefault(kernel, []).append((abi.Signature(entry["args"], entry["result"]), fn))
     if not native:
         return {}, {}, []
+    store.touch(where)
     return native, manifest.get("constants", {}), manifest.get("dispatchers", [])

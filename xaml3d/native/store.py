@@ -96,19 +96,40 @@ def write_atomically(path: Path, data: bytes) -> None:
         raise
 
 
+# Folders of other keys kept per module: other installs on the machine (a second virtual
+# environment, another Python) share the cache and each needs its own; the oldest go.
+KEEP_OTHERS = 7
+
+
 def prune(module: str, k: str) -> None:
-    """Remove the module's folders of other keys (older sources, another numba or processor):
-    nothing loads them again. Best effort: a folder another process still reads loses only
-    speed there (its manifest or objects are gone, so it runs those kernels through numba)."""
+    """Remove the module's folders of other keys beyond the KEEP_OTHERS last used (a loader
+    touches its manifest): older sources, another numba, processor or install. Best effort: a
+    folder another process still reads loses only speed there (its manifest or objects are
+    gone, so it runs those kernels through numba, and keeps them again)."""
     parent = folder(module, k).parent
+    others = []
     for other in parent.glob(f"{module}-*"):
         if other.name != f"{module}-{k}" and other.is_dir():
-            for f in other.iterdir():
-                try:
-                    f.unlink()
-                except OSError:
-                    pass
             try:
-                other.rmdir()
+                others.append(((other / "manifest.json").stat().st_mtime, other))
+            except OSError:
+                others.append((0.0, other))
+    others.sort(reverse=True)
+    for _, other in others[KEEP_OTHERS:]:
+        for f in other.iterdir():
+            try:
+                f.unlink()
             except OSError:
                 pass
+        try:
+            other.rmdir()
+        except OSError:
+            pass
+
+
+def touch(where: Path) -> None:
+    """Mark a folder's manifest as used now (``prune`` keeps the last used)."""
+    try:
+        os.utime(where / "manifest.json")
+    except OSError:
+        pass
