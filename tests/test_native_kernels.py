@@ -238,6 +238,27 @@ def test_a_kernel_module_is_kept_then_called_without_numba(tmp_path):
     assert e["numba"] and e["native"] == [] and e["grid"] == want_grid
 
 
+def test_the_first_run_on_a_machine_says_it_prepares_the_kernels(tmp_path):
+    """Told once, on stderr, when a kernel module with nothing kept on this machine goes to
+    numba (the command line sets ``native.notify``); not again once it is kept."""
+    (tmp_path / "probe_kernels.py").write_text(_KERNELS)
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), XAML3D_NATIVE="1",
+               PYTHONPATH=f"{tmp_path}{os.pathsep}{ROOT}")  # fmt: skip
+    code = "import sys; from xaml3d import native; native.notify = print\n" + _CALL
+
+    def run() -> str:
+        proc = subprocess.run([sys.executable, "-c", code], env=env, cwd=tmp_path,
+                              capture_output=True, text=True, timeout=300)  # fmt: skip
+        assert proc.returncode == 0, proc.stderr
+        return proc.stdout
+
+    from xaml3d import native
+
+    first = run()
+    assert first.count(native.FIRST_TIME) == 1
+    assert native.FIRST_TIME not in run()
+
+
 def test_a_new_source_is_a_new_key_and_old_folders_go_beyond_a_few(tmp_path, monkeypatch):
     from xaml3d.native import store
 

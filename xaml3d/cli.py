@@ -15,7 +15,7 @@ import threading
 
 import click
 
-from xaml3d import __version__
+from xaml3d import __version__, native
 
 # Each command's module is imported when the command runs (or its help is shown): ``info`` and
 # ``validate`` never import the renderer, the exporters or the image encoders.
@@ -68,7 +68,8 @@ def main(ctx: click.Context) -> None:
     # Numerical trouble in a scene is reported as diagnostics (CAM, MSH, RND codes): the math
     # handles extreme values itself, so no blanket numpy errstate hides what it would warn
     # (the test suite runs every command with numpy raising on each).
-    pass
+    # The first run on a machine compiles the kernels (seconds): say so when it happens.
+    native.notify = lambda message: click.echo(message, err=True)
 
 
 def run() -> None:

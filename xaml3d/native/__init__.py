@@ -61,6 +61,8 @@ class Kernels:
     def real(self):
         """The real kernel module (importing it imports numba)."""
         if self._module is None:
+            if notify is not None and not kept(self._name):
+                _first_time()
             self._module = importlib.import_module(self._name)
         return self._module
 
@@ -164,6 +166,22 @@ def bind(kernel, *fixed):
 
 
 _stand_ins: dict[str, Kernels] = {}
+
+# Told once per process (the command line sets it: a line on stderr) when a kernel module with
+# no native code kept on this machine goes to numba: the first run on a machine (or after an
+# upgrade) compiles the kernels, which takes seconds where later runs take milliseconds.
+notify = None
+FIRST_TIME = (
+    "note: preparing xaml3d's compiled kernels for this machine (the first run only: numba "
+    "compiles them, 10-60 s; later runs load them at once)"
+)
+_notified: list = []
+
+
+def _first_time() -> None:
+    if not _notified:
+        _notified.append(True)
+        notify(FIRST_TIME)
 
 
 def kept(name: str) -> bool:
