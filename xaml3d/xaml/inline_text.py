@@ -1,13 +1,16 @@
 """A TextBlock's inlines as WPF lays them out: Run, Span, Bold, Italic, Underline, Hyperlink and
-LineBreak (visuals_reader, control_content; the TextBlock step of the 2D layer).
+LineBreak (visuals_reader, control_content; the TextBlock step of the 2D layer), written in the
+TextBlock or in a ``<TextBlock.Inlines>`` property element.
 
 Each inline takes its own FontWeight, FontStyle, FontSize, Foreground and TextDecorations
 (Underline) over those it inherits; Bold, Italic and Underline set theirs, a Hyperlink draws
-in WPF's #FF0066CC, underlined. A Run's text is its Text attribute or its content. The text is
-collapsed as XAML collapses it (runs of white space become one space, across the inlines; none
-at the start and the end of the TextBlock, nor around a LineBreak). The runs flow on one line,
-each measured with its own font; a LineBreak starts a new line; a line is as tall as its tallest
-run's line (Segoe UI's line spacing) and its runs share the baseline of the lowest one.
+in WPF's #FF0066CC, underlined. A Run's text is its Text attribute, its ``<Run.Text>`` or its
+content. The text is collapsed as XAML collapses it (runs of white space become one space,
+across the inlines; none at the start and the end of the TextBlock, nor around a LineBreak),
+unless xml:space="preserve" keeps it as written (a line feed then breaks the line). The runs
+flow on one line, each measured with its own font; a LineBreak starts a new line; a line is as
+tall as its tallest run's line (Segoe UI's line spacing) and its runs share the baseline of the
+lowest one.
 Wrapping breaks at spaces, as a plain TextBlock's text; TextTrimming is not applied to lines of
 several runs.
 """
@@ -22,6 +25,13 @@ from xaml3d.layout.text import baseline, line_height, text_width
 from xaml3d.scene.types import SolidColorBrush
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
+from xaml3d.xaml.text_content import (
+    holder_text,
+    is_white,
+    preserves_space,
+    property_element,
+    split_words,
+)
 
 # the inline elements; any other element inside a TextBlock (InlineUIContainer...) is skipped
 _INLINES = {"Run", "Span", "Bold", "Italic", "Underline", "Hyperlink", "LineBreak"}
@@ -46,10 +56,13 @@ Line = list  # of (text, Format) runs, left to right
 
 
 def has_inlines(el) -> bool:
-    """Whether a TextBlock's content holds inline elements (else its text is plain)."""
-    if el.get("Text") is not None:
+    """Whether a TextBlock's content holds inline elements, directly or in a
+    ``<TextBlock.Inlines>`` property element (else its text is plain)."""
+    if el.get("Text") is not None or property_element(el, "Text") is not None:
         return False
-    return any(isinstance(k.tag, str) and qname(k.tag)[1] in _INLINES for k in el)
+    return any(isinstance(k.tag, str) and (qname(k.tag)[1] in _INLINES
+                                           or qname(k.tag)[1].endswith(".Inlines"))
+               for k in el)  # fmt: skip
 
 
 def _own(r, el, fmt: Format) -> Format:
@@ -103,18 +116,26 @@ def _tokens(r, el, fmt: Format, out: list) -> None:
             elif local in _INLINES:
                 own = _own(r, k, fmt)
                 text = k.get("Text") if local == "Run" else None
+                holder = property_element(k, "Text") if local == "Run" else None
                 if text is not None and split_markup(text) is None:
                     out.append((text, own))
+                elif holder is not None:  # <Run.Text>...</Run.Text>
+                    out.append((holder_text(holder) or "", own))
                 else:
                     _tokens(r, k, own, out)
+            elif local.endswith(".Inlines"):  # <TextBlock.Inlines>, <Span.Inlines>...
+                _tokens(r, k, fmt, out)
         if k.tail:
             out.append((k.tail, fmt))
 
 
 def inline_lines(r, el, base: Format) -> list[Line]:
-    """A TextBlock's inlines as lines of runs (white space collapsed as XAML does)."""
+    """A TextBlock's inlines as lines of runs (white space collapsed as XAML does, or kept as
+    written under xml:space="preserve", a line feed then starting a line)."""
     tokens: list = []
     _tokens(r, el, base, tokens)
+    if preserves_space(el):
+        return _preserved(tokens)
     lines: list[Line] = [[]]
     space = True  # after the start of a line: leading white space goes
     for t in tokens:
@@ -123,14 +144,14 @@ def inline_lines(r, el, base: Format) -> list[Line]:
             space = True
             continue
         text, fmt = t
-        parts = text.split()
+        parts = split_words(text)
         if not parts:
             if not space and text:
                 lines[-1].append((" ", fmt))
                 space = True
             continue
-        s = (" " if text[0].isspace() and not space else "") + " ".join(parts)
-        s += " " if text[-1].isspace() else ""
+        s = (" " if is_white(text[0]) and not space else "") + " ".join(parts)
+        s += " " if is_white(text[-1]) else ""
         lines[-1].append((s, fmt))
         space = s.endswith(" ")
     out = []
@@ -140,6 +161,22 @@ def inline_lines(r, el, base: Format) -> list[Line]:
             line[-1:] = [(text, line[-1][1])] if text else []
         out.append(line)
     return out
+
+
+def _preserved(tokens: list) -> list[Line]:
+    """The runs as written (xml:space="preserve"): a LineBreak or a line feed starts a line."""
+    lines: list[Line] = [[]]
+    for t in tokens:
+        if t is None:
+            lines.append([])
+            continue
+        text, fmt = t
+        for i, part in enumerate(text.split("\n")):
+            if i:
+                lines.append([])
+            if part:
+                lines[-1].append((part, fmt))
+    return lines
 
 
 def line_width(line: Line) -> float:

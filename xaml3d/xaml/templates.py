@@ -37,6 +37,10 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
 - Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
   the content below when IsExpanded.
 
+A text Header of a GroupBox, Expander, TabItem or MenuItem is AccessText, as their templates'
+ContentPresenter (RecognizesAccessKey) shows it: ``_Name`` shows Name (``text_content``); a
+ToolBar's Header is not.
+
 Part nodes (type ``#text``, ``#part``, ``#tabs``, ``#grip``) have no element of their own: a
 ``#text`` part carries its text's drawing, a ``#part`` its Background, BorderBrush,
 BorderThickness and CornerRadius (painted as a Border's), ``#tabs`` is the header row whose
@@ -67,6 +71,7 @@ from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
+from xaml3d.xaml.text_content import access_text, holder_text, property_element
 from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _inherited, _rgb
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
@@ -191,20 +196,23 @@ def _content(reader, el, font) -> list:
     return [text_part(reader, el, text, font)] if text else []
 
 
-def _header(reader, el, font) -> list:
-    """A headered control's Header: its text (attribute or property element) or elements."""
+def _header(reader, el, font, access: bool = True) -> list:
+    """A headered control's Header: its text (attribute or property element) or elements.
+    ``access``: its template's ContentPresenter recognizes access keys (GroupBox, Expander,
+    TabItem, MenuItem): a text header is AccessText (``text_content.access_text``)."""
+    shown = access_text if access else str
     raw = el.get("Header")
     if raw is not None:
         if split_markup(raw) is not None:
             return []
-        return [text_part(reader, el, " ".join(raw.split()), font)]
-    for child in el:
-        if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Header"):
-            kids = _elements(child)
-            if kids:
-                return _build_all(reader, kids, font)
-            text = " ".join((child.text or "").split())
-            return [text_part(reader, el, text, font)] if text else []
+        return [text_part(reader, el, shown(" ".join(raw.split())), font)]
+    holder = property_element(el, "Header")
+    if holder is not None:
+        kids = _elements(holder)
+        if kids:
+            return _build_all(reader, kids, font)
+        text = shown(holder_text(holder) or "")
+        return [text_part(reader, el, text, font)] if text else []
     return []
 
 
@@ -412,26 +420,6 @@ def _expander(reader, n, el, v, font) -> None:
     n.children = [part(reader, L.DOCK, font, kids)]
 
 
-def _access_text(text: str) -> str:
-    """A MenuItem header as AccessText shows it at rest: the first lone ``_`` marks the access
-    key and is not shown (``__`` is one underscore)."""
-    out, i, marked = [], 0, False
-    while i < len(text):
-        c = text[i]
-        if c == "_" and i + 1 < len(text):
-            if text[i + 1] == "_":
-                out.append("_")
-                i += 2
-                continue
-            if not marked:
-                marked = True
-                i += 1
-                continue
-        out.append(c)
-        i += 1
-    return "".join(out)
-
-
 def _menu(reader, n, el, v, font) -> None:
     from xaml3d.xaml.panels_reader import FONT_SIZE, parse_length
 
@@ -447,7 +435,7 @@ def _menu(reader, n, el, v, font) -> None:
             k = reader.build(item, font)
         else:  # WPF wraps any other item in a MenuItem, the item as its Header
             if not local and len(item) == 0:
-                inner = [text_part(reader, el, _access_text(" ".join((item.text or "").split())),
+                inner = [text_part(reader, el, access_text(" ".join((item.text or "").split())),
                                    font)]  # fmt: skip
             else:
                 inner = _build_all(reader, [item], font)
@@ -479,14 +467,11 @@ def _menu_item(reader, n, el, v, font) -> None:
     n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
     n.padding = (0.0,) * 4
     pad = v.get("Padding", parse_thickness, (6.0, 0.0, 6.0, 0.0))
-    header = _header(reader, el, font)
+    header = _header(reader, el, font)  # AccessText: its access-key marker is not shown
     ink = _menu_ink(reader, el)
-    for k in header:  # the header's text is AccessText: its access-key marker is not shown
+    for k in header:
         if k.type == TEXT_PART and k.drawing is not None:
-            text = _access_text(k.drawing.text)
-            w = text_width(text, font, *_font_style(el, reader.r))
-            k.estimate = (w, k.estimate[1])
-            k.drawing = replace(k.drawing, text=text, brush=ink)
+            k.drawing = replace(k.drawing, brush=ink)
     n.children = [_presenter(reader, font, header, pad, "Left", "Center")]
 
 
@@ -529,7 +514,7 @@ def _tool_bar(reader, n, el, v, font) -> None:
         visibility="Collapsed" if locked else "Visible",
     )
     kids = [grip]
-    header = _header(reader, el, font)
+    header = _header(reader, el, font, access=False)
     if header:
         kids.append(_presenter(reader, font, header, (4.0, 0.0, 4.0, 0.0), "Center", "Center"))
     items = []

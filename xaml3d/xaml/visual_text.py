@@ -1,7 +1,8 @@
 """The text and boxes of a visual's elements, as WPF's OnRender draws them (visuals_reader).
 
-Covers a TextBlock's (and a control's) text: its content (Text, Content, white space collapsed;
-a TextBlock's inlines in their own formats and lines: ``inline_text``), the inherited
+Covers a TextBlock's (and a control's) text: its content (Text, Content, as attributes or
+property elements, white space as XAML reads it, access keys: ``text_content``; a TextBlock's
+inlines in their own formats and lines: ``inline_text``), the inherited
 Foreground, FontSize, FontWeight, FontStyle and FontFamily, TextAlignment, TextWrapping and
 TextTrimming (CharacterEllipsis, WordEllipsis) to the width the layout gives the TextBlock, and
 one TextDrawing per line at Segoe UI's line metrics (``xaml3d.layout.text``); and the Background
@@ -27,7 +28,15 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
-from xaml3d.xaml.panels_reader import _content_text, element_style
+from xaml3d.xaml.panels_reader import element_style
+from xaml3d.xaml.text_content import (
+    ACCESS_KEY_CONTROLS,
+    access_text,
+    holder_text,
+    preserves_space,
+    property_element,
+    xaml_text,
+)
 
 
 def _rgb(hex6: str, a: float = 1.0) -> SolidColorBrush:
@@ -39,13 +48,42 @@ BLACK = _rgb("000000")
 
 
 def _text_of(el) -> str:
+    """The text an element shows: its Text or Content, as an attribute or a property element
+    (``text_content``), else its content's text; through AccessText for the controls whose
+    template recognizes access keys (``_Name`` shows ``Name``)."""
+    text = _plain_text(el)
+    if isinstance(el.tag, str) and qname(el.tag)[1] in ACCESS_KEY_CONTROLS:
+        return access_text(text)
+    return text
+
+
+def _plain_text(el) -> str:
     for prop in ("Text", "Content"):
         s = el.get(prop)
         if s is not None and split_markup(s) is None:
             return " ".join(s.split())
         if s is not None:
             return ""
-    return _content_text(el)
+        holder = property_element(el, prop)
+        if holder is not None:
+            return holder_text(holder) or ""
+    return content_text(el)
+
+
+def content_text(el) -> str:
+    """The text of an element's content: its own text, inline elements' text (Run, Bold ...)
+    and the text after property elements, white space as XAML reads it (``xml:space``)."""
+    parts = [el.text or ""]
+    for child in el:
+        local = qname(child.tag)[1] if isinstance(child.tag, str) else "."
+        if local == "Run" and child.get("Text") is not None:  # a Run's text as an attribute
+            parts.append(child.get("Text"))
+        elif local == "LineBreak":
+            parts.append("\n" if preserves_space(el) else " ")
+        elif "." not in local:
+            parts.append("".join(child.itertext()))
+        parts.append(child.tail or "")
+    return xaml_text("".join(parts), preserves_space(el))
 
 
 def _inherited(el, names: tuple[str, ...], r=None) -> str | None:
@@ -182,7 +220,11 @@ def trim(line: str, font: float, weight: int, italic: bool, width: float, mode: 
 
 def _lines(text: str, font: float, weight: int, italic: bool, width: float) -> list[str]:
     """``text`` broken into lines no wider than ``width`` at spaces (a word wider than the
-    line keeps a line of its own)."""
+    line keeps a line of its own). A line feed (kept by xml:space="preserve") starts a new
+    line, as it does in WPF's text formatter."""
+    if "\n" in text:
+        return [x for part in text.split("\n") for x in (_lines(part, font, weight, italic,
+                                                               width) or [""])]  # fmt: skip
     if not text or not math.isfinite(width):
         return [text] if text else []
     lines: list[str] = []
@@ -218,6 +260,8 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     out = []
     for i, line in enumerate(_lines(text, font, weight, italic, width)):
         line = trim(line, font, weight, italic, w, mode)
+        if not line:
+            continue  # an empty line (between two line feeds) takes its height only
         tw = text_width(line, font, weight, italic)
         lx = x
         if align_center or alignment == "Center":
@@ -229,6 +273,8 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
             text=line, origin=(lx, ly), font_size=font, weight=weight, italic=italic,
             family=family, brush=brush, **r.ctx.position(el),
         ))  # fmt: skip
+    if not out:
+        return None
     return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
 
 
