@@ -218,6 +218,9 @@ def test_validate_refuses_a_null_field_of_view(tmp_path):
     assert p.returncode == 1
     out = p.stdout.decode()
     assert "n.xaml:1:195: error XAML013 PerspectiveCamera.FieldOfView cannot be {x:Null}" in out
+    # the camera command shows the value that stands in as the default it is
+    cam = xaml3d("camera", "n.xaml", cwd=tmp_path).stdout.decode().splitlines()
+    assert "  FieldOfView = 45 (default)" in cam
 
 
 def test_short_names_get_a_suggestion():
