@@ -230,3 +230,26 @@ def test_short_names_get_a_suggestion():
     assert voc.suggest("rOW", ["Row", "Column"]) == "Row"
     assert voc.suggest("Lfet", ["Left", "Top"]) == "Left"
     assert voc.suggest("Xyz", ["Row", "Column"]) is None
+
+
+def test_an_unknown_x_directive_in_a_resource_file_is_refused_where_it_is_read(tmp_path):
+    (tmp_path / "d.xaml").write_text(
+        f'<ResourceDictionary {NS}>\n  <DiffuseMaterial x:Key="m" x:Sharde="False" Brush="Red"/>'
+        "\n</ResourceDictionary>"
+    )
+    (tmp_path / "s.xaml").write_text(
+        f"<Viewport3D {NS} Width='10' Height='10'><ModelVisual3D><ModelVisual3D.Content>"
+        "<GeometryModel3D Material='{StaticResource m}'><GeometryModel3D.Geometry>"
+        "<MeshGeometry3D Positions='0,0,0 1,0,0 0,1,0' TriangleIndices='0 1 2'/>"
+        "</GeometryModel3D.Geometry></GeometryModel3D>"
+        "</ModelVisual3D.Content></ModelVisual3D></Viewport3D>"
+    )
+    scene = load(tmp_path / "s.xaml", (tmp_path / "d.xaml",))
+    found = [(d.code, d.file, d.line, d.column, d.message)
+             for d in scene.diagnostics if d.severity == "error"]  # fmt: skip
+    where = "does not exist in XML namespace 'http://schemas.microsoft.com/winfx/2006/xaml'"
+    assert found == [
+        ("XAML004", str(tmp_path / "d.xaml"), 2, 30,
+         "x:Sharde is not a directive of the XAML language namespace (did you mean x:Shared?): "
+         f"WPF's loader refuses it (\"The property 'Sharde' {where}\")"),
+    ]  # fmt: skip

@@ -28,7 +28,7 @@ from xaml3d.xaml.context import (
     qname,
     split_markup,
 )
-from xaml3d.xaml.directives import X_DIRECTIVES
+from xaml3d.xaml.directives import X_DIRECTIVES, unknown_directive
 from xaml3d.xaml.parser import XAML_NS
 from xaml3d.xaml.struct_values import (
     collection_items,
@@ -121,9 +121,12 @@ class Props:
                 if local == "Class":
                     msg = f"x:Class={value!r}: code-behind is not run"
                     ctx.diag("XAML007", msg, self.el, attr=name)
-                elif local not in _SILENT_X and local in X_DIRECTIVES:
-                    # (a name that is no directive is refused where the document is checked:
-                    # directives.py)
+                elif local not in X_DIRECTIVES:
+                    # the scene's own document is checked whole (directives.py); an element of
+                    # another one (App.xaml, a merged or -r dictionary) is checked as it is read
+                    if ctx.file_elsewhere(self.el) is not None:
+                        ctx.diag("XAML004", unknown_directive(local), self.el, attr=name)
+                elif local not in _SILENT_X:
                     ctx.diag("XAML006", f"x:{local} is not used by xaml3d", self.el, attr=name)
                 continue
             if ns is not None and not is_presentation(ns):
@@ -210,7 +213,8 @@ class Props:
                 self.prop_el[prop] = child
                 if not kids and (child.text or "").strip():
                     self.elem_text[prop] = child.text.strip()
-            elif ns is not None and not is_presentation(ns) and "." in local:
+            elif (ns is not None and not is_presentation(ns) and "." in local
+                  and (ns, local.rpartition(".")[0]) != (self.ns, self.type)):  # fmt: skip
                 # another assembly's attached property (<i:Interaction.Behaviors>): a value of
                 # that property, not content of this element
                 msg = f"element {local!r} from namespace {ns!r} skipped"
