@@ -113,7 +113,7 @@ def test_attached_properties_are_accepted_on_any_element():
 def test_an_attached_property_its_owner_does_not_have_is_refused():
     found = _found('<TextBlock Grid.Rwo="1" DockPanel.Dok="Top"/>')
     assert [m for _, _, m in found] == [
-        f"property 'Rwo' is not a property of Grid{REFUSED}",
+        f"property 'Rwo' is not a property of Grid (did you mean 'Row'?){REFUSED}",
         f"property 'Dok' is not a property of DockPanel (did you mean 'Dock'?){REFUSED}",
     ]
 

@@ -18,7 +18,10 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML001": (INFO, "element from an unknown or clr-namespace namespace skipped"),
     "XAML002": (INFO, "attribute from an unknown or clr-namespace namespace ignored"),
     "XAML003": (ERROR, "unknown element type in the WPF namespace (closest known name suggested)"),
-    "XAML004": (ERROR, "unknown property of a WPF type (closest known name suggested)"),
+    "XAML004": (
+        ERROR,
+        "unknown property of a WPF type or unknown x: directive (closest known name suggested)",
+    ),
     "XAML005": (WARNING, "known element type that xaml3d does not support"),
     "XAML006": (INFO, "known property that xaml3d does not use"),
     "XAML007": (INFO, "x:Class code-behind is not run"),

@@ -24,7 +24,7 @@ from dataclasses import replace
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
 from xaml3d.xaml import values as V
-from xaml3d.xaml.context import a_an, element_name, qname, split_markup, x_attr
+from xaml3d.xaml.context import a_an, element_name, is_presentation, qname, split_markup, x_attr
 from xaml3d.xaml.models_reader import rotation, rotation_as_quaternion
 from xaml3d.xaml.path_data import parse_path_figures
 
@@ -296,6 +296,8 @@ def read_trigger(r, trigger_el, out: list, begun: set, hosts: dict | None = None
     ``owner`` is the element holding the trigger (``<X.Triggers>``'s X: WPF's BeginStoryboard
     begins it with that element as the target of animations that name none; ``hosts`` gets
     id(storyboard) -> that element)."""
+    if not is_presentation(qname(trigger_el.tag)[0]):
+        return  # another assembly's trigger (Microsoft.Xaml.Behaviors' i:EventTrigger)
     p = r.props(trigger_el)
     if p.type != "EventTrigger":
         return  # property/data triggers (styles) are not animation starts
@@ -304,6 +306,11 @@ def read_trigger(r, trigger_el, out: list, begun: set, hosts: dict | None = None
     owner = None if host is None else element_name(host) or qname(host.tag)[1]
     event = p.string("RoutedEvent")
     for action in p.items("Actions"):
+        ans, alocal = qname(action.tag)
+        if not is_presentation(ans):
+            msg = f"element {alocal!r} from namespace {ans!r} skipped"
+            r.ctx.diag("XAML001", msg, action)
+            continue
         ap = r.props(action)
         if ap.type != "BeginStoryboard":
             if ap.etype is not None and ap.etype.kind == "action":

@@ -42,6 +42,7 @@ from xaml3d.xaml.context import (
     split_markup,
     x_attr,
 )
+from xaml3d.xaml.directives import check_directives
 from xaml3d.xaml.framework_check import check_framework
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
@@ -390,7 +391,7 @@ class _Walk:
                     self.visit(child)
             return
         if local in _TEMPLATES:
-            if any(True for _ in el.iter("{*}Viewport3D")):
+            if any(_wpf(v) for v in el.iter("{*}Viewport3D")):
                 r.ctx.diag("XAML015", f"Viewport3D inside {a_an(local)} is not instantiated", el)
             return
         if local == "Viewport3D":
@@ -418,9 +419,13 @@ class _Walk:
         for child in el:
             if not isinstance(child.tag, str):
                 continue
-            cl = qname(child.tag)[1]
+            cns, cl = qname(child.tag)
             if "." in cl:
-                if cl.endswith((".Resources", ".Triggers", ".MergedDictionaries")):
+                # WPF's own Resources and Triggers are read elsewhere; another assembly's
+                # property element of that name (<i:Interaction.Triggers>) is walked as any
+                # other: its elements are skipped with XAML001
+                wpf = is_presentation(cns)
+                if wpf and cl.endswith((".Resources", ".Triggers", ".MergedDictionaries")):
                     continue
                 for g in child:
                     if isinstance(g.tag, str):
@@ -429,9 +434,28 @@ class _Walk:
                 self.visit(child)
 
     def _triggers(self, el) -> None:
+        # WPF's own <X.Triggers> only: <i:Interaction.Triggers> (Microsoft.Xaml.Behaviors, a
+        # clr-namespace) holds that library's EventTrigger, another type of the same name,
+        # reported and skipped by visit() as every element of another namespace is
         for child in el:
-            if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Triggers"):
-                self.triggers.extend(k for k in child if isinstance(k.tag, str))
+            if not isinstance(child.tag, str):
+                continue
+            ns, local = qname(child.tag)
+            if is_presentation(ns) and local.endswith(".Triggers"):
+                for k in child:
+                    if not isinstance(k.tag, str):
+                        continue
+                    if is_presentation(qname(k.tag)[0]):
+                        self.triggers.append(k)
+                    else:
+                        self.visit(k)  # a trigger of another assembly: XAML001, skipped
+
+
+def _wpf(el) -> str | None:
+    """The local name of a WPF (presentation namespace) element, None for another namespace's
+    (whose types merely share names with WPF's)."""
+    ns, local = qname(el.tag)
+    return local if is_presentation(ns) else None
 
 
 def _templated_viewport(root):
@@ -441,7 +465,7 @@ def _templated_viewport(root):
         if not is_presentation(qname(el.tag)[0]):
             continue
         for up in el.iterancestors():
-            if isinstance(up.tag, str) and qname(up.tag)[1] in _TEMPLATES:
+            if isinstance(up.tag, str) and _wpf(up) in _TEMPLATES:
                 return qname(up.tag)[1], el
     return None
 
@@ -465,6 +489,7 @@ def build_scene(
     with its storyboards and their tracks (animation_tracks.py)."""
     r = Reader(ctx, resources)
     check_names(ctx, doc.root)
+    check_directives(ctx, doc.root)
     check_styles(ctx, resources, doc.root)
     check_content(ctx, doc.root)
     check_framework(ctx, doc.root)
@@ -478,7 +503,7 @@ def build_scene(
         read_trigger(r, t, storyboards, begun, hosts)
     d = resources.dictionary_of(doc.root)
     for key, entry in d.entries.items() if d else ():
-        if qname(entry.tag)[1] == "Storyboard" and id(entry) not in begun:
+        if _wpf(entry) == "Storyboard" and id(entry) not in begun:
             storyboards.append(read_storyboard(r, entry, None, key))
     ns, root_type = qname(doc.root.tag)
     # a ResourceDictionary or Application file: what it holds is used by scenes (SCN013)

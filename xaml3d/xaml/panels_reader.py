@@ -368,6 +368,12 @@ class PanelsReader:
             if "." in local:
                 if local.rpartition(".")[2] in _NOT_CONTENT:
                     continue
+                owner = (ns, local.rpartition(".")[0])
+                if (not is_presentation(ns) and owner != qname(el.tag)
+                        and id(child) not in self.holds_viewport):  # fmt: skip
+                    # another assembly's attached property (<i:Interaction.Behaviors>): what
+                    # it holds is a value of that property, not laid-out content
+                    continue
                 for g in child:
                     if isinstance(g.tag, str) and "." not in qname(g.tag)[1]:
                         yield g

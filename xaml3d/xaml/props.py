@@ -28,6 +28,7 @@ from xaml3d.xaml.context import (
     qname,
     split_markup,
 )
+from xaml3d.xaml.directives import X_DIRECTIVES, unknown_directive
 from xaml3d.xaml.parser import XAML_NS
 from xaml3d.xaml.struct_values import (
     collection_items,
@@ -39,6 +40,18 @@ from xaml3d.xaml.struct_values import (
 NULL = object()  # an explicit {x:Null}
 
 _COLLECTION_KINDS = ("collection",)
+# value kinds whose WPF type is a value type (a struct: null is refused), by the type's name
+_VALUE_TYPES = {
+    "double": "Double", "bool": "Boolean", "color": "Color", "point3d": "Point3D",
+    "vector3d": "Vector3D", "point": "Point", "quaternion": "Quaternion", "size": "Size",
+    "rect": "Rect", "matrix3d": "Matrix3D", "matrix": "Matrix", "keytime": "KeyTime",
+    "duration": "Duration", "repeat": "RepeatBehavior",
+}  # fmt: skip
+# the element kinds whose value properties are checked for null (an animation's From/To/By are
+# nullable: Double? and so on; a Timeline's BeginTime is a TimeSpan?)
+_NULL_CHECKED_KINDS = {"camera", "light", "visual3d", "model3d", "geometry", "material",
+                       "transform3d", "rotation3d", "brush", "transform2d", "gradientstop",
+                       "keyframe", "viewport"}  # fmt: skip
 _SILENT_X = {"Key", "Name", "Shared", "Uid", "FieldModifier", "ClassModifier", "Subclass"}
 
 
@@ -108,6 +121,11 @@ class Props:
                 if local == "Class":
                     msg = f"x:Class={value!r}: code-behind is not run"
                     ctx.diag("XAML007", msg, self.el, attr=name)
+                elif local not in X_DIRECTIVES:
+                    # the scene's own document is checked whole (directives.py); an element of
+                    # another one (App.xaml, a merged or -r dictionary) is checked as it is read
+                    if ctx.file_elsewhere(self.el) is not None:
+                        ctx.diag("XAML004", unknown_directive(local), self.el, attr=name)
                 elif local not in _SILENT_X:
                     ctx.diag("XAML006", f"x:{local} is not used by xaml3d", self.el, attr=name)
                 continue
@@ -195,6 +213,12 @@ class Props:
                 self.prop_el[prop] = child
                 if not kids and (child.text or "").strip():
                     self.elem_text[prop] = child.text.strip()
+            elif (ns is not None and not is_presentation(ns) and "." in local
+                  and (ns, local.rpartition(".")[0]) != (self.ns, self.type)):  # fmt: skip
+                # another assembly's attached property (<i:Interaction.Behaviors>): a value of
+                # that property, not content of this element
+                msg = f"element {local!r} from namespace {ns!r} skipped"
+                self.r.ctx.diag("XAML001", msg, child, once=(ns, local))
             else:
                 self.content.append(child)
         if self.content and self.etype is not None and self.etype.content:
@@ -263,6 +287,9 @@ class Props:
             attr = self.attr_keys.get(prop)
             if kind == "plain":
                 return self._convert(conv, payload, self.el, prop, default, attr)
+            if kind == "null":
+                self._null_value(prop, attr)
+                return default
             if kind == "element":
                 text = (payload.text or "").strip()
                 if text and len(payload) == 0:
@@ -306,6 +333,19 @@ class Props:
                 return default
             self.r.ctx.diag("XAML013", f"{self.type}.{prop}: expected a value", node)
         return default
+
+    def _null_value(self, prop: str, attr: str | None) -> None:
+        """``{x:Null}`` (or ``<x:Null/>``) given to a property: WPF refuses it when the
+        property's type is a value type (Double, Point3D, Color ...): its DependencyProperty
+        does not take null ("'' is not a valid value for property 'FieldOfView'"). Reference
+        types (collections, KeySpline) and the animations' nullable From/To/By take it."""
+        et = self.etype
+        vtype = _VALUE_TYPES.get(et.property_kind(prop) or "") if et is not None else None
+        if vtype is None or et.kind not in _NULL_CHECKED_KINDS:
+            return
+        msg = (f"{self.type}.{prop} cannot be {{x:Null}}: its type, {vtype}, is a value type "
+               f"(WPF: \"'' is not a valid value for property '{prop}'\")")  # fmt: skip
+        self.r.ctx.diag("XAML013", msg, self.ext_el.get(prop, self.el), attr=attr)
 
     def _struct(self, conv, node, prop, default):
         """A value written as ``<Point3D X=".." .../>`` (struct_values.py), converted by the

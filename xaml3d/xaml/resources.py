@@ -167,6 +167,15 @@ def best_siblings(wanted: list[tuple[object, list[str]]]) -> dict[int, tuple[str
     return chosen
 
 
+def _resources_of(owner: etree._Element, child: etree._Element) -> bool:
+    """Whether ``child`` is ``owner``'s ``<X.Resources>`` property element."""
+    ns, local = qname(child.tag)
+    prefix, dot, prop = local.rpartition(".")
+    if not dot or prop != "Resources":
+        return False
+    return is_presentation(ns) or (ns, prefix) == qname(owner.tag)
+
+
 class Resources:
     """Resource lookup for one load."""
 
@@ -202,7 +211,10 @@ class Resources:
         if qname(owner.tag)[1] == "ResourceDictionary":
             containers.append(owner)
         for child in owner:
-            if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Resources"):
+            # <X.Resources> of WPF's X or of the element's own type (<local:Panel.Resources>
+            # on a custom control is FrameworkElement.Resources); not another assembly's
+            # attached property of that name
+            if isinstance(child.tag, str) and _resources_of(owner, child):
                 kids = [k for k in child if isinstance(k.tag, str)]
                 explicit = (
                     len(kids) == 1

@@ -327,8 +327,23 @@ def suggest(name: str, candidates) -> str | None:
         by_lower.setdefault(c.lower(), c)
     import difflib  # only for a misspelt name: a scene without one never needs it
 
-    found = difflib.get_close_matches(name.lower(), list(by_lower), n=1, cutoff=0.75)
-    return by_lower[found[0]] if found else None
+    low = name.lower()
+    found = difflib.get_close_matches(low, list(by_lower), n=1, cutoff=0.75)
+    if found:
+        return by_lower[found[0]]
+    # two neighbouring letters swapped: in a short name (Rwo for Row) the ratio above is too
+    # low, yet no slip is likelier
+    swapped = [c for c in by_lower if _transposed(low, c)]
+    return by_lower[swapped[0]] if swapped else None
+
+
+def _transposed(a: str, b: str) -> bool:
+    """Whether ``b`` is ``a`` with exactly two neighbouring characters swapped."""
+    if len(a) != len(b) or a == b:
+        return False
+    diff = [i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y]
+    return len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and (
+        a[diff[1]] == b[diff[0]])  # fmt: skip
 
 
 def did_you_mean(name: str, candidates) -> str:
