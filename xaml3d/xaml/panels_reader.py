@@ -29,6 +29,7 @@ from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
 from xaml3d.xaml.context import element_name, is_presentation, markup_key, qname, split_markup
 from xaml3d.xaml.resources import type_key, type_name
+from xaml3d.xaml.text_content import content_text
 
 BLEND_NS = "http://schemas.microsoft.com/expression/blend/2008"
 
@@ -544,7 +545,7 @@ class PanelsReader:
                 text = s
                 break
         if text is None:
-            text = _content_text(el)
+            text = content_text(el)
         cw, ch = _CHROME.get(local, (0, 0))
         pad = v.get("Padding", parse_thickness, None)
         if pad is not None:  # the element's own Padding instead of its template's default
@@ -607,22 +608,6 @@ def _outer(k: L.Node) -> tuple[float, float]:
     h = k.height if k.height == k.height else max(k.min_height, min(est[1], k.max_height))
     ml, mt, mr, mb = k.margin
     return w + ml + mr, h + mt + mb
-
-
-def _content_text(el) -> str:
-    """The text of an element's content as WPF shows it: its own text, inline elements' text
-    (Run, Bold ...) and the text after property elements, with white space collapsed."""
-    parts = [el.text or ""]
-    for child in el:
-        local = qname(child.tag)[1] if isinstance(child.tag, str) else "."
-        if local == "Run" and child.get("Text") is not None:  # a Run's text as an attribute
-            parts.append(child.get("Text"))
-        elif local == "LineBreak":
-            parts.append(" ")
-        elif "." not in local:
-            parts.append("".join(child.itertext()))
-        parts.append(child.tail or "")
-    return " ".join("".join(parts).split())
 
 
 def _layout_transform(r, v: ElementValues):

@@ -100,3 +100,19 @@ def access_text(text: str) -> str:
         out.append(c)
         i += 1
     return "".join(out)
+
+
+def content_text(el) -> str:
+    """The text of an element's content: its own text, inline elements' text (Run, Bold ...)
+    and the text after property elements, white space as XAML reads it (``xml:space``)."""
+    parts = [el.text or ""]
+    for child in el:
+        local = qname(child.tag)[1] if isinstance(child.tag, str) else "."
+        if local == "Run" and child.get("Text") is not None:  # a Run's text as an attribute
+            parts.append(child.get("Text"))
+        elif local == "LineBreak":
+            parts.append("\n" if preserves_space(el) else " ")
+        elif "." not in local:
+            parts.append("".join(child.itertext()))
+        parts.append(child.tail or "")
+    return xaml_text("".join(parts), preserves_space(el))

@@ -32,10 +32,9 @@ from xaml3d.xaml.panels_reader import element_style
 from xaml3d.xaml.text_content import (
     ACCESS_KEY_CONTROLS,
     access_text,
+    content_text,
     holder_text,
-    preserves_space,
     property_element,
-    xaml_text,
 )
 
 
@@ -68,22 +67,6 @@ def _plain_text(el) -> str:
         if holder is not None:
             return holder_text(holder) or ""
     return content_text(el)
-
-
-def content_text(el) -> str:
-    """The text of an element's content: its own text, inline elements' text (Run, Bold ...)
-    and the text after property elements, white space as XAML reads it (``xml:space``)."""
-    parts = [el.text or ""]
-    for child in el:
-        local = qname(child.tag)[1] if isinstance(child.tag, str) else "."
-        if local == "Run" and child.get("Text") is not None:  # a Run's text as an attribute
-            parts.append(child.get("Text"))
-        elif local == "LineBreak":
-            parts.append("\n" if preserves_space(el) else " ")
-        elif "." not in local:
-            parts.append("".join(child.itertext()))
-        parts.append(child.tail or "")
-    return xaml_text("".join(parts), preserves_space(el))
 
 
 def _inherited(el, names: tuple[str, ...], r=None) -> str | None:
