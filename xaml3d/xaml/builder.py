@@ -18,6 +18,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from xaml3d.framework import expand
 from xaml3d.scene import transforms as T
 from xaml3d.scene.tracks import WorldChain, slots_in
 from xaml3d.scene.types import (
@@ -44,6 +45,7 @@ from xaml3d.xaml.context import (
 )
 from xaml3d.xaml.directives import check_directives
 from xaml3d.xaml.framework_check import check_framework
+from xaml3d.xaml.framework_services import ReaderServices
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
@@ -493,6 +495,8 @@ def build_scene(
     check_styles(ctx, resources, doc.root)
     check_content(ctx, doc.root)
     check_framework(ctx, doc.root)
+    # WPF's framework step (styles, templates, triggers, items, bindings), on the checked tree
+    expand(doc.root, ReaderServices(ctx, resources))
     walk = _Walk(r)
     walk.visit(doc.root)
     # the storyboards first: the viewports' build notes where what they animate lands
