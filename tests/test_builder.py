@@ -332,7 +332,7 @@ def test_binding_static_events_and_class():
              f"<Viewport3D>{CAM}{xml}</Viewport3D><Button Click='OnClick'/></Window>",
              text=True)  # fmt: skip
     c = codes(s)
-    assert {"XAML007", "XAML008", "XAML009", "XAML010"} <= set(c)
+    assert {"XAML007", "XAML008", "BND001", "XAML010"} <= set(c)
     assert c.count("XAML008") == 2
     light = s.viewports[0].lights[0]
     assert light.color == (1.0, 1.0, 1.0, 1.0) and light.direction == (0.0, 0.0, -1.0)

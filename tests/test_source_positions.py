@@ -151,7 +151,7 @@ def test_markup_extensions_and_missing_resources_point_at_the_attribute():
     s = load(doc, text=True)
     # line 3: 4 spaces, "<GeometryModel3D " is 1 + 15 + 1 = 17 chars (cols 5-21): col 22
     assert where(s, "RES001", "nope") == [(3, 22)]
-    assert where(s, "XAML009") == [(4, 22)]
+    assert where(s, "BND001") == [(4, 22)]
 
 
 def test_value_syntax_error_points_at_the_offending_character():

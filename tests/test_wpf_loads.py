@@ -393,7 +393,7 @@ def test_markup_extensions_written_as_elements_are_their_attribute_form():
     assert cam.look_direction == (0.0, 0.0, -1.0) and cam.field_of_view == 60.0
     assert cam.near_plane_distance == 0.125
     found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code in
-             ("XAML009", "XAML010")]  # fmt: skip
+             ("BND001", "XAML010")]  # fmt: skip
     # each said once, where its element is
-    assert found == [("XAML009", 10, 9), ("XAML010", 16, 44), ("XAML009", 21, 30)]
+    assert found == [("BND001", 10, 9), ("XAML010", 16, 44), ("BND001", 21, 30)]
     assert scene.viewports[0].models[0].back_material == ()

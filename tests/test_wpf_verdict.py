@@ -49,7 +49,7 @@ def test_code_xaml3d_does_not_run_is_info_never_an_error():
         extra_ns='xmlns:local="clr-namespace:App"',
     )
     got = found(text)
-    assert {"XAML001", "XAML007", "XAML008", "XAML009", "XAML010"} <= set(got)
+    assert {"XAML001", "XAML007", "XAML008", "BND001", "XAML010"} <= set(got)
     assert [c for c, s in got.items() if s != "info" and c.startswith("XAML")] == []
     assert "error" not in got.values()
 

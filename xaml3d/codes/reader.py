@@ -103,4 +103,15 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "unknown property of a WPF 2D framework type (attribute, property element, Style "
         "Setter or Trigger Property; closest known name suggested)",
     ),
+    "BND001": (
+        INFO,
+        "binding that needs code or layout a load does not run: FallbackValue or the "
+        "property's default (said once per kind)",
+    ),
+    "BND002": (WARNING, "binding cycle: the property keeps its FallbackValue or default"),
+    "BND003": (
+        INFO,
+        "binding that fails in WPF too (no such element, path or conversion): FallbackValue "
+        "or the property's default",
+    ),
 }

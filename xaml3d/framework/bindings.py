@@ -1,10 +1,295 @@
 """Load-time bindings: ``{Binding}`` values WPF evaluates without code (ElementName,
 RelativeSource, Source={StaticResource}, the framework's own converters), replaced by their
-values before templates are instantiated."""
+values before templates are instantiated.
+
+Every ``{Binding}`` attribute, and every property element holding a ``<Binding>`` (or a
+``<MultiBinding>`` with a StringFormat, a ``<PriorityBinding>``), outside Style and template
+bodies (the templates pass evaluates those once instantiated) and outside resource dictionaries
+(shared objects, not the tree's) is evaluated (binding_eval.py) and replaced by its value as
+attribute text the reader then parses as if written so. Three other outcomes:
+
+- the value is an element of the tree (``Visual="{Binding ElementName=panel}"``,
+  ``Storyboard.Target``): the binding stays, for the reader, which follows it itself;
+- the binding needs what a load does not run (a DataContext set by code, an application's
+  converter, ``x:Static``, a layout result): FallbackValue, else the property keeps its
+  default; said once per kind (BND001);
+- WPF's binding fails too (no element of that name, a path the source does not have, a value
+  the target cannot take): FallbackValue, else the default (BND003).
+
+A chain of bindings that comes back to itself, and a VisualBrush whose Visual contains the
+brush, are reported (BND002) and cut, never followed forever.
+"""
 
 from __future__ import annotations
+
+from xaml3d.framework.binding_eval import (
+    BINDINGS,
+    Cycle,
+    Evaluator,
+    Site,
+    binding_element_extension,
+)
+from xaml3d.framework.binding_tree import (
+    TEMPLATES,
+    children,
+    is_element,
+    is_property_element,
+    is_wpf,
+    local,
+    name_of,
+    name_scope,
+)
+from xaml3d.framework.binding_values import Unresolved, Value, to_target
+from xaml3d.framework.markup_syntax import (
+    Extension,
+    MarkupSyntaxError,
+    is_extension,
+    parse,
+    to_text,
+)
+
+# attributes whose binding is an object the element keeps, not a value of the property
+_BINDING_OBJECTS = frozenset({"Binding", "Storyboard.Target"})
+_OWNER_BASES = frozenset({"FrameworkElement", "UIElement", "Control", "Panel", "ContentControl",
+                          "ItemsControl", "TextElement", "Shape"})  # fmt: skip
+_KEEP = object()  # the binding stays as written
+_REMOVE = object()  # the property keeps its default
 
 
 def evaluate(root, services) -> None:
     """Replace every evaluable binding under ``root`` by its value (in place)."""
+    sites = _collect(root, services)
+    if not sites:
+        return
+    index = {(id(s.el), s.prop): s for s in sites if s.ext is not None}
+    ev = Evaluator(services, name_scope(root), index)
+    _cut_visual_cycles(sites, ev, services)
+    pinned = False
+    for site in sites:
+        if site.ext is None:
+            outcome = _REMOVE
+        else:
+            outcome = _outcome(site, ev, services)
+        if outcome is _KEEP:
+            continue
+        if site.prop_el is not None and not pinned:
+            services.pin_positions(root)  # a property element goes: the tree changes shape
+            pinned = True
+        _write(site, outcome)
+
+
+# --------------------------------------------------------------------------- finding them
+def _collect(root, services) -> list[Site]:
+    """The binding sites in document order (outside templates and resources)."""
+    sites: list[Site] = []
+    stack = [root]
+    while stack:
+        el = stack.pop()
+        name = local(el)
+        if is_wpf(el) and (name in TEMPLATES or name in BINDINGS or name == "ResourceDictionary"):
+            continue
+        if name.endswith(".Resources"):
+            continue
+        if not is_property_element(el):
+            _attribute_sites(el, services, sites)
+            _element_sites(el, services, sites)
+        stack.extend(reversed(children(el)))
+    return sites
+
+
+def _attribute_sites(el, services, sites: list[Site]) -> None:
+    for key, raw in el.attrib.items():
+        if key.startswith("{") or key in _BINDING_OBJECTS or not is_extension(raw):
+            continue
+        head = raw.lstrip()[1:].lstrip().split(None, 1)[0].split(",")[0].split("}")[0]
+        if head.split(":")[-1] not in BINDINGS:
+            continue
+        try:
+            ext = parse(raw)
+        except MarkupSyntaxError as exc:
+            msg = f"{local(el)}.{key}={raw!r}: malformed markup extension ({exc})"
+            services.diag("XAML016", msg, el, attr=key)
+            sites.append(Site(el, key, key=key))
+            continue
+        sites.append(Site(el, key, key=key, ext=ext))
+
+
+def _element_sites(el, services, sites: list[Site]) -> None:
+    for pe in children(el):
+        if not is_property_element(pe):
+            continue
+        kids = children(pe)
+        if len(kids) != 1 or not is_wpf(kids[0]) or local(kids[0]) not in BINDINGS:
+            continue
+        owner, _, short = local(pe).rpartition(".")
+        prop = short if owner == local(el) or owner in _OWNER_BASES else f"{owner}.{short}"
+        if prop in _BINDING_OBJECTS:
+            continue
+        try:
+            ext = binding_element_extension(kids[0])
+        except MarkupSyntaxError as exc:
+            msg = f"<{local(kids[0])}> of {local(el)}.{prop}: malformed markup extension ({exc})"
+            services.diag("XAML016", msg, kids[0])
+            sites.append(Site(el, prop, prop_el=pe, binding_el=kids[0]))
+            continue
+        sites.append(Site(el, prop, prop_el=pe, binding_el=kids[0], ext=ext))
+
+
+# --------------------------------------------------------------------------- outcomes
+def _outcome(site: Site, ev: Evaluator, services):
+    """The text the site's property takes, or _KEEP / _REMOVE; diagnostics said."""
+    try:
+        v = ev.site_value(site)
+    except Cycle as c:
+        if c.site is site:
+            chain = " -> ".join(f"{local(s.el)}.{s.prop}" for s in reversed(c.chain))
+            msg = (f"{_where(site)}: the binding's source is its own value through "
+                   f"{chain} (a cycle): {_fallback_said(site)}")  # fmt: skip
+            _say(services, "BND002", msg, site)
+        return _fallback(site, ev)
+    except Unresolved as u:
+        _report(services, u, site)
+        return _fallback(site, ev)
+    if v.visual or (v.el is not None and v.items is not None):
+        return _KEEP  # an element of the tree: the reader follows the binding itself
+    if v.null:
+        return "{x:Null}" if _nullable(site.prop) else _failed(services, site, ev, "null")
+    if v.el is not None:
+        return _element_text(site, v, ev, services)
+    try:
+        text = to_target(v, site.prop)
+    except Unresolved as u:
+        _report(services, u, site)
+        return _fallback(site, ev)
+    return "{}" + text if text.startswith("{") else text
+
+
+def _element_text(site: Site, v: Value, ev: Evaluator, services):
+    """An object value (a brush resource...): as ``{StaticResource key}`` when the key finds
+    the same object from the target; otherwise the binding stays for the reader."""
+    if v.key is not None and services.find(v.key, site.el) is v.el:
+        return "{StaticResource " + to_text(v.key) + "}"
+    if not is_wpf(v.el) and local(v.el) != "Array":
+        u = Unresolved("BND001", "code type", f"the value is a {local(v.el)}, a type of the "
+                                              "application")  # fmt: skip
+        _report(services, u, site)
+        return _fallback(site, ev)
+    return _KEEP
+
+
+def _failed(services, site: Site, ev: Evaluator, what: str):
+    u = Unresolved("BND003", "conversion", f"{what} cannot be a {site.prop}")
+    _report(services, u, site)
+    return _fallback(site, ev)
+
+
+def _nullable(prop: str) -> bool:
+    from xaml3d.framework.binding_values import clr_of
+
+    return clr_of(prop) in ("Object", "Brush", "String")
+
+
+def _fallback(site: Site, ev: Evaluator):
+    fb = site.ext.arg("FallbackValue", None) if site.ext is not None else None
+    if fb is None:
+        return _REMOVE
+    if isinstance(fb, str):
+        return "{}" + fb if fb.startswith("{") else fb
+    if isinstance(fb, Extension):
+        return to_text(fb)
+    try:
+        v = ev.element_value(fb)
+    except Unresolved:
+        return _REMOVE
+    return v.text if v.text is not None and not v.null else _REMOVE
+
+
+def _fallback_said(site: Site) -> str:
+    fb = site.ext.arg("FallbackValue", None) if site.ext is not None else None
+    if fb is None:
+        return "the property keeps its default"
+    return f"FallbackValue {to_text(fb) if not is_element(fb) else local(fb)} used"
+
+
+def _where(site: Site) -> str:
+    return f"{local(site.el)}.{site.prop}"
+
+
+def _report(services, u: Unresolved, site: Site) -> None:
+    if u.code == "BND001":
+        msg = (f"{_where(site)}: {u.detail}: {_fallback_said(site)} (said once for every "
+               "binding that needs this)")  # fmt: skip
+        _say(services, "BND001", msg, site, once=("BND001", u.kind))
+    else:
+        msg = f"{_where(site)}: the binding fails in WPF too ({u.detail}): {_fallback_said(site)}"
+        _say(services, "BND003", msg, site)
+
+
+def _say(services, code: str, msg: str, site: Site, once=None) -> None:
+    if site.binding_el is not None:
+        services.diag(code, msg, site.binding_el, once=once)
+    else:
+        services.diag(code, msg, site.el, attr=site.key, once=once)
+
+
+def _write(site: Site, outcome) -> None:
+    el = site.el
+    if site.prop_el is None:
+        if outcome is _REMOVE:
+            del el.attrib[site.key]
+        else:
+            el.set(site.key, outcome)
+        return
+    el.remove(site.prop_el)
+    if outcome is not _REMOVE:
+        el.set(site.prop, outcome)
+
+
+# --------------------------------------------------------------------------- VisualBrush
+def _cut_visual_cycles(sites: list[Site], ev: Evaluator, services) -> None:
+    """A VisualBrush whose Visual (an element binding) draws the brush itself, directly or
+    through other such brushes: reported and cut (the brush draws nothing), as the reader
+    would otherwise follow it forever."""
+    brushes: list[tuple[Site, object]] = []
+    for site in sites:
+        if site.ext is None or local(site.el) != "VisualBrush" or site.key != "Visual":
+            continue
+        try:
+            v = ev.site_value(site)
+        except (Cycle, Unresolved):
+            continue
+        if v.visual and v.el is not None:
+            brushes.append((site, v.el))
+    while brushes:
+        cut = _cycle_start(brushes)
+        if cut is None:
+            return
+        site, target = brushes[cut]
+        name = name_of(target) or local(target)
+        msg = (f"VisualBrush.Visual draws {name}, which holds this brush (a cycle): the brush "
+               "draws nothing")  # fmt: skip
+        _say(services, "BND002", msg, site)
+        site.el.set(site.key, "{x:Null}")
+        sites.remove(site)
+        del brushes[cut]
+
+
+def _cycle_start(brushes: list[tuple[Site, object]]) -> int | None:
+    """The index of the first brush that reaches itself through the brushes inside the visual
+    it draws, or None."""
+    inside = [
+        [j for j, (other, _) in enumerate(brushes)
+         if other.el is target or any(a is target for a in other.el.iterancestors())]
+        for _, target in brushes
+    ]  # fmt: skip
+    for start in range(len(brushes)):
+        seen: set[int] = set()
+        stack = list(inside[start])
+        while stack:
+            j = stack.pop()
+            if j == start:
+                return start
+            if j not in seen:
+                seen.add(j)
+                stack.extend(inside[j])
     return None
