@@ -22,6 +22,8 @@ brush, are reported (BND002) and cut, never followed forever.
 
 from __future__ import annotations
 
+import copy
+
 from xaml3d.framework.binding_eval import (
     BINDINGS,
     Cycle,
@@ -52,6 +54,9 @@ from xaml3d.framework.markup_syntax import (
 _BINDING_OBJECTS = frozenset({"Binding", "Storyboard.Target"})
 _OWNER_BASES = frozenset({"FrameworkElement", "UIElement", "Control", "Panel", "ContentControl",
                           "ItemsControl", "TextElement", "Shape"})  # fmt: skip
+# WPF's types whose objects are values a property holds (Freezables), not elements of the tree
+_VALUE_OBJECTS = ("Brush", "Geometry", "Transform", "Effect", "Pen", "Drawing", "Material",
+                  "Transform3D", "Camera", "DoubleCollection", "PointCollection")  # fmt: skip
 _KEEP = object()  # the binding stays as written
 _REMOVE = object()  # the property keeps its default
 
@@ -72,7 +77,7 @@ def evaluate(root, services) -> None:
             outcome = _outcome(site, ev, services)
         if outcome is _KEEP:
             continue
-        if site.prop_el is not None and not pinned:
+        if (site.prop_el is not None or isinstance(outcome, tuple)) and not pinned:
             services.pin_positions(root)  # a property element goes: the tree changes shape
             pinned = True
         _write(site, outcome)
@@ -165,8 +170,9 @@ def _outcome(site: Site, ev: Evaluator, services):
 
 
 def _element_text(site: Site, v: Value, ev: Evaluator, services):
-    """An object value (a brush resource...): as ``{StaticResource key}`` when the key finds
-    the same object from the target; otherwise the binding stays for the reader."""
+    """An object value (a brush...): ``{StaticResource key}`` when its key finds the same
+    object from the target, else a copy of it as the property's element (WPF shares the one
+    object; drawn, the two are the same); an element of the tree stays the reader's."""
     if v.key is not None and services.find(v.key, site.el) is v.el:
         return "{StaticResource " + to_text(v.key) + "}"
     if not is_wpf(v.el) and local(v.el) != "Array":
@@ -174,6 +180,8 @@ def _element_text(site: Site, v: Value, ev: Evaluator, services):
                                               "application")  # fmt: skip
         _report(services, u, site)
         return _fallback(site, ev)
+    if is_wpf(v.el) and local(v.el).endswith(_VALUE_OBJECTS) and "." not in site.prop:
+        return ("copy", v.el)
     return _KEEP
 
 
@@ -208,7 +216,8 @@ def _fallback_said(site: Site) -> str:
     fb = site.ext.arg("FallbackValue", None) if site.ext is not None else None
     if fb is None:
         return "the property keeps its default"
-    return f"FallbackValue {to_text(fb) if not is_element(fb) else local(fb)} used"
+    shown = to_text(fb) if isinstance(fb, (str, Extension)) else local(fb)
+    return f"FallbackValue {shown} used"
 
 
 def _where(site: Site) -> str:
@@ -234,15 +243,32 @@ def _say(services, code: str, msg: str, site: Site, once=None) -> None:
 
 def _write(site: Site, outcome) -> None:
     el = site.el
-    if site.prop_el is None:
-        if outcome is _REMOVE:
-            del el.attrib[site.key]
-        else:
-            el.set(site.key, outcome)
-        return
-    el.remove(site.prop_el)
-    if outcome is not _REMOVE:
-        el.set(site.prop, outcome)
+    if site.prop_el is not None:
+        el.remove(site.prop_el)
+    elif outcome is _REMOVE or isinstance(outcome, tuple):
+        del el.attrib[site.key]
+    if isinstance(outcome, tuple):  # ("copy", element): the property's element form
+        el.insert(0, _property_element(el, site.prop, outcome[1]))
+    elif outcome is not _REMOVE:
+        el.set(site.prop if site.prop_el is not None else site.key, outcome)
+
+
+def _property_element(el, prop: str, value):
+    """``<Type.Prop>`` holding a copy of ``value`` (without its key and names: one object of
+    the name scope)."""
+    ns = el.tag[1:].partition("}")[0] if el.tag.startswith("{") else None
+    tag = f"{{{ns}}}{local(el)}.{prop}" if ns else f"{local(el)}.{prop}"
+    holder = el.makeelement(tag, {})
+    dup = copy.deepcopy(value)
+    dup.tail = None
+    for node in dup.iter():
+        if not is_element(node):
+            continue
+        for key in ("{http://schemas.microsoft.com/winfx/2006/xaml}Key",
+                    "{http://schemas.microsoft.com/winfx/2006/xaml}Name", "Name"):  # fmt: skip
+            node.attrib.pop(key, None)
+    holder.append(dup)
+    return holder
 
 
 # --------------------------------------------------------------------------- VisualBrush
