@@ -116,6 +116,8 @@ class _Scanner:
             c = self._peek()
             if c == ",":
                 self.i += 1
+            elif c == "":
+                raise MarkupSyntaxError(f"markup extension {{{full} ...}} is not closed")
             elif c != "}":
                 raise MarkupSyntaxError(f"expected ',' or '}}' at {self.text[self.i :]!r}")
 
