@@ -57,6 +57,10 @@ _OWNER_BASES = frozenset({"FrameworkElement", "UIElement", "Control", "Panel", "
 # WPF's types whose objects are values a property holds (Freezables), not elements of the tree
 _VALUE_OBJECTS = ("Brush", "Geometry", "Transform", "Effect", "Pen", "Drawing", "Material",
                   "Transform3D", "Camera", "DoubleCollection", "PointCollection")  # fmt: skip
+# bulk data (a mesh's, a path's): never a binding worth reading the whole text for
+_DATA = frozenset({"Positions", "Normals", "TextureCoordinates", "TriangleIndices", "Points",
+                   "Data", "Figures"})  # fmt: skip
+_BINDING_TAGS = tuple(f"}}{name}" for name in BINDINGS)
 _KEEP = object()  # the binding stays as written
 _REMOVE = object()  # the property keeps its default
 
@@ -87,24 +91,40 @@ def evaluate(root, services) -> None:
 def _collect(root, services) -> list[Site]:
     """The binding sites in document order (outside templates and resources)."""
     sites: list[Site] = []
-    stack = [root]
-    while stack:
-        el = stack.pop()
-        name = local(el)
-        if is_wpf(el) and (name in TEMPLATES or name in BINDINGS or name == "ResourceDictionary"):
+    for el in root.iter():
+        tag = el.tag
+        if type(tag) is not str:  # noqa: E721 (a comment's tag is a function)
             continue
-        if name.endswith(".Resources"):
-            continue
-        if not is_property_element(el):
-            _attribute_sites(el, services, sites)
-            _element_sites(el, services, sites)
-        stack.extend(reversed(children(el)))
+        if tag.endswith(_BINDING_TAGS):
+            holder = el.getparent()
+            if is_wpf(el) and holder is not None and is_property_element(holder) and (
+                    not _set_aside(holder)):  # fmt: skip
+                _element_site(holder, el, services, sites)
+        elif any("{" in v for v in el.values()) and not is_property_element(el):
+            found = _attribute_sites(el, services)
+            if found and not _set_aside(el):
+                sites.extend(found)
     return sites
 
 
-def _attribute_sites(el, services, sites: list[Site]) -> None:
-    for key, raw in el.attrib.items():
-        if key.startswith("{") or key in _BINDING_OBJECTS or not is_extension(raw):
+def _set_aside(el) -> bool:
+    """Whether ``el`` is in a Style or template body or a resource dictionary (or is a
+    binding's own argument)."""
+    for up in el.iterancestors():
+        name = local(up)
+        if name.endswith(".Resources") or is_wpf(up) and (
+            name in TEMPLATES or name in BINDINGS or name == "ResourceDictionary"):  # fmt: skip
+            return True
+    return False
+
+
+def _attribute_sites(el, services) -> list[Site]:
+    sites: list[Site] = []
+    for key in el.attrib:
+        if key.startswith("{") or key in _BINDING_OBJECTS or key in _DATA:
+            continue
+        raw = el.get(key)
+        if not is_extension(raw):
             continue
         head = raw.lstrip()[1:].lstrip().split(None, 1)[0].split(",")[0].split("}")[0]
         if head.split(":")[-1] not in BINDINGS:
@@ -117,27 +137,26 @@ def _attribute_sites(el, services, sites: list[Site]) -> None:
             sites.append(Site(el, key, key=key))
             continue
         sites.append(Site(el, key, key=key, ext=ext))
+    return sites
 
 
-def _element_sites(el, services, sites: list[Site]) -> None:
-    for pe in children(el):
-        if not is_property_element(pe):
-            continue
-        kids = children(pe)
-        if len(kids) != 1 or not is_wpf(kids[0]) or local(kids[0]) not in BINDINGS:
-            continue
-        owner, _, short = local(pe).rpartition(".")
-        prop = short if owner == local(el) or owner in _OWNER_BASES else f"{owner}.{short}"
-        if prop in _BINDING_OBJECTS:
-            continue
-        try:
-            ext = binding_element_extension(kids[0])
-        except MarkupSyntaxError as exc:
-            msg = f"<{local(kids[0])}> of {local(el)}.{prop}: malformed markup extension ({exc})"
-            services.diag("XAML016", msg, kids[0])
-            sites.append(Site(el, prop, prop_el=pe, binding_el=kids[0]))
-            continue
-        sites.append(Site(el, prop, prop_el=pe, binding_el=kids[0], ext=ext))
+def _element_site(pe, b, services, sites: list[Site]) -> None:
+    """``<X.Prop><Binding .../></X.Prop>``: the Binding ``b`` as the only child of ``pe``."""
+    el = pe.getparent()
+    if el is None or len(children(pe)) != 1 or is_property_element(el):
+        return
+    owner, _, short = local(pe).rpartition(".")
+    prop = short if owner == local(el) or owner in _OWNER_BASES else f"{owner}.{short}"
+    if prop in _BINDING_OBJECTS:
+        return
+    try:
+        ext = binding_element_extension(b)
+    except MarkupSyntaxError as exc:
+        msg = f"<{local(b)}> of {local(el)}.{prop}: malformed markup extension ({exc})"
+        services.diag("XAML016", msg, b)
+        sites.append(Site(el, prop, prop_el=pe, binding_el=b))
+        return
+    sites.append(Site(el, prop, prop_el=pe, binding_el=b, ext=ext))
 
 
 # --------------------------------------------------------------------------- outcomes

@@ -13,6 +13,7 @@ next character, balanced ``{...}`` inside an unquoted string are part of it, and
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 
@@ -43,10 +44,12 @@ _BRACKETED = {"Path", "XPath", ""}
 _PAIRS = {"(": ")", "[": "]"}
 
 
+_EXTENSION = re.compile(r"\s*\{(?!\})")
+
+
 def is_extension(text: str) -> bool:
     """Whether an attribute's text is a markup extension (``{Name ...}``, not ``{}...``)."""
-    v = text.lstrip()
-    return v.startswith("{") and not v.startswith("{}")
+    return _EXTENSION.match(text) is not None
 
 
 def parse(text: str) -> Extension:
