@@ -370,3 +370,17 @@ def test_an_object_without_a_key_in_scope_is_copied_as_the_property_element():
     (brush,) = list(pe)
     assert brush.get("Color") == "Lime" and brush.get(X + "Name") is None
     assert s.said == []
+
+
+def test_through_the_reader_a_missing_source_key_is_one_res001_at_its_attribute():
+    from xaml3d.xaml.loader import load
+
+    text = f"""<Grid {NS}>
+  <TextBlock Text="{{Binding Source={{StaticResource nope}}}}" />
+  <TextBlock Text="{{Binding Name}}" />
+  <TextBlock Text="{{Binding Name}}" />
+  <Viewport3D Width="8" Height="8" />
+</Grid>"""
+    scene = load(text, text=True)
+    found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code[:3] in ("RES", "BND")]
+    assert found == [("RES001", 2, 14), ("BND001", 3, 14)]

@@ -125,11 +125,11 @@ class Evaluator:
             raise fails("path", str(exc)) from None
         for step in steps:
             v = self._step(v, step)
-        v = self._convert(el, v, ext)
+        v = self._convert(el, v, ext, prop)
         if v.null:
             tnv = ext.arg("TargetNullValue", None)
             if tnv is not None:
-                return self._argument_value(el, tnv)
+                return self._argument_value(el, tnv, prop)
         fmt = ext.arg("StringFormat", None)
         if isinstance(fmt, str) and fmt and clr_of(prop) == "String" and not v.null:
             return Value(self._format(fmt, [v]), "String")
@@ -152,7 +152,7 @@ class Evaluator:
         if rel is not None:
             return self._relative(el, rel)
         if src is not None:
-            return self._argument_value(el, src, source=True)
+            return self._argument_value(el, src, prop)
         return self._data_context(el, prop)
 
     def _relative(self, el, rel) -> Value:
@@ -209,13 +209,13 @@ class Evaluator:
         return (el.get(prop) is not None or self._prop_element(el, prop) is not None
                 or (id(el), prop) in self.sites)  # fmt: skip
 
-    def _argument_value(self, el, arg, source: bool = False) -> Value:
-        """A binding argument's value (Source, TargetNullValue, FallbackValue): a string, an
-        extension, or an element (element form)."""
+    def _argument_value(self, el, arg, attr: str | None) -> Value:
+        """A binding argument's value (Source, TargetNullValue): a string, an extension (its
+        resources looked up as ``el``'s attribute ``attr``), or an element (element form)."""
         if isinstance(arg, str):
             return Value(arg, "String")
         if isinstance(arg, Extension):
-            return self._extension_value(el, arg, None)
+            return self._extension_value(el, arg, attr or None)
         return self.element_value(arg)
 
     def _extension_value(self, el, ext: Extension, key_attr: str | None) -> Value:
@@ -226,7 +226,7 @@ class Evaluator:
                 raise fails("resource", "a resource key that is not a string")
             entry = self.s.lookup(key.strip(), el, key_attr)
             if entry is None:
-                raise fails("resource", f"resource {key!r} not found")
+                raise Unresolved(None, "resource", f"resource {key!r} not found")  # RES001 said
             return self.element_value(entry, key=key.strip(), at=el)
         if n in ("Null", "NullExtension"):
             return NULL
@@ -451,12 +451,12 @@ class Evaluator:
         return None
 
     # ----------------------------------------------------------------- converters, formats
-    def _convert(self, el, v: Value, ext: Extension) -> Value:
+    def _convert(self, el, v: Value, ext: Extension, attr: str) -> Value:
         conv = ext.arg("Converter", None)
         if conv is None:
             return v
         if isinstance(conv, Extension):
-            c = self._extension_value(el, conv, None)
+            c = self._extension_value(el, conv, attr or None)
             conv_el = c.el
         elif isinstance(conv, str):
             raise fails("Converter", f"Converter={conv!r} is not an object")

@@ -32,10 +32,10 @@ NULL = Value(null=True)
 
 class Unresolved(Exception):
     """A binding that takes its FallbackValue (or the property's default): ``code`` BND001 (it
-    needs code or layout xaml3d does not run) or BND003 (WPF's binding fails too); ``kind`` is
-    what is said once."""
+    needs code or layout xaml3d does not run) or BND003 (WPF's binding fails too), None when
+    the cause was said already (a missing resource: RES001); ``kind`` is what is said once."""
 
-    def __init__(self, code: str, kind: str, detail: str = "") -> None:
+    def __init__(self, code: str | None, kind: str, detail: str = "") -> None:
         super().__init__(detail or kind)
         self.code, self.kind, self.detail = code, kind, detail or kind
 

@@ -41,7 +41,7 @@ from xaml3d.framework.binding_tree import (
     name_of,
     name_scope,
 )
-from xaml3d.framework.binding_values import Unresolved, Value, to_target
+from xaml3d.framework.binding_values import Unresolved, Value, clr_of, to_target
 from xaml3d.framework.markup_syntax import (
     Extension,
     MarkupSyntaxError,
@@ -211,8 +211,6 @@ def _failed(services, site: Site, ev: Evaluator, what: str):
 
 
 def _nullable(prop: str) -> bool:
-    from xaml3d.framework.binding_values import clr_of
-
     return clr_of(prop) in ("Object", "Brush", "String")
 
 
@@ -244,6 +242,8 @@ def _where(site: Site) -> str:
 
 
 def _report(services, u: Unresolved, site: Site) -> None:
+    if u.code is None:
+        return  # said where it happened
     if u.code == "BND001":
         msg = (f"{_where(site)}: {u.detail}: {_fallback_said(site)} (said once for every "
                "binding that needs this)")  # fmt: skip
