@@ -393,6 +393,8 @@ class _Walk:
                     self.visit(child)
             return
         if local in _TEMPLATES:
+            if r.ctx.instantiated.get(id(el)) is el:
+                return  # its instance, in the control that uses it, is walked there
             if any(_wpf(v) for v in el.iter("{*}Viewport3D")):
                 r.ctx.diag("XAML015", f"Viewport3D inside {a_an(local)} is not instantiated", el)
             return
