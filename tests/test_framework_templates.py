@@ -353,11 +353,11 @@ def test_unsupported_template_is_said(tmp_path):
     feature = window(
         "",
         """
-      <ListBox Height="30">
-        <ListBox.Template>
-          <ControlTemplate TargetType="ListBox"><Border Background="Blue" /></ControlTemplate>
-        </ListBox.Template>
-      </ListBox>
+      <TextBox Height="30">
+        <TextBox.Template>
+          <ControlTemplate TargetType="TextBox"><Border Background="Blue" /></ControlTemplate>
+        </TextBox.Template>
+      </TextBox>
       <ToggleButton Height="20" Content="x">
         <ToggleButton.Template>
           <ControlTemplate TargetType="ToggleButton">
@@ -377,7 +377,7 @@ def test_unsupported_template_is_said(tmp_path):
     path = tmp_path / "unsupported.xaml"
     path.write_text(feature, encoding="utf-8")
     codes = {(d.code, d.line) for d in load(path).diagnostics}
-    assert ("TPL001", _line(feature, "<ListBox ")) in codes
+    assert ("TPL001", _line(feature, "<TextBox ")) in codes
     assert ("TPL003", _line(feature, "<DataTrigger")) in codes
     assert ("TPL005", _line(feature, 'TargetName="nothere"')) in codes
     px = _window_pixels(path)

@@ -20,6 +20,10 @@ class Services(Protocol):
         """The implicit Style of type ``type_name`` in scope at ``from_el`` (keyed
         ``{x:Type T}`` or by ``TargetType`` alone), or None."""
 
+    def implicit_data_template(self, type_name: str, from_el: Any) -> Any:
+        """The implicit DataTemplate (``DataType`` without ``x:Key``) of type ``type_name``
+        in scope at ``from_el``, or None."""
+
     def wpf_type(self, el: Any) -> str | None:
         """The type name of a WPF (presentation namespace) element, else None (another
         namespace's, or not an element)."""
@@ -31,8 +35,8 @@ class Services(Protocol):
         """``el`` (made by the framework) reports the source position of ``where``."""
 
     def templated(self, el: Any, template: Any) -> None:
-        """``el`` is a control drawn by the user's ``template``: its only child is the
-        instance."""
+        """``el`` is a control drawn by the user's ``template`` (None: by the items the
+        framework generated in the theme's template): its only child is the instance."""
 
     def pin(self, root: Any) -> None:
         """Called once before the first change to the tree under ``root``."""

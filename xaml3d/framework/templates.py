@@ -27,7 +27,7 @@ Controls whose template the reader's theme draws (no user template) are left as 
 
 from __future__ import annotations
 
-from xaml3d.framework import markup
+from xaml3d.framework import items, markup
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -47,10 +47,11 @@ CONTENT_CONTROLS = {
 }  # fmt: skip
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
-SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS
+ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
+SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS
 # controls whose templates place parts xaml3d does not generate (items, text hosts, tracks)
 UNSUPPORTED = {
-    "ItemsControl", "ListBox", "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
+    "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
     "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid", "TextBox", "PasswordBox",
     "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
@@ -68,12 +69,15 @@ _PRESENTER_PROPS = ("Content", "ContentSource", "ContentTemplate", "ContentTempl
 MAX_DEPTH = 32  # templates inside templates deeper than this: a template that holds itself
 
 
+# the controls' tags in any namespace: the one look a document without controls costs
+TAGS = tuple(f"{{*}}{t}" for t in sorted(SUPPORTED | UNSUPPORTED))
+
+
 def instantiate(root, services) -> None:
     """Instantiate every user control template that applies under ``root`` (in place)."""
-    tags = [f"{{*}}{t}" for t in sorted(SUPPORTED | UNSUPPORTED)]
-    if next(root.iter(*tags), None) is None:
-        return  # the one look a document without controls costs
-    _Instantiation(root, services, tags).run()
+    if next(root.iter(*TAGS), None) is None:
+        return
+    _Instantiation(root, services, TAGS).run()
 
 
 class _Instantiation:
@@ -99,6 +103,11 @@ class _Instantiation:
         c = Control(el, t, self.sv)
         found = self.template_of(c)
         if found is None:
+            if t in items.CONTAINERS and items.generates(c):
+                self.pin()
+                for sub in self.themed_items(c):
+                    for k in list(sub.iter(*self.tags)):
+                        self.control(k, depth + 1)
             return
         template, where = found
         if t not in SUPPORTED:
@@ -111,13 +120,57 @@ class _Instantiation:
             msg = f"templates nested {MAX_DEPTH} deep (a template holding itself): not instantiated"
             self.sv.diag("TPL004", msg, el, once="depth")
             return
-        if not self.pinned:
-            self.sv.pin(self.root)
-            self.pinned = True
+        self.pin()
         instance = self.apply(c, template)
         if instance is not None:
             for sub in list(instance.iter(*self.tags)):
                 self.control(sub, depth + 1)
+
+    def pin(self) -> None:
+        if not self.pinned:
+            self.sv.pin(self.root)
+            self.pinned = True
+
+    def boxes(self, c: Control) -> list:
+        """The item containers of an items control (none, said, when its items are not known
+        at load)."""
+        out = items.containers(c, self.sv, put)
+        if out is None:
+            msg = (f"this {c.type}'s ItemsSource is not known at load (a binding or a missing "
+                   "resource): it shows no items")  # fmt: skip
+            self.sv.diag("TPL006", msg, c.el, attr="ItemsSource" if c.el.get("ItemsSource")
+                         else None)  # fmt: skip
+            return []
+        return out
+
+    def themed_items(self, c: Control) -> list:
+        """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
+        containers as its children; an ItemsControl's panel in the Border of its default
+        template (WPF's: Background, BorderBrush, BorderThickness and Padding bound)."""
+        sv, el = self.sv, c.el
+        boxes = self.boxes(c)
+        if c.type != "ItemsControl":
+            for k in boxes:
+                el.append(k)
+            return boxes
+        border = self.make(el, "Border", el)
+        for prop in ("Background", "BorderBrush", "BorderThickness", "Padding"):
+            put(sv, border, prop, c.value(prop))
+        panel = items.items_panel(c, sv, lambda: self.make(el, "StackPanel", el))
+        for k in boxes:
+            panel.append(k)
+        border.append(panel)
+        for child in _content_elements(el):
+            child.getparent().remove(child)
+        el.text = None
+        el.append(border)
+        sv.templated(el, None)
+        return [border]
+
+    def make(self, near, local: str, where):
+        el = near.makeelement(_same_ns(near, local), {})
+        self.sv.made(el, where)
+        return el
 
     def template_of(self, c: Control):
         """(the ControlTemplate element, the attribute naming it or None) of a user template."""
@@ -164,6 +217,8 @@ class _Instantiation:
             for part in parts:
                 if sv.wpf_type(part) == "ContentPresenter":
                     self.present(c, part)
+            if c.type in ITEMS_CONTROLS:
+                self.host_items(c, parts)
             self.template_triggers_on_parts(c, template, names)
         content = _content_elements(el)
         for k in content:  # element content not placed by a presenter: not shown
@@ -180,6 +235,27 @@ class _Instantiation:
             el.append(instance)
         sv.templated(el, template)
         return instance
+
+    def host_items(self, c: Control, parts: list) -> None:
+        """The items in the template's ItemsPresenter (the ItemsPanel's panel inside it) or
+        in its panel marked IsItemsHost."""
+        sv = self.sv
+        hosts = [p for p in parts if sv.wpf_type(p) == "ItemsPresenter"
+                 or (p.get("IsItemsHost") or "").strip().lower() == "true"]  # fmt: skip
+        boxes = self.boxes(c)
+        if not hosts:
+            return
+        host = hosts[0]
+        if sv.wpf_type(host) == "ItemsPresenter":
+            # laid out as the presenter it is: a plain holder of the panel
+            host.tag = _same_ns(host, "ContentPresenter")
+            panel = items.items_panel(c, sv, lambda: self.make(host, "StackPanel", host))
+            host.append(panel)
+        else:
+            host.attrib.pop("IsItemsHost", None)
+            panel = host
+        for k in boxes:
+            panel.append(k)
 
     def bind(self, c: Control, part) -> None:
         """The part's references to the templated parent replaced by the control's values."""

@@ -7,7 +7,7 @@ from __future__ import annotations
 import copy
 
 from xaml3d.xaml.context import is_presentation, qname
-from xaml3d.xaml.resources import type_key
+from xaml3d.xaml.resources import data_template_key, type_key
 
 
 class ReaderServices:
@@ -29,6 +29,10 @@ class ReaderServices:
         entry = self.resources.find(key, from_el)
         return entry if entry is not None and qname(entry.tag)[1] == "Style" else None
 
+    def implicit_data_template(self, type_name: str, from_el):
+        entry = self.resources.find(data_template_key(type_name), from_el)
+        return entry if entry is not None and qname(entry.tag)[1] == "DataTemplate" else None
+
     def wpf_type(self, el) -> str | None:
         if not isinstance(el.tag, str):
             return None
@@ -49,8 +53,9 @@ class ReaderServices:
     def templated(self, el, template) -> None:
         self.ctx.keep(el)
         self.ctx.templated[id(el)] = el
-        self.ctx.keep(template)
-        self.ctx.instantiated[id(template)] = template
+        if template is not None:
+            self.ctx.keep(template)
+            self.ctx.instantiated[id(template)] = template
 
     def pin(self, root) -> None:
         self.ctx.pin_positions(root)
