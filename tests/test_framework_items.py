@@ -139,3 +139,40 @@ def test_items_source_not_known_at_load_is_said(tmp_path):
     path.write_text(feature, encoding="utf-8")
     codes = {(d.code, d.line) for d in load(path).diagnostics}
     assert ("TPL006", _line(feature, "<ListBox ")) in codes
+
+
+def test_item_container_style_template_and_is_selected_trigger(tmp_path):
+    style = """
+    <Style x:Key="row" TargetType="ListBoxItem">
+      <Setter Property="Background" Value="Yellow" />
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="ListBoxItem">
+            <Border Background="{TemplateBinding Background}" Padding="2">
+              <ContentPresenter />
+            </Border>
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+      <Style.Triggers>
+        <Trigger Property="IsSelected" Value="True">
+          <Setter Property="Background" Value="Orange" />
+        </Trigger>
+      </Style.Triggers>
+    </Style>"""
+    feature = window(
+        ARRAYS + style,
+        '<ListBox Height="60" ItemsSource="{StaticResource names}" SelectedIndex="1" '
+        'ItemContainerStyle="{StaticResource row}" />',
+    )
+    rows = "".join(
+        f'<ListBoxItem IsSelected="{str(t == "Green")}">'
+        f'<ListBoxItem.Template><ControlTemplate TargetType="ListBoxItem">'
+        f'<Border Background="{"Orange" if t == "Green" else "Yellow"}" Padding="2">'
+        f"<ContentPresenter /></Border></ControlTemplate></ListBoxItem.Template>{t}</ListBoxItem>"
+        for t in ("Red", "Green", "Blue")
+    )
+    twin = window("", f'<ListBox Height="60" SelectedIndex="1">{rows}</ListBox>')
+    px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
+    assert ((px[..., 0] == 255) & (px[..., 1] == 165) & (px[..., 2] == 0)).any()
+    assert tuple(px[4, 70][:3]) == (255, 255, 0)  # the rows stretch across the ListBox

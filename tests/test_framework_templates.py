@@ -431,3 +431,91 @@ def test_a_document_without_controls_is_untouched(markup):
 
     templates.instantiate(root, Nothing())
     assert etree.tostring(root) == before
+
+
+def test_content_template_of_a_content_control(tmp_path):
+    resources = """
+    <DataTemplate x:Key="card">
+      <Border Background="{Binding Color}" Padding="4"><TextBlock Text="{Binding Name}" /></Border>
+    </DataTemplate>
+    <DataTemplate x:Key="shout"><TextBlock Text="{Binding}" Foreground="Blue" /></DataTemplate>
+    <local:Person x:Key="ann" Name="Ann" Color="Orange" />"""
+    feature = window(
+        resources,
+        """
+      <ContentControl Content="{StaticResource ann}" ContentTemplate="{StaticResource card}" />
+      <ContentControl Content="Hey" ContentTemplate="{StaticResource shout}" />""",
+    )
+    # ContentControl's default template: a ContentPresenter holding the DataTemplate's content
+    twin = window(
+        "",
+        """
+      <ContentControl><ContentPresenter>
+        <Border Background="Orange" Padding="4"><TextBlock Text="Ann" /></Border>
+      </ContentPresenter></ContentControl>
+      <ContentControl><ContentPresenter>
+        <TextBlock Text="Hey" Foreground="Blue" />
+      </ContentPresenter></ContentControl>""",
+    )
+    local = 'xmlns:local="clr-namespace:Demo" xmlns:x='
+    feature, twin = (t.replace("xmlns:x=", local, 1) for t in (feature, twin))
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[2, 40][:3]) == (255, 165, 0)
+
+
+REFERENCE = Path(__file__).resolve().parent / "reference" / "layout"
+
+
+def test_cli_window_whose_only_viewport_is_in_a_template(tmp_path):
+    case = REFERENCE / "window-template-viewport.xaml"
+    out = tmp_path / "w.png"
+    run = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "render", str(case), "--window", "-o", str(out)],
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0, run.stderr
+    from PIL import Image
+
+    px = np.asarray(Image.open(out).convert("RGBA"))
+    assert px.shape == (100, 160, 4)
+    assert tuple(px[50, 80]) == (0, 255, 0, 255)  # the template's viewport draws its square
+    assert tuple(px[4, 4]) == (255, 255, 0, 255)  # the template's Border
+    info = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "info", str(case)], capture_output=True, text=True
+    )
+    assert info.returncode == 0, info.stderr
+    assert "1 viewport(s)" in info.stdout
+    assert "viewport 0: 144 x 84" in info.stdout
+    assert "XAML015" not in info.stderr + run.stderr
+
+
+def test_a_data_template_viewport_per_item():
+    text = f"""{HEAD}
+  <ItemsControl>
+    <ItemsControl.ItemTemplate>
+      <DataTemplate>
+        <Viewport3D Width="60" Height="40">
+          <Viewport3D.Camera><OrthographicCamera Width="4" /></Viewport3D.Camera>
+          <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight />
+            <GeometryModel3D>
+              <GeometryModel3D.Geometry>
+                <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2" />
+              </GeometryModel3D.Geometry>
+              <GeometryModel3D.Material>
+                <DiffuseMaterial Brush="{{Binding}}" />
+              </GeometryModel3D.Material>
+            </GeometryModel3D>
+          </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+        </Viewport3D>
+      </DataTemplate>
+    </ItemsControl.ItemTemplate>
+    <x:String>Red</x:String>
+    <x:String>Blue</x:String>
+  </ItemsControl>
+</Window>"""
+    scene = load(text, text=True)
+    assert len(scene.viewports) == 2
+    colours = [vp.models[0].material[0].brush.color for vp in scene.viewports]
+    assert colours[0][:3] == (1.0, 0.0, 0.0) and colours[1][:3] == (0.0, 0.0, 1.0)
+    assert not [d for d in scene.diagnostics if d.code == "XAML015"]

@@ -16,14 +16,7 @@ attributes).
 from __future__ import annotations
 
 from xaml3d.framework import markup
-from xaml3d.framework.styles import (
-    Control,
-    elements,
-    local_name,
-    property_name,
-    setter_value,
-    setters,
-)
+from xaml3d.framework.styles import Control, elements, local_name
 
 CONTAINERS = {"ItemsControl": "ContentPresenter", "ListBox": "ListBoxItem",
               "ComboBox": "ComboBoxItem"}  # fmt: skip
@@ -168,23 +161,13 @@ def fill_data(root, item) -> None:
             stack.extend(elements(el))
 
 
-def style_container(c: Control, container, sv, put) -> None:
-    """``ItemContainerStyle``'s Setters on a container (below its own values)."""
+def container_style(c: Control, sv):
+    """The ``ItemContainerStyle`` element of ``c``, or None."""
     value = c.value("ItemContainerStyle")
-    if value is None:
-        return
-    style = template_element(value, c.el, sv, "Style")
-    if style is None:
-        return
-    for s in setters(style):
-        prop, v = s.get("Property"), setter_value(s)
-        if prop and v is not None and not s.get("TargetName"):
-            name = property_name(prop)
-            if container.get(name) is None:
-                put(sv, container, name, v)
+    return None if value is None else template_element(value, c.el, sv, "Style")
 
 
-def containers(c: Control, sv, put) -> list | None:
+def containers(c: Control, sv) -> list | None:
     """The containers of ``c``'s items, in order (None: the items are not known at load)."""
     found = items_of(c, sv)
     if found is None:
@@ -208,7 +191,6 @@ def containers(c: Control, sv, put) -> list | None:
                     el.getparent().remove(el)
                 el.tail = None
                 out.append(el)
-                style_container(c, el, sv, put)
                 continue
             box = make(kind, source)
             if own:
@@ -228,8 +210,15 @@ def containers(c: Control, sv, put) -> list | None:
                 box.set("Content", "{}" + value if value.lstrip().startswith("{") else value)
             if own:
                 source.getparent().remove(source)
-        style_container(c, box, sv, put)
         out.append(box)
+    if c.type != "ItemsControl":  # the selected item's container is IsSelected, as WPF sets it
+        index = c.value("SelectedIndex")
+        try:
+            chosen = int(index[1]) if index is not None and index[0] == "text" else -1
+        except ValueError:
+            chosen = -1
+        if 0 <= chosen < len(out) and out[chosen].get("IsSelected") is None:
+            out[chosen].set("IsSelected", "True")
     # the inline items' property element, emptied
     for child in elements(c.el):
         if local_name(child.tag).rpartition(".")[2] == "Items" and not elements(child):

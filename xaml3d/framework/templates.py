@@ -103,7 +103,12 @@ class _Instantiation:
         c = Control(el, t, self.sv)
         found = self.template_of(c)
         if found is None:
-            if t in items.CONTAINERS and items.generates(c):
+            if t == "ContentControl" and c.value("ContentTemplate") is not None:
+                self.pin()
+                self.presented(c)
+                for k in list(el.iter(*self.tags)):
+                    self.control(k, depth + 1)
+            elif t in items.CONTAINERS and items.generates(c):
                 self.pin()
                 for sub in self.themed_items(c):
                     for k in list(sub.iter(*self.tags)):
@@ -134,7 +139,11 @@ class _Instantiation:
     def boxes(self, c: Control) -> list:
         """The item containers of an items control (none, said, when its items are not known
         at load)."""
-        out = items.containers(c, self.sv, put)
+        out = items.containers(c, self.sv)
+        style = items.container_style(c, self.sv)
+        if style is not None:
+            for box in out or ():
+                self.container_style(box, style)
         if out is None:
             msg = (f"this {c.type}'s ItemsSource is not known at load (a binding or a missing "
                    "resource): it shows no items")  # fmt: skip
@@ -142,6 +151,23 @@ class _Instantiation:
                          else None)  # fmt: skip
             return []
         return out
+
+    def container_style(self, box, style) -> None:
+        """``ItemContainerStyle`` on a container: its Setters and the triggers it fires at load
+        (IsSelected of the selected item...) as the container's values where it has none of
+        its own (its template, a Setter too, is instantiated when the container is)."""
+        t = self.sv.wpf_type(box) or ""
+        k = Control(box, t, self.sv)
+        k.styles = [style]
+        k.setters = {}
+        for s in setters(style):
+            prop, value = s.get("Property"), setter_value(s)
+            if prop and value is not None and not s.get("TargetName"):
+                k.setters[property_name(prop)] = value
+        self.style_triggers(k)
+        for prop in (*k.setters, *k.triggered):
+            if k.local(prop) is None:
+                put(self.sv, box, prop, k.triggered.get(prop, k.setters.get(prop)))
 
     def themed_items(self, c: Control) -> list:
         """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
@@ -198,7 +224,7 @@ class _Instantiation:
 
     # ----------------------------------------------------------------- instantiation
     def apply(self, c: Control, template):
-        sv, el = self.sv, c.el
+        sv = self.sv
         self.style_triggers(c)
         self.template_triggers_on_control(c, template)
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
@@ -220,6 +246,20 @@ class _Instantiation:
             if c.type in ITEMS_CONTROLS:
                 self.host_items(c, parts)
             self.template_triggers_on_parts(c, template, names)
+        self.finish(c, instance, template)
+        return instance
+
+    def presented(self, c: Control) -> None:
+        """A ContentControl with a ContentTemplate and no template of the user's: its default
+        template, a ContentPresenter, holding the content its ContentTemplate shows."""
+        presenter = self.make(c.el, "ContentPresenter", c.el)
+        self.present(c, presenter)
+        self.finish(c, presenter, None)
+
+    def finish(self, c: Control, instance, template) -> None:
+        """The control's content taken out (what a presenter did not place is not shown) and
+        the instance made its only child."""
+        sv, el = self.sv, c.el
         content = _content_elements(el)
         for k in content:  # element content not placed by a presenter: not shown
             if k.getparent() is el or _is_content_property(k.getparent()):
@@ -234,7 +274,6 @@ class _Instantiation:
             instance.tail = None
             el.append(instance)
         sv.templated(el, template)
-        return instance
 
     def host_items(self, c: Control, parts: list) -> None:
         """The items in the template's ItemsPresenter (the ItemsPanel's panel inside it) or
@@ -307,27 +346,29 @@ class _Instantiation:
         if content is None:
             return
         kind, value = content
+        if kind == "elements" and len(value) == 1 and sv.wpf_type(value[0]) is None:
+            kind, value = "element", value[0]  # a data object: shown by a DataTemplate
         if kind == "elements":
             for k in value:
                 k.tail = None
                 presenter.append(k)  # moved: an element is its own visual
             return
-        if kind == "element":  # an object from a property element or resource: a copy
+        data = sv.wpf_type(value) is None if kind == "element" else True
+        if kind == "element" and not data:  # a WPF object from a property element or resource
             presenter.append(sv.copy(value))
             return
+        item = ("text", value, None) if kind == "text" else ("data", value, value)
+        if data_template is None and kind == "element":
+            data_template = sv.implicit_data_template(local_name(value.tag), c.el)
         if data_template is not None:
             visual = [k for k in elements(data_template) if "." not in local_name(k.tag)]
             if visual:
                 shown = sv.copy(visual[0])
-                for part in _parts(shown):
-                    for attr, v in list(part.attrib.items()):
-                        path = markup.data_binding(v)
-                        if path == "":
-                            part.set(attr, _literal(value))
-                        elif path is not None:
-                            del part.attrib[attr]  # a string's own properties: not shown
+                items.fill_data(shown, item)
                 presenter.append(shown)
                 return
+        if kind == "element":  # an object without a template: its type's name
+            value = local_name(value.tag)
         text = _access_text(value) if access else value
         block = presenter.makeelement(_same_ns(presenter, "TextBlock"), {"Text": _literal(text)})
         sv.made(block, presenter)

@@ -9,6 +9,8 @@ import copy
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.resources import data_template_key, type_key
 
+_TEMPLATES = {"ControlTemplate", "DataTemplate", "ItemsPanelTemplate", "HierarchicalDataTemplate"}
+
 
 class ReaderServices:
     """``Services`` over a ReadContext and the document's Resources."""
@@ -40,6 +42,11 @@ class ReaderServices:
         return local if is_presentation(ns) else None
 
     def copy(self, el):
+        parent = el.getparent()
+        if parent is not None and qname(parent.tag)[1] in _TEMPLATES:
+            # a template's content instantiated: its Viewport3Ds are found in the instance
+            self.ctx.keep(parent)
+            self.ctx.instantiated[id(parent)] = parent
         out = copy.deepcopy(el)
         for a, b in zip(el.iter(), out.iter(), strict=True):
             self.ctx.keep(b)
