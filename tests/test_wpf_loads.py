@@ -224,8 +224,8 @@ def test_a_namespace_name_that_is_not_a_uri_is_read_as_wpf_reads_it():
 
 
 def test_a_viewport_in_a_data_template_is_named_in_the_no_viewport_error():
-    # an ItemsControl whose DataTemplate holds the Viewport3D: WPF draws one per item; xaml3d
-    # does not instantiate templates, and says where the viewport is instead of "none"
+    # an ItemsControl without items whose DataTemplate holds the Viewport3D: WPF draws one per
+    # item, none here; xaml3d says where the viewport is instead of "none"
     scene = load(
         f"""<Page {NS}>
   <Page.Resources>
@@ -242,7 +242,7 @@ def test_a_viewport_in_a_data_template_is_named_in_the_no_viewport_error():
     (scn,) = [d for d in scene.diagnostics if d.code == "SCN001"]
     assert scn.message == (
         "the document holds no Viewport3D outside templates: nothing to render (the "
-        "Viewport3D at line 5 is inside a DataTemplate, which xaml3d does not instantiate)"
+        "Viewport3D at line 5 is inside a DataTemplate: no control or item instantiates it)"
     )
 
 

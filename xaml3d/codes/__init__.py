@@ -38,6 +38,7 @@ from xaml3d.codes import (
     mesh,
     outputs,
     reader,
+    templates,
     values,
 )
 from xaml3d.errors import ERROR, INFO, WARNING
@@ -57,11 +58,12 @@ TABLES: tuple[tuple[str, str, bool], ...] = (
     ("xaml3d.codes.animation", "ANIM_CODES", True),
     ("xaml3d.codes.export", "EXPORT_CODES", True),
     ("xaml3d.codes.drawing", "DRAWING_CODES", True),
+    ("xaml3d.codes.templates", "TEMPLATE_CODES", True),
 )
 _MODULES = {
     m.__name__: m
     for m in (reader, values, layout, mesh, camera, checks, fit, cli, outputs, lens, animation,
-              export, drawing)
+              export, drawing, templates)
 }  # fmt: skip
 
 EXTRA_CODES: dict[str, tuple[str, str]] = {

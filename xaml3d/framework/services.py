@@ -1,5 +1,6 @@
 """What the framework step asks of the reader (which passes an implementation in): resource
-look-up with WPF's scoping and diagnostics at an element's source position."""
+look-up with WPF's scoping, the elements' WPF types, copies that keep their source positions,
+and diagnostics at an element's source position."""
 
 from __future__ import annotations
 
@@ -11,6 +12,34 @@ class Services(Protocol):
         """The resource entry element for ``key`` seen from ``from_el`` (StaticResource
         scoping: the element's ancestors' Resources, the document's, the application's, merged
         dictionaries), or None; a missing key is reported by the reader."""
+
+    def find(self, key: str, from_el: Any) -> Any:
+        """As ``lookup``, silently (a miss is reported where the reader reads the reference)."""
+
+    def implicit_style(self, type_name: str, from_el: Any) -> Any:
+        """The implicit Style of type ``type_name`` in scope at ``from_el`` (keyed
+        ``{x:Type T}`` or by ``TargetType`` alone), or None."""
+
+    def implicit_data_template(self, type_name: str, from_el: Any) -> Any:
+        """The implicit DataTemplate (``DataType`` without ``x:Key``) of type ``type_name``
+        in scope at ``from_el``, or None."""
+
+    def wpf_type(self, el: Any) -> str | None:
+        """The type name of a WPF (presentation namespace) element, else None (another
+        namespace's, or not an element)."""
+
+    def copy(self, el: Any) -> Any:
+        """A deep copy of ``el`` whose elements report the source positions of the originals."""
+
+    def made(self, el: Any, where: Any) -> None:
+        """``el`` (made by the framework) reports the source position of ``where``."""
+
+    def templated(self, el: Any, template: Any) -> None:
+        """``el`` is a control drawn by the user's ``template`` (None: by the items the
+        framework generated in the theme's template): its only child is the instance."""
+
+    def pin(self, root: Any) -> None:
+        """Called once before the first change to the tree under ``root``."""
 
     def diag(
         self, code: str, message: str, el: Any = None, attr: str | None = None, once: object = None

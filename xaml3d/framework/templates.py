@@ -1,9 +1,591 @@
-"""Styles, control templates, data templates, triggers and items, instantiated as WPF's
-FrameworkElement.ApplyTemplate and ItemContainerGenerator build them at load."""
+"""Styles' control templates and triggers, instantiated as WPF's FrameworkElement.ApplyTemplate
+builds them at load (``ControlTemplate`` from the control's ``Template`` attribute or
+``<X.Template>`` property element, a Style Setter of a keyed or implicit Style and its
+``BasedOn`` chain, a merged or application dictionary's Style).
+
+A templated control stays in the tree with its own layout properties (size, margin,
+alignment, attached properties, visibility, opacity, transforms) and the template's visual
+tree, copied, as its only child (the reader lays it out and draws it as a plain container:
+``Services.templated``). In the copy:
+
+- ``{TemplateBinding P}`` and ``{Binding P, RelativeSource={RelativeSource TemplatedParent}}``
+  become the control's effective value of P (``styles.Control.value``);
+- a ``ContentPresenter`` holds the control's content (its ``ContentSource``, ``Content`` by
+  default; ``Header`` for a header's presenter): string content as a TextBlock (AccessText's
+  access key hidden when ``RecognizesAccessKey``), element content moved in, a
+  ``ContentTemplate`` (DataTemplate) instantiated with the content as its data;
+- names (``x:Name``) belong to the template's name scope: they are taken off the copies (the
+  window's names and storyboard targets never see them) and serve the triggers' TargetName;
+- triggers whose condition is known at load (``Trigger`` and ``MultiTrigger`` on a property
+  the control sets, its Style sets, or a state a picture shows: enabled, not checked, not
+  selected, no mouse, no focus) apply their Setters: a ControlTemplate trigger's to its
+  TargetName part (above the part's own values) or to the control, a Style trigger's to the
+  control (below its local values).
+
+Controls whose template the reader's theme draws (no user template) are left as they are.
+"""
 
 from __future__ import annotations
 
+from xaml3d.framework import items, markup
+from xaml3d.framework.styles import (
+    X_NS,
+    Control,
+    elements,
+    local_name,
+    property_name,
+    setter_value,
+    setters,
+    triggers,
+)
+
+# controls whose user template is instantiated: content controls and plain Controls
+CONTENT_CONTROLS = {
+    "Button", "ToggleButton", "RepeatButton", "CheckBox", "RadioButton", "Label",
+    "ContentControl", "UserControl", "ListBoxItem", "ComboBoxItem", "ListViewItem",
+    "StatusBarItem", "ToolTip", "Frame",
+}  # fmt: skip
+HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
+PLAIN_CONTROLS = {"Control", "Separator"}
+ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
+SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS
+# controls whose templates place parts xaml3d does not generate (items, text hosts, tracks)
+UNSUPPORTED = {
+    "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
+    "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid", "TextBox", "PasswordBox",
+    "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
+    "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
+}  # fmt: skip
+# elements whose content is not part of the visual tree where they are written
+_NOT_VISUAL = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
+               "HierarchicalDataTemplate", "ItemContainerTemplate",
+               "ResourceDictionary"}  # fmt: skip
+_NOT_VISUAL_PROPERTIES = ("Resources", "Style", "Template", "ContentTemplate", "ItemTemplate",
+                          "ItemsPanel", "ItemContainerStyle", "Triggers", "ToolTip",
+                          "ContextMenu", "HeaderTemplate", "FocusVisualStyle")  # fmt: skip
+# the presenter's own properties, consumed where its content is placed
+_PRESENTER_PROPS = ("Content", "ContentSource", "ContentTemplate", "ContentTemplateSelector",
+                    "ContentStringFormat", "RecognizesAccessKey")  # fmt: skip
+MAX_DEPTH = 32  # templates inside templates deeper than this: a template that holds itself
+
+
+# the controls' tags in any namespace: the one look a document without controls costs
+TAGS = tuple(f"{{*}}{t}" for t in sorted(SUPPORTED | UNSUPPORTED))
+
 
 def instantiate(root, services) -> None:
-    """Instantiate every template that applies under ``root`` (in place)."""
-    return None
+    """Instantiate every user control template that applies under ``root`` (in place)."""
+    if next(root.iter(*TAGS), None) is None:
+        return
+    _Instantiation(root, services, TAGS).run()
+
+
+class _Instantiation:
+    def __init__(self, root, services, tags) -> None:
+        self.root, self.sv, self.tags = root, services, tags
+        self.done: set[int] = set()
+        self.keep: list = []  # the elements whose ids are in ``done``
+        self.pinned = False
+
+    def run(self) -> None:
+        for el in list(self.root.iter(*self.tags)):
+            self.control(el, 0)
+
+    # ----------------------------------------------------------------- one control
+    def control(self, el, depth: int) -> None:
+        if id(el) in self.done:
+            return
+        self.done.add(id(el))
+        self.keep.append(el)
+        t = self.sv.wpf_type(el)
+        if t is None or not _visual(el, self.sv):
+            return
+        c = Control(el, t, self.sv)
+        found = self.template_of(c)
+        if found is None:
+            if t == "ContentControl" and c.value("ContentTemplate") is not None:
+                self.pin()
+                self.presented(c)
+                for k in list(el.iter(*self.tags)):
+                    self.control(k, depth + 1)
+            elif t in items.CONTAINERS and items.generates(c):
+                self.pin()
+                for sub in self.themed_items(c):
+                    for k in list(sub.iter(*self.tags)):
+                        self.control(k, depth + 1)
+            return
+        template, where = found
+        if t not in SUPPORTED:
+            msg = (f"the ControlTemplate of this {t} is not instantiated (xaml3d instantiates "
+                   "the templates of content controls): it is drawn in the theme's "
+                   "look")  # fmt: skip
+            self.sv.diag("TPL001", msg, el, attr=where)
+            return
+        if depth >= MAX_DEPTH:
+            msg = f"templates nested {MAX_DEPTH} deep (a template holding itself): not instantiated"
+            self.sv.diag("TPL004", msg, el, once="depth")
+            return
+        self.pin()
+        instance = self.apply(c, template)
+        if instance is not None:
+            for sub in list(instance.iter(*self.tags)):
+                self.control(sub, depth + 1)
+
+    def pin(self) -> None:
+        if not self.pinned:
+            self.sv.pin(self.root)
+            self.pinned = True
+
+    def boxes(self, c: Control) -> list:
+        """The item containers of an items control (none, said, when its items are not known
+        at load)."""
+        out = items.containers(c, self.sv)
+        style = items.container_style(c, self.sv)
+        if style is not None:
+            for box in out or ():
+                self.container_style(box, style)
+        if out is None:
+            msg = (f"this {c.type}'s ItemsSource is not known at load (a binding or a missing "
+                   "resource): it shows no items")  # fmt: skip
+            self.sv.diag("TPL006", msg, c.el, attr="ItemsSource" if c.el.get("ItemsSource")
+                         else None)  # fmt: skip
+            return []
+        return out
+
+    def container_style(self, box, style) -> None:
+        """``ItemContainerStyle`` on a container: its Setters and the triggers it fires at load
+        (IsSelected of the selected item...) as the container's values where it has none of
+        its own (its template, a Setter too, is instantiated when the container is)."""
+        t = self.sv.wpf_type(box) or ""
+        k = Control(box, t, self.sv)
+        k.styles = [style]
+        k.setters = {}
+        for s in setters(style):
+            prop, value = s.get("Property"), setter_value(s)
+            if prop and value is not None and not s.get("TargetName"):
+                k.setters[property_name(prop)] = value
+        self.style_triggers(k)
+        for prop in (*k.setters, *k.triggered):
+            if k.local(prop) is None:
+                put(self.sv, box, prop, k.triggered.get(prop, k.setters.get(prop)))
+
+    def themed_items(self, c: Control) -> list:
+        """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
+        containers as its children; an ItemsControl's panel in the Border of its default
+        template (WPF's: Background, BorderBrush, BorderThickness and Padding bound)."""
+        sv, el = self.sv, c.el
+        boxes = self.boxes(c)
+        if c.type != "ItemsControl":
+            for k in boxes:
+                el.append(k)
+            return boxes
+        border = self.make(el, "Border", el)
+        for prop in ("Background", "BorderBrush", "BorderThickness", "Padding"):
+            put(sv, border, prop, c.value(prop))
+        panel = items.items_panel(c, sv, lambda: self.make(el, "StackPanel", el))
+        for k in boxes:
+            panel.append(k)
+        border.append(panel)
+        for child in _content_elements(el):
+            child.getparent().remove(child)
+        el.text = None
+        el.append(border)
+        sv.templated(el, None)
+        return [border]
+
+    def make(self, near, local: str, where):
+        el = near.makeelement(_same_ns(near, local), {})
+        self.sv.made(el, where)
+        return el
+
+    def template_of(self, c: Control):
+        """(the ControlTemplate element, the attribute naming it or None) of a user template."""
+        el, sv = c.el, self.sv
+        ref = el.get("Template")
+        if ref is not None:
+            key = markup.resource_key(ref)
+            entry = sv.find(key, el) if key is not None else None
+            return (entry, "Template") if _is_template(entry) else None
+        for child in elements(el):
+            if local_name(child.tag).endswith(".Template") and "." in local_name(child.tag):
+                entry = next(iter(elements(child)), None)
+                return (entry, None) if _is_template(entry) else None
+        value = c.setters.get("Template")
+        if value is None:
+            return None
+        if value[0] == "element":
+            entry = value[1]
+        else:
+            key = markup.resource_key(value[1])
+            entry = sv.find(key, c.styles[-1]) if key is not None else None
+        if not _is_template(entry):
+            return None
+        return entry, ("Style" if el.get("Style") is not None else None)
+
+    # ----------------------------------------------------------------- instantiation
+    def apply(self, c: Control, template):
+        sv = self.sv
+        self.style_triggers(c)
+        self.template_triggers_on_control(c, template)
+        visual = [k for k in elements(template) if "." not in local_name(k.tag)]
+        instance = sv.copy(visual[0]) if visual else None
+        names: dict[str, object] = {}
+        if instance is not None:
+            parts = _parts(instance)
+            for part in parts:
+                for attr in (f"{{{X_NS}}}Name", "Name"):
+                    name = part.get(attr)
+                    if name is not None:
+                        names.setdefault(name, part)
+                        del part.attrib[attr]
+            for part in parts:
+                self.bind(c, part)
+            for part in parts:
+                if sv.wpf_type(part) == "ContentPresenter":
+                    self.present(c, part)
+            if c.type in ITEMS_CONTROLS:
+                self.host_items(c, parts)
+            self.template_triggers_on_parts(c, template, names)
+        self.finish(c, instance, template)
+        return instance
+
+    def presented(self, c: Control) -> None:
+        """A ContentControl with a ContentTemplate and no template of the user's: its default
+        template, a ContentPresenter, holding the content its ContentTemplate shows."""
+        presenter = self.make(c.el, "ContentPresenter", c.el)
+        self.present(c, presenter)
+        self.finish(c, presenter, None)
+
+    def finish(self, c: Control, instance, template) -> None:
+        """The control's content taken out (what a presenter did not place is not shown) and
+        the instance made its only child."""
+        sv, el = self.sv, c.el
+        content = _content_elements(el)
+        for k in content:  # element content not placed by a presenter: not shown
+            if k.getparent() is el or _is_content_property(k.getparent()):
+                k.getparent().remove(k)
+        for child in elements(el):
+            if _is_content_property(child) and not elements(child):
+                el.remove(child)
+        el.text = None
+        for child in el:
+            child.tail = None
+        if instance is not None:
+            instance.tail = None
+            el.append(instance)
+        sv.templated(el, template)
+
+    def host_items(self, c: Control, parts: list) -> None:
+        """The items in the template's ItemsPresenter (the ItemsPanel's panel inside it) or
+        in its panel marked IsItemsHost."""
+        sv = self.sv
+        hosts = [p for p in parts if sv.wpf_type(p) == "ItemsPresenter"
+                 or (p.get("IsItemsHost") or "").strip().lower() == "true"]  # fmt: skip
+        boxes = self.boxes(c)
+        if not hosts:
+            return
+        host = hosts[0]
+        if sv.wpf_type(host) == "ItemsPresenter":
+            # laid out as the presenter it is: a plain holder of the panel
+            host.tag = _same_ns(host, "ContentPresenter")
+            panel = items.items_panel(c, sv, lambda: self.make(host, "StackPanel", host))
+            host.append(panel)
+        else:
+            host.attrib.pop("IsItemsHost", None)
+            panel = host
+        for k in boxes:
+            panel.append(k)
+
+    def bind(self, c: Control, part) -> None:
+        """The part's references to the templated parent replaced by the control's values."""
+        for attr, value in list(part.attrib.items()):
+            ref = markup.templated_parent_property(value)
+            if ref is None:
+                continue
+            prop, plain = ref
+            if prop in ("Content", "ContentTemplate") and self.sv.wpf_type(part) == (
+                "ContentPresenter"
+            ):
+                continue  # placed by present()
+            if not plain:
+                msg = (f"{attr} binds the templated parent's {prop} through a converter or "
+                       "format, which is code: the property keeps its default")  # fmt: skip
+                self.sv.diag("TPL002", msg, part, attr=attr, once=("TPL002", id(part), attr))
+                del part.attrib[attr]
+                continue
+            put(self.sv, part, attr, c.value(prop))
+
+    def present(self, c: Control, presenter) -> None:
+        """A ContentPresenter filled with the control's content (or its own Content)."""
+        sv = self.sv
+        source = presenter.get("ContentSource", "Content").strip()
+        own = presenter.get("Content")
+        template = presenter.get("ContentTemplate")
+        access = (presenter.get("RecognizesAccessKey") or "").strip().lower() == "true"
+        for attr in _PRESENTER_PROPS:
+            presenter.attrib.pop(attr, None)
+        if own is not None:
+            ref = markup.templated_parent_property(own)
+            if ref is not None:
+                source = ref[0]
+                content = _content(c, source)
+            elif markup.split(own) is None:
+                content = ("text", own)
+            else:
+                content = None
+        else:
+            content = _content(c, source)
+        if template is not None:
+            ref = markup.templated_parent_property(template)
+            data_template = c.value(ref[0]) if ref is not None else ("text", template)
+        elif source in ("Content", "Header"):
+            data_template = c.value(f"{source}Template")
+        else:
+            data_template = None
+        data_template = self.resolve_template(data_template, c.el)
+        if content is None:
+            return
+        kind, value = content
+        if kind == "elements" and len(value) == 1 and sv.wpf_type(value[0]) is None:
+            kind, value = "element", value[0]  # a data object: shown by a DataTemplate
+        if kind == "elements":
+            for k in value:
+                k.tail = None
+                presenter.append(k)  # moved: an element is its own visual
+            return
+        data = sv.wpf_type(value) is None if kind == "element" else True
+        if kind == "element" and not data:  # a WPF object from a property element or resource
+            presenter.append(sv.copy(value))
+            return
+        item = ("text", value, None) if kind == "text" else ("data", value, value)
+        if data_template is None and kind == "element":
+            data_template = sv.implicit_data_template(local_name(value.tag), c.el)
+        if data_template is not None:
+            visual = [k for k in elements(data_template) if "." not in local_name(k.tag)]
+            if visual:
+                shown = sv.copy(visual[0])
+                items.fill_data(shown, item)
+                presenter.append(shown)
+                return
+        if kind == "element":  # an object without a template: its type's name
+            value = local_name(value.tag)
+        text = _access_text(value) if access else value
+        block = presenter.makeelement(_same_ns(presenter, "TextBlock"), {"Text": _literal(text)})
+        sv.made(block, presenter)
+        presenter.append(block)
+
+    def resolve_template(self, value, where):
+        if value is None:
+            return None
+        if value[0] == "element":
+            return value[1] if local_name(value[1].tag) == "DataTemplate" else None
+        key = markup.resource_key(value[1])
+        entry = self.sv.find(key, where) if key is not None else None
+        return entry if entry is not None and local_name(entry.tag) == "DataTemplate" else None
+
+    # ----------------------------------------------------------------- triggers
+    def _fired(self, c: Control, trigger) -> bool:
+        kind = local_name(trigger.tag)
+        if kind == "EventTrigger":
+            return False  # storyboards: the animation reader's
+        verdict = c.fires(trigger)
+        if verdict is None:
+            msg = (f"this {kind}'s condition is not known at load (a binding, another "
+                   "element's property or code): its Setters are not applied")  # fmt: skip
+            self.sv.diag("TPL003", msg, trigger, once=("TPL003", id(trigger)))
+            return False
+        return verdict
+
+    def style_triggers(self, c: Control) -> None:
+        for style in c.styles:
+            for trigger in triggers(style, "Style"):
+                if self._fired(c, trigger):
+                    for s in setters(trigger):
+                        prop, value = s.get("Property"), setter_value(s)
+                        if prop and value is not None:
+                            c.triggered[property_name(prop)] = value
+
+    def template_triggers_on_control(self, c: Control, template) -> None:
+        for trigger in triggers(template, "ControlTemplate"):
+            if self._fired(c, trigger):
+                for s in setters(trigger):
+                    prop, value = s.get("Property"), setter_value(s)
+                    # below the Style's triggers: only what they leave unset
+                    if prop and value is not None and not s.get("TargetName"):
+                        c.triggered.setdefault(property_name(prop), value)
+        for prop, value in c.triggered.items():
+            if c.local(prop) is None:  # the control's value at load, seen by the reader
+                put(self.sv, c.el, prop, value)
+
+    def template_triggers_on_parts(self, c: Control, template, names: dict) -> None:
+        for trigger in triggers(template, "ControlTemplate"):
+            if not c.fires(trigger):
+                continue
+            for s in setters(trigger):
+                prop, target, value = s.get("Property"), s.get("TargetName"), setter_value(s)
+                if not prop or not target or value is None:
+                    continue
+                part = names.get(target)
+                if part is None:
+                    msg = f"TargetName {target!r} names no part of this template: skipped"
+                    self.sv.diag("TPL005", msg, s, attr="TargetName", once=("TPL005", id(s)))
+                    continue
+                put(self.sv, part, property_name(prop), value)
+
+
+# --------------------------------------------------------------------------- helpers
+
+
+def put(sv, el, prop: str, value) -> None:
+    """Set ``el``'s property ``prop`` to ``value`` (text, or an element copied into a property
+    element), replacing how it was written before; None clears it (the default stands)."""
+    el.attrib.pop(prop, None)
+    for child in elements(el):
+        local = local_name(child.tag)
+        if "." in local and property_name(local) == property_name(prop):
+            el.remove(child)
+    if value is None:
+        return
+    kind, v = value
+    if kind == "text":
+        el.set(prop, v)
+        return
+    owner = prop if "." in prop else f"{local_name(el.tag)}.{prop}"
+    holder = el.makeelement(_same_ns(el, owner), {})
+    sv.made(holder, el)
+    holder.append(sv.copy(v))
+    el.insert(0, holder)
+
+
+def _same_ns(el, local: str) -> str:
+    ns = el.tag.rpartition("}")[0]
+    return f"{ns}}}{local}" if ns else local
+
+
+def _literal(text: str) -> str:
+    """Text set as an attribute value: a leading brace escaped (not a markup extension)."""
+    return "{}" + text if text.lstrip().startswith("{") else text
+
+
+def _access_text(text: str) -> str:
+    """AccessText's text: the first lone underscore marks the access key (not shown); a
+    doubled one is an underscore."""
+    out, i, marked = [], 0, False
+    while i < len(text):
+        ch = text[i]
+        if ch == "_" and i + 1 < len(text):
+            if text[i + 1] == "_":
+                out.append("_")
+                i += 2
+                continue
+            if not marked:
+                marked = True
+                i += 1
+                continue
+        out.append(ch)
+        i += 1
+    return "".join(out)
+
+
+def _is_template(el) -> bool:
+    return el is not None and isinstance(el.tag, str) and local_name(el.tag) == "ControlTemplate"
+
+
+def _visual(el, sv) -> bool:
+    """Whether ``el`` is in the visual tree (not inside a Style, template or dictionary, nor in
+    a property element whose value is not laid out)."""
+    node = el.getparent()
+    while node is not None:
+        local = local_name(node.tag)
+        owned = local.rpartition(".")[2] if "." in local else None
+        if local in _NOT_VISUAL or owned in _NOT_VISUAL_PROPERTIES:
+            return False
+        node = node.getparent()
+    return True
+
+
+def _parts(instance) -> list:
+    """The instance's elements that belong to the template (not inside a nested template or
+    Style, whose content is built when that is applied)."""
+    out = []
+    stack = [instance]
+    while stack:
+        el = stack.pop()
+        if not isinstance(el.tag, str):
+            continue
+        out.append(el)
+        if local_name(el.tag) not in _NOT_VISUAL:
+            stack.extend(reversed(elements(el)))
+    return out
+
+
+def _is_content_property(el) -> bool:
+    if el is None:
+        return False
+    local = local_name(el.tag)
+    return "." in local and local.rpartition(".")[2] in ("Content", "Header")
+
+
+def _content_elements(el) -> list:
+    """The control's content elements: children that are not property elements, and those of
+    ``<X.Content>``."""
+    out = []
+    for child in elements(el):
+        local = local_name(child.tag)
+        if "." not in local:
+            out.append(child)
+        elif local.rpartition(".")[2] == "Content":
+            out.extend(elements(child))
+    return out
+
+
+def _content(c: Control, source: str):
+    """The control's ``source`` property (Content, Header) as a presenter shows it:
+    ("text", str), ("elements", [el...]) to move, ("element", el) to copy, or None."""
+    el = c.el
+    if source == "Content":
+        kids = _content_elements(el)
+        if kids:
+            return ("elements", kids)
+        raw = el.get("Content")
+        if raw is None:
+            for child in elements(el):
+                if local_name(child.tag).rpartition(".")[2] == "Content" and "." in local_name(
+                    child.tag
+                ):
+                    text = (child.text or "").strip()
+                    return ("text", text) if text else None
+            text = _text_content(el)
+            if text:
+                return ("text", text)
+            value = c.value("Content")
+            return _shown(c, value)
+        return _shown(c, ("text", raw))
+    value = c.value(source)
+    return _shown(c, value)
+
+
+def _text_content(el) -> str:
+    """The text an element holds as its content (around its property elements), its white
+    space collapsed as XAML's is."""
+    parts = [el.text or "", *(k.tail or "" for k in el)]
+    return " ".join("".join(parts).split())
+
+
+def _shown(c: Control, value):
+    if value is None:
+        return None
+    kind, v = value
+    if kind == "element":
+        return ("element", v)
+    key = markup.resource_key(v)
+    if key is not None:
+        entry = c.services.find(key, c.el)
+        if entry is None:
+            return None
+        if local_name(entry.tag) == "String":
+            return ("text", entry.text or "")
+        return ("element", entry)
+    if markup.split(v) is not None:
+        return None  # a binding or extension the bindings step left: nothing to show
+    return ("text", v)

@@ -1,7 +1,9 @@
 """Building the normalized Scene from a parsed XAML tree (architecture: markup -> Scene).
 
 Covers finding every Viewport3D (in document order, whatever the root: Window, Page,
-UserControl, a custom control, a bare Viewport3D; not those inside templates and styles), the
+UserControl, a custom control, a bare Viewport3D; those the framework step instantiated from
+a control's template or an item's DataTemplate too, not those of templates and styles nothing
+applies), the
 viewport's size and rectangle from WPF's layout of the panels around it (layout_step.py,
 docs/layout.md), camera (WPF's default PerspectiveCamera when none is given), background (the
 nearest laid-out ancestor's Background brush) and ClipToBounds; the model tree flattened in
@@ -393,6 +395,8 @@ class _Walk:
                     self.visit(child)
             return
         if local in _TEMPLATES:
+            if r.ctx.instantiated.get(id(el)) is el:
+                return  # its instance, in the control that uses it, is walked there
             if any(_wpf(v) for v in el.iter("{*}Viewport3D")):
                 r.ctx.diag("XAML015", f"Viewport3D inside {a_an(local)} is not instantiated", el)
             return
@@ -549,8 +553,8 @@ def build_scene(
                 where, el = templated
                 msg = (
                     "the document holds no Viewport3D outside templates: nothing to render "
-                    f"(the Viewport3D at line {ctx.locate(el)[0]} is inside {a_an(where)}, "
-                    "which xaml3d does not instantiate)"
+                    f"(the Viewport3D at line {ctx.locate(el)[0]} is inside {a_an(where)}: "
+                    "no control or item instantiates it)"
                 )
             elif other is not None:
                 # a toolkit's viewport control (Helix Toolkit's HelixViewport3D ...): WPF loads

@@ -93,6 +93,14 @@ class ReadContext:
         self._once: set = set()
         self._building: list[int] = []
         self._keep: list[etree._Element] = []  # keeps proxies alive while ids are used as keys
+        # the framework step's copies (a template's elements instantiated in the window):
+        # id(copy) -> (copy, the element it copies), whose source position it reports
+        self._copies: dict[int, tuple[etree._Element, etree._Element]] = {}
+        # controls drawn by a user's ControlTemplate (the framework step's instance is their
+        # only child): id -> element
+        self.templated: dict[int, etree._Element] = {}
+        # the ControlTemplates so instantiated: id -> element
+        self.instantiated: dict[int, etree._Element] = {}
 
     # ----------------------------------------------------------------- documents
     def add_document(self, doc: ParsedDocument, *, trusted: bool = False) -> None:
@@ -100,7 +108,34 @@ class ReadContext:
         if trusted and doc.directory is not None:
             self.allowed_roots.append(doc.directory)
 
+    def copied(self, copy: etree._Element, original: etree._Element) -> None:
+        """``copy`` (made by the framework step) reports ``original``'s source position."""
+        hit = self._copies.get(id(original))
+        if hit is not None and hit[0] is original:
+            original = hit[1]
+        self._copies[id(copy)] = (copy, original)
+
+    def original(self, el: etree._Element) -> etree._Element:
+        """The element of a document's text that ``el`` is, or copies."""
+        hit = self._copies.get(id(el))
+        return hit[1] if hit is not None and hit[0] is el else el
+
+    def pin_positions(self, root: etree._Element) -> None:
+        """Locate every element of ``root``'s document now, before the framework step changes
+        its tree (a position is found by the element's place in document order)."""
+        doc = self.doc_of(root)
+        if doc is not None:
+            for el in root.iter():
+                if isinstance(el.tag, str):
+                    doc.locate(el)
+
+    def is_templated(self, el: etree._Element) -> bool:
+        """Whether ``el`` is a control drawn by a user's ControlTemplate (framework step)."""
+        hit = self.templated.get(id(el))
+        return hit is not None and hit is el
+
     def doc_of(self, el: etree._Element) -> ParsedDocument | None:
+        el = self.original(el)
         entry = self._docs.get(id(el.getroottree().getroot()))
         return entry[1] if entry else None
 
@@ -114,6 +149,7 @@ class ReadContext:
         """The file of ``el``'s document when it is not the scene's (the first document read:
         a ``-r`` dictionary, App.xaml, a merged dictionary), else None: what the scene builds
         from it is reported in that file, not in the scene's."""
+        el = self.original(el)
         first = next(iter(self._docs.values()), None)
         if first is None or first[0] is el.getroottree().getroot():
             return None
@@ -153,6 +189,7 @@ class ReadContext:
         """(line, column) of an element's ``<``, or of attribute ``attr``'s name (a key of
         ``el.attrib``), or of character ``index`` of its value, in its own document's text;
         (sourceline, None) when not found."""
+        el = self.original(el)
         doc = self.doc_of(el)
         where = doc.locate(el, attr, index) if doc is not None else None
         return where if where is not None else (el.sourceline, None)

@@ -1,7 +1,15 @@
 """The reader's services to the framework step (``xaml3d.framework.services.Services``):
-resource look-up with the document's scoping and located diagnostics."""
+resource look-up with the document's scoping, copies that keep their source positions and
+located diagnostics."""
 
 from __future__ import annotations
+
+import copy
+
+from xaml3d.xaml.context import is_presentation, qname
+from xaml3d.xaml.resources import data_template_key, type_key
+
+_TEMPLATES = {"ControlTemplate", "DataTemplate", "ItemsPanelTemplate", "HierarchicalDataTemplate"}
 
 
 class ReaderServices:
@@ -13,6 +21,51 @@ class ReaderServices:
 
     def lookup(self, key: str, from_el, attr: str | None = None):
         return self.resources.lookup(key, from_el, attr=attr)
+
+    def find(self, key: str, from_el):
+        return self.resources.find(key, from_el)
+
+    def implicit_style(self, type_name: str, from_el):
+        key = type_key(type_name)
+        # every dictionary in scope is read by the look-up itself (dictionary_of)
+        entry = self.resources.find(key, from_el)
+        return entry if entry is not None and qname(entry.tag)[1] == "Style" else None
+
+    def implicit_data_template(self, type_name: str, from_el):
+        entry = self.resources.find(data_template_key(type_name), from_el)
+        return entry if entry is not None and qname(entry.tag)[1] == "DataTemplate" else None
+
+    def wpf_type(self, el) -> str | None:
+        if not isinstance(el.tag, str):
+            return None
+        ns, local = qname(el.tag)
+        return local if is_presentation(ns) else None
+
+    def copy(self, el):
+        parent = el.getparent()
+        if parent is not None and qname(parent.tag)[1] in _TEMPLATES:
+            # a template's content instantiated: its Viewport3Ds are found in the instance
+            self.ctx.keep(parent)
+            self.ctx.instantiated[id(parent)] = parent
+        out = copy.deepcopy(el)
+        for a, b in zip(el.iter(), out.iter(), strict=True):
+            self.ctx.keep(b)
+            self.ctx.copied(b, a)
+        return out
+
+    def made(self, el, where) -> None:
+        self.ctx.keep(el)
+        self.ctx.copied(el, where)
+
+    def templated(self, el, template) -> None:
+        self.ctx.keep(el)
+        self.ctx.templated[id(el)] = el
+        if template is not None:
+            self.ctx.keep(template)
+            self.ctx.instantiated[id(template)] = template
+
+    def pin(self, root) -> None:
+        self.ctx.pin_positions(root)
 
     def diag(self, code: str, message: str, el=None, attr: str | None = None, once=None) -> None:
         self.ctx.diag(code, message, el, attr=attr, once=once)

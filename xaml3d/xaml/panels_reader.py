@@ -347,6 +347,8 @@ class PanelsReader:
     def kind_of(self, el) -> str | None:
         """The layout rule of an element, None when it takes no part in layout."""
         ns, local = qname(el.tag)
+        if self.r.ctx.is_templated(el):
+            return L.CONTAINER  # its template's instance is its child (xaml3d.framework)
         if not is_presentation(ns) or voc.lookup(local) is None:
             return L.CONTAINER if id(el) in self.holds_viewport else L.CONTROL
         if local == "Viewport3D":
@@ -408,7 +410,7 @@ class PanelsReader:
         if kind == L.CONTROL:
             self._estimate(n, v, el, font)
             return n
-        if kind == L.CONTAINER and (local not in _PLAIN):
+        if kind == L.CONTAINER and local not in _PLAIN and not self.r.ctx.is_templated(el):
             what = "custom element" if not is_presentation(ns) else local
             self.note("LAY004", f"{what} {local!r} holding a Viewport3D is laid out as a plain "
                       "container (its own chrome and rules are not known)", el)  # fmt: skip
@@ -460,6 +462,10 @@ class PanelsReader:
 
     def _panel(self, n: L.Node, v: ElementValues, el) -> None:
         kind = n.kind
+        if self.r.ctx.is_templated(el):
+            # a control drawn by its template: measured and drawn as the template's root (WPF's
+            # Control.MeasureOverride); its Padding, border and Background are the template's
+            kind = None
         bars = ("Disabled", "Auto", "Hidden", "Visible")
         if kind == L.WINDOW:
             n.size_to_content = v.get(

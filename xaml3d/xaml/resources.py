@@ -253,6 +253,9 @@ class Resources:
                 key = type_key(key)  # x:Key="{x:Type Border}": the implicit style's own key
             if key is None and local == "Style" and child.get("TargetType"):
                 key = type_key(child.get("TargetType"))  # an implicit style: keyed by its type
+            if key is None and local == "DataTemplate" and child.get("DataType"):
+                # an implicit DataTemplate: keyed by its DataType (WPF's DataTemplateKey)
+                key = data_template_key(child.get("DataType"))
             if key is None:
                 if local not in ("Style", "DataTemplate", "ControlTemplate"):
                     self.ctx.diag("RES007", f"{local} in a resource dictionary has no x:Key", child)
@@ -606,6 +609,12 @@ def type_key(target: str) -> str:
     """The key of an implicit Style: ``TargetType="Border"``, ``"{x:Type Border}"`` and
     ``x:Key="{x:Type Border}"`` all give ``{x:Type Border}``."""
     return "{x:Type " + type_name(target) + "}"
+
+
+def data_template_key(data_type: str) -> str:
+    """The key of an implicit DataTemplate (``DataType="{x:Type local:Person}"`` or
+    ``"local:Person"``): ``{DataTemplateKey Person}``, apart from the type's implicit Style."""
+    return "{DataTemplateKey " + type_name(data_type) + "}"
 
 
 def is_type_key(key: str) -> bool:

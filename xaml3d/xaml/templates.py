@@ -279,9 +279,10 @@ def _list_box(reader, n, el, v, font) -> None:
     chosen = _selected_index(v, items, el)
     rows = []
     for i, item in enumerate(items):
+        templated = reader.r.ctx.is_templated(item)  # a ListBoxItem the user's template draws
         if qname(item.tag)[1] == "ListBoxItem":
             k = reader.build(item, font)
-            if k is not None and k.children:
+            if k is not None and k.children and not templated:
                 k.children[0].h_align = _own_align(reader, item, "HorizontalContentAlignment", h)
                 k.children[0].v_align = _own_align(reader, item, "VerticalContentAlignment", vv)
         else:  # WPF wraps any other item in a ListBoxItem container
@@ -293,7 +294,7 @@ def _list_box(reader, n, el, v, font) -> None:
                      border=(1.0,) * 4, padding=(4.0, 1.0, 4.0, 1.0))  # fmt: skip
         if k is None:
             continue
-        if i == chosen:
+        if i == chosen and not templated:
             k.background, k.border_brush = _SELECTED_INACTIVE, _SELECTED_INACTIVE_BORDER
         rows.append(k)
     n.children = [part(reader, L.STACK, font, rows)]

@@ -181,6 +181,8 @@ def _part(n, w: float, h: float) -> list:
 
 def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     local = n.type
+    if r.ctx.is_templated(el):
+        return  # drawn by its template's instance, its child
     if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
         out.extend(_part(n, w, h))
         if local == "GroupBox":

@@ -1,0 +1,521 @@
+"""The framework step's control templates and triggers (xaml3d.framework.templates): each
+feature rendered beside a hand-written twin (the element tree WPF builds from it, written
+out) must give the same pixels, through ``render --window`` and inside a VisualBrush; and the
+step's diagnostics, names and source positions."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import xaml3d
+from xaml3d.render.window import compose_window
+from xaml3d.xaml.loader import load
+
+HEAD = (
+    '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+    'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="176" Height="139">'
+)
+VIEWPORT = """
+    <Viewport3D Grid.Column="1">
+      <Viewport3D.Camera>
+        <OrthographicCamera Position="0,0,10" LookDirection="0,0,-1" UpDirection="0,1,0"
+                            Width="80" />
+      </Viewport3D.Camera>
+      <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+        <AmbientLight Color="White" />
+        <GeometryModel3D>
+          <GeometryModel3D.Geometry>
+            <MeshGeometry3D Positions="-16,-16,0 16,-16,0 16,16,0 -16,16,0"
+                            TriangleIndices="0 1 2  0 2 3" />
+          </GeometryModel3D.Geometry>
+          <GeometryModel3D.Material><DiffuseMaterial Brush="Lime" /></GeometryModel3D.Material>
+        </GeometryModel3D>
+      </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+    </Viewport3D>"""
+
+
+def window(resources: str, left: str) -> str:
+    """A 160 x 100 window: ``left`` in an 80 px column beside a viewport."""
+    return f"""{HEAD}
+  <Window.Resources>{resources}</Window.Resources>
+  <Grid Background="White">
+    <Grid.ColumnDefinitions>
+      <ColumnDefinition Width="80" /><ColumnDefinition />
+    </Grid.ColumnDefinitions>
+    <StackPanel>{left}</StackPanel>{VIEWPORT}
+  </Grid>
+</Window>"""
+
+
+def in_brush(resources: str, visual: str) -> str:
+    """A 64 x 64 viewport filled by a square whose material is a VisualBrush of ``visual``."""
+    return f"""{HEAD.replace('Width="176" Height="139"', "")}
+  <Window.Resources>{resources}</Window.Resources>
+  <Viewport3D Width="64" Height="64">
+    <Viewport3D.Camera>
+      <OrthographicCamera Position="0,0,10" LookDirection="0,0,-1" UpDirection="0,1,0"
+                          Width="64" />
+    </Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+      <AmbientLight Color="White" />
+      <GeometryModel3D>
+        <GeometryModel3D.Geometry>
+          <MeshGeometry3D Positions="-32,-32,0 32,-32,0 32,32,0 -32,32,0"
+                          TextureCoordinates="0,1 1,1 1,0 0,0" TriangleIndices="0 1 2  0 2 3" />
+        </GeometryModel3D.Geometry>
+        <GeometryModel3D.Material>
+          <DiffuseMaterial><DiffuseMaterial.Brush>
+            <VisualBrush><VisualBrush.Visual>{visual}</VisualBrush.Visual></VisualBrush>
+          </DiffuseMaterial.Brush></DiffuseMaterial>
+        </GeometryModel3D.Material>
+      </GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Window>"""
+
+
+def _window_pixels(path: Path) -> np.ndarray:
+    rgba, _ = compose_window(load(path))
+    return np.asarray(rgba)
+
+
+def _viewport_pixels(path: Path) -> np.ndarray:
+    return np.asarray(xaml3d.render(str(path)).convert("RGBA"))
+
+
+def _line(text: str, part: str) -> int:
+    """The 1-based line of ``text`` where ``part`` first appears."""
+    return text[: text.index(part)].count("\n") + 1
+
+
+def _same(tmp_path: Path, feature: str, twin: str, pixels=_window_pixels) -> np.ndarray:
+    a, b = tmp_path / "feature.xaml", tmp_path / "twin.xaml"
+    a.write_text(feature, encoding="utf-8")
+    b.write_text(twin, encoding="utf-8")
+    pa, pb = pixels(a), pixels(b)
+    assert pa.shape == pb.shape
+    assert np.array_equal(pa, pb), f"{int((pa != pb).any(axis=-1).sum())} pixels differ"
+    return pa
+
+
+FLAT_STYLE = """
+    <Style x:Key="flat" TargetType="Button">
+      <Setter Property="Foreground" Value="White" />
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="Button">
+            <Border Background="Blue" BorderBrush="Orange" BorderThickness="4">
+              <ContentPresenter HorizontalAlignment="Center" VerticalAlignment="Center" />
+            </Border>
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+    </Style>"""
+# what WPF builds from a Button drawn by that template: the Button (its own size and
+# Foreground) holding the Border, the presenter and the TextBlock for its string content
+FLAT_TWIN = """
+      <ContentControl Height="40" Foreground="White">
+        <Border Background="Blue" BorderBrush="Orange" BorderThickness="4">
+          <ContentPresenter HorizontalAlignment="Center" VerticalAlignment="Center">
+            <TextBlock Text="Go" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl>"""
+
+
+def test_style_template_is_the_tree_wpf_builds(tmp_path):
+    feature = window(FLAT_STYLE, '<Button Height="40" Style="{StaticResource flat}">Go</Button>')
+    px = _same(tmp_path, feature, window("", FLAT_TWIN))
+    assert tuple(px[20, 2]) == (255, 165, 0, 255)  # the orange border
+    assert tuple(px[6, 10]) == (0, 0, 255, 255)  # the blue face
+
+
+def test_style_template_inside_a_visual_brush(tmp_path):
+    button = '<Button Height="40" Style="{StaticResource flat}">Go</Button>'
+    visual = f'<StackPanel Width="64">{button}</StackPanel>'
+    twin = f'<StackPanel Width="64">{FLAT_TWIN}</StackPanel>'
+    px = _same(tmp_path, in_brush(FLAT_STYLE, visual), in_brush("", twin), _viewport_pixels)
+    assert tuple(px[20, 20][:3]) == (0, 0, 255)
+
+
+def test_template_property_element_and_element_content(tmp_path):
+    feature = window(
+        "",
+        """
+      <Button Height="30">
+        <Button.Template>
+          <ControlTemplate TargetType="Button">
+            <Border Background="Blue" BorderBrush="Orange" BorderThickness="2">
+              <ContentPresenter Margin="3" />
+            </Border>
+          </ControlTemplate>
+        </Button.Template>
+        <StackPanel Orientation="Horizontal">
+          <Rectangle Width="8" Height="8" Fill="Lime" /><TextBlock Text="Hi" />
+        </StackPanel>
+      </Button>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Height="30">
+        <Border Background="Blue" BorderBrush="Orange" BorderThickness="2">
+          <ContentPresenter Margin="3">
+            <StackPanel Orientation="Horizontal">
+              <Rectangle Width="8" Height="8" Fill="Lime" /><TextBlock Text="Hi" />
+            </StackPanel>
+          </ContentPresenter>
+        </Border>
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[14, 8][:3]) == (0, 255, 0)  # the rectangle at 2 + 3 px, centred
+
+
+BOUND_STYLE = """
+    <Style x:Key="base" TargetType="{x:Type Button}">
+      <Setter Property="Height" Value="30" />
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="{x:Type Button}">
+            <Border Background="{TemplateBinding Background}"
+                    BorderBrush="{TemplateBinding BorderBrush}"
+                    BorderThickness="{TemplateBinding BorderThickness}"
+                    Padding="{TemplateBinding Padding}">
+              <ContentPresenter
+                HorizontalAlignment="{TemplateBinding HorizontalContentAlignment}"
+                VerticalAlignment="{Binding VerticalContentAlignment,
+                                    RelativeSource={RelativeSource TemplatedParent}}" />
+            </Border>
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+    </Style>
+    <Style x:Key="accent" TargetType="{x:Type Button}" BasedOn="{StaticResource base}">
+      <Setter Property="Background" Value="Blue" />
+      <Setter Property="BorderBrush" Value="Orange" />
+      <Setter Property="BorderThickness" Value="3" />
+      <Setter Property="Foreground" Value="White" />
+    </Style>"""
+
+
+def test_template_binding_reads_local_style_based_on_and_theme_values(tmp_path):
+    feature = window(
+        BOUND_STYLE,
+        """
+      <Button Style="{StaticResource accent}" Content="One" />
+      <Button Style="{StaticResource base}" Content="Two" />
+      <Button Style="{StaticResource accent}" Background="Yellow" Content="Three" />""",
+    )
+
+    def twin_button(text, bg, bb, bt, fg):
+        fg = f' Foreground="{fg}"' if fg else ""
+        return f"""
+      <ContentControl Height="30"{fg}>
+        <Border Background="{bg}" BorderBrush="{bb}" BorderThickness="{bt}" Padding="1">
+          <ContentPresenter HorizontalAlignment="Center" VerticalAlignment="Center">
+            <TextBlock Text="{text}" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl>"""
+
+    twin = window("", twin_button("One", "Blue", "Orange", 3, "White")
+                  # the theme's (Aero2) Button values where neither the Button nor its Style set one
+                  + twin_button("Two", "#FFDDDDDD", "#FF707070", 1, None)
+                  + twin_button("Three", "Yellow", "Orange", 3, "White"))  # fmt: skip
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[35, 40][:3]) == (221, 221, 221)
+    assert tuple(px[64, 6][:3]) == (255, 255, 0)
+
+
+TOGGLE_STYLE = """
+    <Style TargetType="ToggleButton">
+      <Setter Property="Height" Value="30" />
+      <Setter Property="Background" Value="Yellow" />
+      <Setter Property="BorderBrush" Value="Blue" />
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="ToggleButton">
+            <Border x:Name="face" Background="{TemplateBinding Background}"
+                    BorderBrush="{TemplateBinding BorderBrush}" BorderThickness="2">
+              <ContentPresenter HorizontalAlignment="Center" VerticalAlignment="Center" />
+            </Border>
+            <ControlTemplate.Triggers>
+              <Trigger Property="IsChecked" Value="True">
+                <Setter TargetName="face" Property="Background" Value="Lime" />
+              </Trigger>
+              <Trigger Property="IsMouseOver" Value="True">
+                <Setter TargetName="face" Property="Background" Value="Cyan" />
+              </Trigger>
+            </ControlTemplate.Triggers>
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+      <Style.Triggers>
+        <Trigger Property="IsEnabled" Value="False">
+          <Setter Property="Background" Value="Gray" />
+        </Trigger>
+        <MultiTrigger>
+          <MultiTrigger.Conditions>
+            <Condition Property="IsChecked" Value="False" />
+            <Condition Property="Tag" Value="x" />
+          </MultiTrigger.Conditions>
+          <Setter Property="BorderBrush" Value="Magenta" />
+        </MultiTrigger>
+      </Style.Triggers>
+    </Style>"""
+
+
+def test_triggers_known_at_load(tmp_path):
+    feature = window(
+        TOGGLE_STYLE,
+        """
+      <ToggleButton IsChecked="True" Content="On" />
+      <ToggleButton Tag="x" Content="Off" />
+      <ToggleButton IsEnabled="False" Content="No" />""",
+    )
+
+    def twin_toggle(text, bg, bb):
+        return f"""
+      <ContentControl Height="30">
+        <Border Background="{bg}" BorderBrush="{bb}" BorderThickness="2">
+          <ContentPresenter HorizontalAlignment="Center" VerticalAlignment="Center">
+            <TextBlock Text="{text}" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl>"""
+
+    twin = window("", twin_toggle("On", "Lime", "Blue") + twin_toggle("Off", "Yellow", "Magenta")
+                  + twin_toggle("No", "Gray", "Blue"))  # fmt: skip
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[4, 4][:3]) == (0, 255, 0)
+    assert tuple(px[30, 0][:3]) == (255, 0, 255)
+    assert tuple(px[64, 4][:3]) == (128, 128, 128)
+
+
+def test_local_value_beats_triggers_and_template_names_stay_private(tmp_path):
+    # a part named like an element of the window: no duplicate name, and the storyboard
+    # target is the window's element
+    feature = window(
+        TOGGLE_STYLE,
+        """
+      <ToggleButton IsChecked="True" Content="A" />
+      <Border x:Name="face" Height="10" Background="Blue" />""",
+    )
+    path = tmp_path / "names.xaml"
+    path.write_text(feature, encoding="utf-8")
+    scene = load(path)
+    assert not [d for d in scene.diagnostics if d.severity != "info"]
+    px = _window_pixels(path)
+    assert tuple(px[35, 40][:3]) == (0, 0, 255)
+
+
+def test_merged_dictionary_theme(tmp_path):
+    (tmp_path / "theme.xaml").write_text(
+        """<ResourceDictionary xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation">
+  <Style TargetType="Button">
+    <Setter Property="Template">
+      <Setter.Value>
+        <ControlTemplate TargetType="Button">
+          <Border BorderBrush="{TemplateBinding Foreground}" BorderThickness="1">
+            <ContentPresenter Margin="4,2" />
+          </Border>
+        </ControlTemplate>
+      </Setter.Value>
+    </Setter>
+  </Style>
+</ResourceDictionary>""",
+        encoding="utf-8",
+    )
+    merged = """<ResourceDictionary><ResourceDictionary.MergedDictionaries>
+      <ResourceDictionary Source="theme.xaml" /></ResourceDictionary.MergedDictionaries>
+    </ResourceDictionary>"""
+    feature = window(merged, '<Button Height="24" Foreground="Blue">Theme</Button>')
+    twin = window(
+        "",
+        """
+      <ContentControl Height="24" Foreground="Blue">
+        <Border BorderBrush="Blue" BorderThickness="1">
+          <ContentPresenter Margin="4,2"><TextBlock Text="Theme" /></ContentPresenter>
+        </Border>
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[0, 40][:3]) == (0, 0, 255)
+
+
+def test_unsupported_template_is_said(tmp_path):
+    feature = window(
+        "",
+        """
+      <TextBox Height="30">
+        <TextBox.Template>
+          <ControlTemplate TargetType="TextBox"><Border Background="Blue" /></ControlTemplate>
+        </TextBox.Template>
+      </TextBox>
+      <ToggleButton Height="20" Content="x">
+        <ToggleButton.Template>
+          <ControlTemplate TargetType="ToggleButton">
+            <Border x:Name="b"><ContentPresenter /></Border>
+            <ControlTemplate.Triggers>
+              <DataTrigger Binding="{Binding Busy}" Value="True">
+                <Setter TargetName="b" Property="Background" Value="Red" />
+              </DataTrigger>
+              <Trigger Property="IsChecked" Value="False">
+                <Setter TargetName="nothere" Property="Background" Value="Red" />
+              </Trigger>
+            </ControlTemplate.Triggers>
+          </ControlTemplate>
+        </ToggleButton.Template>
+      </ToggleButton>""",
+    )
+    path = tmp_path / "unsupported.xaml"
+    path.write_text(feature, encoding="utf-8")
+    codes = {(d.code, d.line) for d in load(path).diagnostics}
+    assert ("TPL001", _line(feature, "<TextBox ")) in codes
+    assert ("TPL003", _line(feature, "<DataTrigger")) in codes
+    assert ("TPL005", _line(feature, 'TargetName="nothere"')) in codes
+    px = _window_pixels(path)
+    assert not ((px[..., 0] == 255) & (px[..., 1] == 0) & (px[..., 2] == 0)).any()
+
+
+def test_diagnostics_inside_a_template_point_into_it(tmp_path):
+    feature = window(FLAT_STYLE.replace('BorderThickness="4"', 'BorderThickness="4x"'),
+                     '<Button Height="40" Style="{StaticResource flat}">Go</Button>')  # fmt: skip
+    path = tmp_path / "bad.xaml"
+    path.write_text(feature, encoding="utf-8")
+    found = [(d.code, d.line) for d in load(path).diagnostics if d.code.startswith("VAL")]
+    # once, in the template's text (where the copy the window draws comes from)
+    assert found == [("VAL001", _line(feature, 'BorderThickness="4x"'))]
+
+
+def test_cli_window_render_of_a_templated_button(tmp_path):
+    path = tmp_path / "b.xaml"
+    path.write_text(
+        window(FLAT_STYLE, '<Button Height="40" Style="{StaticResource flat}">Go</Button>'),
+        encoding="utf-8",
+    )
+    out = tmp_path / "b.png"
+    run = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "render", str(path), "--window", "-o", str(out)],
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0, run.stderr
+    assert "Traceback" not in run.stderr
+    from PIL import Image
+
+    px = np.asarray(Image.open(out).convert("RGBA"))
+    assert tuple(px[6, 10]) == (0, 0, 255, 255)
+
+
+@pytest.mark.parametrize("markup", ["<Grid/>", "<Border><Viewport3D/></Border>"])
+def test_a_document_without_controls_is_untouched(markup):
+    from lxml import etree
+
+    from xaml3d.framework import templates
+
+    root = etree.fromstring(
+        f'<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation">{markup}</Window>'
+    )
+    before = etree.tostring(root)
+
+    class Nothing:
+        def __getattr__(self, name):
+            raise AssertionError(f"services.{name} called")
+
+    templates.instantiate(root, Nothing())
+    assert etree.tostring(root) == before
+
+
+def test_content_template_of_a_content_control(tmp_path):
+    resources = """
+    <DataTemplate x:Key="card">
+      <Border Background="{Binding Color}" Padding="4"><TextBlock Text="{Binding Name}" /></Border>
+    </DataTemplate>
+    <DataTemplate x:Key="shout"><TextBlock Text="{Binding}" Foreground="Blue" /></DataTemplate>
+    <local:Person x:Key="ann" Name="Ann" Color="Orange" />"""
+    feature = window(
+        resources,
+        """
+      <ContentControl Content="{StaticResource ann}" ContentTemplate="{StaticResource card}" />
+      <ContentControl Content="Hey" ContentTemplate="{StaticResource shout}" />""",
+    )
+    # ContentControl's default template: a ContentPresenter holding the DataTemplate's content
+    twin = window(
+        "",
+        """
+      <ContentControl><ContentPresenter>
+        <Border Background="Orange" Padding="4"><TextBlock Text="Ann" /></Border>
+      </ContentPresenter></ContentControl>
+      <ContentControl><ContentPresenter>
+        <TextBlock Text="Hey" Foreground="Blue" />
+      </ContentPresenter></ContentControl>""",
+    )
+    local = 'xmlns:local="clr-namespace:Demo" xmlns:x='
+    feature, twin = (t.replace("xmlns:x=", local, 1) for t in (feature, twin))
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[2, 40][:3]) == (255, 165, 0)
+
+
+REFERENCE = Path(__file__).resolve().parent / "reference" / "layout"
+
+
+def test_cli_window_whose_only_viewport_is_in_a_template(tmp_path):
+    case = REFERENCE / "window-template-viewport.xaml"
+    out = tmp_path / "w.png"
+    run = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "render", str(case), "--window", "-o", str(out)],
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0, run.stderr
+    from PIL import Image
+
+    px = np.asarray(Image.open(out).convert("RGBA"))
+    assert px.shape == (100, 160, 4)
+    assert tuple(px[50, 80]) == (0, 255, 0, 255)  # the template's viewport draws its square
+    assert tuple(px[4, 4]) == (255, 255, 0, 255)  # the template's Border
+    info = subprocess.run(
+        [sys.executable, "-m", "xaml3d", "info", str(case)], capture_output=True, text=True
+    )
+    assert info.returncode == 0, info.stderr
+    assert "1 viewport(s)" in info.stdout
+    assert "viewport 0: 144 x 84" in info.stdout
+    assert "XAML015" not in info.stderr + run.stderr
+
+
+def test_a_data_template_viewport_per_item():
+    text = f"""{HEAD}
+  <ItemsControl>
+    <ItemsControl.ItemTemplate>
+      <DataTemplate>
+        <Viewport3D Width="60" Height="40">
+          <Viewport3D.Camera><OrthographicCamera Width="4" /></Viewport3D.Camera>
+          <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight />
+            <GeometryModel3D>
+              <GeometryModel3D.Geometry>
+                <MeshGeometry3D Positions="-1,-1,0 1,-1,0 1,1,0" TriangleIndices="0 1 2" />
+              </GeometryModel3D.Geometry>
+              <GeometryModel3D.Material>
+                <DiffuseMaterial Brush="{{Binding}}" />
+              </GeometryModel3D.Material>
+            </GeometryModel3D>
+          </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+        </Viewport3D>
+      </DataTemplate>
+    </ItemsControl.ItemTemplate>
+    <x:String>Red</x:String>
+    <x:String>Blue</x:String>
+  </ItemsControl>
+</Window>"""
+    scene = load(text, text=True)
+    assert len(scene.viewports) == 2
+    colours = [vp.models[0].material[0].brush.color for vp in scene.viewports]
+    assert colours[0][:3] == (1.0, 0.0, 0.0) and colours[1][:3] == (0.0, 0.0, 1.0)
+    assert not [d for d in scene.diagnostics if d.code == "XAML015"]

@@ -1,0 +1,28 @@
+"""The framework step's codes (TPL): control templates and triggers it cannot instantiate or
+apply (xaml3d.framework).
+
+Plain data at the ground of the package (``xaml3d.codes`` merges every table).
+"""
+
+from __future__ import annotations
+
+from xaml3d.errors import INFO, WARNING
+
+TEMPLATE_CODES: dict[str, tuple[str, str]] = {
+    "TPL001": (
+        WARNING,
+        "a user ControlTemplate of a control whose template xaml3d does not instantiate: "
+        "drawn in the theme's look",
+    ),
+    "TPL002": (
+        INFO,
+        "a TemplateBinding with a converter or format (code): the property keeps its default",
+    ),
+    "TPL003": (
+        INFO,
+        "a trigger whose condition is not known at load: its Setters are not applied",
+    ),
+    "TPL004": (WARNING, "templates nested too deep (a template holding itself): not instantiated"),
+    "TPL005": (WARNING, "a trigger Setter's TargetName names no part of the template: skipped"),
+    "TPL006": (INFO, "an ItemsSource not known at load (a binding, a missing resource): no items"),
+}

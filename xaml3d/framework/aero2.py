@@ -1,0 +1,78 @@
+"""The theme's values for the controls' properties: what a ``{TemplateBinding P}`` reads when
+neither the control nor its Style sets P (WPF's default Style of the Aero2 theme, from the
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files, then the properties' own defaults).
+
+A user's Style does not replace the theme's: WPF applies both (the theme Style sits below the
+user's Style in value precedence), unless ``OverridesDefaultStyle`` is set.
+"""
+
+from __future__ import annotations
+
+_BUTTON = {
+    "Background": "#FFDDDDDD",  # Button.Static.Background
+    "BorderBrush": "#FF707070",  # Button.Static.Border
+    "Foreground": "#FF000000",  # SystemColors.ControlTextBrush
+    "BorderThickness": "1",
+    "HorizontalContentAlignment": "Center",
+    "VerticalContentAlignment": "Center",
+    "Padding": "1",
+}
+_OPTION = {
+    "Background": "#FFFFFFFF",  # OptionMark.Static.Background
+    "BorderBrush": "#FF707070",  # OptionMark.Static.Border
+    "Foreground": "#FF000000",
+    "BorderThickness": "1",
+}
+
+THEME: dict[str, dict[str, str]] = {
+    "Button": _BUTTON,
+    "ToggleButton": _BUTTON,
+    "RepeatButton": _BUTTON,
+    "CheckBox": _OPTION,
+    "RadioButton": _OPTION,
+    "Label": {
+        "Foreground": "#FF000000",
+        "Background": "Transparent",
+        "Padding": "5",
+        "HorizontalContentAlignment": "Left",
+        "VerticalContentAlignment": "Top",
+    },
+    "ListBoxItem": {
+        "Padding": "4,1",
+        "Background": "Transparent",
+        "BorderBrush": "Transparent",
+        "BorderThickness": "1",
+    },
+    "GroupBox": {"BorderBrush": "#FFD5DFE5", "BorderThickness": "1"},
+}
+
+# Control's own defaults (the dependency properties' default values); Background, BorderBrush
+# and Foreground's are null or inherited: no value to write
+DEFAULTS: dict[str, str] = {
+    "BorderThickness": "0",
+    "Padding": "0",
+    "HorizontalContentAlignment": "Left",
+    "VerticalContentAlignment": "Top",
+    # the states a picture shows: enabled, nothing pressed, hovered, focused, checked or selected
+    "IsEnabled": "True",
+    "IsChecked": "False",
+    "IsSelected": "False",
+    "IsExpanded": "False",
+    "IsMouseOver": "False",
+    "IsPressed": "False",
+    "IsFocused": "False",
+    "IsKeyboardFocused": "False",
+    "IsKeyboardFocusWithin": "False",
+    "IsDefaulted": "False",
+    "IsDefault": "False",
+    "IsCancel": "False",
+    "IsThreeState": "False",
+    "Visibility": "Visible",
+}
+
+
+def theme_value(type_name: str, prop: str) -> str | None:
+    """The theme's value of ``prop`` for a ``type_name`` control, else the property's default
+    (None when it has none to write: null, or inherited)."""
+    hit = THEME.get(type_name, {}).get(prop)
+    return hit if hit is not None else DEFAULTS.get(prop)

@@ -1,0 +1,174 @@
+"""A control's Style and its property values as WPF's value precedence gives them at load:
+local value, then Style triggers, then template triggers (those of the control's template
+without TargetName), then Style setters (``BasedOn`` chains: the derived Style's win), then
+the theme's value (``aero2``).
+
+A value is ``("text", str)`` (an attribute's text, markup extensions kept for the reader) or
+``("element", el)`` (an object written as an element: a brush, a template).
+"""
+
+from __future__ import annotations
+
+from xaml3d.framework import markup
+from xaml3d.framework.aero2 import theme_value
+
+STYLE_DEPTH = 16  # BasedOn chains longer than this are cut (a cycle, or hostile markup)
+X_NS = "http://schemas.microsoft.com/winfx/2006/xaml"
+# attached properties keep their owner; others are named without it (Button.Background)
+ATTACHED_OWNERS = {"Grid", "DockPanel", "Canvas", "ScrollViewer", "TextElement", "Panel",
+                   "KeyboardNavigation", "ToolTipService", "RenderOptions"}  # fmt: skip
+
+
+def local_name(tag) -> str:
+    return tag.rpartition("}")[2] if isinstance(tag, str) else ""
+
+
+def elements(el) -> list:
+    return [k for k in el if isinstance(k.tag, str)]
+
+
+def property_name(prop: str) -> str:
+    """A Setter's or Trigger's Property without its owner, unless it is attached."""
+    owner, _, short = prop.strip().rpartition(".")
+    owner = owner.split(":")[-1]
+    return f"{owner}.{short}" if owner in ATTACHED_OWNERS else short
+
+
+def setter_value(setter):
+    """A Setter's value: its Value attribute, or what its ``<Setter.Value>`` holds (one
+    element, or text); None when it has none."""
+    value = setter.get("Value")
+    if value is not None:
+        return ("text", value)
+    for child in elements(setter):
+        if local_name(child.tag) == "Setter.Value":
+            kids = elements(child)
+            if kids:
+                return ("element", kids[0])
+            text = (child.text or "").strip()
+            return ("text", text) if text else None
+    return None
+
+
+def setters(holder):
+    """The Setters of a Style, Trigger or MultiTrigger (direct, or in ``<X.Setters>``)."""
+    for child in elements(holder):
+        local = local_name(child.tag)
+        if local == "Setter":
+            yield child
+        elif local.endswith(".Setters"):
+            yield from (k for k in elements(child) if local_name(k.tag) == "Setter")
+
+
+def triggers(holder, owner: str):
+    """The triggers of a Style or ControlTemplate (``<owner.Triggers>``)."""
+    for child in elements(holder):
+        if local_name(child.tag) == f"{owner}.Triggers":
+            yield from elements(child)
+
+
+class Control:
+    """One control's Style chain and effective values (``services``: the reader's)."""
+
+    def __init__(self, el, type_name: str, services) -> None:
+        self.el, self.type, self.services = el, type_name, services
+        self.styles = self._style_chain()  # base first
+        self.setters: dict[str, tuple] = {}
+        for style in self.styles:
+            for s in setters(style):
+                prop, value = s.get("Property"), setter_value(s)
+                if prop and value is not None and not s.get("TargetName"):
+                    self.setters[property_name(prop)] = value
+        self.triggered: dict[str, tuple] = {}  # Style triggers' and template triggers' values
+
+    # ----------------------------------------------------------------- the Style
+    def _style_chain(self) -> list:
+        sv, el = self.services, self.el
+        ref = el.get("Style")
+        style = None
+        if ref is not None:
+            key = markup.resource_key(ref)
+            style = sv.find(key, el) if key is not None else None
+        else:
+            for child in elements(el):
+                if local_name(child.tag).endswith(".Style"):
+                    style = next(iter(elements(child)), None)
+                    break
+            else:
+                style = sv.implicit_style(self.type, el)
+        chain = []
+        while style is not None and local_name(style.tag) == "Style" and len(chain) < STYLE_DEPTH:
+            chain.append(style)
+            based = style.get("BasedOn")
+            m = markup.split(based)
+            if m is None:
+                break
+            if m[0] == "Type":
+                style = sv.implicit_style(m[1].split(":")[-1].strip(), style)
+            else:
+                key = markup.resource_key(based)
+                style = sv.find(key, style) if key is not None else None
+        return chain[::-1]
+
+    # ----------------------------------------------------------------- values
+    def local(self, prop: str):
+        """The control's local value of ``prop`` (attribute or property element), or None."""
+        el = self.el
+        raw = el.get(prop)
+        if raw is not None:
+            return ("text", raw)
+        for child in elements(el):
+            local = local_name(child.tag)
+            if "." in local and property_name(local) == prop:
+                kids = elements(child)
+                if kids:
+                    return ("element", kids[0])
+                text = (child.text or "").strip()
+                return ("text", text) if text else None
+        return None
+
+    def value(self, prop: str, triggered: bool = True):
+        """The effective value of ``prop`` (``triggered``: the triggers' values included)."""
+        hit = self.local(prop)
+        if hit is None and triggered:
+            hit = self.triggered.get(prop)
+        if hit is None:
+            hit = self.setters.get(prop)
+        if hit is None:
+            text = theme_value(self.type, prop)
+            hit = None if text is None else ("text", text)
+        return hit
+
+    def holds(self, prop: str, wanted: str) -> bool | None:
+        """Whether ``prop``'s value at load (triggers aside) is ``wanted``; None when it is not
+        known without running code (a binding, a resource)."""
+        v = self.value(prop, triggered=False)
+        if v is None or v[0] != "text":
+            return None if v is not None else False
+        text = v[1].strip()
+        if markup.split(text) is not None:
+            return None
+        return text.lower() == wanted.strip().lower()
+
+    def fires(self, trigger) -> bool | None:
+        """Whether a Trigger or MultiTrigger's condition holds at load (None: not known)."""
+        kind = local_name(trigger.tag)
+        if kind == "Trigger":
+            conditions = [trigger]
+        elif kind == "MultiTrigger":
+            conditions = [c for holder in elements(trigger)
+                          if local_name(holder.tag) == "MultiTrigger.Conditions"
+                          for c in elements(holder)]  # fmt: skip
+        else:
+            return None
+        verdict: bool | None = True
+        for c in conditions:
+            prop, wanted = c.get("Property"), c.get("Value")
+            if not prop or wanted is None or c.get("SourceName"):
+                return None
+            held = self.holds(property_name(prop), wanted)
+            if held is False:
+                return False
+            if held is None:
+                verdict = None
+        return verdict
