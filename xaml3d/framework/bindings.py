@@ -82,7 +82,7 @@ def evaluate(root, services) -> None:
         if outcome is _KEEP:
             continue
         if (site.prop_el is not None or isinstance(outcome, tuple)) and not pinned:
-            services.pin_positions(root)  # a property element goes: the tree changes shape
+            services.pin(root)  # a property element goes: the tree changes shape
             pinned = True
         _write(site, outcome)
 

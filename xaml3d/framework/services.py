@@ -46,11 +46,3 @@ class Services(Protocol):
     ) -> None:
         """Record a diagnostic at ``el`` (its attribute ``attr`` when given); ``once`` is a key
         that suppresses repeats."""
-
-    def find(self, key: str, from_el: Any) -> Any:
-        """The resource entry element for ``key`` seen from ``from_el``, silently (a lookup WPF
-        makes itself, such as an implicit Style's by type key ``{x:Type Button}``), or None."""
-
-    def pin_positions(self, root: Any) -> None:
-        """Fix the source positions of ``root``'s elements before the framework changes the
-        tree's shape (removes or adds elements), so that later diagnostics still point at them."""

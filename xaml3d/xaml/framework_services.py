@@ -69,11 +69,3 @@ class ReaderServices:
 
     def diag(self, code: str, message: str, el=None, attr: str | None = None, once=None) -> None:
         self.ctx.diag(code, message, el, attr=attr, once=once)
-
-    def find(self, key: str, from_el):
-        return self.resources.find(key, from_el)
-
-    def pin_positions(self, root) -> None:
-        for el in root.iter():
-            if isinstance(el.tag, str):
-                self.ctx.locate(el)
