@@ -182,7 +182,7 @@ class FakeServices:
             self._once.add(once)
         self.said.append((code, message, el.sourceline if el is not None else 0, attr))
 
-    def pin_positions(self, root):
+    def pin(self, root):
         pass
 
 
