@@ -28,4 +28,9 @@ DRAWING_CODES: dict[str, tuple[str, str]] = {
         "a Viewport2DVisual3D with no material marked IsVisualHostMaterial: "
         "its Visual is not shown (as in WPF)",
     ),  # fmt: skip
+    "TXT001": (
+        WARNING,
+        "text with characters that neither its face nor any installed font has: drawn as "
+        "empty boxes",
+    ),  # fmt: skip
 }

@@ -128,7 +128,8 @@ class ImageDrawing:
 @dataclass(frozen=True)
 class TextDrawing:
     """One line of text as a TextBlock lays it out: ``origin`` is the left end of its baseline.
-    The font is the package's (docs/layer2d.md): ``family`` is what the markup asked for."""
+    ``family`` is the FontFamily as the markup wrote it: the 2D layer sets it in the face it
+    chooses (``xaml3d.fonts``, docs/layer2d.md)."""
 
     text: str = ""
     origin: tuple[float, float] = (0.0, 0.0)

@@ -60,9 +60,10 @@ def content_size(reader, n, v, el, font: float):
         return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
     if local == "ComboBox":
         items = [_text_of(k) for k in _combo_items(el)] or [""]
-        widest = max(text_width(t, font, *_font_style(el, reader.r)) for t in items)
+        style = _font_style(el, reader.r)
+        widest = max(text_width(t, font, *style) for t in items)
         # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
-        return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font) + 6 + 2)
+        return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font, style[2]) + 6 + 2)
     if local in TEXT_CONTROLS:
         if local == "TextBlock" and (wraps(v) or trimming(v) != "None"):
             # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
@@ -84,16 +85,17 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
     inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
     block = local == "TextBlock"
     if block and has_inlines(el):  # runs in their own fonts, LineBreaks (inline_text)
-        w, h = size_of(v.r, el, base_format(v.r, el, font), inner if wraps(v) else math.inf)
-        return w + pad[0] + pad[2], max(h, line_height(font)) + pad[1] + pad[3]
+        base = base_format(v.r, el, font)
+        w, h = size_of(v.r, el, base, inner if wraps(v) else math.inf)
+        return w + pad[0] + pad[2], max(h, line_height(font, base.family)) + pad[1] + pad[3]
     text = _text_of(el)
-    weight, italic = _font_style(el, v.r)
-    lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf)
+    weight, italic, family = _font_style(el, v.r)
+    lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf, family)
     if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
         mode = trimming(v)
-        lines = [trim(t, font, weight, italic, inner, mode) for t in lines]
-    w = max((text_width(t, font, weight, italic) for t in lines), default=0.0)
-    h = line_height(font) * max(1, len(lines))
+        lines = [trim(t, font, weight, italic, inner, mode, family) for t in lines]
+    w = max((text_width(t, font, weight, italic, family) for t in lines), default=0.0)
+    h = line_height(font, family) * max(1, len(lines))
     border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
     if local in ("CheckBox", "RadioButton"):
         # the mark, then the content with Aero2's Padding 4,-1,0,0

@@ -28,6 +28,7 @@ from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.visual_text import (
     _box_drawing,
     _brush,
+    _family,
     _font_style,
     _foreground,
     _rgb,
@@ -77,7 +78,8 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         top = (h - _OPTION_MARK) / 2
         shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
         out.append(DrawingGroup(children=tuple(option_mark(r, v, local)), transform=shift))
-        t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - line_height(font)) / 2 - 0.5, w)
+        lh = line_height(font, _family(el, r))
+        t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - lh) / 2 - 0.5, w)
         if t is not None:
             out.append(t)
         return
@@ -86,7 +88,8 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
     inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
     centred = local in ("Button", "ToggleButton", "RepeatButton")
     if centred:  # Aero2: HorizontalContentAlignment and VerticalContentAlignment Center
-        ty = thick[1] + pad[1] + (h - thick[1] - thick[3] - pad[1] - pad[3] - line_height(font)) / 2
+        lh = line_height(font, _family(el, r))
+        ty = thick[1] + pad[1] + (h - thick[1] - thick[3] - pad[1] - pad[3] - lh) / 2
     else:
         ty = thick[1] + pad[1]
     t = _text(r, el, v, font, inset_x, ty, inner_w, align_center=centred)
@@ -173,11 +176,11 @@ def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
         (k for k in items if k.get("IsSelected") == "True"), None)  # fmt: skip
     text = _text_of(chosen) if chosen is not None else (el.get("Text") or "")
     if text:
-        weight, italic = _font_style(el, r)
+        weight, italic, family = _font_style(el, r)
         box = (7.0, 4.0, max(0.0, w - 13.0 - _COMBO_BUTTON), max(0.0, h - 8.0))
         line = TextDrawing(
-            text=text, origin=(7.0, (h - line_height(font)) / 2 + baseline(font)),
-            font_size=font, weight=weight, italic=italic, brush=_foreground(r, el),
+            text=text, origin=(7.0, (h - line_height(font, family)) / 2 + baseline(font, family)),
+            font_size=font, weight=weight, italic=italic, family=family, brush=_foreground(r, el),
         )  # fmt: skip
         out.append(DrawingGroup(children=(line,), clip=RectangleGeometry(box)))
     arrow = path_from_string(_COMBO_ARROW)

@@ -2,15 +2,15 @@
 LineBreak (visuals_reader, control_content; the TextBlock step of the 2D layer), written in the
 TextBlock or in a ``<TextBlock.Inlines>`` property element.
 
-Each inline takes its own FontWeight, FontStyle, FontSize, Foreground and TextDecorations
-(Underline) over those it inherits; Bold, Italic and Underline set theirs, a Hyperlink draws
-in WPF's #FF0066CC, underlined. A Run's text is its Text attribute, its ``<Run.Text>`` or its
-content. The text is collapsed as XAML collapses it (runs of white space become one space,
-across the inlines; none at the start and the end of the TextBlock, nor around a LineBreak),
-unless xml:space="preserve" keeps it as written (a line feed then breaks the line). The runs
-flow on one line, each measured with its own font; a LineBreak starts a new line; a line is as
-tall as its tallest run's line (Segoe UI's line spacing) and its runs share the baseline of the
-lowest one.
+Each inline takes its own FontFamily, FontWeight, FontStyle, FontSize, Foreground and
+TextDecorations (Underline) over those it inherits; Bold, Italic and Underline set theirs, a
+Hyperlink draws in WPF's #FF0066CC, underlined. A Run's text is its Text attribute, its
+``<Run.Text>`` or its content. The text is collapsed as XAML collapses it (runs of white space
+become one space, across the inlines; none at the start and the end of the TextBlock, nor
+around a LineBreak), unless xml:space="preserve" keeps it as written (a line feed then breaks
+the line). The runs flow on one line, each measured with its own font; a LineBreak starts a new
+line; a line is as tall as its tallest run's line (its family's line spacing) and its runs
+share the baseline of the lowest one.
 Wrapping breaks at spaces, as a plain TextBlock's text; TextTrimming is not applied to lines of
 several runs.
 """
@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass, replace
 
 from xaml3d.fonts import WEIGHTS
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.layout.text import UI, baseline, line_height, text_width
 from xaml3d.scene.types import SolidColorBrush
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
@@ -40,16 +40,18 @@ HYPERLINK = SolidColorBrush(color=(0.0, 0x66 / 255, 0xCC / 255, 1.0))  # WPF's H
 
 @dataclass(frozen=True)
 class Format:
-    """How a run is drawn: FontSize, FontWeight (OpenType number), italic, brush, underline."""
+    """How a run is drawn: FontSize, FontWeight (OpenType number), italic, brush, underline,
+    FontFamily."""
 
     size: float
     weight: int
     italic: bool
     brush: object
     underline: bool = False
+    family: str = UI
 
     def width(self, text: str) -> float:
-        return text_width(text, self.size, self.weight, self.italic)
+        return text_width(text, self.size, self.weight, self.italic, self.family)
 
 
 Line = list  # of (text, Format) runs, left to right
@@ -79,6 +81,9 @@ def _own(r, el, fmt: Format) -> Format:
     w = el.get("FontWeight")
     if w is not None and split_markup(w) is None:
         fmt = replace(fmt, weight=WEIGHTS.get(w.strip(), fmt.weight))
+    family = el.get("FontFamily")
+    if family is not None and split_markup(family) is None and family.strip():
+        fmt = replace(fmt, family=family.strip())
     s = el.get("FontStyle")
     if s is not None and split_markup(s) is None:
         fmt = replace(fmt, italic=s.strip() in ("Italic", "Oblique"))
@@ -186,8 +191,8 @@ def line_width(line: Line) -> float:
 def line_metrics(line: Line, base: Format) -> tuple[float, float]:
     """(height, baseline from the top) of a line: its tallest run's (the base font's when
     empty)."""
-    sizes = [f.size for _, f in line] or [base.size]
-    return max(line_height(s) for s in sizes), max(baseline(s) for s in sizes)
+    fonts = [(f.size, f.family) for _, f in line] or [(base.size, base.family)]
+    return max(line_height(*f) for f in fonts), max(baseline(*f) for f in fonts)
 
 
 def wrap(line: Line, width: float) -> list[Line]:

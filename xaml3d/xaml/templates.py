@@ -72,7 +72,7 @@ from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.text_content import access_text, holder_text, property_element
-from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _inherited, _rgb
+from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _rgb, warn_uncovered
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
@@ -163,13 +163,13 @@ def part(reader, kind: str, font: float, children=(), type: str = PART, **fields
 
 def text_part(reader, owner, text: str, font: float) -> L.Node:
     """One line of ``text`` in the owner's font and Foreground, sized by the font's metrics."""
-    weight, italic = _font_style(owner, reader.r)
+    weight, italic, family = _font_style(owner, reader.r)
     n = part(reader, L.CONTROL, font, type=TEXT_PART)
-    n.estimate = (text_width(text, font, weight, italic), line_height(font))
+    n.estimate = (text_width(text, font, weight, italic, family), line_height(font, family))
     if text:
-        family = _inherited(owner, ("FontFamily", "TextElement.FontFamily"), reader.r) or "Segoe UI"
+        warn_uncovered(reader.r, owner, text, weight, italic, family)
         n.drawing = TextDrawing(
-            text=text, origin=(0.0, baseline(font)), font_size=font, weight=weight,
+            text=text, origin=(0.0, baseline(font, family)), font_size=font, weight=weight,
             italic=italic, family=family, brush=_foreground(reader.r, owner),
             **reader.r.ctx.position(owner),
         )  # fmt: skip

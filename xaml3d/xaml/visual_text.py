@@ -15,7 +15,7 @@ import math
 
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.fonts import WEIGHTS
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.layout.text import UI, baseline, line_height, text_width, uncovered
 from xaml3d.scene.drawing import (
     CombinedGeometry,
     DrawingGroup,
@@ -88,12 +88,18 @@ def _inherited(el, names: tuple[str, ...], r=None) -> str | None:
     return None
 
 
-def _font_style(el, r=None) -> tuple[int, bool]:
-    """(weight, italic) in effect at ``el`` (``_inherited``; its Styles too when ``r``)."""
+def _font_style(el, r=None) -> tuple[int, bool, str]:
+    """(weight, italic, FontFamily) in effect at ``el`` (``_inherited``; its Styles too when
+    ``r``): the arguments after the size of ``text_width``."""
     w = _inherited(el, ("FontWeight", "TextElement.FontWeight"), r) or "Normal"
     s = _inherited(el, ("FontStyle", "TextElement.FontStyle"), r) or "Normal"
     weight = WEIGHTS.get(w.strip(), int(w) if w.strip().isdigit() else 400)
-    return weight, s.strip() in ("Italic", "Oblique")
+    return weight, s.strip() in ("Italic", "Oblique"), _family(el, r)
+
+
+def _family(el, r=None) -> str:
+    """The FontFamily in effect at ``el`` (WPF's default Segoe UI)."""
+    return _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or UI
 
 
 def _brush(r, v, prop: str, default=None):
@@ -177,14 +183,17 @@ def trimming(v) -> str:
     return v.get("TextTrimming", lambda s: V.parse_enum(s, _TRIMS), "None")
 
 
-def trim(line: str, font: float, weight: int, italic: bool, width: float, mode: str) -> str:
+def trim(
+    line: str, font: float, weight: int, italic: bool, width: float, mode: str, family: str = UI
+) -> str:
     """A line cut to ``width`` as TextTrimming does: the longest start of it (whole words for
     WordEllipsis, when one fits) followed by an ellipsis; the line itself when it fits."""
-    if mode == "None" or text_width(line, font, weight, italic) <= width + _SLACK:
+    if mode == "None" or text_width(line, font, weight, italic, family) <= width + _SLACK:
         return line
 
     def fits(k: int) -> bool:
-        return text_width(line[:k].rstrip() + ELLIPSIS, font, weight, italic) <= width + _SLACK
+        ellipsized = line[:k].rstrip() + ELLIPSIS
+        return text_width(ellipsized, font, weight, italic, family) <= width + _SLACK
 
     if mode == "WordEllipsis":
         ends = [i for i in range(1, len(line)) if line[i] == " " and line[i - 1] != " "]
@@ -201,20 +210,22 @@ def trim(line: str, font: float, weight: int, italic: bool, width: float, mode: 
     return line[:lo].rstrip() + ELLIPSIS
 
 
-def _lines(text: str, font: float, weight: int, italic: bool, width: float) -> list[str]:
+def _lines(
+    text: str, font: float, weight: int, italic: bool, width: float, family: str = UI
+) -> list[str]:
     """``text`` broken into lines no wider than ``width`` at spaces (a word wider than the
     line keeps a line of its own). A line feed (kept by xml:space="preserve") starts a new
     line, as it does in WPF's text formatter."""
     if "\n" in text:
         return [x for part in text.split("\n") for x in (_lines(part, font, weight, italic,
-                                                               width) or [""])]  # fmt: skip
+                                                               width, family) or [""])]  # fmt: skip
     if not text or not math.isfinite(width):
         return [text] if text else []
     lines: list[str] = []
     cur = ""
     for word in text.split(" "):
         trial = f"{cur} {word}" if cur else word
-        if cur and text_width(trial, font, weight, italic) > width:
+        if cur and text_width(trial, font, weight, italic, family) > width:
             lines.append(cur)
             cur = word
         else:
@@ -233,25 +244,25 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     text = _text_of(el)
     if not text:
         return None
-    weight, italic = _font_style(el, r)
+    weight, italic, family = _font_style(el, r)
     width = w + _SLACK if block and wraps(v) else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip
-    family = _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or "Segoe UI"
     brush = _foreground(r, el)
     out = []
-    for i, line in enumerate(_lines(text, font, weight, italic, width)):
-        line = trim(line, font, weight, italic, w, mode)
+    for i, line in enumerate(_lines(text, font, weight, italic, width, family)):
+        line = trim(line, font, weight, italic, w, mode, family)
         if not line:
             continue  # an empty line (between two line feeds) takes its height only
-        tw = text_width(line, font, weight, italic)
+        tw = text_width(line, font, weight, italic, family)
         lx = x
         if align_center or alignment == "Center":
             lx += (w - tw) / 2
         elif alignment == "Right":
             lx += w - tw
-        ly = y + i * line_height(font) + baseline(font)
+        ly = y + i * line_height(font, family) + baseline(font, family)
+        warn_uncovered(r, el, line, weight, italic, family)
         out.append(TextDrawing(
             text=line, origin=(lx, ly), font_size=font, weight=weight, italic=italic,
             family=family, brush=brush, **r.ctx.position(el),
@@ -261,6 +272,26 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
 
 
+def warn_uncovered(r, el, text: str, weight: int, italic: bool, family: str) -> None:
+    """TXT001, once per script in a document: characters of ``text`` that neither the face
+    nor any installed font has (drawn as the face's empty box)."""
+    lacking = uncovered(text, weight, italic, family)
+    if not lacking:
+        return
+    from xaml3d.font_fallback import script_of
+
+    for script in dict.fromkeys(script_of(c) for c in lacking):
+        chars = "".join(dict.fromkeys(c for c in lacking if script_of(c) == script))
+        codes = " ".join(f"U+{ord(c):04X}" for c in chars[:4]) + (" ..." if len(chars) > 4 else "")
+        r.ctx.diag(
+            "TXT001",
+            f'no installed font has the {script} characters of "{text}" ({codes}): '
+            "they are drawn as empty boxes (install a font that covers the script)",
+            el,
+            once=("TXT001", script),
+        )
+
+
 def _alignment(v) -> str:
     return v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                             "Justify")), "Left")  # fmt: skip
@@ -268,8 +299,8 @@ def _alignment(v) -> str:
 
 def base_format(r, el, font: float) -> Format:
     """The TextBlock's own text format, that its inlines start from."""
-    weight, italic = _font_style(el, r)
-    return Format(size=font, weight=weight, italic=italic, brush=_foreground(r, el))
+    weight, italic, family = _font_style(el, r)
+    return Format(size=font, weight=weight, italic=italic, brush=_foreground(r, el), family=family)
 
 
 def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool):
@@ -277,7 +308,6 @@ def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_cent
     line's shared baseline, an underlined run over a bar at the font's underline metrics."""
     from xaml3d.layout.text import underline
 
-    family = _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or "Segoe UI"
     alignment = _alignment(v)
     width = w + _SLACK if wraps(v) else math.inf
     out = []
@@ -292,10 +322,11 @@ def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_cent
             tw = fmt.width(text)
             out.append(TextDrawing(
                 text=text, origin=(lx, top + base), font_size=fmt.size, weight=fmt.weight,
-                italic=fmt.italic, family=family, brush=fmt.brush, **r.ctx.position(el),
+                italic=fmt.italic, family=fmt.family, brush=fmt.brush, **r.ctx.position(el),
             ))  # fmt: skip
+            warn_uncovered(r, el, text, fmt.weight, fmt.italic, fmt.family)
             if fmt.underline and tw > 0:
-                at, thick = underline(fmt.size, fmt.weight, fmt.italic)
+                at, thick = underline(fmt.size, fmt.weight, fmt.italic, fmt.family)
                 bar = RectangleGeometry((lx, top + base + at, tw, thick))
                 out.append(GeometryDrawing(bar, brush=fmt.brush))
             lx += tw

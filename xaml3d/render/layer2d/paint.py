@@ -3,7 +3,9 @@
 Pipeline step: the 2D layer. A ``scene.drawing`` Drawing is played onto a skia Canvas in
 device-independent pixels (96 dpi: one DIP is one pixel at scale 1), anti-aliased, blended as
 WPF blends (premultiplied sRGB, source over): GeometryDrawing (fill, then pen: ``paths``,
-``shaders``, ``pens``), ImageDrawing, TextDrawing (the package's font, ``xaml3d.fonts``) and
+``shaders``, ``pens``), ImageDrawing, TextDrawing (the face its FontFamily is set in,
+``xaml3d.fonts``; characters the face lacks in the system's font that has them,
+``xaml3d.font_fallback``) and
 DrawingGroup (Transform, ClipGeometry, Opacity and OpacityMask on the composed group); and a
 drawing's bounds (WPF's Drawing.Bounds: pens included, clips applied; a visual's effects
 spread them as WPF's Effect.GetRenderBounds).
@@ -16,7 +18,7 @@ import math
 import numpy as np
 import skia
 
-from xaml3d.fonts import typeface
+from xaml3d.fonts import face_of, typeface
 from xaml3d.render.layer2d.paths import matrix, path_of
 from xaml3d.render.layer2d.pens import caps_path, stroke_paint
 from xaml3d.render.layer2d.picture import effect_filter
@@ -29,20 +31,39 @@ from xaml3d.scene.drawing import (
 )
 
 
-def _font(d: TextDrawing) -> skia.Font:
-    font = skia.Font(typeface(d.weight, d.italic), float(d.font_size))
+def _font(d: TextDrawing, face=None) -> skia.Font:
+    """The skia Font of ``d``: its family's face, or ``face`` (a system font's typeface)."""
+    if face is None:
+        face = typeface(d.weight, d.italic, d.family)
+    font = skia.Font(face, float(d.font_size))
     font.setEdging(skia.Font.Edging.kAntiAlias)
     font.setSubpixel(True)
     font.setHinting(skia.FontHinting.kNone)
     return font
 
 
-def _text_box(d: TextDrawing, font: skia.Font) -> skia.Rect:
-    from xaml3d.fonts import SEGOE_UI_BASELINE, SEGOE_UI_LINE_SPACING
+def _text_runs(d: TextDrawing) -> list[tuple[str, skia.Font]]:
+    """``d``'s text cut into runs of one font: the face's, and the system's fonts for the
+    characters the face lacks (as layout measured them)."""
+    font = _font(d)
+    glyphs = font.getTypeface().unicharsToGlyphs([ord(c) for c in d.text])
+    if all(glyphs):
+        return [(d.text, font)]
+    from xaml3d.font_fallback import runs
 
-    width = font.measureText(d.text)
-    top = d.origin[1] - SEGOE_UI_BASELINE * d.font_size
-    return skia.Rect.MakeXYWH(d.origin[0], top, width, SEGOE_UI_LINE_SPACING * d.font_size)
+    missing = [g == 0 for g in glyphs]
+    return [
+        (t, font if tf is None else _font(d, tf))
+        for t, tf in runs(d.text, missing, d.weight, d.italic)
+    ]
+
+
+def _text_box(d: TextDrawing, runs: list[tuple[str, skia.Font]]) -> skia.Rect:
+    """The line box of ``d``: its runs' advances wide, its family's line tall."""
+    face = face_of(d.family)
+    width = sum(font.measureText(t) for t, font in runs)
+    top = d.origin[1] - face.baseline * d.font_size
+    return skia.Rect.MakeXYWH(d.origin[0], top, width, face.line_spacing * d.font_size)
 
 
 def draw(canvas: skia.Canvas, d) -> None:
@@ -70,10 +91,15 @@ def draw(canvas: skia.Canvas, d) -> None:
                 stroke.setStyle(skia.Paint.kFill_Style)
                 canvas.drawPath(caps_path(path, pen), stroke)
     elif isinstance(d, TextDrawing):
-        font = _font(d)
-        paint = paint_of(d.brush, _text_box(d, font))
-        if paint is not None and d.text:
-            canvas.drawString(d.text, float(d.origin[0]), float(d.origin[1]), font, paint)
+        if not d.text:
+            return
+        runs = _text_runs(d)
+        paint = paint_of(d.brush, _text_box(d, runs))
+        if paint is not None:
+            x = float(d.origin[0])
+            for text, font in runs:
+                canvas.drawString(text, x, float(d.origin[1]), font, paint)
+                x += font.measureText(text)
     elif isinstance(d, ImageDrawing):
         img = image_of(d.image)
         x, y, w, h = d.rect
@@ -137,7 +163,7 @@ def drawing_bounds(d) -> skia.Rect | None:
         b = render_bounds(d.geometry, d.pen)
         return None if b is None else skia.Rect(*b)
     if isinstance(d, TextDrawing):
-        return _text_box(d, _font(d)) if d.text else None
+        return _text_box(d, _text_runs(d)) if d.text else None
     if isinstance(d, ImageDrawing):
         return skia.Rect.MakeXYWH(*d.rect)
     if isinstance(d, DrawingGroup):
