@@ -166,6 +166,12 @@ def run_cli(*args: str) -> subprocess.CompletedProcess:
                           capture_output=True, text=True, timeout=120)  # fmt: skip
 
 
+def test_help_has_examples():
+    r = run_cli("--help")
+    assert r.returncode == 0 and "Examples:" in r.stdout
+    assert "xaml3d preview scene.xaml --open" in r.stdout
+
+
 def test_a_missing_file_or_stdin_is_refused(tmp_path):
     missing = run_cli(str(tmp_path / "none.xaml"))
     assert missing.returncode == 1

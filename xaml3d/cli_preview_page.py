@@ -29,7 +29,7 @@ h2 { font-size: 13px; margin: 0 0 6px; color: #555; }
   background: repeating-conic-gradient(#ddd 0% 25%, #fff 0% 50%) 0 0 / 16px 16px; }
 #picture-box.stale img { opacity: 0.55; }
 #picture-note { color: #8a1a0a; margin-top: 4px; }
-#findings { min-width: 420px; max-width: 760px; }
+#findings { overflow-wrap: anywhere; }
 #findings ol { margin: 0; padding: 0; list-style: none; }
 #findings li { padding: 4px 0; border-top: 1px solid #eee; }
 #findings li:first-child { border-top: none; }
@@ -39,7 +39,7 @@ h2 { font-size: 13px; margin: 0 0 6px; color: #555; }
 pre.src { margin: 2px 0 0 60px; font: 12px ui-monospace, monospace; color: #444;
           white-space: pre-wrap; background: #f6f6f6; padding: 1px 4px; }
 #view-box iframe { border: none; display: block; }
-.column { display: flex; flex-direction: column; gap: 12px; }
+.column { display: flex; flex-direction: column; gap: 12px; flex: 1 1 420px; min-width: 0; }
 #camera { font: 12px ui-monospace, monospace; white-space: pre; max-height: 360px;
           overflow: auto; }
 </style>
@@ -94,7 +94,8 @@ function cameraText(report) {
     lines.push(cam.kind + note);
     for (const [name, p] of Object.entries(cam.properties)) {
       const rows = Array.isArray(p.value) && Array.isArray(p.value[0]);
-      const v = (rows ? "\\n" : " ") + matrix(p.value);
+      const identity = rows && p.value.every((r, i) => r.every((x, j) => x === +(i === j)));
+      const v = identity ? " identity" : (rows ? "\\n" : " ") + matrix(p.value);
       lines.push(`  ${name} =${v}${p.default ? " (default)" : ""}`);
     }
   }

@@ -95,7 +95,7 @@ class PreviewState:
         name = self.source
         data: dict = {"file": name, "findings": [], "camera": None, "size": None}
         try:
-            loaded = load_scene(name, self.resources, discover_app=self.discover_app)
+            loaded = load_scene(name, self.resources, discover_app=self.discover_app, collect=False)
             scene = scene_at(loaded, 0.0)  # WPF's first frame, as `render` draws it
             vp = scene.viewport(self.viewport)
             w, h = render_size(vp, self.width, self.height)
