@@ -10,6 +10,7 @@ import json
 import signal
 import subprocess
 import sys
+import time
 import urllib.error
 import urllib.request
 from pathlib import Path
@@ -17,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from PIL import Image
-from preview_process import PreviewProcess, save
+from preview_process import CHANGE, PreviewProcess, save
 
 import xaml3d
 
@@ -90,6 +91,47 @@ def test_picture_camera_and_a_texture_followed(tmp_path):
     assert p.proc.returncode == 0
 
 
+APP = """<Application xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">
+  <Application.Resources>
+    <DiffuseMaterial x:Key="Skin" Brush="{brush}"/>
+  </Application.Resources>
+</Application>
+"""
+
+
+def test_an_app_xaml_in_a_folder_above_is_followed(tmp_path):
+    scene = tmp_path / "scenes" / "scene.xaml"
+    scene.parent.mkdir()
+    start, end = TEXTURED.index("<GeometryModel3D.Material>"), TEXTURED.index("</GeometryModel3D>")
+    scene.write_text(
+        TEXTURED[:start].replace(
+            "<GeometryModel3D>", '<GeometryModel3D Material="{StaticResource Skin}">'
+        )
+        + TEXTURED[end:]
+    )
+    app = tmp_path / "App.xaml"
+    app.write_text(APP.format(brush="#C81E1E"))
+    with PreviewProcess(scene) as p:
+        first = p.state()
+        assert first["current"] and str(app.resolve()) in first["inputs"]
+        assert tuple(picture(p)[24, 32, :3]) == (200, 30, 30)
+        save(app, APP.format(brush="#1E28DC"))
+        later = p.wait_state(first["version"], lambda s: s["current"])
+        assert tuple(picture(p)[24, 32, :3]) == (30, 40, 220)
+        # the dictionary broken: its error, in its file, and the picture kept
+        save(app, APP.format(brush="#1E28DC").replace("</Application>", "</Applic"))
+        bad = p.wait_state(later["version"])
+        assert not bad["current"] and bad["picture"] == later["picture"]
+        errors = [f for f in bad["findings"] if f["severity"] == "error"]
+        # the dictionary's XML error where it is, and the resource the scene then misses
+        assert [(f["file"], f["line"], f["code"]) for f in errors] == [
+            (str(app), 7, "RES005"),
+            (str(scene), 7, "RES001"),
+        ]
+        assert tuple(picture(p)[24, 32, :3]) == (30, 40, 220)
+
+
 def test_broken_markup_keeps_the_last_good_picture(tmp_path):
     scene = tmp_path / "cube.xaml"
     text = (ROOT / "samples" / "cube.xaml").read_text()
@@ -151,6 +193,21 @@ def test_only_loopback_names_are_answered_and_ctrl_c_ends_cleanly(tmp_path):
     assert code == 0
     assert "Traceback" not in p.stderr
     assert p.stderr.rstrip().endswith("xaml3d preview: stopped")
+
+
+def test_open_hands_the_url_to_the_browser(tmp_path, monkeypatch):
+    # $BROWSER is the command Python's webbrowser runs: here one that notes the URL it is given
+    scene = tmp_path / "cube.xaml"
+    scene.write_text((ROOT / "samples" / "cube.xaml").read_text())
+    opened = tmp_path / "opened.txt"
+    note = tmp_path / "note.py"
+    note.write_text(f"import sys, pathlib; pathlib.Path({str(opened)!r}).write_text(sys.argv[1])")
+    monkeypatch.setenv("BROWSER", f"{sys.executable} {note} %s")
+    with PreviewProcess(scene, "--open") as p:
+        end = time.monotonic() + CHANGE
+        while not opened.exists() and time.monotonic() < end:
+            time.sleep(0.05)
+        assert opened.read_text() == p.url
 
 
 def test_sigterm_ends_cleanly_too(tmp_path):

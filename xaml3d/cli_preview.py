@@ -56,6 +56,12 @@ def preview_command(scene, port, open_browser, viewport, width, height, resource
     from xaml3d.cli_preview_server import PreviewServer, watch_inputs
     from xaml3d.cli_preview_state import PreviewState
 
+    try:
+        import watchfiles  # noqa: F401 (a dependency; imported here, before the first build)
+    except ImportError:
+        click.echo("xaml3d: error IO001 xaml3d preview needs watchfiles: pip install watchfiles",
+                   err=True)  # fmt: skip
+        click.get_current_context().exit(1)
     if scene == "-":
         raise click.UsageError("preview follows a file: stdin ('-') cannot be followed")
     if not os.path.isfile(scene):
@@ -76,8 +82,8 @@ def preview_command(scene, port, open_browser, viewport, width, height, resource
     previous = signal.signal(signal.SIGTERM, _interrupt)
     watcher = threading.Thread(target=watch_inputs, args=(state, stop), daemon=True)
     try:
-        watcher.start()  # before the first build: a save during it is not missed
         state.rebuild()
+        watcher.start()  # a save made before it watches is found by PreviewState.stale
         click.echo(f"xaml3d preview: {server.url} (Ctrl-C stops)")
         _summary(state)
         if open_browser:

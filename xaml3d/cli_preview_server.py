@@ -152,6 +152,7 @@ def watch_inputs(state: PreviewState, stop: threading.Event) -> None:
         def ours(change, path: str, files=files) -> bool:
             return os.path.realpath(path) in files
 
+        first = True
         for changes in watch(
             *folders,
             watch_filter=ours,
@@ -162,7 +163,10 @@ def watch_inputs(state: PreviewState, stop: threading.Event) -> None:
             recursive=False,
             ignore_permission_denied=True,
         ):
-            if changes:
+            # the first report (a change, or none within CHECK_MS) comes once the folders
+            # are watched: a save made before that is found by comparing the files
+            if changes or (first and state.stale()):
                 state.rebuild()
+            first = False
             if state.inputs() != files:
                 break  # follow the new set of files

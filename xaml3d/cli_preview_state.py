@@ -50,6 +50,7 @@ class PreviewState:
         self.view: bytes | None = None  # the last good interactive page (HTML)
         self._good: dict | None = None  # what the last good build showed: version, time, size
         self._inputs: frozenset[str] = self._own_files()
+        self._stamps: dict[str, tuple | None] = {}  # each input as the last build found it
         self._building = threading.Lock()  # one rebuild at a time
 
     def _own_files(self) -> frozenset[str]:
@@ -60,9 +61,15 @@ class PreviewState:
         what the last good read of the scene read (App.xaml, merged dictionaries, images)."""
         return self._inputs
 
+    def stale(self) -> bool:
+        """Whether an input changed since the last build read it: for the moments the watcher
+        is not yet watching (its start, a new folder), which a save may fall into."""
+        return any(_stamp(f) != stamp for f, stamp in self._stamps.items())
+
     def rebuild(self) -> None:
         with self._building:
             started = time.monotonic()
+            stamps = {f: _stamp(f) for f in self._inputs}  # before reading: a save during it
             try:
                 data, picture, view, files = self._build()
             except Exception as exc:  # a fault of xaml3d's: shown, and the preview goes on
@@ -85,6 +92,8 @@ class PreviewState:
                         "height": data["size"][1],
                     }
                     self._inputs = self._own_files() | files
+                stamps.update((f, _stamp(f)) for f in self._inputs if f not in stamps)
+                self._stamps = stamps
                 data["picture"] = self._good
                 data["current"] = picture is not None
                 data["inputs"] = sorted(self._inputs)
@@ -154,6 +163,16 @@ def _findings_data(findings) -> list[dict]:
     order = {ERROR: 0, WARNING: 1, INFO: 2}
     rows.sort(key=lambda r: order.get(r["severity"], 3))  # stable: by position within each
     return rows
+
+
+def _stamp(file: str) -> tuple | None:
+    """What tells a file's versions apart: its inode, size and modification time (None: it
+    is missing)."""
+    try:
+        st = os.stat(file)
+    except OSError:
+        return None
+    return (st.st_ino, st.st_size, st.st_mtime_ns)
 
 
 def _lines_of(file: str) -> list[str] | None:
