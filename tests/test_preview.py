@@ -8,6 +8,7 @@ from __future__ import annotations
 import io
 import json
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -227,6 +228,19 @@ def test_help_has_examples():
     r = run_cli("--help")
     assert r.returncode == 0 and "Examples:" in r.stdout
     assert "xaml3d preview scene.xaml --open" in r.stdout
+
+
+def test_a_port_in_use_is_an_error(tmp_path):
+    scene = tmp_path / "cube.xaml"
+    scene.write_text((ROOT / "samples" / "cube.xaml").read_text())
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        r = run_cli(str(scene), "--port", str(port))
+    assert r.returncode == 1 and r.stdout == ""
+    assert r.stderr.startswith(f"xaml3d: error IO001 cannot listen on 127.0.0.1:{port}: ")
+    assert "Traceback" not in r.stderr
 
 
 def test_a_missing_file_or_stdin_is_refused(tmp_path):

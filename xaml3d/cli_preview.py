@@ -9,6 +9,7 @@ with the new findings beside it. Ctrl-C (or SIGTERM) stops it, exit status 0.
 
 from __future__ import annotations
 
+import os
 import signal
 import threading
 
@@ -51,8 +52,6 @@ Ctrl-C stops it (exit status 0); 1 when the file cannot be found, 2 for a usage 
 @resources_option
 @no_app_option
 def preview_command(scene, port, open_browser, viewport, width, height, resources, no_app):
-    import os
-
     from xaml3d.cli_preview_server import PreviewServer, watch_inputs
     from xaml3d.cli_preview_state import PreviewState
 
@@ -75,7 +74,9 @@ def preview_command(scene, port, open_browser, viewport, width, height, resource
     try:
         server = PreviewServer(state, port)
     except OSError as exc:
-        click.echo(io_error(None, f"cannot listen on 127.0.0.1:{port}: {exc.strerror}"), err=True)
+        click.echo(
+            f"xaml3d: error IO001 cannot listen on 127.0.0.1:{port}: {exc.strerror}", err=True
+        )
         click.get_current_context().exit(1)
     stop = threading.Event()
     # SIGTERM stops it as Ctrl-C does: the same clean end
