@@ -230,6 +230,16 @@ def test_help_has_examples():
     assert "xaml3d preview scene.xaml --open" in r.stdout
 
 
+def test_without_watchfiles_a_plain_error(tmp_path):
+    scene = tmp_path / "cube.xaml"
+    scene.write_text((ROOT / "samples" / "cube.xaml").read_text())
+    code = ("import sys; sys.modules['watchfiles'] = None; from xaml3d.cli import run; "
+            f"sys.argv = ['xaml3d', 'preview', {str(scene)!r}]; run()")  # fmt: skip
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 1 and r.stdout == ""
+    assert r.stderr == "xaml3d: error PRV001 preview needs watchfiles: pip install watchfiles\n"
+
+
 def test_a_port_in_use_is_an_error(tmp_path):
     scene = tmp_path / "cube.xaml"
     scene.write_text((ROOT / "samples" / "cube.xaml").read_text())

@@ -58,8 +58,9 @@ def preview_command(scene, port, open_browser, viewport, width, height, resource
     try:
         import watchfiles  # noqa: F401 (a dependency; imported here, before the first build)
     except ImportError:
-        click.echo("xaml3d: error IO001 xaml3d preview needs watchfiles: pip install watchfiles",
-                   err=True)  # fmt: skip
+        click.echo(
+            "xaml3d: error PRV001 preview needs watchfiles: pip install watchfiles", err=True
+        )
         click.get_current_context().exit(1)
     if scene == "-":
         raise click.UsageError("preview follows a file: stdin ('-') cannot be followed")
