@@ -92,6 +92,21 @@ def test_picture_camera_and_a_texture_followed(tmp_path):
     assert p.proc.returncode == 0
 
 
+def test_a_missing_texture_is_shown_once_saved(tmp_path):
+    scene = tmp_path / "scene.xaml"
+    scene.write_text(TEXTURED)
+    texture = tmp_path / "textures" / "skin.png"
+    with PreviewProcess(scene) as p:
+        first = p.state()
+        assert first["current"] and str(texture) in first["inputs"]
+        assert [f["code"] for f in first["findings"] if f["severity"] == "warning"] == ["BRU002"]
+        texture.parent.mkdir()  # a folder that did not exist, then the image in it
+        save(texture, png((200, 30, 30)))
+        later = p.wait_state(first["version"], lambda s: s["current"])
+        assert "BRU002" not in [f["code"] for f in later["findings"]]
+        assert tuple(picture(p)[24, 32, :3]) == (200, 30, 30)
+
+
 APP = """<Application xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
     xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml">
   <Application.Resources>

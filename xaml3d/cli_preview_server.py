@@ -144,7 +144,7 @@ def watch_inputs(state: PreviewState, stop: threading.Event) -> None:
 
     while not stop.is_set():
         files = state.inputs()
-        folders = sorted({os.path.dirname(f) for f in files if os.path.isdir(os.path.dirname(f))})
+        folders = _folders(files)
         if not folders:
             stop.wait(CHECK_MS / 1000)
             continue
@@ -168,5 +168,10 @@ def watch_inputs(state: PreviewState, stop: threading.Event) -> None:
             if changes or (first and state.stale()):
                 state.rebuild()
             first = False
-            if state.inputs() != files:
-                break  # follow the new set of files
+            if state.inputs() != files or _folders(files) != folders:
+                break  # follow the new set of files, or a folder made or removed
+
+
+def _folders(files) -> list[str]:
+    """The folders of ``files`` that exist (a missing texture's folder may be made later)."""
+    return sorted({os.path.dirname(f) for f in files if os.path.isdir(os.path.dirname(f))})

@@ -22,6 +22,7 @@ from xaml3d.cli_camera import camera_report
 from xaml3d.cli_common import describe_os_error, load_scene, render_size
 from xaml3d.errors import ERROR, INFO, WARNING, Diagnostic, XamlError
 from xaml3d.findings import scene_findings
+from xaml3d.scene.types import ImageBrush, Scene
 
 
 class PreviewState:
@@ -58,7 +59,8 @@ class PreviewState:
 
     def inputs(self) -> frozenset[str]:
         """Every file the preview follows (real paths): the scene, the -r dictionaries, and
-        what the last good read of the scene read (App.xaml, merged dictionaries, images)."""
+        what the last good read of the scene read (App.xaml, merged dictionaries, images) or
+        missed (an image not found)."""
         return self._inputs
 
     def stale(self) -> bool:
@@ -116,7 +118,8 @@ class PreviewState:
             fatal = Diagnostic("IO001", ERROR, describe_os_error(exc), name)
             data["findings"] = _findings_data([fatal])
             return data, None, None, frozenset()
-        files = frozenset(os.path.realpath(f) for f in loaded.input_files)
+        read = (*loaded.input_files, *_missing_images(loaded))
+        files = frozenset(os.path.realpath(f) for f in read)
 
         def size_of(v):
             return render_size(v, self.width, self.height) if v is vp else (v.width, v.height)
@@ -163,6 +166,19 @@ def _findings_data(findings) -> list[dict]:
     order = {ERROR: 0, WARNING: 1, INFO: 2}
     rows.sort(key=lambda r: order.get(r["severity"], 3))  # stable: by position within each
     return rows
+
+
+def _missing_images(scene: Scene) -> set[str]:
+    """The files of the textures the scene names but could not read (BRU002: a checker stands
+    in): followed too, so that saving the image shows it."""
+    found = set()
+    for vp in scene.viewports:
+        for model in vp.models:
+            for material in (*model.material, *model.back_material):
+                brush = material.brush
+                if isinstance(brush, ImageBrush) and brush.is_placeholder and brush.path:
+                    found.add(brush.path)
+    return found
 
 
 def _stamp(file: str) -> tuple | None:
