@@ -14,6 +14,7 @@ Public API::
     for r in xaml3d.render_batch(["a.xaml", "b.xaml"], width=320, executor=pool): ...
     xaml3d.save_animation(rgba_frames, "spin.gif", total_seconds)
     notes = xaml3d.export(scene, "scene.glb")   # also .gltf .obj .stl .html -> [Diagnostic]
+    xaml3d.show(scene)                          # in a notebook: the interactive view
 """
 
 from __future__ import annotations
@@ -50,6 +51,7 @@ _PUBLIC = {
     "frame_times": "xaml3d.render.frames",
     "render_frames": "xaml3d.render.frames",
     "load": "xaml3d.xaml.loader",
+    "show": "xaml3d.notebook",
 }
 
 
@@ -83,7 +85,10 @@ class _Package(_types.ModuleType):
 
 _sys.modules[__name__].__class__ = _Package
 
-# ``Scene.timeline`` needs the animation stage's class, which it registers when imported.
+# ``Scene.timeline`` needs the animation stage's class, which it registers when imported; a
+# Scene's picture in notebooks (``Scene._repr_png_``) is defined above the renderer, attached
+# to Scene by ``xaml3d.notebook`` when imported.
+from xaml3d import notebook as _notebook  # noqa: E402, F401
 from xaml3d.animation import timeline as _timeline  # noqa: E402, F401
 
 __all__ = [
@@ -102,4 +107,5 @@ __all__ = [
     "save_animation",
     "save_image",
     "scene_at",
+    "show",
 ]

@@ -2,7 +2,7 @@
 
 Commands live in their own modules: ``render`` (cli_render), ``validate`` (cli_validate),
 ``camera`` (cli_camera), ``info`` (cli_info), ``animate`` (cli_animate), ``export``
-(cli_export); shared helpers in
+(cli_export), ``preview`` (cli_preview); shared helpers in
 cli_common. Diagnostics go to stderr, data to stdout. Exit status: 0 success, 1 the input
 could not be handled, 2 usage error.
 """
@@ -26,6 +26,7 @@ _COMMANDS = {
     "info": ("xaml3d.cli_info", "info_command"),
     "animate": ("xaml3d.cli_animate", "animate_command"),
     "export": ("xaml3d.cli_export", "export_command"),
+    "preview": ("xaml3d.cli_preview", "preview_command"),
 }
 
 
@@ -56,6 +57,7 @@ Examples:
   xaml3d info scene.xaml --json
   xaml3d animate scene.xaml -o scene.gif
   xaml3d export scene.xaml -o scene.glb
+  xaml3d preview scene.xaml --open
 
 Run xaml3d COMMAND --help for each command's options.
 """

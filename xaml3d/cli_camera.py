@@ -291,8 +291,33 @@ def camera_command(
         for d in notes:
             click.echo(d.format(), err=True)
     cam = vp.camera
+    report, pipe, error = camera_report(vp, w, h, sc.file or name)
+    if pipe is not None:
+        report["points"] = locate_points(pipe, points)
+        with exit_on_input_error(name):
+            lens_info = lens_report(vp, w, h, **lens)
+        if lens_info is not None:
+            report["lens"] = lens_info
+    if as_json:
+        import json  # for --json only
+
+        click.echo(json.dumps(report, indent=2))
+    else:
+        text = _camera_text(vp, cam, pipe, report["points"])
+        if "lens" in report:
+            text += lens_text(report["lens"], _matrix_lines)
+        click.echo("\n".join(text))
+    if error is not None:
+        click.echo(error.format(), err=True)
+        click.get_current_context().exit(1)
+
+
+def camera_report(vp, w, h, file: str) -> tuple[dict, object, XamlError | None]:
+    """The data ``--json`` prints for viewport ``vp`` at ``w`` x ``h`` (no points, no lens),
+    the ``CameraPipeline`` (None when the camera gives no image) and the error saying why."""
+    cam = vp.camera
     report: dict = {
-        "file": sc.file or name,
+        "file": file,
         "viewport": {"index": vp.index, "name": vp.name, "width": w, "height": h},
         "camera": None,
         "pipeline": None,
@@ -313,7 +338,7 @@ def camera_command(
         pipe = camera_pipeline(cam, w, h, vp.bounds())
     except XamlError as exc:
         error = exc.with_location(
-            file=sc.file or name,
+            file=file,
             line=cam.line if cam else None,
             column=getattr(cam, "column", None) if cam else None,
         )
@@ -321,23 +346,7 @@ def camera_command(
     if pipe is not None:
         report["pipeline"] = _jsonable(pipe.as_dict())
         report["pipeline"]["world_to_pixel_factors"] = product_label(pipe, cam)
-        report["points"] = locate_points(pipe, points)
-        with exit_on_input_error(name):
-            lens_info = lens_report(vp, w, h, **lens)
-        if lens_info is not None:
-            report["lens"] = lens_info
-    if as_json:
-        import json  # for --json only
-
-        click.echo(json.dumps(report, indent=2))
-    else:
-        text = _camera_text(vp, cam, pipe, report["points"])
-        if "lens" in report:
-            text += lens_text(report["lens"], _matrix_lines)
-        click.echo("\n".join(text))
-    if error is not None:
-        click.echo(error.format(), err=True)
-        click.get_current_context().exit(1)
+    return report, pipe, error
 
 
 def _camera_text(vp, cam, pipe, located) -> list[str]:

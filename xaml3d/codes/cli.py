@@ -16,4 +16,9 @@ CLI_CODES: dict[str, tuple[str, str]] = {
         "two outputs would be the same file (two scenes of a batch, two viewports of a scene)",
     ),
     "OPT001": (WARNING, "a command-line option has no effect with the others given"),
+    "PRV001": (
+        ERROR,
+        "preview: the scene could not be read or drawn for an unexpected reason, or watchfiles "
+        "is missing",
+    ),
 }

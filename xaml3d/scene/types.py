@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xaml3d.errors import Diagnostic, SceneError
+from xaml3d.errors import ERROR, Diagnostic, SceneError
 from xaml3d.scene.drawing import DrawingBrush, Viewport2D
 
 if TYPE_CHECKING:
@@ -44,6 +44,32 @@ def frozen_array(values, dtype=np.float64) -> np.ndarray:
 
 def identity() -> np.ndarray:
     return frozen_array(np.eye(4))
+
+
+# Short representations (``repr``) of the scene's main types, for the interpreter and notebooks:
+# a line of counts, sizes and bounds instead of the dataclass's every field (a scene's arrays
+# made it kilobytes long). Equality and pickling are the dataclass's, unchanged.
+def _num(x) -> str:
+    return f"{float(x):.6g}"
+
+
+def _vec(v) -> str:
+    return "(" + ", ".join(_num(x) for x in v) + ")"
+
+
+def _bounds_text(found) -> str:
+    return "no bounds" if found is None else f"bounds {_vec(found[0])}..{_vec(found[1])}"
+
+
+def _count(n: int, word: str, plural: str | None = None) -> str:
+    return f"{n} {word if n == 1 else plural or word + 's'}"
+
+
+def _where(obj) -> str:
+    """The name and source line of an object read from markup, as " 'name' line 12"."""
+    name = getattr(obj, "name", None)
+    line = getattr(obj, "line", None)
+    return (f" {name!r}" if name else "") + (f" line {line}" if line is not None else "")
 
 
 # --------------------------------------------------------------------------- brushes
@@ -327,6 +353,13 @@ class Mesh:
     def triangle_count(self) -> int:
         return int(self.indices.shape[0])
 
+    def __repr__(self) -> str:
+        found = _world_bounds(self.positions, _EYE4) if len(self.positions) else None
+        return (
+            f"<Mesh{_where(self)}: {_count(len(self.positions), 'vertex', 'vertices')}, "
+            f"{_count(self.triangle_count, 'triangle')}, {_bounds_text(found)}>"
+        )
+
 
 @dataclass(frozen=True)
 class Model:
@@ -340,6 +373,20 @@ class Model:
     line: int | None = None
     column: int | None = None
     rejected: frozenset[str] = rejected_field()  # "Geometry", "Material"...
+
+    def __repr__(self) -> str:
+        mesh = self.mesh
+        found = None
+        if len(mesh.positions) and mesh.triangle_count:
+            found = _world_bounds(mesh.positions, self.world)
+        passes = " + ".join(type(p).__name__ for p in self.material) or "no material"
+        back = " + ".join(type(p).__name__ for p in self.back_material)
+        return (
+            f"<Model{_where(self)}: {_count(mesh.triangle_count, 'triangle')}, "
+            f"{_count(len(mesh.positions), 'vertex', 'vertices')}, {passes}"
+            + (f", back {back}" if back else "")
+            + f", {_bounds_text(found)}>"
+        )
 
 
 # --------------------------------------------------------------------------- cameras
@@ -365,14 +412,35 @@ class ProjectionCamera:
     file: str | None = field(default=None, compare=False)
     given: frozenset[str] = given_field()  # "Position"...: see given_field
 
+    def __repr__(self) -> str:
+        if isinstance(self, PerspectiveCamera):
+            own = f"field of view {_num(self.field_of_view)}"
+        elif isinstance(self, OrthographicCamera):
+            own = f"width {_num(self.width)}"
+        else:
+            own = ""
+        default = getattr(self, "is_default", False)
+        return (
+            f"<{type(self).__name__}{_where(self)}"
+            + (" (WPF's default)" if default else "")
+            + f": position {_vec(self.position)}, look {_vec(self.look_direction)}, "
+            f"up {_vec(self.up_direction)}, {own}, near {_num(self.near_plane_distance)}, "
+            f"far {_num(self.far_plane_distance)}" + _transformed(self.transform) + ">"
+        )
 
-@dataclass(frozen=True)
+
+def _transformed(m) -> str:
+    return "" if np.array_equal(m, _EYE4) else ", with a Transform"
+
+
+# repr=False: the subclasses keep ProjectionCamera's short __repr__
+@dataclass(frozen=True, repr=False)
 class PerspectiveCamera(ProjectionCamera):
     field_of_view: float = 45.0  # horizontal, degrees
     is_default: bool = False  # True when the markup gave no camera and WPF's default is used
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class OrthographicCamera(ProjectionCamera):
     width: float = 2.0
 
@@ -391,6 +459,10 @@ class MatrixCamera:
     rejected: frozenset[str] = rejected_field()
     file: str | None = field(default=None, compare=False)  # as ProjectionCamera.file
     given: frozenset[str] = given_field()
+
+    def __repr__(self) -> str:
+        matrices = f"view and projection matrices{_transformed(self.transform)}"
+        return f"<MatrixCamera{_where(self)}: {matrices}>"
 
 
 Camera = PerspectiveCamera | OrthographicCamera | MatrixCamera
@@ -548,6 +620,17 @@ class Viewport:
     def triangle_count(self) -> int:
         return sum(m.mesh.triangle_count for m in self.models)
 
+    def __repr__(self) -> str:
+        camera = "no camera" if self.camera is None else type(self.camera).__name__
+        if isinstance(self.camera, ProjectionCamera):
+            camera += f" at {_vec(self.camera.position)}"
+        return (
+            f"<Viewport {self.index}" + (f" {self.name!r}" if self.name else "")
+            + f" {_num(self.width)}x{_num(self.height)}: {camera}, "
+            f"{_count(len(self.models), 'model')} ({_count(self.triangle_count, 'triangle')}), "
+            f"{_count(len(self.lights), 'light')}, {_bounds_text(self.bounds())}>"
+        )  # fmt: skip
+
     def bounds(self) -> tuple[np.ndarray, np.ndarray] | None:
         """World-space axis-aligned bounds (min, max) of every model's vertices, or None.
         Measured once per Viewport (it is immutable): the checks, the camera and ``info`` all
@@ -607,6 +690,7 @@ def _shifted_bounds(p: np.ndarray, world: np.ndarray) -> tuple[np.ndarray, np.nd
 
 
 _EYE3 = np.eye(3)
+_EYE4 = np.eye(4)
 
 # What ``Scene.timeline`` returns: the evaluation of the tracks is the animation stage's, above
 # the scene, which does not import it; ``xaml3d.animation.timeline`` puts its class here when
@@ -629,6 +713,24 @@ class Scene:
     # whenever the document has storyboards; None when it has none, and in a frame
     # (xaml3d.animation.scene_at: a finished moment is not evaluated again).
     tracks: Tracks | None = field(default=None, compare=False, repr=False)
+
+    def __repr__(self) -> str:
+        vps = self.viewports
+        sizes = ", ".join(f"{_num(v.width)}x{_num(v.height)}" for v in vps[:3])
+        sizes += ", ..." if len(vps) > 3 else ""
+        models = sum(len(v.models) for v in vps)
+        triangles = sum(v.triangle_count for v in vps)
+        text = (
+            f"<Scene {self.file}: {_count(len(vps), 'viewport')}" + (f" {sizes}" if vps else "")
+            + f", {_count(models, 'model')} ({_count(triangles, 'triangle')}), "
+            f"{_count(sum(len(v.lights) for v in vps), 'light')}, "
+            f"{_count(len(self.storyboards), 'storyboard')}"
+        )  # fmt: skip
+        errors = sum(d.severity == ERROR for d in self.diagnostics)
+        if self.diagnostics:
+            text += f", {_count(len(self.diagnostics), 'diagnostic')}"
+            text += f" ({_count(errors, 'error')})" if errors else ""
+        return text + ">"
 
     @property
     def input_files(self) -> tuple[str, ...]:
