@@ -519,3 +519,22 @@ def test_a_data_template_viewport_per_item():
     colours = [vp.models[0].material[0].brush.color for vp in scene.viewports]
     assert colours[0][:3] == (1.0, 0.0, 0.0) and colours[1][:3] == (0.0, 0.0, 1.0)
     assert not [d for d in scene.diagnostics if d.code == "XAML015"]
+
+
+def test_style_trigger_on_a_control_in_the_theme_look(tmp_path):
+    style = """
+    <Style TargetType="Button">
+      <Style.Triggers>
+        <Trigger Property="IsEnabled" Value="False">
+          <Setter Property="Opacity" Value="0.4" />
+          <Setter Property="Foreground" Value="Blue" />
+        </Trigger>
+      </Style.Triggers>
+    </Style>"""
+    buttons = '<Button Height="24" Content="On" /><Button Height="24" Content="Off" {} />'
+    feature = window(style, buttons.format('IsEnabled="False"'))
+    twin = window("", buttons.format('IsEnabled="False" Opacity="0.4" Foreground="Blue"'))
+    plain = window("", buttons.format('IsEnabled="False"'))
+    px = _same(tmp_path, feature, twin)
+    (tmp_path / "plain.xaml").write_text(plain, encoding="utf-8")
+    assert not np.array_equal(px, _window_pixels(tmp_path / "plain.xaml"))

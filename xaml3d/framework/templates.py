@@ -103,6 +103,7 @@ class _Instantiation:
         c = Control(el, t, self.sv)
         found = self.template_of(c)
         if found is None:
+            self.themed_triggers(c)
             if t == "ContentControl" and c.value("ContentTemplate") is not None:
                 self.pin()
                 self.presented(c)
@@ -151,6 +152,18 @@ class _Instantiation:
                          else None)  # fmt: skip
             return []
         return out
+
+    def themed_triggers(self, c: Control) -> None:
+        """A control in the theme's look: its Style's triggers that fire at load set its
+        values where it has none of its own (the reader draws them as local values)."""
+        if not any(True for style in c.styles for _ in triggers(style, "Style")):
+            return
+        self.style_triggers(c)
+        if c.triggered:
+            self.pin()
+            for prop, value in c.triggered.items():
+                if c.local(prop) is None:
+                    put(self.sv, c.el, prop, value)
 
     def container_style(self, box, style) -> None:
         """``ItemContainerStyle`` on a container: its Setters and the triggers it fires at load
