@@ -538,3 +538,26 @@ def test_style_trigger_on_a_control_in_the_theme_look(tmp_path):
     px = _same(tmp_path, feature, twin)
     (tmp_path / "plain.xaml").write_text(plain, encoding="utf-8")
     assert not np.array_equal(px, _window_pixels(tmp_path / "plain.xaml"))
+
+
+def test_a_template_that_holds_itself_twice_stops(tmp_path, monkeypatch):
+    from xaml3d.framework import templates
+
+    monkeypatch.setattr(templates, "MAX_INSTANCES", 40)
+    style = """
+    <Style TargetType="Button">
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="Button">
+            <StackPanel><Button /><Button /></StackPanel>
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+    </Style>"""
+    path = tmp_path / "self.xaml"
+    path.write_text(window(style, '<Button Height="20" />'), encoding="utf-8")
+    scene = load(path)
+    codes = [d.code for d in scene.diagnostics]
+    assert codes.count("TPL004") == 1
+    # the window's StackPanel, the document's Button's instance and 40 nested instances
+    assert sum(b.type == "StackPanel" for b in scene.layout.boxes) == 1 + 1 + 40

@@ -66,7 +66,8 @@ _NOT_VISUAL_PROPERTIES = ("Resources", "Style", "Template", "ContentTemplate", "
 # the presenter's own properties, consumed where its content is placed
 _PRESENTER_PROPS = ("Content", "ContentSource", "ContentTemplate", "ContentTemplateSelector",
                     "ContentStringFormat", "RecognizesAccessKey")  # fmt: skip
-MAX_DEPTH = 32  # templates inside templates deeper than this: a template that holds itself
+MAX_DEPTH = 16  # templates inside templates deeper than this: a template that holds itself
+MAX_INSTANCES = 1000  # instances in one document: past this, a template that multiplies itself
 
 
 # the controls' tags in any namespace: the one look a document without controls costs
@@ -86,6 +87,7 @@ class _Instantiation:
         self.done: set[int] = set()
         self.keep: list = []  # the elements whose ids are in ``done``
         self.pinned = False
+        self.count = 0  # the templates instantiated
 
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
@@ -122,10 +124,12 @@ class _Instantiation:
                    "look")  # fmt: skip
             self.sv.diag("TPL001", msg, el, attr=where)
             return
-        if depth >= MAX_DEPTH:
-            msg = f"templates nested {MAX_DEPTH} deep (a template holding itself): not instantiated"
+        if depth >= MAX_DEPTH or (depth and self.count >= MAX_INSTANCES):
+            msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (a template "
+                   "holding itself): not instantiated")  # fmt: skip
             self.sv.diag("TPL004", msg, el, once="depth")
             return
+        self.count += depth > 0  # the document's own controls are as many as it writes
         self.pin()
         instance = self.apply(c, template)
         if instance is not None:
