@@ -107,15 +107,13 @@ class _Instantiation:
         if found is None:
             self.themed_triggers(c)
             if t == "ContentControl" and c.value("ContentTemplate") is not None:
-                self.pin()
-                self.presented(c)
-                for k in list(el.iter(*self.tags)):
-                    self.control(k, depth + 1)
+                if self.room(el, depth):
+                    self.presented(c)
+                    self.below(el, depth)
             elif t in items.CONTAINERS and items.generates(c):
-                self.pin()
-                for sub in self.themed_items(c):
-                    for k in list(sub.iter(*self.tags)):
-                        self.control(k, depth + 1)
+                if self.room(el, depth):
+                    for sub in self.themed_items(c):
+                        self.below(sub, depth)
             return
         template, where = found
         if t not in SUPPORTED:
@@ -124,17 +122,27 @@ class _Instantiation:
                    "look")  # fmt: skip
             self.sv.diag("TPL001", msg, el, attr=where)
             return
+        if self.room(el, depth):
+            instance = self.apply(c, template)
+            if instance is not None:
+                self.below(instance, depth)
+
+    def room(self, el, depth: int) -> bool:
+        """Whether another instance may be made at ``depth`` (counted, and the tree pinned
+        before its first change), else TPL004."""
         if depth >= MAX_DEPTH or (depth and self.count >= MAX_INSTANCES):
             msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (a template "
                    "holding itself): not instantiated")  # fmt: skip
             self.sv.diag("TPL004", msg, el, once="depth")
-            return
+            return False
         self.count += depth > 0  # the document's own controls are as many as it writes
         self.pin()
-        instance = self.apply(c, template)
-        if instance is not None:
-            for sub in list(instance.iter(*self.tags)):
-                self.control(sub, depth + 1)
+        return True
+
+    def below(self, el, depth: int) -> None:
+        """The controls in what was made under ``el``."""
+        for k in list(el.iter(*self.tags)):
+            self.control(k, depth + 1)
 
     def pin(self) -> None:
         if not self.pinned:
@@ -144,6 +152,7 @@ class _Instantiation:
     def boxes(self, c: Control) -> list:
         """The item containers of an items control (none, said, when its items are not known
         at load)."""
+        self.selector(c, "ItemTemplateSelector")
         out = items.containers(c, self.sv)
         style = items.container_style(c, self.sv)
         if style is not None:
@@ -185,6 +194,14 @@ class _Instantiation:
         for prop in (*k.setters, *k.triggered):
             if k.local(prop) is None:
                 put(self.sv, box, prop, k.triggered.get(prop, k.setters.get(prop)))
+
+    def selector(self, c: Control, prop: str) -> None:
+        """A template selector is a class of the application's code: said, not run."""
+        if c.value(prop) is not None:
+            msg = (f"{prop} is code xaml3d does not run: the items and content are shown "
+                   "without it")  # fmt: skip
+            where = prop if c.el.get(prop) is not None else None
+            self.sv.diag("TPL007", msg, c.el, attr=where, once=("TPL007", id(c.el)))
 
     def themed_items(self, c: Control) -> list:
         """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
@@ -335,6 +352,7 @@ class _Instantiation:
     def present(self, c: Control, presenter) -> None:
         """A ContentPresenter filled with the control's content (or its own Content)."""
         sv = self.sv
+        self.selector(c, "ContentTemplateSelector")
         source = presenter.get("ContentSource", "Content").strip()
         own = presenter.get("Content")
         template = presenter.get("ContentTemplate")
