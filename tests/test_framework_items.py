@@ -234,3 +234,21 @@ def test_an_item_template_holding_its_items_control_stops(tmp_path, monkeypatch)
     path.write_text(feature, encoding="utf-8")
     codes = [d.code for d in load(path).diagnostics]
     assert codes.count("TPL004") == 1
+
+
+def test_the_items_panel_of_a_themed_list_box_is_said(tmp_path):
+    feature = _with_ns(
+        window(
+            ARRAYS,
+            """
+      <ListBox Height="40" ItemsSource="{StaticResource names}">
+        <ListBox.ItemsPanel>
+          <ItemsPanelTemplate><WrapPanel /></ItemsPanelTemplate>
+        </ListBox.ItemsPanel>
+      </ListBox>""",
+        )
+    )
+    path = tmp_path / "panel.xaml"
+    path.write_text(feature, encoding="utf-8")
+    found = [(d.code, d.line) for d in load(path).diagnostics if d.code == "TPL008"]
+    assert found == [("TPL008", _line(feature, "<ListBox "))]

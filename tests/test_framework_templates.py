@@ -561,3 +561,33 @@ def test_a_template_that_holds_itself_twice_stops(tmp_path, monkeypatch):
     assert codes.count("TPL004") == 1
     # the window's StackPanel, the document's Button's instance and 40 nested instances
     assert sum(b.type == "StackPanel" for b in scene.layout.boxes) == 1 + 1 + 40
+
+
+def test_a_template_copy_resolves_resources_in_the_template_scope(tmp_path):
+    style = """
+    <Style x:Key="s" TargetType="Button">
+      <Style.Resources>
+        <SolidColorBrush x:Key="edge" Color="Orange" />
+      </Style.Resources>
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="Button">
+            <ControlTemplate.Resources>
+              <SolidColorBrush x:Key="face" Color="Blue" />
+            </ControlTemplate.Resources>
+            <Border Background="{StaticResource face}" BorderBrush="{StaticResource edge}"
+                    BorderThickness="4" />
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+    </Style>"""
+    feature = window(style, '<Button Height="40" Style="{StaticResource s}" />')
+    twin = window(
+        "",
+        '<ContentControl Height="40"><Border Background="Blue" BorderBrush="Orange" '
+        'BorderThickness="4" /></ContentControl>',
+    )
+    path = tmp_path / "scope.xaml"
+    path.write_text(feature, encoding="utf-8")
+    assert not [d for d in load(path).diagnostics if d.severity != "info"]
+    _same(tmp_path, feature, twin)

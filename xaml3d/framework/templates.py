@@ -210,6 +210,11 @@ class _Instantiation:
         sv, el = self.sv, c.el
         boxes = self.boxes(c)
         if c.type != "ItemsControl":
+            if c.value("ItemsPanel") is not None:
+                msg = (f"the ItemsPanel of this {c.type} is not used: the theme's look stacks "
+                       "its items")  # fmt: skip
+                where = "ItemsPanel" if el.get("ItemsPanel") is not None else None
+                sv.diag("TPL008", msg, el, attr=where)
             for k in boxes:
                 el.append(k)
             return boxes
