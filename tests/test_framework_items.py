@@ -179,3 +179,79 @@ def test_item_container_style_template_and_is_selected_trigger(tmp_path):
     px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
     assert ((px[..., 0] == 255) & (px[..., 1] == 165) & (px[..., 2] == 0)).any()
     assert tuple(px[4, 70][:3]) == (255, 255, 0)  # the rows stretch across the ListBox
+
+
+def test_alternation_count_and_its_index_trigger(tmp_path):
+    style = """
+    <Style x:Key="zebra" TargetType="ListBoxItem">
+      <Setter Property="Background" Value="White" />
+      <Style.Triggers>
+        <Trigger Property="ItemsControl.AlternationIndex" Value="1">
+          <Setter Property="Background" Value="LightBlue" />
+        </Trigger>
+      </Style.Triggers>
+    </Style>"""
+    feature = window(
+        ARRAYS + style,
+        '<ListBox Height="60" ItemsSource="{StaticResource names}" AlternationCount="2" '
+        'ItemContainerStyle="{StaticResource zebra}" />',
+    )
+    rows = "".join(
+        f'<ListBoxItem ItemsControl.AlternationIndex="{i % 2}" '
+        f'Background="{("White", "LightBlue")[i % 2]}" Content="{t}" />'
+        for i, t in enumerate(("Red", "Green", "Blue"))
+    )
+    twin = window("", f'<ListBox Height="60">{rows}</ListBox>')
+    px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
+    assert ((px[..., 0] == 173) & (px[..., 1] == 216) & (px[..., 2] == 230)).any()
+
+
+def test_a_template_selector_is_said(tmp_path):
+    feature = _with_ns(
+        window(
+            ARRAYS + '<local:Picker x:Key="pick" />',
+            '<ListBox Height="40" ItemsSource="{StaticResource names}" '
+            'ItemTemplateSelector="{StaticResource pick}" />',
+        )
+    )
+    path = tmp_path / "selector.xaml"
+    path.write_text(feature, encoding="utf-8")
+    found = [(d.code, d.line) for d in load(path).diagnostics if d.code == "TPL007"]
+    assert found == [("TPL007", _line(feature, "<ListBox "))]
+
+
+def test_an_item_template_holding_its_items_control_stops(tmp_path, monkeypatch):
+    from xaml3d.framework import templates
+
+    monkeypatch.setattr(templates, "MAX_INSTANCES", 40)
+    again = (
+        '<ItemsControl ItemsSource="{StaticResource two}" ItemTemplate="{StaticResource again}" />'
+    )
+    resources = f"""
+    <x:Array x:Key="two" Type="sys:String">
+      <sys:String>a</sys:String><sys:String>b</sys:String>
+    </x:Array>
+    <DataTemplate x:Key="again">{again}</DataTemplate>"""
+    feature = _with_ns(window(resources, again))
+    path = tmp_path / "again.xaml"
+    path.write_text(feature, encoding="utf-8")
+    codes = [d.code for d in load(path).diagnostics]
+    assert codes.count("TPL004") == 1
+
+
+def test_the_items_panel_of_a_themed_list_box_is_said(tmp_path):
+    feature = _with_ns(
+        window(
+            ARRAYS,
+            """
+      <ListBox Height="40" ItemsSource="{StaticResource names}">
+        <ListBox.ItemsPanel>
+          <ItemsPanelTemplate><WrapPanel /></ItemsPanelTemplate>
+        </ListBox.ItemsPanel>
+      </ListBox>""",
+        )
+    )
+    path = tmp_path / "panel.xaml"
+    path.write_text(feature, encoding="utf-8")
+    found = [(d.code, d.line) for d in load(path).diagnostics if d.code == "TPL008"]
+    assert found == [("TPL008", _line(feature, "<ListBox "))]

@@ -519,3 +519,75 @@ def test_a_data_template_viewport_per_item():
     colours = [vp.models[0].material[0].brush.color for vp in scene.viewports]
     assert colours[0][:3] == (1.0, 0.0, 0.0) and colours[1][:3] == (0.0, 0.0, 1.0)
     assert not [d for d in scene.diagnostics if d.code == "XAML015"]
+
+
+def test_style_trigger_on_a_control_in_the_theme_look(tmp_path):
+    style = """
+    <Style TargetType="Button">
+      <Style.Triggers>
+        <Trigger Property="IsEnabled" Value="False">
+          <Setter Property="Opacity" Value="0.4" />
+          <Setter Property="Foreground" Value="Blue" />
+        </Trigger>
+      </Style.Triggers>
+    </Style>"""
+    buttons = '<Button Height="24" Content="On" /><Button Height="24" Content="Off" {} />'
+    feature = window(style, buttons.format('IsEnabled="False"'))
+    twin = window("", buttons.format('IsEnabled="False" Opacity="0.4" Foreground="Blue"'))
+    plain = window("", buttons.format('IsEnabled="False"'))
+    px = _same(tmp_path, feature, twin)
+    (tmp_path / "plain.xaml").write_text(plain, encoding="utf-8")
+    assert not np.array_equal(px, _window_pixels(tmp_path / "plain.xaml"))
+
+
+def test_a_template_that_holds_itself_twice_stops(tmp_path, monkeypatch):
+    from xaml3d.framework import templates
+
+    monkeypatch.setattr(templates, "MAX_INSTANCES", 40)
+    style = """
+    <Style TargetType="Button">
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="Button">
+            <StackPanel><Button /><Button /></StackPanel>
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+    </Style>"""
+    path = tmp_path / "self.xaml"
+    path.write_text(window(style, '<Button Height="20" />'), encoding="utf-8")
+    scene = load(path)
+    codes = [d.code for d in scene.diagnostics]
+    assert codes.count("TPL004") == 1
+    # the window's StackPanel, the document's Button's instance and 40 nested instances
+    assert sum(b.type == "StackPanel" for b in scene.layout.boxes) == 1 + 1 + 40
+
+
+def test_a_template_copy_resolves_resources_in_the_template_scope(tmp_path):
+    style = """
+    <Style x:Key="s" TargetType="Button">
+      <Style.Resources>
+        <SolidColorBrush x:Key="edge" Color="Orange" />
+      </Style.Resources>
+      <Setter Property="Template">
+        <Setter.Value>
+          <ControlTemplate TargetType="Button">
+            <ControlTemplate.Resources>
+              <SolidColorBrush x:Key="face" Color="Blue" />
+            </ControlTemplate.Resources>
+            <Border Background="{StaticResource face}" BorderBrush="{StaticResource edge}"
+                    BorderThickness="4" />
+          </ControlTemplate>
+        </Setter.Value>
+      </Setter>
+    </Style>"""
+    feature = window(style, '<Button Height="40" Style="{StaticResource s}" />')
+    twin = window(
+        "",
+        '<ContentControl Height="40"><Border Background="Blue" BorderBrush="Orange" '
+        'BorderThickness="4" /></ContentControl>',
+    )
+    path = tmp_path / "scope.xaml"
+    path.write_text(feature, encoding="utf-8")
+    assert not [d for d in load(path).diagnostics if d.severity != "info"]
+    _same(tmp_path, feature, twin)

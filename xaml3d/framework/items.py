@@ -22,7 +22,13 @@ CONTAINERS = {"ItemsControl": "ContentPresenter", "ListBox": "ListBoxItem",
               "ComboBox": "ComboBoxItem"}  # fmt: skip
 _OWN_CONTAINERS = {"ListBoxItem", "ComboBoxItem"}
 # the item properties the controls' own look reads: what the generator changes is drawn
-_ITEM_PROPERTIES = ("ItemsSource", "ItemTemplate", "DisplayMemberPath", "ItemContainerStyle")
+_ITEM_PROPERTIES = (
+    "ItemsSource",
+    "ItemTemplate",
+    "DisplayMemberPath",
+    "ItemContainerStyle",
+    "AlternationCount",
+)
 
 
 def generates(c: Control) -> bool:
@@ -211,6 +217,14 @@ def containers(c: Control, sv) -> list | None:
             if own:
                 source.getparent().remove(source)
         out.append(box)
+    count = c.value("AlternationCount")
+    try:
+        count = int(count[1]) if count is not None and count[0] == "text" else 0
+    except ValueError:
+        count = 0
+    if count > 0:  # each container's ItemsControl.AlternationIndex, for its Style's triggers
+        for i, box in enumerate(out):
+            box.set("ItemsControl.AlternationIndex", str(i % count))
     if c.type != "ItemsControl":  # the selected item's container is IsSelected, as WPF sets it
         index = c.value("SelectedIndex")
         try:

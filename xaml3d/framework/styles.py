@@ -17,6 +17,8 @@ X_NS = "http://schemas.microsoft.com/winfx/2006/xaml"
 # attached properties keep their owner; others are named without it (Button.Background)
 ATTACHED_OWNERS = {"Grid", "DockPanel", "Canvas", "ScrollViewer", "TextElement", "Panel",
                    "KeyboardNavigation", "ToolTipService", "RenderOptions"}  # fmt: skip
+# attached properties whose owner also has properties of its own
+ATTACHED = {"ItemsControl.AlternationIndex"}
 
 
 def local_name(tag) -> str:
@@ -31,7 +33,8 @@ def property_name(prop: str) -> str:
     """A Setter's or Trigger's Property without its owner, unless it is attached."""
     owner, _, short = prop.strip().rpartition(".")
     owner = owner.split(":")[-1]
-    return f"{owner}.{short}" if owner in ATTACHED_OWNERS else short
+    attached = owner in ATTACHED_OWNERS or f"{owner}.{short}" in ATTACHED
+    return f"{owner}.{short}" if attached else short
 
 
 def setter_value(setter):

@@ -66,7 +66,8 @@ _NOT_VISUAL_PROPERTIES = ("Resources", "Style", "Template", "ContentTemplate", "
 # the presenter's own properties, consumed where its content is placed
 _PRESENTER_PROPS = ("Content", "ContentSource", "ContentTemplate", "ContentTemplateSelector",
                     "ContentStringFormat", "RecognizesAccessKey")  # fmt: skip
-MAX_DEPTH = 32  # templates inside templates deeper than this: a template that holds itself
+MAX_DEPTH = 16  # templates inside templates deeper than this: a template that holds itself
+MAX_INSTANCES = 1000  # instances in one document: past this, a template that multiplies itself
 
 
 # the controls' tags in any namespace: the one look a document without controls costs
@@ -86,6 +87,7 @@ class _Instantiation:
         self.done: set[int] = set()
         self.keep: list = []  # the elements whose ids are in ``done``
         self.pinned = False
+        self.count = 0  # the templates instantiated
 
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
@@ -103,16 +105,15 @@ class _Instantiation:
         c = Control(el, t, self.sv)
         found = self.template_of(c)
         if found is None:
+            self.themed_triggers(c)
             if t == "ContentControl" and c.value("ContentTemplate") is not None:
-                self.pin()
-                self.presented(c)
-                for k in list(el.iter(*self.tags)):
-                    self.control(k, depth + 1)
+                if self.room(el, depth):
+                    self.presented(c)
+                    self.below(el, depth)
             elif t in items.CONTAINERS and items.generates(c):
-                self.pin()
-                for sub in self.themed_items(c):
-                    for k in list(sub.iter(*self.tags)):
-                        self.control(k, depth + 1)
+                if self.room(el, depth):
+                    for sub in self.themed_items(c):
+                        self.below(sub, depth)
             return
         template, where = found
         if t not in SUPPORTED:
@@ -121,15 +122,27 @@ class _Instantiation:
                    "look")  # fmt: skip
             self.sv.diag("TPL001", msg, el, attr=where)
             return
-        if depth >= MAX_DEPTH:
-            msg = f"templates nested {MAX_DEPTH} deep (a template holding itself): not instantiated"
+        if self.room(el, depth):
+            instance = self.apply(c, template)
+            if instance is not None:
+                self.below(instance, depth)
+
+    def room(self, el, depth: int) -> bool:
+        """Whether another instance may be made at ``depth`` (counted, and the tree pinned
+        before its first change), else TPL004."""
+        if depth >= MAX_DEPTH or (depth and self.count >= MAX_INSTANCES):
+            msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (a template "
+                   "holding itself): not instantiated")  # fmt: skip
             self.sv.diag("TPL004", msg, el, once="depth")
-            return
+            return False
+        self.count += depth > 0  # the document's own controls are as many as it writes
         self.pin()
-        instance = self.apply(c, template)
-        if instance is not None:
-            for sub in list(instance.iter(*self.tags)):
-                self.control(sub, depth + 1)
+        return True
+
+    def below(self, el, depth: int) -> None:
+        """The controls in what was made under ``el``."""
+        for k in list(el.iter(*self.tags)):
+            self.control(k, depth + 1)
 
     def pin(self) -> None:
         if not self.pinned:
@@ -139,6 +152,7 @@ class _Instantiation:
     def boxes(self, c: Control) -> list:
         """The item containers of an items control (none, said, when its items are not known
         at load)."""
+        self.selector(c, "ItemTemplateSelector")
         out = items.containers(c, self.sv)
         style = items.container_style(c, self.sv)
         if style is not None:
@@ -151,6 +165,18 @@ class _Instantiation:
                          else None)  # fmt: skip
             return []
         return out
+
+    def themed_triggers(self, c: Control) -> None:
+        """A control in the theme's look: its Style's triggers that fire at load set its
+        values where it has none of its own (the reader draws them as local values)."""
+        if not any(True for style in c.styles for _ in triggers(style, "Style")):
+            return
+        self.style_triggers(c)
+        if c.triggered:
+            self.pin()
+            for prop, value in c.triggered.items():
+                if c.local(prop) is None:
+                    put(self.sv, c.el, prop, value)
 
     def container_style(self, box, style) -> None:
         """``ItemContainerStyle`` on a container: its Setters and the triggers it fires at load
@@ -169,6 +195,14 @@ class _Instantiation:
             if k.local(prop) is None:
                 put(self.sv, box, prop, k.triggered.get(prop, k.setters.get(prop)))
 
+    def selector(self, c: Control, prop: str) -> None:
+        """A template selector is a class of the application's code: said, not run."""
+        if c.value(prop) is not None:
+            msg = (f"{prop} is code xaml3d does not run: the items and content are shown "
+                   "without it")  # fmt: skip
+            where = prop if c.el.get(prop) is not None else None
+            self.sv.diag("TPL007", msg, c.el, attr=where, once=("TPL007", id(c.el)))
+
     def themed_items(self, c: Control) -> list:
         """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
         containers as its children; an ItemsControl's panel in the Border of its default
@@ -176,6 +210,11 @@ class _Instantiation:
         sv, el = self.sv, c.el
         boxes = self.boxes(c)
         if c.type != "ItemsControl":
+            if c.value("ItemsPanel") is not None:
+                msg = (f"the ItemsPanel of this {c.type} is not used: the theme's look stacks "
+                       "its items")  # fmt: skip
+                where = "ItemsPanel" if el.get("ItemsPanel") is not None else None
+                sv.diag("TPL008", msg, el, attr=where)
             for k in boxes:
                 el.append(k)
             return boxes
@@ -318,6 +357,7 @@ class _Instantiation:
     def present(self, c: Control, presenter) -> None:
         """A ContentPresenter filled with the control's content (or its own Content)."""
         sv = self.sv
+        self.selector(c, "ContentTemplateSelector")
         source = presenter.get("ContentSource", "Content").strip()
         own = presenter.get("Content")
         template = presenter.get("ContentTemplate")

@@ -381,7 +381,7 @@ class Resources:
         """The entry for ``key`` in scope at ``from_el`` (enclosing elements, then the
         application), silently: for lookups WPF makes itself (implicit styles), where a miss
         is not an error."""
-        node = from_el
+        node = from_el = self.ctx.original(from_el)  # a template's copy: the template's scope
         while node is not None:
             d = self.dictionary_of(node)
             hit = d.find(key) if d is not None else None
@@ -413,6 +413,9 @@ class Resources:
     ) -> etree._Element | None:
         """The entry for ``key`` seen from ``from_el``; reports RES001/RES002 when missing (at
         ``from_el``'s attribute ``attr`` when the reference is an attribute)."""
+        # a copy the framework step made of a template's element resolves in the template's
+        # scope (its Resources, its Style's, the dictionary holding it), as WPF loads it
+        from_el = self.ctx.original(from_el)
         seen = self._looked.get(id(from_el))
         if seen is None or seen[0] is not from_el:
             seen = self._looked[id(from_el)] = (from_el, set())
