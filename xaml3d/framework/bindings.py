@@ -24,13 +24,8 @@ from __future__ import annotations
 
 import copy
 
-from xaml3d.framework.binding_eval import (
-    BINDINGS,
-    Cycle,
-    Evaluator,
-    Site,
-    binding_element_extension,
-)
+from xaml3d.framework.binding_eval import Cycle, Evaluator, Site, binding_element_extension
+from xaml3d.framework.binding_props import BINDINGS
 from xaml3d.framework.binding_tree import (
     TEMPLATES,
     children,
