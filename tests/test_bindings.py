@@ -384,3 +384,18 @@ def test_through_the_reader_a_missing_source_key_is_one_res001_at_its_attribute(
     scene = load(text, text=True)
     found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code[:3] in ("RES", "BND")]
     assert found == [("RES001", 2, 14), ("BND001", 3, 14)]
+
+
+def test_a_long_chain_is_followed_to_its_limit_without_recursing_forever():
+    sliders = ['<Slider x:Name="s0" Value="5"/>'] + [
+        f'<Slider x:Name="s{i}" Value="{{Binding Value, ElementName=s{i - 1}}}"/>'
+        for i in range(1, 400)
+    ]
+    doc, s = run("\n".join(sliders))
+    assert attr(doc, "s60", "Value") == "5"
+    assert attr(doc, "s399", "Value") == "5"  # its chain was followed from s335, already done
+    assert [c for c, *_ in s.said] == []
+    sliders.reverse()  # the last first: its chain is 399 long
+    doc, s = run("\n".join(sliders))
+    assert attr(doc, "s1", "Value") == "5" and attr(doc, "s399", "Value") is None
+    assert [c for c, *_ in s.said] == ["BND001"]

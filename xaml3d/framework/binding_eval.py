@@ -43,6 +43,10 @@ from xaml3d.framework.markup_syntax import (
     parse,
 )
 
+# the longest chain of bindings followed (each one's source a binding): deeper is refused rather
+# than recursed into
+MAX_CHAIN = 64
+
 
 class Cycle(Exception):
     """A binding whose source is, through other bindings, its own target."""
@@ -77,6 +81,7 @@ class Evaluator(PropertyValues):
         self.s = services
         self.names = names
         self.sites = sites
+        self.depth = 0  # bindings being evaluated, each for the one before
 
     # ----------------------------------------------------------------- a site's value
     def site_value(self, site: Site) -> Value:
@@ -85,7 +90,11 @@ class Evaluator(PropertyValues):
             raise Cycle(site)
         if site.state == "new":
             site.state = "busy"
+            self.depth += 1
             try:
+                if self.depth > MAX_CHAIN:
+                    raise needs_code("chain", f"a chain of more than {MAX_CHAIN} bindings, each "
+                                              "the source of the next: not followed")  # fmt: skip
                 site.value = self.binding_value(site.el, site.prop, site.ext)
             except Cycle as c:
                 if c.site is not site:
@@ -95,6 +104,7 @@ class Evaluator(PropertyValues):
                 site.error = u
             finally:
                 site.state = "done"
+                self.depth -= 1
         if site.error is not None:
             raise site.error
         return site.value
