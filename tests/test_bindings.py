@@ -399,3 +399,20 @@ def test_a_long_chain_is_followed_to_its_limit_without_recursing_forever():
     doc, s = run("\n".join(sliders))
     assert attr(doc, "s1", "Value") == "5" and attr(doc, "s399", "Value") is None
     assert [c for c, *_ in s.said] == ["BND001"]
+
+
+def test_data_context_of_an_application_type_and_what_the_markup_sets_on_it():
+    body = """<Grid.DataContext><local:Person Name="Ann"/></Grid.DataContext>
+    <TextBlock x:Name="n" Text="{Binding Name}"/>
+    <TextBlock x:Name="a" Text="{Binding Age, FallbackValue=0}"/>
+    <StackPanel IsEnabled="False"><Border><CheckBox x:Name="c" IsEnabled="True"/></Border>
+    </StackPanel>
+    <TextBlock x:Name="e" Text="{Binding IsEnabled, ElementName=c}"/>
+    <TextBlock x:Name="runs"><Run Text="Hello"/> <Run>there</Run></TextBlock>
+    <TextBlock x:Name="r" Tag="{Binding Text, ElementName=runs}"/>"""
+    doc, s = run(body)
+    assert attr(doc, "n", "Text") == "Ann"
+    assert attr(doc, "a", "Text") == "0"
+    assert attr(doc, "e", "Text") == "False"  # coerced under a disabled ancestor
+    assert attr(doc, "r", "Tag") == "Hello there"
+    assert [c for c, *_ in s.said] == ["BND001"]  # Person.Age: the application's

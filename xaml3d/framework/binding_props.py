@@ -22,6 +22,7 @@ from xaml3d.framework.binding_values import (
     NULL,
     Unresolved,
     Value,
+    as_bool,
     clr_of,
     default,
     fails,
@@ -93,7 +94,16 @@ class PropertyValues:
     def prop_value(self, el, prop: str) -> Value:
         """``el``'s effective value of ``prop`` (attached: ``Grid.Row``): its own binding,
         attribute or property element, its content, its Style's setter, the inherited value,
-        WPF's default."""
+        WPF's default. IsEnabled is False under a disabled ancestor, as WPF coerces it."""
+        v = self._own_value(el, prop)
+        if prop == "IsEnabled" and as_bool(v) is not False and is_wpf(el):
+            parent = object_parent(el)
+            if parent is not None and is_wpf(parent) and as_bool(
+                    self.prop_value(parent, prop)) is False:  # fmt: skip
+                return Value("False", "Boolean")
+        return v
+
+    def _own_value(self, el, prop: str) -> Value:
         site = self.sites.get((id(el), prop))
         if site is not None:
             return self.site_value(site)
@@ -105,7 +115,9 @@ class PropertyValues:
         pe = self._prop_element(el, prop)
         if pe is not None:
             return self._prop_element_value(el, prop, pe)
-        v = self._content(el, prop)
+        v = self._inline_text(el, prop)
+        if v is None:
+            v = self._content(el, prop)
         if v is not None:
             return v
         v = self._style_value(el, prop)
@@ -183,6 +195,21 @@ class PropertyValues:
             )
         text = (el.text or "").strip()
         return Value(text, "String") if text else None
+
+    def _inline_text(self, el, prop: str) -> Value | None:
+        """A TextBlock's Text written as Runs (``<Run Text="a"/><Run>b</Run>``): their text
+        joined, as TextBlock.Text reads its inlines; None for other content."""
+        if prop != "Text" or local(el) != "TextBlock" or not is_wpf(el):
+            return None
+        kids = [k for k in children(el) if not is_property_element(k)]
+        if not kids or any(local(k) != "Run" or children(k) for k in kids):
+            return None
+        parts = [el.text or ""]
+        for k in kids:
+            parts.append(k.get("Text") if k.get("Text") is not None else k.text or "")
+            parts.append(k.tail or "")
+        text = " ".join("".join(parts).split())
+        return Value(text, "String")
 
     def _style_value(self, el, prop: str) -> Value | None:
         """The value a Setter of ``el``'s Style gives ``prop`` (explicit Style resource, else
