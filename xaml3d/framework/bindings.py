@@ -52,7 +52,7 @@ _OWNER_BASES = frozenset({"FrameworkElement", "UIElement", "Control", "Panel", "
 # WPF's types whose objects are values a property holds (Freezables), not elements of the tree
 _VALUE_OBJECTS = ("Brush", "Geometry", "Transform", "Effect", "Pen", "Drawing", "Material",
                   "Transform3D", "Camera", "DoubleCollection", "PointCollection")  # fmt: skip
-# bulk data (a mesh's, a path's): never a binding worth reading the whole text for
+# bulk data (a mesh's, a path's): a binding there needs code; the reader says so (XAML009)
 _DATA = frozenset({"Positions", "Normals", "TextureCoordinates", "TriangleIndices", "Points",
                    "Data", "Figures"})  # fmt: skip
 _BINDING_TAGS = tuple(f"}}{name}" for name in BINDINGS)
