@@ -350,13 +350,17 @@ def test_a_boolean_into_a_visibility_fails_as_in_wpf_and_templates_are_left():
     body = """<CheckBox x:Name="box" IsChecked="True"/>
     <TextBlock x:Name="v" Visibility="{Binding IsChecked, ElementName=box}"/>
     <Rectangle x:Name="f" Fill="{Binding Opacity, ElementName=box}"/>
+    <Slider x:Name="half" Value="1.5"/><Slider x:Name="two" Value="2"/>
+    <Border x:Name="r1" Grid.Row="{Binding Value, ElementName=half}"/>
+    <Border x:Name="r2" Grid.Row="{Binding Value, ElementName=two}"/>
     <Grid.Resources><Style x:Key="s" TargetType="Button"><Setter Property="Tag"
       Value="{Binding IsChecked, ElementName=box}"/></Style></Grid.Resources>"""
     doc, s = run(body)
     assert attr(doc, "v", "Visibility") is None and attr(doc, "f", "Fill") is None
+    assert attr(doc, "r1", "Grid.Row") is None and attr(doc, "r2", "Grid.Row") == "2"
     setter = doc.xpath("//*[local-name()='Setter']")[0]
     assert setter.get("Value") == "{Binding IsChecked, ElementName=box}"
-    assert [c for c, *_ in s.said] == ["BND003", "BND003"]
+    assert [c for c, *_ in s.said] == ["BND003", "BND003", "BND003"]
 
 
 def test_an_object_without_a_key_in_scope_is_copied_as_the_property_element():
