@@ -421,3 +421,16 @@ def test_data_context_of_an_application_type_and_what_the_markup_sets_on_it():
     assert attr(doc, "e", "Text") == "False"  # coerced under a disabled ancestor
     assert attr(doc, "r", "Tag") == "Hello there"
     assert [c for c, *_ in s.said] == ["BND001"]  # Person.Age: the application's
+
+
+def test_a_second_pass_changes_nothing_and_says_nothing_more():
+    body = """<Grid.Resources><BooleanToVisibilityConverter x:Key="b2v"/></Grid.Resources>
+    <CheckBox x:Name="box"/>
+    <TextBlock x:Name="t" Visibility="{Binding IsChecked, ElementName=box,
+        Converter={StaticResource b2v}}" Text="{Binding Name}"/>
+    <Rectangle><Rectangle.Fill><VisualBrush Visual="{Binding ElementName=box}"/></Rectangle.Fill>
+    </Rectangle>"""
+    doc, s = run(body)
+    before, said = etree.tostring(doc), list(s.said)
+    evaluate(doc, s)
+    assert etree.tostring(doc) == before and s.said == said

@@ -18,6 +18,10 @@ attribute text the reader then parses as if written so. Three other outcomes:
 
 A chain of bindings that comes back to itself, and a VisualBrush whose Visual contains the
 brush, are reported (BND002) and cut, never followed forever.
+
+A second ``evaluate`` over the same tree changes nothing and says nothing more, so a pass that
+instantiates templates can call it again for the bindings their instances bring (no longer
+inside a template body).
 """
 
 from __future__ import annotations
