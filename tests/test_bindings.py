@@ -198,7 +198,7 @@ def attr(doc, name: str, prop: str):
     return el.get(prop)
 
 
-def test_the_issue_example_collapses_and_shows():
+def test_a_converted_ischecked_collapses_and_shows():
     body = """<Grid.Resources><BooleanToVisibilityConverter x:Key="BoolToVis"/></Grid.Resources>
     <CheckBox x:Name="box"/>
     <TextBlock x:Name="t" Visibility="{Binding IsChecked, ElementName=box,
