@@ -434,3 +434,17 @@ def test_a_second_pass_changes_nothing_and_says_nothing_more():
     before, said = etree.tostring(doc), list(s.said)
     evaluate(doc, s)
     assert etree.tostring(doc) == before and s.said == said
+
+
+def test_value_text_for_a_trigger_condition():
+    from xaml3d.framework.bindings import value_text
+
+    doc, s = run("""<CheckBox x:Name="box" IsChecked="True"/><Slider x:Name="s" Value="3"/>
+    <Border x:Name="b"/>""")
+    b = doc.xpath("//*[@x:Name='b']", namespaces={"x": X[1:-1]})[0]
+    assert value_text(doc, s, b, "{Binding IsChecked, ElementName=box}") == "True"
+    assert value_text(doc, s, b, "{Binding Value, ElementName=s, StringFormat=F1}", "Text") == "3.0"
+    assert value_text(doc, s, b, "{Binding Name}") is None  # needs a DataContext from code
+    assert value_text(doc, s, b, "{Binding ElementName=box}") is None  # an element
+    assert value_text(doc, s, b, "{Binding Tag, ElementName=box}") == "{x:Null}"
+    assert s.said == []

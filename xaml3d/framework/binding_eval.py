@@ -90,11 +90,7 @@ class Evaluator(PropertyValues):
             raise Cycle(site)
         if site.state == "new":
             site.state = "busy"
-            self.depth += 1
             try:
-                if self.depth > MAX_CHAIN:
-                    raise needs_code("chain", f"a chain of more than {MAX_CHAIN} bindings, each "
-                                              "the source of the next: not followed")  # fmt: skip
                 site.value = self.binding_value(site.el, site.prop, site.ext)
             except Cycle as c:
                 if c.site is not site:
@@ -104,12 +100,23 @@ class Evaluator(PropertyValues):
                 site.error = u
             finally:
                 site.state = "done"
-                self.depth -= 1
         if site.error is not None:
             raise site.error
         return site.value
 
     def binding_value(self, el, prop: str, ext: Extension) -> Value:
+        """The value of binding ``ext`` set on ``el``'s property ``prop`` ("" when it is not a
+        property's: an argument, a trigger's condition)."""
+        self.depth += 1
+        try:
+            if self.depth > MAX_CHAIN:
+                raise needs_code("chain", f"a chain of more than {MAX_CHAIN} bindings, each the "
+                                          "source of the next: not followed")  # fmt: skip
+            return self._binding_value(el, prop, ext)
+        finally:
+            self.depth -= 1
+
+    def _binding_value(self, el, prop: str, ext: Extension) -> Value:
         if ext.name == "MultiBinding":
             return self._multi(el, prop, ext)
         if ext.name == "PriorityBinding":

@@ -86,6 +86,27 @@ def evaluate(root, services) -> None:
         _write(site, outcome)
 
 
+def value_text(root, services, el, text: str, prop: str = "") -> str | None:
+    """The value WPF gives the binding ``text`` (``{Binding ...}``) set on ``el`` at load, as
+    attribute text (a DataTrigger's condition compares it), or None when it needs code, fails,
+    or is an object; nothing is said. ``root``: the tree whose name scope ``ElementName``
+    names."""
+    try:
+        ext = parse(text)
+    except MarkupSyntaxError:
+        return None
+    if ext.name not in BINDINGS:
+        return None
+    ev = Evaluator(services, name_scope(root), {})
+    try:
+        v = ev.binding_value(el, prop, ext)
+        if v.null:
+            return "{x:Null}"
+        return None if v.el is not None or v.items is not None else to_target(v, prop)
+    except (Cycle, Unresolved):
+        return None
+
+
 # --------------------------------------------------------------------------- finding them
 def _collect(root, services) -> list[Site]:
     """The binding sites in document order (outside templates and resources)."""
