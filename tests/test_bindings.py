@@ -448,3 +448,17 @@ def test_value_text_for_a_trigger_condition():
     assert value_text(doc, s, b, "{Binding ElementName=box}") is None  # an element
     assert value_text(doc, s, b, "{Binding Tag, ElementName=box}") == "{x:Null}"
     assert s.said == []
+
+
+def test_an_element_form_visual_binding_becomes_the_attribute_the_reader_follows():
+    body = """<Border x:Name="panel" Width="40" Height="20"/>
+    <Rectangle><Rectangle.Fill><VisualBrush x:Name="vb"><VisualBrush.Visual>
+      <Binding ElementName="panel"/></VisualBrush.Visual></VisualBrush></Rectangle.Fill></Rectangle>
+    <Border x:Name="frame"><Border.Background><VisualBrush x:Name="own"><VisualBrush.Visual>
+      <Binding ElementName="frame"/></VisualBrush.Visual></VisualBrush></Border.Background>
+    </Border>"""
+    doc, s = run(body)
+    assert attr(doc, "vb", "Visual") == "{Binding ElementName=panel}"
+    assert attr(doc, "own", "Visual") == "{x:Null}"
+    assert doc.xpath("//*[local-name()='VisualBrush.Visual']") == []
+    assert [c for c, *_ in s.said] == ["BND002"]

@@ -9,7 +9,7 @@ of a code type that the markup does not set) raises ``Unresolved``."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from xaml3d.framework import binding_format as F
 from xaml3d.framework.binding_path import PathError, parse_path
@@ -71,7 +71,7 @@ class Site:
     state: str = "new"  # new | busy | done
     value: Value | None = None
     error: Exception | None = None
-    notes: list = field(default_factory=list)
+    cut: bool = False  # a VisualBrush drawing its own holder: its Visual becomes null
 
 
 class Evaluator(PropertyValues):

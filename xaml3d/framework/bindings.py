@@ -75,7 +75,7 @@ def evaluate(root, services) -> None:
     pinned = False
     for site in sites:
         if site.ext is None:
-            outcome = _REMOVE
+            outcome = "{x:Null}" if site.cut else _REMOVE
         else:
             outcome = _outcome(site, ev, services)
         if outcome is _KEEP:
@@ -195,7 +195,8 @@ def _outcome(site: Site, ev: Evaluator, services):
         _report(services, u, site)
         return _fallback(site, ev)
     if v.visual or (v.el is not None and v.items is not None):
-        return _KEEP  # an element of the tree: the reader follows the binding itself
+        # an element of the tree: the reader follows the binding itself, in attribute form
+        return _attribute_form(site)
     if v.null:
         return "{x:Null}" if _nullable(site.prop) else _failed(services, site, ev, "null")
     if v.el is not None:
@@ -206,6 +207,17 @@ def _outcome(site: Site, ev: Evaluator, services):
         _report(services, u, site)
         return _fallback(site, ev)
     return "{}" + text if text.startswith("{") else text
+
+
+def _attribute_form(site: Site):
+    """``<VisualBrush.Visual><Binding ElementName="x"/></VisualBrush.Visual>`` as the
+    attribute the reader follows (``Visual="{Binding ElementName=x}"``); any other binding to
+    an element stays as written."""
+    ext = site.ext
+    name = ext.named.get("ElementName") if ext is not None else None
+    if site.prop_el is None or set(ext.named) != {"ElementName"} or ext.positional:
+        return _KEEP
+    return "{Binding ElementName=" + to_text(name) + "}" if isinstance(name, str) else _KEEP
 
 
 def _element_text(site: Site, v: Value, ev: Evaluator, services):
@@ -317,7 +329,7 @@ def _cut_visual_cycles(sites: list[Site], ev: Evaluator, services) -> None:
     would otherwise follow it forever."""
     brushes: list[tuple[Site, object]] = []
     for site in sites:
-        if site.ext is None or local(site.el) != "VisualBrush" or site.key != "Visual":
+        if site.ext is None or local(site.el) != "VisualBrush" or site.prop != "Visual":
             continue
         try:
             v = ev.site_value(site)
@@ -334,8 +346,7 @@ def _cut_visual_cycles(sites: list[Site], ev: Evaluator, services) -> None:
         msg = (f"VisualBrush.Visual draws {name}, which holds this brush (a cycle): the brush "
                "draws nothing")  # fmt: skip
         _say(services, "BND002", msg, site)
-        site.el.set(site.key, "{x:Null}")
-        sites.remove(site)
+        site.ext, site.cut = None, True  # written {x:Null} with the others
         del brushes[cut]
 
 
