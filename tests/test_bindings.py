@@ -462,3 +462,22 @@ def test_an_element_form_visual_binding_becomes_the_attribute_the_reader_follows
     assert attr(doc, "own", "Visual") == "{x:Null}"
     assert doc.xpath("//*[local-name()='VisualBrush.Visual']") == []
     assert [c for c, *_ in s.said] == ["BND002"]
+
+
+def test_diagnostics_after_a_replaced_property_element_keep_their_positions():
+    from xaml3d.xaml.loader import load
+
+    text = f"""<StackPanel {NS}>
+  <Slider x:Name="s" Value="2"/>
+  <TextBlock><TextBlock.Text><Binding ElementName="s" Path="Value"/></TextBlock.Text></TextBlock>
+  <Viewport3D Width="8" Height="8">
+    <ModelVisual3D><ModelVisual3D.Content>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="0,0,0 1,0,0 0,1,0" TriangleIndices="0 1 5"/>
+      </GeometryModel3D.Geometry></GeometryModel3D>
+    </ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</StackPanel>"""
+    scene = load(text, text=True)
+    found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code.startswith("MSH")]
+    assert found and all(line == 7 and col is not None and col > 9 for _, line, col in found)
