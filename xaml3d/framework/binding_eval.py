@@ -9,11 +9,10 @@ of a code type that the markup does not set) raises ``Unresolved``."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from xaml3d.framework import binding_format as F
 from xaml3d.framework.binding_path import PathError, parse_path
-from xaml3d.framework.binding_props import BINDINGS, PropertyValues, content_property
+from xaml3d.framework.binding_props import PropertyValues, content_property
+from xaml3d.framework.binding_sites import Site
 from xaml3d.framework.binding_tree import (
     children,
     is_property_element,
@@ -38,9 +37,6 @@ from xaml3d.framework.binding_values import (
 )
 from xaml3d.framework.markup_syntax import (
     Extension,
-    is_extension,
-    literal,
-    parse,
 )
 
 # the longest chain of bindings followed (each one's source a binding): deeper is refused rather
@@ -55,23 +51,6 @@ class Cycle(Exception):
         super().__init__("binding cycle")
         self.site = site
         self.chain: list[Site] = [site]
-
-
-@dataclass(eq=False)
-class Site:
-    """A binding set on a property: ``el``'s attribute ``key`` (property ``prop``), or a
-    property element ``prop_el`` holding the Binding element ``binding_el``."""
-
-    el: object
-    prop: str
-    key: str | None = None
-    ext: Extension | None = None
-    prop_el: object = None
-    binding_el: object = None
-    state: str = "new"  # new | busy | done
-    value: Value | None = None
-    error: Exception | None = None
-    cut: bool = False  # a VisualBrush drawing its own holder: its Visual becomes null
 
 
 class Evaluator(PropertyValues):
@@ -333,45 +312,3 @@ class Evaluator(PropertyValues):
             except Unresolved as u:
                 first = first or u
         raise first or fails("PriorityBinding", "a PriorityBinding without bindings")
-
-
-def binding_element_extension(b) -> Extension:
-    """A ``<Binding .../>`` (``<MultiBinding>``, ``<PriorityBinding>``) element as the
-    Extension its attribute form would be: attributes parsed as attributes are, property
-    elements (``<Binding.Source>``...) as their single object, child bindings as
-    ``Bindings``."""
-    ext = Extension(local(b))
-    for key, raw in b.attrib.items():
-        if key.startswith("{"):
-            continue
-        ext.named[key] = parse(raw) if is_extension(raw) else literal(raw)
-    nested = []
-    for k in children(b):
-        name = local(k)
-        if is_property_element(k):
-            prop = name.rpartition(".")[2]
-            kids = children(k)
-            if len(kids) == 1:
-                ext.named[prop] = _object_argument(kids[0])
-            elif not kids:
-                ext.named[prop] = (k.text or "").strip()
-        elif name in BINDINGS:
-            nested.append(binding_element_extension(k))
-    if nested:
-        ext.named["Bindings"] = nested
-    return ext
-
-
-def _object_argument(el):
-    """An object written as an argument's property element: an extension element as its
-    Extension (``<RelativeSource Mode="Self"/>``, ``<StaticResource ResourceKey="k"/>``),
-    anything else as the element itself."""
-    name = local(el)
-    if is_wpf(el) and name == "RelativeSource":
-        ext = Extension("RelativeSource")
-        for key, raw in el.attrib.items():
-            ext.named[key] = parse(raw) if is_extension(raw) else literal(raw)
-        return ext
-    if name in BINDINGS:
-        return binding_element_extension(el)
-    return el

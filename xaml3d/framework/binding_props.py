@@ -7,6 +7,7 @@ primitives (``sys:Double``...) among them; a binding set on the property evaluat
 from __future__ import annotations
 
 from xaml3d.framework.binding_tree import (
+    BINDINGS,
     children,
     is_property_element,
     is_wpf,
@@ -37,7 +38,6 @@ from xaml3d.framework.markup_syntax import (
     parse,
 )
 
-BINDINGS = ("Binding", "MultiBinding", "PriorityBinding")
 _STYLE_DEPTH = 16
 
 
