@@ -481,3 +481,29 @@ def test_diagnostics_after_a_replaced_property_element_keep_their_positions():
     scene = load(text, text=True)
     found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code.startswith("MSH")]
     assert found and all(line == 7 and col is not None and col > 9 for _, line, col in found)
+
+
+@pytest.mark.parametrize(
+    "raw", ["{", "{ ", "{}", "{,}", "{Binding", "{Binding X=}", "{ Binding ,}", "{Binding Pth=A}"]
+)
+def test_odd_brace_values_never_raise(raw):
+    doc = etree.Element("{http://schemas.microsoft.com/winfx/2006/xaml/presentation}Grid")
+    doc.set("Tag", raw)
+    s = FakeServices()
+    evaluate(doc, s)
+    assert [c for c, *_ in s.said] in ([], ["XAML016"], ["XAML024"])
+    assert doc.get("Tag") in (raw, None)
+
+
+def test_a_binding_member_wpf_does_not_have_is_refused_with_a_suggestion():
+    doc, s = run("""<TextBlock x:Name="t" Text="{Binding Value, ElemntName=s}"/>
+    <TextBlock x:Name="u"><TextBlock.Text><Binding Pth="Value"/></TextBlock.Text></TextBlock>""")
+    assert attr(doc, "t", "Text") is None and attr(doc, "u", "Text") is None
+    assert [(c, m) for c, m, *_ in s.said] == [
+        (
+            "XAML024",
+            "Binding has no property 'ElemntName' (did you mean ElementName?): WPF "
+            "refuses the file",
+        ),
+        ("XAML024", "Binding has no property 'Pth' (did you mean Path?): WPF refuses the file"),
+    ]

@@ -32,6 +32,19 @@ _OWNER_BASES = frozenset({"FrameworkElement", "UIElement", "Control", "Panel", "
 _DATA = frozenset({"Positions", "Normals", "TextureCoordinates", "TriangleIndices", "Points",
                    "Data", "Figures"})  # fmt: skip
 _BINDING_TAGS = tuple(f"}}{name}" for name in BINDINGS)
+# the members of WPF's binding classes (BindingBase and its three kinds): a name WPF's loader
+# cannot resolve refuses the file
+_BASE_MEMBERS = ("FallbackValue TargetNullValue StringFormat BindingGroupName Delay "
+                 "Converter ConverterParameter ConverterCulture Mode UpdateSourceTrigger "
+                 "NotifyOnSourceUpdated NotifyOnTargetUpdated NotifyOnValidationError "
+                 "ValidatesOnDataErrors ValidatesOnExceptions ValidatesOnNotifyDataErrors "
+                 "ValidationRules UpdateSourceExceptionFilter").split()  # fmt: skip
+MEMBERS = {
+    "Binding": frozenset(_BASE_MEMBERS + "Path ElementName RelativeSource Source XPath "
+                         "BindsDirectlyToSource IsAsync AsyncState".split()),
+    "MultiBinding": frozenset(_BASE_MEMBERS + ["Bindings"]),
+    "PriorityBinding": frozenset(_BASE_MEMBERS + ["Bindings"]),
+}  # fmt: skip
 
 
 @dataclass(eq=False)
@@ -89,7 +102,8 @@ def _attribute_sites(el, services) -> list[Site]:
         raw = el.get(key)
         if not is_extension(raw):
             continue
-        head = raw.lstrip()[1:].lstrip().split(None, 1)[0].split(",")[0].split("}")[0]
+        words = raw.lstrip()[1:].split(None, 1)
+        head = words[0].split(",")[0].split("}")[0] if words else ""
         if head.split(":")[-1] not in BINDINGS:
             continue
         try:
@@ -99,8 +113,28 @@ def _attribute_sites(el, services) -> list[Site]:
             services.diag("XAML016", msg, el, attr=key)
             sites.append(Site(el, key, key=key))
             continue
+        if _unknown_member(ext, services, el, key):
+            sites.append(Site(el, key, key=key))
+            continue
         sites.append(Site(el, key, key=key, ext=ext))
     return sites
+
+
+def _unknown_member(ext: Extension, services, el, attr: str | None) -> bool:
+    """Report (XAML024) an argument the binding's class does not have; True if one is found."""
+    known = MEMBERS.get(ext.name)
+    if known is None:
+        return False
+    for name in ext.named:
+        if name not in known:
+            import difflib  # only for a name that is wrong
+
+            near = difflib.get_close_matches(name, sorted(known), 1, 0.7)
+            hint = f" (did you mean {near[0]}?)" if near else ""
+            msg = f"{ext.name} has no property {name!r}{hint}: WPF refuses the file"
+            services.diag("XAML024", msg, el, attr=attr)
+            return True
+    return False
 
 
 def _element_site(pe, b, services, sites: list[Site]) -> None:
@@ -117,6 +151,9 @@ def _element_site(pe, b, services, sites: list[Site]) -> None:
     except MarkupSyntaxError as exc:
         msg = f"<{local(b)}> of {local(el)}.{prop}: malformed markup extension ({exc})"
         services.diag("XAML016", msg, b)
+        sites.append(Site(el, prop, prop_el=pe, binding_el=b))
+        return
+    if _unknown_member(ext, services, b, None):
         sites.append(Site(el, prop, prop_el=pe, binding_el=b))
         return
     sites.append(Site(el, prop, prop_el=pe, binding_el=b, ext=ext))
