@@ -137,8 +137,9 @@ class PropertyValues:
                 f"code's ({local(el)} is a type of the application)")  # fmt: skip
         d = default(local(el), prop) or self._base_default(el, prop)
         if d is None:
-            raise fails("path", f"{local(el)}.{prop}: not set in the markup and its default is "
-                                "not known to xaml3d")  # fmt: skip
+            # xaml3d's limit, not WPF's failure: said once, as what needs code is
+            raise needs_code("default", f"{local(el)}.{prop} is not set in the markup and xaml3d "
+                                        "does not know its default")  # fmt: skip
         return d
 
     def _base_default(self, el, prop: str) -> Value | None:
