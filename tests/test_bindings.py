@@ -198,7 +198,7 @@ def attr(doc, name: str, prop: str):
     return el.get(prop)
 
 
-def test_the_issue_example_collapses_and_shows():
+def test_a_converted_ischecked_collapses_and_shows():
     body = """<Grid.Resources><BooleanToVisibilityConverter x:Key="BoolToVis"/></Grid.Resources>
     <CheckBox x:Name="box"/>
     <TextBlock x:Name="t" Visibility="{Binding IsChecked, ElementName=box,
@@ -349,13 +349,18 @@ def test_element_values_stay_for_the_reader_and_cycles_are_cut():
 def test_a_boolean_into_a_visibility_fails_as_in_wpf_and_templates_are_left():
     body = """<CheckBox x:Name="box" IsChecked="True"/>
     <TextBlock x:Name="v" Visibility="{Binding IsChecked, ElementName=box}"/>
+    <Rectangle x:Name="f" Fill="{Binding Opacity, ElementName=box}"/>
+    <Slider x:Name="half" Value="1.5"/><Slider x:Name="two" Value="2"/>
+    <Border x:Name="r1" Grid.Row="{Binding Value, ElementName=half}"/>
+    <Border x:Name="r2" Grid.Row="{Binding Value, ElementName=two}"/>
     <Grid.Resources><Style x:Key="s" TargetType="Button"><Setter Property="Tag"
       Value="{Binding IsChecked, ElementName=box}"/></Style></Grid.Resources>"""
     doc, s = run(body)
-    assert attr(doc, "v", "Visibility") is None
+    assert attr(doc, "v", "Visibility") is None and attr(doc, "f", "Fill") is None
+    assert attr(doc, "r1", "Grid.Row") is None and attr(doc, "r2", "Grid.Row") == "2"
     setter = doc.xpath("//*[local-name()='Setter']")[0]
     assert setter.get("Value") == "{Binding IsChecked, ElementName=box}"
-    assert [c for c, *_ in s.said] == ["BND003"]
+    assert [c for c, *_ in s.said] == ["BND003", "BND003", "BND003"]
 
 
 def test_an_object_without_a_key_in_scope_is_copied_as_the_property_element():
@@ -384,3 +389,121 @@ def test_through_the_reader_a_missing_source_key_is_one_res001_at_its_attribute(
     scene = load(text, text=True)
     found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code[:3] in ("RES", "BND")]
     assert found == [("RES001", 2, 14), ("BND001", 3, 14)]
+
+
+def test_a_long_chain_is_followed_to_its_limit_without_recursing_forever():
+    sliders = ['<Slider x:Name="s0" Value="5"/>'] + [
+        f'<Slider x:Name="s{i}" Value="{{Binding Value, ElementName=s{i - 1}}}"/>'
+        for i in range(1, 400)
+    ]
+    doc, s = run("\n".join(sliders))
+    assert attr(doc, "s60", "Value") == "5"
+    assert attr(doc, "s399", "Value") == "5"  # its chain was followed from s335, already done
+    assert [c for c, *_ in s.said] == []
+    sliders.reverse()  # the last first: its chain is 399 long
+    doc, s = run("\n".join(sliders))
+    assert attr(doc, "s1", "Value") == "5" and attr(doc, "s399", "Value") is None
+    assert [c for c, *_ in s.said] == ["BND001"]
+
+
+def test_data_context_of_an_application_type_and_what_the_markup_sets_on_it():
+    body = """<Grid.DataContext><local:Person Name="Ann"/></Grid.DataContext>
+    <TextBlock x:Name="n" Text="{Binding Name}"/>
+    <TextBlock x:Name="a" Text="{Binding Age, FallbackValue=0}"/>
+    <StackPanel IsEnabled="False"><Border><CheckBox x:Name="c" IsEnabled="True"/></Border>
+    </StackPanel>
+    <TextBlock x:Name="e" Text="{Binding IsEnabled, ElementName=c}"/>
+    <TextBlock x:Name="runs"><Run Text="Hello"/> <Run>there</Run></TextBlock>
+    <TextBlock x:Name="r" Tag="{Binding Text, ElementName=runs}"/>"""
+    doc, s = run(body)
+    assert attr(doc, "n", "Text") == "Ann"
+    assert attr(doc, "a", "Text") == "0"
+    assert attr(doc, "e", "Text") == "False"  # coerced under a disabled ancestor
+    assert attr(doc, "r", "Tag") == "Hello there"
+    assert [c for c, *_ in s.said] == ["BND001"]  # Person.Age: the application's
+
+
+def test_a_second_pass_changes_nothing_and_says_nothing_more():
+    body = """<Grid.Resources><BooleanToVisibilityConverter x:Key="b2v"/></Grid.Resources>
+    <CheckBox x:Name="box"/>
+    <TextBlock x:Name="t" Visibility="{Binding IsChecked, ElementName=box,
+        Converter={StaticResource b2v}}" Text="{Binding Name}"/>
+    <Rectangle><Rectangle.Fill><VisualBrush Visual="{Binding ElementName=box}"/></Rectangle.Fill>
+    </Rectangle>"""
+    doc, s = run(body)
+    before, said = etree.tostring(doc), list(s.said)
+    evaluate(doc, s)
+    assert etree.tostring(doc) == before and s.said == said
+
+
+def test_value_text_for_a_trigger_condition():
+    from xaml3d.framework.bindings import value_text
+
+    doc, s = run("""<CheckBox x:Name="box" IsChecked="True"/><Slider x:Name="s" Value="3"/>
+    <Border x:Name="b"/>""")
+    b = doc.xpath("//*[@x:Name='b']", namespaces={"x": X[1:-1]})[0]
+    assert value_text(doc, s, b, "{Binding IsChecked, ElementName=box}") == "True"
+    assert value_text(doc, s, b, "{Binding Value, ElementName=s, StringFormat=F1}", "Text") == "3.0"
+    assert value_text(doc, s, b, "{Binding Name}") is None  # needs a DataContext from code
+    assert value_text(doc, s, b, "{Binding ElementName=box}") is None  # an element
+    assert value_text(doc, s, b, "{Binding Tag, ElementName=box}") == "{x:Null}"
+    assert s.said == []
+
+
+def test_an_element_form_visual_binding_becomes_the_attribute_the_reader_follows():
+    body = """<Border x:Name="panel" Width="40" Height="20"/>
+    <Rectangle><Rectangle.Fill><VisualBrush x:Name="vb"><VisualBrush.Visual>
+      <Binding ElementName="panel"/></VisualBrush.Visual></VisualBrush></Rectangle.Fill></Rectangle>
+    <Border x:Name="frame"><Border.Background><VisualBrush x:Name="own"><VisualBrush.Visual>
+      <Binding ElementName="frame"/></VisualBrush.Visual></VisualBrush></Border.Background>
+    </Border>"""
+    doc, s = run(body)
+    assert attr(doc, "vb", "Visual") == "{Binding ElementName=panel}"
+    assert attr(doc, "own", "Visual") == "{x:Null}"
+    assert doc.xpath("//*[local-name()='VisualBrush.Visual']") == []
+    assert [c for c, *_ in s.said] == ["BND002"]
+
+
+def test_diagnostics_after_a_replaced_property_element_keep_their_positions():
+    from xaml3d.xaml.loader import load
+
+    text = f"""<StackPanel {NS}>
+  <Slider x:Name="s" Value="2"/>
+  <TextBlock><TextBlock.Text><Binding ElementName="s" Path="Value"/></TextBlock.Text></TextBlock>
+  <Viewport3D Width="8" Height="8">
+    <ModelVisual3D><ModelVisual3D.Content>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="0,0,0 1,0,0 0,1,0" TriangleIndices="0 1 5"/>
+      </GeometryModel3D.Geometry></GeometryModel3D>
+    </ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</StackPanel>"""
+    scene = load(text, text=True)
+    found = [(d.code, d.line, d.column) for d in scene.diagnostics if d.code.startswith("MSH")]
+    assert found and all(line == 7 and col is not None and col > 9 for _, line, col in found)
+
+
+@pytest.mark.parametrize(
+    "raw", ["{", "{ ", "{}", "{,}", "{Binding", "{Binding X=}", "{ Binding ,}", "{Binding Pth=A}"]
+)
+def test_odd_brace_values_never_raise(raw):
+    doc = etree.Element("{http://schemas.microsoft.com/winfx/2006/xaml/presentation}Grid")
+    doc.set("Tag", raw)
+    s = FakeServices()
+    evaluate(doc, s)
+    assert [c for c, *_ in s.said] in ([], ["XAML016"], ["XAML024"])
+    assert doc.get("Tag") in (raw, None)
+
+
+def test_a_binding_member_wpf_does_not_have_is_refused_with_a_suggestion():
+    doc, s = run("""<TextBlock x:Name="t" Text="{Binding Value, ElemntName=s}"/>
+    <TextBlock x:Name="u"><TextBlock.Text><Binding Pth="Value"/></TextBlock.Text></TextBlock>""")
+    assert attr(doc, "t", "Text") is None and attr(doc, "u", "Text") is None
+    assert [(c, m) for c, m, *_ in s.said] == [
+        (
+            "XAML024",
+            "Binding has no property 'ElemntName' (did you mean ElementName?): WPF "
+            "refuses the file",
+        ),
+        ("XAML024", "Binding has no property 'Pth' (did you mean Path?): WPF refuses the file"),
+    ]

@@ -1,17 +1,18 @@
 """One binding's value as WPF computes it at load: its source (ElementName, RelativeSource
 Self / FindAncestor, Source={StaticResource}, x:Reference, or the DataContext set in markup
-and inherited), its path through properties, attached properties and indexers, the source's
-effective value (local value, Style setter, inherited value, WPF's default), then
-BooleanToVisibilityConverter, TargetNullValue and StringFormat. What cannot be known without
+and inherited), its path through properties, attached properties and indexers (each step the
+source's effective value: binding_props.py), then BooleanToVisibilityConverter,
+TargetNullValue and StringFormat; MultiBinding with a StringFormat, PriorityBinding, and the
+element form's arguments. What cannot be known without
 code (a DataContext set by code-behind, an application's converter class, x:Static, a property
 of a code type that the markup does not set) raises ``Unresolved``."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from xaml3d.framework import binding_format as F
 from xaml3d.framework.binding_path import PathError, parse_path
+from xaml3d.framework.binding_props import PropertyValues, content_property
+from xaml3d.framework.binding_sites import Site
 from xaml3d.framework.binding_tree import (
     children,
     is_property_element,
@@ -24,15 +25,11 @@ from xaml3d.framework.binding_tree import (
     type_matches,
 )
 from xaml3d.framework.binding_values import (
-    INHERITED,
-    LAYOUT_RESULTS,
-    NULL,
     Unresolved,
     Value,
     as_bool,
     as_number,
     clr_of,
-    default,
     display_text,
     fails,
     needs_code,
@@ -40,14 +37,11 @@ from xaml3d.framework.binding_values import (
 )
 from xaml3d.framework.markup_syntax import (
     Extension,
-    MarkupSyntaxError,
-    is_extension,
-    literal,
-    parse,
 )
 
-BINDINGS = ("Binding", "MultiBinding", "PriorityBinding")
-_STYLE_DEPTH = 16
+# the longest chain of bindings followed (each one's source a binding): deeper is refused rather
+# than recursed into
+MAX_CHAIN = 64
 
 
 class Cycle(Exception):
@@ -59,30 +53,14 @@ class Cycle(Exception):
         self.chain: list[Site] = [site]
 
 
-@dataclass(eq=False)
-class Site:
-    """A binding set on a property: ``el``'s attribute ``key`` (property ``prop``), or a
-    property element ``prop_el`` holding the Binding element ``binding_el``."""
-
-    el: object
-    prop: str
-    key: str | None = None
-    ext: Extension | None = None
-    prop_el: object = None
-    binding_el: object = None
-    state: str = "new"  # new | busy | done
-    value: Value | None = None
-    error: Exception | None = None
-    notes: list = field(default_factory=list)
-
-
-class Evaluator:
+class Evaluator(PropertyValues):
     """Binding values over one document (``sites``: (id(element), property) -> Site)."""
 
     def __init__(self, services, names: dict, sites: dict) -> None:
         self.s = services
         self.names = names
         self.sites = sites
+        self.depth = 0  # bindings being evaluated, each for the one before
 
     # ----------------------------------------------------------------- a site's value
     def site_value(self, site: Site) -> Value:
@@ -106,6 +84,18 @@ class Evaluator:
         return site.value
 
     def binding_value(self, el, prop: str, ext: Extension) -> Value:
+        """The value of binding ``ext`` set on ``el``'s property ``prop`` ("" when it is not a
+        property's: an argument, a trigger's condition)."""
+        self.depth += 1
+        try:
+            if self.depth > MAX_CHAIN:
+                raise needs_code("chain", f"a chain of more than {MAX_CHAIN} bindings, each the "
+                                          "source of the next: not followed")  # fmt: skip
+            return self._binding_value(el, prop, ext)
+        finally:
+            self.depth -= 1
+
+    def _binding_value(self, el, prop: str, ext: Extension) -> Value:
         if ext.name == "MultiBinding":
             return self._multi(el, prop, ext)
         if ext.name == "PriorityBinding":
@@ -218,189 +208,6 @@ class Evaluator:
             return self._extension_value(el, arg, attr or None)
         return self.element_value(arg)
 
-    def _extension_value(self, el, ext: Extension, key_attr: str | None) -> Value:
-        n = ext.name
-        if n in ("StaticResource", "DynamicResource", "StaticResourceExtension"):
-            key = ext.arg("ResourceKey")
-            if not isinstance(key, str):
-                raise fails("resource", "a resource key that is not a string")
-            entry = self.s.lookup(key.strip(), el, key_attr)
-            if entry is None:
-                raise Unresolved(None, "resource", f"resource {key!r} not found")  # RES001 said
-            return self.element_value(entry, key=key.strip(), at=el)
-        if n in ("Null", "NullExtension"):
-            return NULL
-        if n in ("Reference", "ReferenceExtension"):
-            name = ext.arg("Name")
-            target = self.names.get(name.strip()) if isinstance(name, str) else None
-            if target is None:
-                raise fails("x:Reference", f"no element named {name!r}")
-            return Value(el=target, visual=True)
-        if n in ("Type", "TypeExtension"):
-            return Value(type_argument(ext) or "", "Type")
-        if n in BINDINGS:
-            return self.binding_value(el, "", ext)
-        if n in ("Static", "StaticExtension"):
-            raise needs_code("x:Static", "{x:Static} reads a CLR member xaml3d does not run")
-        raise needs_code(f"{{{n}}}", f"{{{n}}} is not evaluated")
-
-    def element_value(self, el, key: str | None = None, at=None) -> Value:
-        """An object element as a value: a primitive's text, else the element."""
-        p = primitive(el)
-        if p is not None:
-            return p
-        ns, name = qname(el)
-        if is_wpf(el) and name in ("StaticResource", "DynamicResource"):
-            k = el.get("ResourceKey")
-            if k is None:
-                raise fails("resource", f"<{name}> without ResourceKey")
-            return self._extension_value(el, Extension(name, positional=[k]), "ResourceKey")
-        if name == "Null" and ns == "http://schemas.microsoft.com/winfx/2006/xaml":
-            return NULL
-        return Value(el=el, key=key, at=at)
-
-    # ----------------------------------------------------------------- a property's value
-    def prop_value(self, el, prop: str) -> Value:
-        """``el``'s effective value of ``prop`` (attached: ``Grid.Row``): its own binding,
-        attribute or property element, its content, its Style's setter, the inherited value,
-        WPF's default."""
-        site = self.sites.get((id(el), prop))
-        if site is not None:
-            return self.site_value(site)
-        raw = el.get(prop)
-        if raw is None and "." in prop and local(el) == prop.partition(".")[0]:
-            raw = el.get(prop.partition(".")[2])  # Grid.Row on a Grid written as Row
-        if raw is not None:
-            return self.text_value(el, prop, raw)
-        pe = self._prop_element(el, prop)
-        if pe is not None:
-            return self._prop_element_value(el, prop, pe)
-        v = self._content(el, prop)
-        if v is not None:
-            return v
-        v = self._style_value(el, prop)
-        if v is not None:
-            return v
-        if prop in INHERITED:
-            parent = object_parent(el)
-            if parent is not None:
-                return self.prop_value(parent, prop)
-        if prop in LAYOUT_RESULTS:
-            raise needs_code(
-                "layout result", f"{prop} is a result of layout: a binding to it is updated "
-                "after layout, which a load does not run")  # fmt: skip
-        if not is_wpf(el):
-            raise needs_code(
-                "code type", f"{local(el)}.{prop} is not set in the markup: its value is the "
-                f"code's ({local(el)} is a type of the application)")  # fmt: skip
-        d = default(local(el), prop) or self._base_default(el, prop)
-        if d is None:
-            raise fails("path", f"{local(el)}.{prop}: not set in the markup and its default is "
-                                "not known to xaml3d")  # fmt: skip
-        return d
-
-    def _base_default(self, el, prop: str) -> Value | None:
-        for base in ("ContentControl", "Control", "RangeBase", "Panel"):
-            if type_matches(el, base):
-                hit = default(base, prop)
-                if hit is not None:
-                    return hit
-        return None
-
-    def text_value(self, el, prop: str, raw: str) -> Value:
-        if not is_extension(raw):
-            return Value(literal(raw), clr_of(prop))
-        try:
-            ext = parse(raw)
-        except MarkupSyntaxError as exc:
-            raise fails("syntax", str(exc)) from None
-        return self._extension_value(el, ext, prop)
-
-    def _prop_element(self, el, prop: str):
-        want = prop if "." in prop else None
-        for k in children(el):
-            name = local(k)
-            if not is_property_element(k):
-                continue
-            owner, _, short = name.rpartition(".")
-            if (want is not None and name == want) or (want is None and short == prop and (
-                    owner == local(el) or is_wpf(k) and owner in _OWNER_BASES)):  # fmt: skip
-                return k
-        return None
-
-    def _prop_element_value(self, el, prop: str, pe) -> Value:
-        kids = children(pe)
-        if not kids:
-            return Value((pe.text or "").strip(), clr_of(prop))
-        if len(kids) == 1 and not local(kids[0]).endswith("Collection"):
-            return self.element_value(kids[0])
-        if len(kids) == 1:
-            kids = children(kids[0])
-        return Value(items=tuple(kids), el=pe)
-
-    def _content(self, el, prop: str) -> Value | None:
-        """The content property's value written as the element's content."""
-        if not is_wpf(el) or prop != _content_property(el):
-            return None
-        kids = [k for k in children(el) if not is_property_element(k)]
-        if prop in ("Children", "Items", "Inlines"):
-            return Value(items=tuple(kids), el=el)
-        if kids:
-            return (
-                self.element_value(kids[0])
-                if prop != "Content"
-                else Value(el=kids[0], visual=is_wpf(kids[0]) and primitive(kids[0]) is None)
-            )
-        text = (el.text or "").strip()
-        return Value(text, "String") if text else None
-
-    def _style_value(self, el, prop: str) -> Value | None:
-        """The value a Setter of ``el``'s Style gives ``prop`` (explicit Style resource, else
-        the implicit Style of its type; BasedOn followed)."""
-        if not is_wpf(el):
-            return None
-        ref = el.get("Style")
-        style = None
-        if ref is not None:
-            if not is_extension(ref):
-                return None
-            try:
-                ext = parse(ref)
-            except MarkupSyntaxError:
-                return None
-            key = ext.arg("ResourceKey")
-            if ext.name not in ("StaticResource", "DynamicResource") or not isinstance(key, str):
-                return None
-            style = self.s.find(key.strip(), el)
-        else:
-            style = self.s.find("{x:Type " + local(el) + "}", el)
-        depth = 0
-        while style is not None and local(style) == "Style" and depth < _STYLE_DEPTH:
-            for setter in _setters(style):
-                if setter.get("TargetName") or (setter.get("Property") or "").split(":")[-1] \
-                        not in (prop, f"{local(el)}.{prop}"):  # fmt: skip
-                    continue
-                raw = setter.get("Value")
-                if raw is not None:
-                    return self.text_value(setter, prop, raw)
-                for pe in children(setter):
-                    if local(pe) == "Setter.Value":
-                        return self._prop_element_value(setter, prop, pe)
-            based = style.get("BasedOn")
-            style = None
-            if based and is_extension(based):
-                try:
-                    b = parse(based)
-                except MarkupSyntaxError:
-                    break
-                key = b.arg("ResourceKey") if b.name != "Type" else None
-                if isinstance(key, str):
-                    style = self.s.find(key.strip(), el)
-                elif b.name == "Type":
-                    style = self.s.find("{x:Type " + (type_argument(b) or "") + "}", el)
-            depth += 1
-        return None
-
     # ----------------------------------------------------------------- path steps
     def _step(self, v: Value, step) -> Value:
         if v.null:
@@ -445,7 +252,7 @@ class Evaluator:
         if v.el is not None and (local(v.el) == "Array" or local(v.el).endswith("Collection")):
             return children(v.el)
         if v.el is not None and is_wpf(v.el):
-            prop = _content_property(v.el)
+            prop = content_property(v.el)
             if prop in ("Children", "Items"):
                 return [k for k in children(v.el) if not is_property_element(k)]
         return None
@@ -505,74 +312,3 @@ class Evaluator:
             except Unresolved as u:
                 first = first or u
         raise first or fails("PriorityBinding", "a PriorityBinding without bindings")
-
-
-# the classes whose property elements name a property by its owner (<FrameworkElement.Width>)
-_OWNER_BASES = frozenset({"FrameworkElement", "UIElement", "Control", "Panel",
-                          "ContentControl", "ItemsControl", "TextElement", "Shape"})  # fmt: skip
-
-
-def _content_property(el) -> str | None:
-    name = local(el)
-    if name in ("TextBlock", "Run", "TextBox", "AccessText"):
-        return "Text"
-    if type_matches(el, "ContentControl"):
-        return "Content"
-    if type_matches(el, "Panel"):
-        return "Children"
-    if type_matches(el, "ItemsControl"):
-        return "Items"
-    if type_matches(el, "Decorator"):
-        return "Child"
-    return None
-
-
-def _setters(style):
-    for child in children(style):
-        name = local(child)
-        if name == "Setter":
-            yield child
-        elif name == "Style.Setters":
-            yield from (k for k in children(child) if local(k) == "Setter")
-
-
-def binding_element_extension(b) -> Extension:
-    """A ``<Binding .../>`` (``<MultiBinding>``, ``<PriorityBinding>``) element as the
-    Extension its attribute form would be: attributes parsed as attributes are, property
-    elements (``<Binding.Source>``...) as their single object, child bindings as
-    ``Bindings``."""
-    ext = Extension(local(b))
-    for key, raw in b.attrib.items():
-        if key.startswith("{"):
-            continue
-        ext.named[key] = parse(raw) if is_extension(raw) else literal(raw)
-    nested = []
-    for k in children(b):
-        name = local(k)
-        if is_property_element(k):
-            prop = name.rpartition(".")[2]
-            kids = children(k)
-            if len(kids) == 1:
-                ext.named[prop] = _object_argument(kids[0])
-            elif not kids:
-                ext.named[prop] = (k.text or "").strip()
-        elif name in BINDINGS:
-            nested.append(binding_element_extension(k))
-    if nested:
-        ext.named["Bindings"] = nested
-    return ext
-
-
-def _object_argument(el):
-    """An object written as an argument's property element: an extension element as its
-    Extension (``<RelativeSource Mode="Self"/>``, ``<StaticResource ResourceKey="k"/>``),
-    anything else as the element itself."""
-    name = local(el)
-    if is_wpf(el) and name == "RelativeSource":
-        ext = Extension("RelativeSource")
-        for key, raw in el.attrib.items():
-            ext.named[key] = parse(raw) if is_extension(raw) else literal(raw)
-        return ext
-    if name in BINDINGS:
-        return binding_element_extension(el)
-    return el

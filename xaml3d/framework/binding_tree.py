@@ -12,6 +12,8 @@ PRESENTATION = frozenset(
     }
 )
 XAML = "http://schemas.microsoft.com/winfx/2006/xaml"
+# the markup extensions of a binding (their element forms too)
+BINDINGS = ("Binding", "MultiBinding", "PriorityBinding")
 # the bodies instantiated later, each with its own name scope and its templated parent: the
 # templates pass evaluates the bindings in them
 TEMPLATES = frozenset(

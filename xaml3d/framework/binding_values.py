@@ -223,9 +223,17 @@ def to_target(v: Value, prop: str) -> str:
         raise fails("conversion", f"{text!r} is not a {prop.rpartition('.')[2]} "
                                   f"({', '.join(allowed)})")  # fmt: skip
     kind = clr_of(prop)
+    if kind == "Brush" and v.clr not in ("Brush", "String", "Object"):
+        # no default conversion makes a Brush of a number or a Color (WPF's binding fails)
+        raise fails("conversion", f"a {v.clr} ({text!r}) is not a Brush")
     if kind == "Boolean" and as_bool(Value(text)) is None:
         raise fails("conversion", f"{text!r} is not a Boolean")
-    if kind in ("Double", "Int32") and v.clr not in ("Double", "Int32"):
+    if kind == "Int32":
+        try:
+            int(text.strip())
+        except ValueError:
+            raise fails("conversion", f"{text!r} is not an integer") from None
+    elif kind == "Double" and v.clr not in ("Double", "Int32"):
         try:
             float(text)
         except ValueError:
