@@ -85,7 +85,7 @@ def drawing(r, el):
     if t == "DrawingGroup":
         from xaml3d.xaml.brushes_reader import transform2d, transform2d_text
 
-        kids = list(p.items("Children")) or [k for k in p.content if isinstance(k.tag, str)]
+        kids = p.children("Children")
         built = [r.build_node(k, lambda e: drawing(r, e), None) for k in kids]
         return DrawingGroup(
             children=tuple(b for b in built if b is not None),
