@@ -19,6 +19,7 @@ import numpy as np
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene import tracks as K
 from xaml3d.scene import transforms as T
+from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     DiffuseMaterial,
     EmissiveMaterial,
@@ -228,7 +229,17 @@ def _bitmap_uri(r, el) -> tuple[str | None, object, str | None]:
     return uri, el, "UriSource"
 
 
-def _image_brush(r, p, nodes: list) -> ImageBrush:
+def _image_brush(r, p, nodes: list) -> ImageBrush | DrawingBrush:
+    from xaml3d.xaml.image_element import drawing_image_element
+
+    held = drawing_image_element(r, p, "ImageSource")
+    if held is not None:
+        # a DrawingImage: its size is its Drawing's bounds, which a relative Viewbox then
+        # refers to, so the brush is its Drawing's DrawingBrush
+        from xaml3d.xaml.drawings_reader import drawing
+
+        content = r.build_node(held, lambda e: drawing(r, e), None)
+        return DrawingBrush(drawing=content, **tile_properties(r, p), **_common(r, p, nodes))
     source, where, attr = image_source(r, p, "ImageSource")
     path = image = None
     if source:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 
 from xaml3d.layout.text import line_height, text_width
-from xaml3d.xaml import templates
+from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
@@ -55,6 +55,8 @@ def content_size(reader, n, v, el, font: float):
         return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
     if local in SHAPES:  # measured and arranged as WPF's Shape (shapes_reader)
         return attach_layout(reader.r, v, n, local)
+    if local == "Image":  # a DrawingImage: its Drawing's size, stretched (image_element)
+        return image_element.attach_layout(reader.r, v, n, el)
     if local == "Slider":
         # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
         return (18.0, 0.0) if vertical(v) else (0.0, 18.0)

@@ -50,6 +50,7 @@ from xaml3d.xaml.controls_reader import (
     _scroll_bar,
     _slider,
 )
+from xaml3d.xaml.image_element import ImageLayout
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
@@ -223,6 +224,11 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         return
     if local == "ScrollBar":
         _scroll_bar(r, v, w, h, out)
+        return
+    if local == "Image" and isinstance(n.state, ImageLayout):  # a DrawingImage
+        d = n.state.drawn(w, h)
+        if d is not None:
+            out.append(d)
         return
     if local == "Image" and v.p is not None:
         source, where, attr = image_source(r, v.p, "Source")
