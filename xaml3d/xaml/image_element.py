@@ -20,37 +20,10 @@ import numpy as np
 from xaml3d.layout.engine import scale_factor
 from xaml3d.scene.drawing import DrawingGroup
 from xaml3d.xaml import values as V
-from xaml3d.xaml.context import markup_key, qname, split_markup
+from xaml3d.xaml.brushes_reader import drawing_image, drawing_image_element
 
 _STRETCHES = ("None", "Fill", "Uniform", "UniformToFill")
 _DIRECTIONS = ("UpOnly", "DownOnly", "Both")
-_REFERENCES = ("StaticResource", "DynamicResource")
-
-
-def drawing_image_element(r, p, prop: str = "Source"):
-    """The DrawingImage element an ImageSource-typed property holds (through a resource), or
-    None for any other source (a URI, a BitmapImage). Reports nothing: a missing resource is
-    said where the bitmap source is read."""
-    el = None
-    if prop in p.attrs:
-        m = split_markup(p.attrs[prop])
-        if m is not None and m[0] in _REFERENCES:
-            el = _entry(r, p.el, markup_key(m[1]))
-    else:
-        kids = p.items(prop)
-        if kids:
-            el = kids[-1]
-            if isinstance(el.tag, str) and qname(el.tag)[1] in _REFERENCES:
-                key = el.get("ResourceKey")
-                el = _entry(r, el, key) if key else None
-    if el is None or not isinstance(el.tag, str) or qname(el.tag)[1] != "DrawingImage":
-        return None
-    return el
-
-
-def _entry(r, at, key: str):
-    """A resource entry by key as seen from ``at``, without a diagnostic when it is missing."""
-    return r.resources.find(key, at) if key else None
 
 
 class ImageLayout:
@@ -58,11 +31,9 @@ class ImageLayout:
     its node), its Drawing and that Drawing's bounds."""
 
     def __init__(self, r, v, el) -> None:
-        from xaml3d.xaml.drawings_reader import drawing
-
         self.stretch = v.get("Stretch", lambda s: V.parse_enum(s, _STRETCHES), "Uniform")
         self.direction = v.get("StretchDirection", lambda s: V.parse_enum(s, _DIRECTIONS), "Both")
-        self.drawing = r.build_node(el, lambda e: drawing(r, e), None)
+        self.drawing = drawing_image(r, el)
         self.bounds = _bounds(self.drawing)
 
     @property
