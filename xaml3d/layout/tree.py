@@ -24,9 +24,9 @@ INF = math.inf
 PAGE, USER_CONTROL = "page", "usercontrol"
 GRID, DOCK, STACK, CANVAS = "grid", "dock", "stack", "canvas"
 VIEWBOX, SCROLL, CONTAINER = "viewbox", "scroll", "container"
-UNIFORM = "uniform"
+UNIFORM, WRAP = "uniform", "wrap"
 KINDS = (WINDOW, PAGE, USER_CONTROL, GRID, DOCK, STACK, BORDER, CANVAS, VIEWBOX, SCROLL,
-         VIEWPORT, CONTROL, CONTAINER, UNIFORM)  # fmt: skip
+         VIEWPORT, CONTROL, CONTAINER, UNIFORM, WRAP)  # fmt: skip
 
 # The Windows 10/11 default theme's window frame at 96 dpi: a Window's Width/Height are its
 # OUTER size; its client area (where the content is laid out) is smaller by these amounts
@@ -102,6 +102,8 @@ class Node:
     border: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # BorderThickness
     padding: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
     uniform: tuple[int, int, int] = (0, 0, 0)  # UniformGrid Rows, Columns, FirstColumn
+    item_width: float = NAN  # WrapPanel ItemWidth (NaN: each child's own)
+    item_height: float = NAN  # WrapPanel ItemHeight
     stretch: str = "Uniform"
     stretch_direction: str = "Both"
     size_to_content: str = "Manual"  # Window: Manual | Width | Height | WidthAndHeight

@@ -38,7 +38,7 @@ _KINDS = {
     "UserControl": L.USER_CONTROL, "Grid": L.GRID, "DockPanel": L.DOCK,
     "StackPanel": L.STACK, "Border": L.BORDER, "Canvas": L.CANVAS, "InkCanvas": L.CANVAS,
     "Viewbox": L.VIEWBOX, "ScrollViewer": L.SCROLL, "Viewport3D": L.VIEWPORT,
-    "UniformGrid": L.UNIFORM,
+    "UniformGrid": L.UNIFORM, "WrapPanel": L.WRAP,
 }  # fmt: skip
 # Elements that simply hold their content (no chrome of their own): laid out as a Border.
 _PLAIN = {"ContentControl", "ContentPresenter", "Decorator", "AdornerDecorator", "Frame"}
@@ -47,7 +47,7 @@ _CONTROLS = set("""
 Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox ComboBoxItem ListBox
 ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline Menu MenuItem
 Separator Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar
-MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox WrapPanel GridSplitter
+MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox GridSplitter
 StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Thumb Track ScrollBar ResizeGrip
 HeaderedContentControl Calendar DatePicker DataGrid TreeView TreeViewItem
 """.split())  # fmt: skip
@@ -80,7 +80,7 @@ _NOT_CONTENT = ("Resources", "Triggers", "MergedDictionaries", "RowDefinitions",
                 "Effect", "RenderTransform", "LayoutTransform", "OpacityMask", "Clip",
                 "ItemTemplate", "ItemsPanel", "DataContext", "Camera", "Header")  # fmt: skip
 _PAINTED = (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.BORDER, L.CANVAS,
-            L.CONTAINER, L.SCROLL, L.UNIFORM)  # fmt: skip
+            L.CONTAINER, L.SCROLL, L.UNIFORM, L.WRAP)  # fmt: skip
 _UNITS = {"px": 1.0, "in": 96.0, "cm": 96.0 / 2.54, "pt": 96.0 / 72.0}
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -388,6 +388,8 @@ class PanelsReader:
             return None
         ns, local = qname(el.tag)
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
+        if local == "GridSplitter":  # its HorizontalAlignment's own default (GridSplitter's)
+            n.h_align = "Right"
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
         turned = _layout_transform(self.r, v)
@@ -486,6 +488,10 @@ class PanelsReader:
             )
         if kind == L.STACK:
             n.orientation = v.get("Orientation", _enum(("Vertical", "Horizontal")), "Vertical")
+        if kind == L.WRAP:
+            n.orientation = v.get("Orientation", _enum(("Vertical", "Horizontal")), "Horizontal")
+            n.item_width = _nonneg(v.get("ItemWidth", parse_length, math.nan), math.nan)
+            n.item_height = _nonneg(v.get("ItemHeight", parse_length, math.nan), math.nan)
         if kind == L.DOCK:
             n.last_child_fill = v.get("LastChildFill", V.parse_bool, True)
         if kind == L.VIEWBOX:
