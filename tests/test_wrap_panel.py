@@ -85,3 +85,30 @@ def test_wrap_panel_gridsplitter_and_wrapping_textbox_from_markup(tmp_path):
     # the TextBox wraps in its text view, 72 px (80 less Padding 1, the 1 px border and the
     # 2 px insets, each side): "aaaa bbbb" is 59.2 px, "aaaa bbbb cccc" 85.2 px: three lines
     assert boxes["TextBox"].rect[3] == 3 * (12 * 2724 / 2048) + 4
+
+
+def test_wrap_panel_in_a_visual_brush_wraps_and_draws_its_background(tmp_path):
+    # a 32 px wide WrapPanel of three 16x16 squares: two on the first line, one on the second,
+    # on its red Background; the brush's visual is 32x32 on the 32x32 quad, 1 px per DIP
+    visual = """<WrapPanel Width="32" Background="Red">
+        <Rectangle Width="16" Height="16" Fill="Lime"/><Rectangle Width="16" Height="16"
+        Fill="Blue"/><Rectangle Width="16" Height="16" Fill="Lime"/></WrapPanel>"""
+    path = tmp_path / "v.xaml"
+    path.write_text(f"""<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+      Width="64" Height="48">
+      <Viewport3D.Camera><OrthographicCamera Position="0,0,10" Width="64"/></Viewport3D.Camera>
+      <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>
+        <GeometryModel3D><GeometryModel3D.Geometry>
+          <MeshGeometry3D Positions="-16,-16,0 16,-16,0 16,16,0 -16,16,0"
+              TriangleIndices="0 1 2 0 2 3" TextureCoordinates="0,1 1,1 1,0 0,0"/>
+        </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial>
+          <DiffuseMaterial.Brush><VisualBrush><VisualBrush.Visual>{visual}
+          </VisualBrush.Visual></VisualBrush></DiffuseMaterial.Brush>
+        </DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>
+      </Model3DGroup></ModelVisual3D.Content></ModelVisual3D></Viewport3D>""")
+    rgba = xaml3d.render_arrays(xaml3d.load(path)).rgba
+    # the quad: cols 16..47, rows 8..39
+    assert tuple(rgba[12, 20]) == (0, 255, 0, 255)  # first line, first square
+    assert tuple(rgba[12, 40]) == (0, 0, 255, 255)  # first line, second square
+    assert tuple(rgba[30, 20]) == (0, 255, 0, 255)  # the third square on the second line
+    assert tuple(rgba[30, 40]) == (255, 0, 0, 255)  # beside it, the panel's Background
