@@ -90,3 +90,30 @@ def test_a_collection_of_another_type_is_refused_as_wpf_refuses_it(tmp_path):
     (d,) = [d for d in scene.diagnostics if d.code == "XAML013"]
     assert "DrawingGroup.Children is a DrawingCollection" in d.message
     assert "GeometryCollection" in d.message and d.line == 10
+
+
+def test_dash_style_dashes_as_a_double_collection_element(tmp_path):
+    drawing, scene = _load(
+        tmp_path,
+        """<GeometryDrawing Geometry="M0,0 L10,0"><GeometryDrawing.Pen>
+          <Pen Brush="Lime" Thickness="2"><Pen.DashStyle><DashStyle Offset="1">
+            <DashStyle.Dashes><DoubleCollection>3 1</DoubleCollection></DashStyle.Dashes>
+          </DashStyle></Pen.DashStyle></Pen></GeometryDrawing.Pen></GeometryDrawing>""",
+    )
+    assert drawing.pen.dashes == (3.0, 1.0) and drawing.pen.dash_offset == 1.0
+    assert not _codes(scene)
+
+
+def test_polygon_points_as_point_items_in_a_visual(tmp_path):
+    path = tmp_path / "v.xaml"
+    visual = """<VisualBrush><VisualBrush.Visual><Canvas Width="32" Height="32"
+        Background="White"><Polygon Fill="Lime"><Polygon.Points><PointCollection>
+        <Point X="0" Y="0"/><Point X="32" Y="0"/><Point X="32" Y="32"/></PointCollection>
+        </Polygon.Points></Polygon></Canvas></VisualBrush.Visual></VisualBrush>"""
+    path.write_text(_SCENE.replace("<DrawingBrush><DrawingBrush.Drawing>{drawing}\n      "
+                                   "</DrawingBrush.Drawing></DrawingBrush>", visual))  # fmt: skip
+    scene = xaml3d.load(path)
+    assert not _codes(scene)
+    rgba = xaml3d.render_arrays(scene).rgba
+    assert tuple(rgba[12, 43]) == (0, 255, 0, 255)  # above the diagonal: the triangle
+    assert tuple(rgba[35, 20]) == (255, 255, 255, 255)  # below it: the Canvas

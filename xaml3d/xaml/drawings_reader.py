@@ -65,8 +65,9 @@ def _dash_style_text(s: str):
 
 def _dash_style(r, el):
     p = r.props(el)
-    text = p.string("Dashes")
-    dashes = tuple(float(x) for x in V.parse_double_collection(text)) if text else ()
+    # an attribute, or a <DoubleCollection> in the property element
+    found = p.value("Dashes", V.parse_double_collection, None)
+    dashes = tuple(float(x) for x in found) if found is not None else ()
     return dashes, p.value("Offset", V.parse_double, 0.0)
 
 
