@@ -117,3 +117,15 @@ def test_polygon_points_as_point_items_in_a_visual(tmp_path):
     rgba = xaml3d.render_arrays(scene).rgba
     assert tuple(rgba[12, 43]) == (0, 255, 0, 255)  # above the diagonal: the triangle
     assert tuple(rgba[35, 20]) == (255, 255, 255, 255)  # below it: the Canvas
+
+
+def test_poly_line_segment_points_as_a_point_collection_element(tmp_path):
+    drawing, scene = _load(
+        tmp_path,
+        """<GeometryDrawing Brush="Lime"><GeometryDrawing.Geometry><PathGeometry>
+          <PathFigure StartPoint="0,0" IsClosed="True"><PolyLineSegment><PolyLineSegment.Points>
+            <PointCollection>6,0 6,3</PointCollection></PolyLineSegment.Points></PolyLineSegment>
+          </PathFigure></PathGeometry></GeometryDrawing.Geometry></GeometryDrawing>""",
+    )
+    assert not _codes(scene)
+    assert drawing_bounds_of(drawing) == (0.0, 0.0, 6.0, 3.0)

@@ -158,7 +158,8 @@ def _segment(r, el) -> list[tuple]:
         pts = [sp.value(k, pt, (0.0, 0.0)) for k in ("Point1", "Point2")]
         return [("Q", *pts[0], *pts[1])]
     if t in ("PolyLineSegment", "PolyBezierSegment", "PolyQuadraticBezierSegment"):
-        pts = _points(sp.string("Points", "") or "")
+        # an attribute, or a <PointCollection> (text or Point items) in the property element
+        pts = sp.value("Points", _points, [])
         if t == "PolyLineSegment":
             return [("L", *q) for q in pts]
         k = 3 if t == "PolyBezierSegment" else 2
