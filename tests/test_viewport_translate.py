@@ -65,3 +65,42 @@ def test_an_identity_transform_says_nothing(tmp_path):
     r = xaml3d.render_arrays(scene)
     assert _box(r.rgba[..., 3]) == (16, 24, 47, 39)
     assert not [d for d in r.diagnostics if d.code == "DRW008"]
+
+
+_STYLED = """<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" Width="128" Height="96">
+  <Grid.Resources><Style x:Key="s" TargetType="Viewport3D">{setters}</Style></Grid.Resources>
+  <Viewport3D Width="64" Height="48" HorizontalAlignment="Left" VerticalAlignment="Top"
+      Style="{{StaticResource s}}">{own}
+    <Viewport3D.Camera><OrthographicCamera Position="0,0,10" LookDirection="0,0,-1" Width="64"/>
+    </Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>
+      <GeometryModel3D><GeometryModel3D.Geometry>
+        <MeshGeometry3D Positions="-16,-16,0 16,-16,0 16,0,0 -16,0,0"
+            TriangleIndices="0 1 2 0 2 3"/>
+      </GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial Brush="Lime"/>
+      </GeometryModel3D.Material></GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>
+</Grid>"""
+_ORIGIN = '<Setter Property="RenderTransformOrigin" Value="0.5,0.5"/>'
+_FLIP = '<ScaleTransform ScaleY="-1"/>'
+
+
+def test_a_flip_about_the_origin_its_style_sets(tmp_path):
+    # the Style sets the origin, the viewport its own flip: turned about the centre, in view
+    path = tmp_path / "s.xaml"
+    own = f"<Viewport3D.RenderTransform>{_FLIP}</Viewport3D.RenderTransform>"
+    path.write_text(_STYLED.format(setters=_ORIGIN, own=own))
+    scene = xaml3d.load(path)
+    assert _box(xaml3d.render_arrays(scene).rgba[..., 3]) == (16, 8, 47, 23)
+    assert _box(compose_window(scene)[0][..., 3]) == (16, 8, 47, 23)
+
+
+def test_a_flip_its_style_sets(tmp_path):
+    path = tmp_path / "s.xaml"
+    setter = f'<Setter Property="RenderTransform"><Setter.Value>{_FLIP}</Setter.Value></Setter>'
+    path.write_text(_STYLED.format(setters=_ORIGIN + setter, own=""))
+    scene = xaml3d.load(path)
+    assert _box(xaml3d.render_arrays(scene).rgba[..., 3]) == (16, 8, 47, 23)
+    assert _box(compose_window(scene)[0][..., 3]) == (16, 8, 47, 23)
