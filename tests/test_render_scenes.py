@@ -316,16 +316,16 @@ def test_near_plane_zero_draws_as_a_positive_near_does():
     assert tuple(pictures[0][8, 4]) == (255, 0, 0, 255)
 
 
-def test_missing_image_checker_shows_under_additive_materials():
-    # Two emissive squares one behind the other, both with the grey checker that stands in for
+def test_missing_image_checker_shows_under_a_specular_material():
+    # Two specular squares one behind the other, both with the grey checker that stands in for
     # a missing image: added up they would saturate to white. The stand-in is drawn as it is
     # (opaque, unlit, nearest wins), so exactly the checker's greys 128 and 192 show, whatever
-    # the material (Emissive, Specular) and whatever lies behind.
+    # lies behind.
     from xaml3d.scene.types import placeholder_image
 
     checker = ImageBrush(image=placeholder_image(), is_placeholder=True)
     tc = [(0, 1), (1, 1), (1, 0), (0, 0)]
-    for material in (EmissiveMaterial(brush=checker), SpecularMaterial(brush=checker)):
+    for material in (SpecularMaterial(brush=checker),):
         back = Model(quad(-2, -2, 2, 2, z=-1, tc=tc), (material,))
         front = Model(quad(-2, -2, 2, 2, z=0, tc=tc), (material,))
         # 64 x 64 pixels: the square covers pixels 16..47, 4 pixels per checker cell
@@ -342,6 +342,26 @@ def test_missing_image_checker_shows_under_additive_materials():
         [Model(quad(-2, -2, 2, 2, z=-1, tc=tc), glow), Model(quad(-2, -2, 2, 2, tc=tc), glow)]
     )
     assert (r.rgba[2:6, 2:6, :3] == 255).all()
+
+
+def test_missing_image_checker_adds_under_an_emissive_material():
+    # The checker standing in for a missing image is the emissive texture: added to what lies
+    # behind (a diffuse blue square under white ambient light), as the image would have been
+    from xaml3d.scene.types import placeholder_image
+
+    checker = ImageBrush(image=placeholder_image(), is_placeholder=True)
+    tc = [(0, 1), (1, 1), (1, 0), (0, 0)]
+    back = Model(quad(-2, -2, 2, 2, z=-1, tc=tc), (diffuse((0.0, 0.0, 1.0, 1.0)),))
+    front = Model(quad(-2, -2, 2, 2, z=0, tc=tc), (EmissiveMaterial(brush=checker),))
+    r = render([back, front], size=(64, 64))
+    inside = r.rgba[16:48, 16:48]
+    assert tuple(inside[1, 1]) == (192, 192, 255, 255)  # the light grey cell plus blue
+    assert tuple(inside[1, 5]) == (128, 128, 255, 255)  # the dark grey cell plus blue
+    # over nothing too, it is drawn exactly as a found image of the same pixels
+    found = ImageBrush(image=placeholder_image())
+    image = Model(quad(-2, -2, 2, 2, z=0, tc=tc), (EmissiveMaterial(brush=found),))
+    alone = render([front], size=(64, 64)).rgba
+    assert (alone == render([image], size=(64, 64)).rgba).all() and alone[17, 17, 3] == 192
 
 
 def test_an_image_of_one_colour_is_reported():

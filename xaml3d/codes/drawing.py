@@ -18,6 +18,11 @@ DRAWING_CODES: dict[str, tuple[str, str]] = {
     "DRW003": (INFO, "a 2D effect, mask or property of the viewport's picture not applied"),
     "DRW004": (WARNING, "VisualBrush without a Visual: it draws nothing"),
     "DRW007": (INFO, "a control beside the viewports that render --window does not draw"),
+    "DRW008": (
+        INFO,
+        "the viewport's own RenderTransform only translates it: render draws its picture in "
+        "place, render --window where the translation puts it",
+    ),  # fmt: skip
     "DRW006": (
         WARNING,
         "an element around a viewport the layout does not reach sets Opacity, OpacityMask, Clip, "

@@ -14,6 +14,7 @@ StackPanel, Canvas (children at their own size, at Left/Top/Right/Bottom), Viewb
 at its own size, scaled by Stretch/StretchDirection), ScrollViewer (content measured with
 infinite room in each scrolling direction, arranged at least as large as the view; a Visible
 scroll bar takes 17 px, an Auto one when the content overflows), UniformGrid (equal cells),
+WrapPanel (wrap.py: children in lines, a new line where the next would not fit),
 Viewport3D (no content size of its own: 0 x 0 unless sized), controls
 (their measured or estimated content size; wrapping text measured at the width offered).
 UseLayoutRounding (inherited) rounds margins, desired sizes, arranged sizes and offsets to whole
@@ -53,8 +54,10 @@ from xaml3d.layout.tree import (
     VIEWBOX,
     VIEWPORT,
     WINDOW,
+    WRAP,
     Node,
 )
+from xaml3d.layout.wrap import wrap_arrange, wrap_measure
 
 
 def _is_set(v: float) -> bool:
@@ -498,7 +501,7 @@ _MEASURE = {
     GRID: lambda e, n, w, h: e.grid.measure(n, w, h), DOCK: _dock_measure,
     STACK: _stack_measure, CANVAS: _canvas_measure, VIEWBOX: _viewbox_measure,
     SCROLL: _scroll_measure, VIEWPORT: _leaf_measure, CONTROL: _leaf_measure,
-    UNIFORM: _uniform_measure,
+    UNIFORM: _uniform_measure, WRAP: wrap_measure,
 }  # fmt: skip
 _ARRANGE = {
     WINDOW: _content_arrange, PAGE: _content_arrange, USER_CONTROL: _content_arrange,
@@ -506,7 +509,7 @@ _ARRANGE = {
     GRID: lambda e, n, w, h: e.grid.arrange(n, w, h), DOCK: _dock_arrange,
     STACK: _stack_arrange, CANVAS: _canvas_arrange, VIEWBOX: _viewbox_arrange,
     SCROLL: _scroll_arrange, VIEWPORT: _leaf_arrange, CONTROL: _leaf_arrange,
-    UNIFORM: _uniform_arrange,
+    UNIFORM: _uniform_arrange, WRAP: wrap_arrange,
 }  # fmt: skip
 
 

@@ -1,12 +1,12 @@
 """The layout tree: the panels and elements around the viewports, as plain numbers and enums.
 
 The reader (xaml3d/xaml/panels_reader.py) builds one ``Node`` per framework element that takes
-part in layout (Window, Page, UserControl, Grid, DockPanel, StackPanel, Border, Canvas, Viewbox,
-ScrollViewer, Viewport3D, controls), with WPF's layout properties already converted: Width and
-Height (NaN when not set, as WPF's ``double.NaN`` "Auto"), Min/Max sizes, Margin, alignments,
-Visibility, the attached Grid/DockPanel/Canvas properties and each panel's own properties. The
-layout engine (engine.py) fills in the results: desired size, arranged rectangle and how it
-was derived. Nothing here knows of 3D or XML.
+part in layout (Window, Page, UserControl, Grid, DockPanel, StackPanel, WrapPanel, Border,
+Canvas, Viewbox, ScrollViewer, Viewport3D, controls), with WPF's layout properties already
+converted: Width and Height (NaN when not set, as WPF's ``double.NaN`` "Auto"), Min/Max sizes,
+Margin, alignments, Visibility, the attached Grid/DockPanel/Canvas properties and each panel's
+own properties. The layout engine (engine.py) fills in the results: desired size, arranged
+rectangle and how it was derived. Nothing here knows of 3D or XML.
 """
 
 from __future__ import annotations
@@ -24,9 +24,9 @@ INF = math.inf
 PAGE, USER_CONTROL = "page", "usercontrol"
 GRID, DOCK, STACK, CANVAS = "grid", "dock", "stack", "canvas"
 VIEWBOX, SCROLL, CONTAINER = "viewbox", "scroll", "container"
-UNIFORM = "uniform"
+UNIFORM, WRAP = "uniform", "wrap"
 KINDS = (WINDOW, PAGE, USER_CONTROL, GRID, DOCK, STACK, BORDER, CANVAS, VIEWBOX, SCROLL,
-         VIEWPORT, CONTROL, CONTAINER, UNIFORM)  # fmt: skip
+         VIEWPORT, CONTROL, CONTAINER, UNIFORM, WRAP)  # fmt: skip
 
 # The Windows 10/11 default theme's window frame at 96 dpi: a Window's Width/Height are its
 # OUTER size; its client area (where the content is laid out) is smaller by these amounts
@@ -102,6 +102,8 @@ class Node:
     border: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)  # BorderThickness
     padding: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
     uniform: tuple[int, int, int] = (0, 0, 0)  # UniformGrid Rows, Columns, FirstColumn
+    item_width: float = NAN  # WrapPanel ItemWidth (NaN: each child's own)
+    item_height: float = NAN  # WrapPanel ItemHeight
     stretch: str = "Uniform"
     stretch_direction: str = "Both"
     size_to_content: str = "Manual"  # Window: Manual | Width | Height | WidthAndHeight

@@ -55,7 +55,7 @@ from xaml3d.render.raster import MAX_COORD, NEEDS_CLIPPING, Fragments, rasterize
 from xaml3d.scene.checks import unmapped
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.transforms import normal_matrix
-from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model
+from xaml3d.scene.types import DiffuseMaterial, ImageBrush, Model, SpecularMaterial
 
 _EYE3 = np.eye(3)
 KEEP_BYTES = 192 << 20  # fragments kept between the passes of a multi-pass material
@@ -361,14 +361,16 @@ class PassShader:
         self.mat = mat
         self.indices = pm.model.mesh.indices
         self.flat = flat
-        # The grey checker standing in for a missing image is drawn as it is, opaque and
-        # unlit, whatever the material: added by an Emissive or Specular pass it would sum
-        # with what lies behind and saturate to white, and the promised checker would not show.
+        # The grey checker standing in for a missing image takes the image's place: under a
+        # DiffuseMaterial it is lit, under an EmissiveMaterial it is added as the emissive
+        # texture would be. Under a SpecularMaterial it is drawn as it is, opaque and unlit:
+        # added as a highlight it would sum with what lies behind and saturate to white, and
+        # the promised checker would not show.
         brush = mat.brush
         self.standin = (
             isinstance(brush, ImageBrush)
             and brush.is_placeholder
-            and not isinstance(mat, DiffuseMaterial)
+            and isinstance(mat, SpecularMaterial)
         )
         if self.standin:
             mat = DiffuseMaterial(brush=brush)

@@ -19,6 +19,7 @@ import numpy as np
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene import tracks as K
 from xaml3d.scene import transforms as T
+from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     DiffuseMaterial,
     EmissiveMaterial,
@@ -34,7 +35,7 @@ from xaml3d.scene.types import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.animation_tracks import built, group_of, node_of
-from xaml3d.xaml.context import as_written, qname, split_markup
+from xaml3d.xaml.context import as_written, markup_key, qname, split_markup
 from xaml3d.xaml.resources import reduce_uri
 
 _MAPPING = ("RelativeToBoundingBox", "Absolute")
@@ -212,6 +213,41 @@ def image_source(r, p, prop: str) -> tuple[str | None, object, str | None]:
     return p.elem_text.get(prop), p.el, None
 
 
+_REFERENCES = ("StaticResource", "DynamicResource")
+
+
+def drawing_image_element(r, p, prop: str = "Source"):
+    """The DrawingImage element an ImageSource-typed property holds (through a resource), or
+    None for any other source (a URI, a BitmapImage). Reports nothing: a missing resource is
+    said where the bitmap source is read."""
+    el = None
+    if prop in p.attrs:
+        m = split_markup(p.attrs[prop])
+        if m is not None and m[0] in _REFERENCES:
+            el = _entry(r, p.el, markup_key(m[1]))
+    else:
+        kids = p.items(prop)
+        if kids:
+            el = kids[-1]
+            if isinstance(el.tag, str) and qname(el.tag)[1] in _REFERENCES:
+                el = _entry(r, el, el.get("ResourceKey"))
+    if el is None or not isinstance(el.tag, str) or qname(el.tag)[1] != "DrawingImage":
+        return None
+    return el
+
+
+def _entry(r, at, key: str):
+    """A resource entry by key as seen from ``at``, without a diagnostic when it is missing."""
+    return r.resources.find(key, at) if key else None
+
+
+def drawing_image(r, el):
+    """The Drawing of a DrawingImage element (None: nothing drawn)."""
+    from xaml3d.xaml.drawings_reader import drawing
+
+    return r.build_node(el, lambda e: drawing(r, e), None)
+
+
 def _bitmap_uri(r, el) -> tuple[str | None, object, str | None]:
     """The UriSource of a BitmapImage element (through a <StaticResource/> element)."""
     if isinstance(el.tag, str) and qname(el.tag)[1] in ("StaticResource", "DynamicResource"):
@@ -228,7 +264,13 @@ def _bitmap_uri(r, el) -> tuple[str | None, object, str | None]:
     return uri, el, "UriSource"
 
 
-def _image_brush(r, p, nodes: list) -> ImageBrush:
+def _image_brush(r, p, nodes: list) -> ImageBrush | DrawingBrush:
+    held = drawing_image_element(r, p, "ImageSource")
+    if held is not None:
+        # a DrawingImage: its size is its Drawing's bounds, which a relative Viewbox then
+        # refers to, so the brush is its Drawing's DrawingBrush
+        content = drawing_image(r, held)
+        return DrawingBrush(drawing=content, **tile_properties(r, p), **_common(r, p, nodes))
     source, where, attr = image_source(r, p, "ImageSource")
     path = image = None
     if source:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 
 from xaml3d.layout.text import line_height, text_width
-from xaml3d.xaml import templates
+from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
@@ -53,8 +53,13 @@ def content_size(reader, n, v, el, font: float):
         return (17.0, 0.0) if scroll_bar_upright(v) else (0.0, 17.0)
     if local == "Separator":
         return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
+    if local == "GridSplitter":  # Aero2: a Border with no child, its BorderThickness across
+        b = v.get("BorderThickness", parse_thickness, (0.0,) * 4)
+        return (b[0] + b[2], b[1] + b[3])
     if local in SHAPES:  # measured and arranged as WPF's Shape (shapes_reader)
         return attach_layout(reader.r, v, n, local)
+    if local == "Image":  # a DrawingImage: its Drawing's size, stretched (image_element)
+        return image_element.attach_layout(reader.r, v, n, el)
     if local == "Slider":
         # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
         return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
@@ -65,7 +70,9 @@ def content_size(reader, n, v, el, font: float):
         # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
         return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font, style[2]) + 6 + 2)
     if local in TEXT_CONTROLS:
-        if local == "TextBlock" and (wraps(v) or trimming(v) != "None"):
+        if (local == "TextBlock" and (wraps(v) or trimming(v) != "None")) or (
+            local == "TextBox" and wraps(v)
+        ):
             # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
             # own Width or MaxWidth, else its parent's room), less its Padding
             n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
@@ -84,13 +91,16 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
     pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
     inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
     block = local == "TextBlock"
+    if local == "TextBox":  # its text view is 2 px inside the padding each side
+        inner = max(0.0, inner - 2 * _TEXT_BOX_INSET - 2.0)  # and inside its 1 px border
     if block and has_inlines(el):  # runs in their own fonts, LineBreaks (inline_text)
         base = base_format(v.r, el, font)
         w, h = size_of(v.r, el, base, inner if wraps(v) else math.inf)
         return w + pad[0] + pad[2], max(h, line_height(font, base.family)) + pad[1] + pad[3]
     text = _text_of(el)
     weight, italic, family = _font_style(el, v.r)
-    lines = _lines(text, font, weight, italic, inner if block and wraps(v) else math.inf, family)
+    wrapping = (block or local == "TextBox") and wraps(v)
+    lines = _lines(text, font, weight, italic, inner if wrapping else math.inf, family)
     if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
         mode = trimming(v)
         lines = [trim(t, font, weight, italic, inner, mode, family) for t in lines]

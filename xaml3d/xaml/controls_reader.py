@@ -92,7 +92,9 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         ty = thick[1] + pad[1] + (h - thick[1] - thick[3] - pad[1] - pad[3] - lh) / 2
     else:
         ty = thick[1] + pad[1]
-    t = _text(r, el, v, font, inset_x, ty, inner_w, align_center=centred)
+    # a TextBox's text view is 2 px inside its padding each side: its lines wrap there
+    text_w = inner_w - 2 * _TEXT_BOX_INSET if local == "TextBox" else inner_w
+    t = _text(r, el, v, font, inset_x, ty, text_w, align_center=centred)
     if t is not None:
         # the content presenter's layout clip: text never spills over the border
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]

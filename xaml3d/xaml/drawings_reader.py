@@ -65,8 +65,9 @@ def _dash_style_text(s: str):
 
 def _dash_style(r, el):
     p = r.props(el)
-    text = p.string("Dashes")
-    dashes = tuple(float(x) for x in V.parse_double_collection(text)) if text else ()
+    # an attribute, or a <DoubleCollection> in the property element
+    found = p.value("Dashes", V.parse_double_collection, None)
+    dashes = tuple(float(x) for x in found) if found is not None else ()
     return dashes, p.value("Offset", V.parse_double, 0.0)
 
 
@@ -85,7 +86,7 @@ def drawing(r, el):
     if t == "DrawingGroup":
         from xaml3d.xaml.brushes_reader import transform2d, transform2d_text
 
-        kids = list(p.items("Children")) or [k for k in p.content if isinstance(k.tag, str)]
+        kids = p.children("Children")
         built = [r.build_node(k, lambda e: drawing(r, e), None) for k in kids]
         return DrawingGroup(
             children=tuple(b for b in built if b is not None),

@@ -111,7 +111,7 @@ def geometry(r, el):
 
 def _children(p) -> list:
     """A collection property's elements, whether written as <X.Children> or as content."""
-    return list(p.items("Children")) or [k for k in p.content if isinstance(k.tag, str)]
+    return p.children("Children")
 
 
 def _points(s: str) -> list[tuple[float, float]]:
@@ -122,7 +122,7 @@ def _points(s: str) -> list[tuple[float, float]]:
 def _figures(r, p) -> tuple:
     """PathFigure elements -> commands (segments in their own absolute coordinates)."""
     out: list[tuple] = []
-    figs = list(p.items("Figures")) or [k for k in p.content if isinstance(k.tag, str)]
+    figs = p.children("Figures")
     for f in figs:
         fp = r.props(f)
         if fp.type != "PathFigure":
@@ -131,7 +131,7 @@ def _figures(r, p) -> tuple:
         x, y = fp.value("StartPoint", V.parse_point, (0.0, 0.0))
         filled = fp.value("IsFilled", V.parse_bool, True)
         out.append(("M" if filled else "M-", x, y))
-        segs = list(fp.items("Segments")) or [k for k in fp.content if isinstance(k.tag, str)]
+        segs = fp.children("Segments")
         for s in segs:
             out.extend(_segment(r, s))
         if fp.value("IsClosed", V.parse_bool, False):
@@ -158,7 +158,8 @@ def _segment(r, el) -> list[tuple]:
         pts = [sp.value(k, pt, (0.0, 0.0)) for k in ("Point1", "Point2")]
         return [("Q", *pts[0], *pts[1])]
     if t in ("PolyLineSegment", "PolyBezierSegment", "PolyQuadraticBezierSegment"):
-        pts = _points(sp.string("Points", "") or "")
+        # an attribute, or a <PointCollection> (text or Point items) in the property element
+        pts = sp.value("Points", _points, [])
         if t == "PolyLineSegment":
             return [("L", *q) for q in pts]
         k = 3 if t == "PolyBezierSegment" else 2

@@ -16,13 +16,13 @@ from xaml3d.layout import layout
 from xaml3d.layout.engine import LayoutResult
 from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
 from xaml3d.layout.transform import placed_by_layout
-from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, Node
+from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, WRAP, Node
 from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout, own_unit
 from xaml3d.scene.drawing import Around, Layer2D
 from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
 DEFAULT_SIZE = (640.0, 480.0)
-_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM)
+_PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM, WRAP)
 
 
 @dataclass(frozen=True)

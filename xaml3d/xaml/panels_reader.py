@@ -38,7 +38,7 @@ _KINDS = {
     "UserControl": L.USER_CONTROL, "Grid": L.GRID, "DockPanel": L.DOCK,
     "StackPanel": L.STACK, "Border": L.BORDER, "Canvas": L.CANVAS, "InkCanvas": L.CANVAS,
     "Viewbox": L.VIEWBOX, "ScrollViewer": L.SCROLL, "Viewport3D": L.VIEWPORT,
-    "UniformGrid": L.UNIFORM,
+    "UniformGrid": L.UNIFORM, "WrapPanel": L.WRAP,
 }  # fmt: skip
 # Elements that simply hold their content (no chrome of their own): laid out as a Border.
 _PLAIN = {"ContentControl", "ContentPresenter", "Decorator", "AdornerDecorator", "Frame"}
@@ -47,7 +47,7 @@ _CONTROLS = set("""
 Button TextBlock TextBox Label Slider CheckBox RadioButton ComboBox ComboBoxItem ListBox
 ListBoxItem ListView ListViewItem Image Rectangle Ellipse Path Line Polygon Polyline Menu MenuItem
 Separator Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar
-MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox WrapPanel GridSplitter
+MediaElement FlowDocumentScrollViewer RichTextBox PasswordBox GridSplitter
 StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Thumb Track ScrollBar ResizeGrip
 HeaderedContentControl Calendar DatePicker DataGrid TreeView TreeViewItem
 """.split())  # fmt: skip
@@ -78,9 +78,10 @@ _NOT_CONTENT = ("Resources", "Triggers", "MergedDictionaries", "RowDefinitions",
                 "ColumnDefinitions", "Style", "Template", "ToolTip", "ContextMenu",
                 "InputBindings", "CommandBindings", "Background", "BorderBrush", "Foreground",
                 "Effect", "RenderTransform", "LayoutTransform", "OpacityMask", "Clip",
-                "ItemTemplate", "ItemsPanel", "DataContext", "Camera", "Header")  # fmt: skip
+                "ItemTemplate", "ItemsPanel", "DataContext", "Camera", "Header",
+                "BitmapEffect", "BitmapEffectInput", "CacheMode", "Tag")  # fmt: skip
 _PAINTED = (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.BORDER, L.CANVAS,
-            L.CONTAINER, L.SCROLL, L.UNIFORM)  # fmt: skip
+            L.CONTAINER, L.SCROLL, L.UNIFORM, L.WRAP)  # fmt: skip
 _UNITS = {"px": 1.0, "in": 96.0, "cm": 96.0 / 2.54, "pt": 96.0 / 72.0}
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -257,28 +258,27 @@ def _enum(allowed):
     return lambda s: V.parse_enum(s, allowed)
 
 
-def style_setters(r, el, local: str, report: bool = True) -> dict[str, str]:
-    """Property -> value text of the Setters of ``el``'s Style: ``Style="{StaticResource
-    k}"`` (or DynamicResource), else the implicit Style keyed by the element's type in
-    scope; BasedOn styles first, so the derived Setters win. Setter values that are
-    property elements or markup are left out (the property keeps its default). ``report``:
-    say (XAML022) that a Style of another TargetType is not applied."""
+def _style_chain(r, el, local: str, report: bool = True) -> list:
+    """The Styles that apply to ``el``, most derived first: ``Style="{StaticResource k}"`` (or
+    DynamicResource), else the implicit Style keyed by the element's type in scope, then the
+    ones it is BasedOn. ``report``: say (XAML022) that a Style of another TargetType is not
+    applied (none apply then)."""
     res = r.resources
     ref = el.get("Style")
     if ref is not None:
         m = split_markup(ref)
         if m is None or m[0] not in ("StaticResource", "DynamicResource"):
-            return {}
+            return []
         entry = res.find(markup_key(m[1]), el)
         if entry is not None and qname(entry.tag)[1] == "Style":
             target = type_name(entry.get("TargetType") or "")
             if is_presentation(qname(el.tag)[0]) and _mismatched(target, local):
                 if not report:
-                    return {}
+                    return []
                 r.ctx.diag("XAML022", f"the Style's TargetType {target} does not match "
                                 f"this {local}: WPF refuses to apply it", el,
                                 attr="Style")  # fmt: skip
-                return {}
+                return []
     else:
         # (every dictionary of the document is read by now: the walk before layout reads
         # each element's resources, so a type no implicit Style names needs no search)
@@ -297,6 +297,16 @@ def style_setters(r, el, local: str, report: bool = True) -> dict[str, str]:
             entry = res.find(type_key(based), entry)
         else:
             break
+    return chain
+
+
+def style_setters(r, el, local: str, report: bool = True) -> dict[str, str]:
+    """Property -> value text of the Setters of ``el``'s Style: ``Style="{StaticResource
+    k}"`` (or DynamicResource), else the implicit Style keyed by the element's type in
+    scope; BasedOn styles first, so the derived Setters win. Setter values that are
+    property elements or markup are left out (the property keeps its default). ``report``:
+    say (XAML022) that a Style of another TargetType is not applied."""
+    chain = _style_chain(r, el, local, report)
     setters: dict[str, str] = {}
     for style in reversed(chain):
         for child in _style_setter_elements(style):
@@ -308,6 +318,25 @@ def style_setters(r, el, local: str, report: bool = True) -> dict[str, str]:
             # attached properties keep their owner (Grid.Row); others their own name
             setters[f"{owner}.{short}" if owner in _ATTACHED_OWNERS else short] = value
     return setters
+
+
+def style_value_element(r, el, prop: str):
+    """The element a Setter of ``el``'s Style gives ``prop`` as its value
+    (``<Setter Property="RenderTransform"><Setter.Value><ScaleTransform .../>``), the most
+    derived Style's; None when no Setter gives one."""
+    ns, local = qname(el.tag)
+    if not is_presentation(ns):
+        return None
+    for style in _style_chain(r, el, local, report=False):
+        for setter in reversed(list(_style_setter_elements(style))):
+            if setter.get("Property") != prop or setter.get("TargetName"):
+                continue
+            for child in setter:
+                if isinstance(child.tag, str) and qname(child.tag)[1] == "Setter.Value":
+                    kids = [k for k in child if isinstance(k.tag, str)]
+                    return kids[0] if len(kids) == 1 else None
+            return None
+    return None
 
 
 def element_style(r, el) -> dict[str, str]:
@@ -390,6 +419,8 @@ class PanelsReader:
             return None
         ns, local = qname(el.tag)
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
+        if local == "GridSplitter":  # its HorizontalAlignment's own default (GridSplitter's)
+            n.h_align = "Right"
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
         turned = _layout_transform(self.r, v)
@@ -492,6 +523,10 @@ class PanelsReader:
             )
         if kind == L.STACK:
             n.orientation = v.get("Orientation", _enum(("Vertical", "Horizontal")), "Vertical")
+        if kind == L.WRAP:
+            n.orientation = v.get("Orientation", _enum(("Vertical", "Horizontal")), "Horizontal")
+            n.item_width = _nonneg(v.get("ItemWidth", parse_length, math.nan), math.nan)
+            n.item_height = _nonneg(v.get("ItemHeight", parse_length, math.nan), math.nan)
         if kind == L.DOCK:
             n.last_child_fill = v.get("LastChildFill", V.parse_bool, True)
         if kind == L.VIEWBOX:

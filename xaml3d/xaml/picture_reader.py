@@ -34,6 +34,7 @@ from xaml3d.xaml.animation_tracks import built
 from xaml3d.xaml.brushes_reader import brush_property, transform2d_parts, transform2d_text
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.geometry_reader import geometry_property
+from xaml3d.xaml.panels_reader import ElementValues, element_style, style_value_element
 
 _D = V.parse_double
 
@@ -95,16 +96,23 @@ def _render_transform(r, p, width: float, height: float):
     """(RenderTransform about RenderTransformOrigin as one 3x3 matrix or None, its typed node
     when an animation drives part of it (scene.tracks: the origin's shifts around it) or
     None)."""
-    if not p.has("RenderTransform"):
-        return None, None
-    pair = p.obj(
-        "RenderTransform", lambda e: built(transform2d_parts(r, e)), None,
-        from_string=transform2d_text,
-    )  # fmt: skip
-    m, node = pair if isinstance(pair, tuple) else (pair, None)
+    if p.has("RenderTransform"):
+        pair = p.obj(
+            "RenderTransform", lambda e: built(transform2d_parts(r, e)), None,
+            from_string=transform2d_text,
+        )  # fmt: skip
+        m, node = pair if isinstance(pair, tuple) else (pair, None)
+    else:  # a Setter of its Style (a property element's value: a Style's ScaleTransform)
+        given = style_value_element(r, p.el, "RenderTransform")
+        if given is None:
+            return None, None
+        pair = r.build_node(given, lambda e: built(transform2d_parts(r, e)), None)
+        m, node = (pair[0] if isinstance(pair, tuple) else pair), None
     if m is None or (node is None and np.allclose(m, np.eye(3), equal_nan=False)):
         return None, None
-    ox, oy = p.value("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
+    # the element's own RenderTransformOrigin, else its Style's (a mirroring ScaleY -1 about
+    # the origin a Style sets stays in view)
+    ox, oy = _styled(r, p).get("RenderTransformOrigin", V.parse_point, (0.0, 0.0))
     with np.errstate(over="ignore", invalid="ignore"):  # checked just below
         o = np.array([[1.0, 0.0, ox * width], [0.0, 1.0, oy * height], [0.0, 0.0, 1.0]])
         back = np.array([[1.0, 0.0, -ox * width], [0.0, 1.0, -oy * height], [0, 0, 1.0]])
@@ -122,6 +130,11 @@ def _render_transform(r, p, width: float, height: float):
         r.ctx.diag("DRW003", msg, p.el, attr=p.attr_keys.get("RenderTransform"))
         return None, None
     return transform, node
+
+
+def _styled(r, p) -> ElementValues:
+    """The element's values, a Setter of its Style standing in for what it does not set."""
+    return ElementValues(r, p.el, element_style(r, p.el))
 
 
 def animates(r, el, prop: str) -> bool:
@@ -148,7 +161,7 @@ def element_layer(
     element and all it holds at its box (WPF's layout clip, FrameworkElement.GetLayoutClip),
     intersected with its Clip, as UIElement combines them; not for a Viewport3D, whose
     ClipToBounds is its picture's own."""
-    opacity = p.value("Opacity", _D, 1.0)
+    opacity = _styled(r, p).get("Opacity", _D, 1.0)
     mask = brush_property(r, p, "OpacityMask") if p.has("OpacityMask") else None
     clip = geometry_property(r, p, "Clip") if p.has("Clip") else None
     if bounds and p.value("ClipToBounds", V.parse_bool, False):

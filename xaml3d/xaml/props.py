@@ -52,6 +52,17 @@ _VALUE_TYPES = {
 _NULL_CHECKED_KINDS = {"camera", "light", "visual3d", "model3d", "geometry", "material",
                        "transform3d", "rotation3d", "brush", "transform2d", "gradientstop",
                        "keyframe", "viewport"}  # fmt: skip
+# the collection type of the 2D collection properties (framework types here, whose items the
+# content check does not see): an explicit collection element of another type is refused
+_PROPERTY_COLLECTIONS = {
+    ("DrawingGroup", "Children"): "DrawingCollection",
+    ("GeometryGroup", "Children"): "GeometryCollection",
+    ("PathGeometry", "Figures"): "PathFigureCollection",
+    ("PathFigure", "Segments"): "PathSegmentCollection",
+    ("TransformGroup", "Children"): "TransformCollection",
+    ("LinearGradientBrush", "GradientStops"): "GradientStopCollection",
+    ("RadialGradientBrush", "GradientStops"): "GradientStopCollection",
+}
 _SILENT_X = {"Key", "Name", "Shared", "Uid", "FieldModifier", "ClassModifier", "Subclass"}
 
 
@@ -405,14 +416,33 @@ class Props:
 
     def items(self, prop: str) -> list[etree._Element]:
         """Child elements of a property, explicit collection elements unwrapped."""
+        return self._unwrapped(prop, self.elems.get(prop, ()))
+
+    def children(self, prop: str) -> list[etree._Element]:
+        """The items of a collection property the vocabulary gives no content property (the 2D
+        types: DrawingGroup.Children, PathGeometry.Figures...): the property element's, else
+        the element's content, an explicit collection element unwrapped in either."""
+        return self.items(prop) or self._unwrapped(prop, self.content)
+
+    def _unwrapped(self, prop: str, kids) -> list[etree._Element]:
+        """``kids`` with every explicit collection element (``<DrawingCollection>``,
+        ``<Model3DCollection>``...) replaced by its items, once: WPF sets the collection it
+        writes as the property's value. A collection of another type than the property's is
+        refused, as WPF's loader refuses it."""
         out: list[etree._Element] = []
-        for k in self.elems.get(prop, ()):
+        expected = _PROPERTY_COLLECTIONS.get((self.type, prop))
+        for k in kids:
+            if not isinstance(k.tag, str):
+                continue
             ns, local = qname(k.tag)
             et = voc.lookup(local) if is_presentation(ns) else None
-            if et is not None and et.kind in _COLLECTION_KINDS:
-                out.extend(c for c in k if isinstance(c.tag, str))
-            else:
+            if et is None or et.kind not in _COLLECTION_KINDS:
                 out.append(k)
+            elif expected is not None and local != expected:
+                msg = f"{self.type}.{prop} is a {expected}: WPF cannot set a {local} to it"
+                self.r.ctx.diag("XAML013", msg, k)
+            else:
+                out.extend(c for c in k if isinstance(c.tag, str))
         return out
 
     def string(self, prop: str, default: str | None = None) -> str | None:

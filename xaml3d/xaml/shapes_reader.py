@@ -85,8 +85,8 @@ def shape_points(p) -> np.ndarray | None:
     if p.type == "Line":
         x1, y1, x2, y2 = (p.value(k, d, 0.0) for k in ("X1", "Y1", "X2", "Y2"))
         return np.array([[x1, y1], [x2, y2]])
-    text = p.string("Points")
-    return V.parse_point_collection(text).reshape(-1, 2) if text else None
+    # an attribute, or a <PointCollection> (text or Point items) in the property element
+    return p.value("Points", lambda s: V.parse_point_collection(s).reshape(-1, 2), None)
 
 
 def defining_geometry(r, v, local: str):

@@ -245,7 +245,8 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
     if not text:
         return None
     weight, italic, family = _font_style(el, r)
-    width = w + _SLACK if block and wraps(v) else math.inf
+    wrapping = (block or qname(el.tag)[1] == "TextBox") and wraps(v)  # TextBox wraps too
+    width = w + _SLACK if wrapping else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip

@@ -10,10 +10,11 @@ backgrounds and borders (BorderThickness, CornerRadius), the shapes Rectangle, E
 Polyline, Polygon and Path (Fill, Stroke, StrokeThickness, StrokeDashArray, caps and joins;
 Stretch: ``shapes_reader``), TextBlock and text content (Text, Foreground, FontSize,
 FontWeight, FontStyle, Padding, TextAlignment, Background; wrapped and trimmed to its laid-out
-width), Label, Image, and Button, TextBox, CheckBox, RadioButton, ProgressBar, Slider,
-Separator, ScrollBar, a closed ComboBox, ListBox, TabControl, GroupBox, Expander, Menu,
-ToolBar, ToolBarTray, a closed DatePicker and a Calendar (with the content they hold) in WPF's
-default Windows 10/11 look (the [[Aero2.NormalColor]] values of dotnet/wpf's theme files).
+width), Label, Image (a bitmap, or a DrawingImage: ``image_element``), and Button, TextBox,
+CheckBox, RadioButton, ProgressBar, Slider, Separator, ScrollBar, GridSplitter, a closed
+ComboBox, ListBox, TabControl, GroupBox, Expander, Menu, ToolBar, ToolBarTray, a closed
+DatePicker and a Calendar (with the content they hold) in WPF's default Windows 10/11 look
+(the [[Aero2.NormalColor]] values of dotnet/wpf's theme files).
 Opacity, OpacityMask, and RenderTransform (about RenderTransformOrigin), Clip and Effect
 (BlurEffect, DropShadowEffect and their bitmap effects: ``picture_reader.element_layer``),
 apply to an element and its children as one layer. Anything else is skipped with DRW002: the
@@ -50,6 +51,7 @@ from xaml3d.xaml.controls_reader import (
     _scroll_bar,
     _slider,
 )
+from xaml3d.xaml.image_element import ImageLayout
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
@@ -192,8 +194,13 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         fill = _brush(r, v, "Background", _rgb("A0A0A0"))  # SystemColors.ControlDark
         out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)), brush=fill))
         return
+    if local == "GridSplitter":  # Aero2: a Border of Background (SystemColors.Control)
+        border = v.get("BorderThickness", parse_thickness, (0.0,) * 4)
+        fill = _brush(r, v, "Background", _rgb("F0F0F0"))
+        out.extend(_box_drawing(fill, _brush(r, v, "BorderBrush"), border, 0.0, w, h))
+        return
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
-                  L.UNIFORM, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
+                  L.UNIFORM, L.WRAP, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
         return
     if n.kind == L.BORDER:
@@ -226,6 +233,11 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "ScrollBar":
         _scroll_bar(r, v, w, h, out)
         return
+    if local == "Image" and isinstance(n.state, ImageLayout):  # a DrawingImage
+        d = n.state.drawn(w, h)
+        if d is not None:
+            out.append(d)
+        return
     if local == "Image" and v.p is not None:
         source, where, attr = image_source(r, v.p, "Source")
         if source:
@@ -246,7 +258,7 @@ def _shape(r, v, n, local: str, w: float, h: float, out: list) -> None:
 
 
 _WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
-                                             "Separator", "ScrollBar"}  # fmt: skip
+                                             "Separator", "ScrollBar", "GridSplitter"}  # fmt: skip
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:

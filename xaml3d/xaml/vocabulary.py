@@ -146,7 +146,11 @@ _t("AxisAngleRotation3D", "rotation3d", {"Axis": _V3, "Angle": _D})
 _t("QuaternionRotation3D", "rotation3d", {"Quaternion": "quaternion"})
 for _c in ("Model3DCollection", "Transform3DCollection", "MaterialCollection",
            "Visual3DCollection", "GradientStopCollection", "TransformCollection",
-           "TimelineCollection", "TriggerActionCollection", "TriggerCollection"):  # fmt: skip
+           "TimelineCollection", "TriggerActionCollection", "TriggerCollection",
+           # the 2D ones (DrawingGroup.Children, GeometryGroup.Children, PathGeometry.Figures,
+           # PathFigure.Segments): WPF takes the explicit element in each
+           "DrawingCollection", "GeometryCollection", "PathFigureCollection",
+           "PathSegmentCollection"):  # fmt: skip
     _t(_c, "collection", content="Children")
 for _c in ("Point3DCollection", "Vector3DCollection", "PointCollection", "Int32Collection",
            "DoubleCollection"):  # fmt: skip
@@ -260,13 +264,13 @@ MediaElement KeyBinding MouseBinding BooleanToVisibilityConverter Run Span Bold 
 Hyperlink LineBreak Paragraph FlowDocument FlowDocumentScrollViewer RichTextBox PasswordBox
 UniformGrid GridSplitter StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Popup
 Thumb Track ScrollBar ResizeGrip NavigationWindow HeaderedContentControl Calendar DatePicker
-DataGrid TreeView TreeViewItem PathGeometry PathFigure PathFigureCollection PathSegmentCollection
+DataGrid TreeView TreeViewItem PathGeometry PathFigure
 BezierSegment LineSegment ArcSegment PolyLineSegment PolyBezierSegment QuadraticBezierSegment
 PolyQuadraticBezierSegment EllipseGeometry RectangleGeometry LineGeometry GeometryGroup
 CombinedGeometry StreamGeometry DrawingGroup GeometryDrawing ImageDrawing GlyphRunDrawing
 VideoDrawing DrawingImage BitmapImage Pen DashStyle DropShadowEffect BlurEffect VisualTarget
 BlurBitmapEffect DropShadowBitmapEffect OuterGlowBitmapEffect BevelBitmapEffect EmbossBitmapEffect
-BitmapEffectGroup ShaderEffect DrawingCollection GeometryCollection
+BitmapEffectGroup ShaderEffect
 ObjectDataProvider XmlDataProvider Binding MultiBinding RelativeSource ImageSource BitmapCache
 Color Double Int32 String Boolean Point Point3D Vector3D Thickness CornerRadius FontFamily
 FontWeight Array Null Static Type Key Code XData
