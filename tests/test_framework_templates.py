@@ -349,6 +349,41 @@ def test_merged_dictionary_theme(tmp_path):
     assert tuple(px[0, 40][:3]) == (0, 0, 255)
 
 
+def test_a_bound_resource_reference_resolves_where_the_control_is(tmp_path):
+    # the template lives in a merged dictionary's file, the brush in the window: WPF resolves
+    # the Button's own StaticResource in the Button's scope, then the Border binds its value
+    (tmp_path / "look.xaml").write_text(
+        """<ResourceDictionary xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation">
+  <Style TargetType="Button">
+    <Setter Property="Template">
+      <Setter.Value>
+        <ControlTemplate TargetType="Button">
+          <Border Background="{TemplateBinding Background}" BorderBrush="Black"
+                  BorderThickness="2" />
+        </ControlTemplate>
+      </Setter.Value>
+    </Setter>
+  </Style>
+</ResourceDictionary>""",
+        encoding="utf-8",
+    )
+    merged = """<ResourceDictionary><ResourceDictionary.MergedDictionaries>
+      <ResourceDictionary Source="look.xaml" /></ResourceDictionary.MergedDictionaries>
+      <SolidColorBrush x:Key="known" Color="Red" />
+    </ResourceDictionary>"""
+    feature = window(merged, '<Button Height="24" Background="{StaticResource known}" />')
+    twin = window(
+        "",
+        """
+      <ContentControl Height="24">
+        <Border Background="Red" BorderBrush="Black" BorderThickness="2" />
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[12, 40][:3]) == (255, 0, 0)
+    assert not [d for d in load(tmp_path / "feature.xaml").diagnostics if d.code == "RES001"]
+
+
 def test_unsupported_template_is_said(tmp_path):
     feature = window(
         "",

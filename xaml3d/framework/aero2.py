@@ -1,6 +1,8 @@
 """The theme's values for the controls' properties: what a ``{TemplateBinding P}`` reads when
-neither the control nor its Style sets P (WPF's default Style of the Aero2 theme, from the
-[[Aero2.NormalColor]] values of dotnet/wpf's theme files, then the properties' own defaults).
+neither the control, its Style nor the theme dictionary's Style (``xaml3d/data/themes/aero2.xaml``:
+Button, ToggleButton, RepeatButton) sets P (WPF's default Style of the Aero2 theme, from the
+[[Aero2.NormalColor]] values of dotnet/wpf's theme files, for the controls whose Style is not
+yet written in the theme dictionary; then the properties' own defaults).
 
 A user's Style does not replace the theme's: WPF applies both (the theme Style sits below the
 user's Style in value precedence), unless ``OverridesDefaultStyle`` is set.
@@ -8,15 +10,6 @@ user's Style in value precedence), unless ``OverridesDefaultStyle`` is set.
 
 from __future__ import annotations
 
-_BUTTON = {
-    "Background": "#FFDDDDDD",  # Button.Static.Background
-    "BorderBrush": "#FF707070",  # Button.Static.Border
-    "Foreground": "#FF000000",  # SystemColors.ControlTextBrush
-    "BorderThickness": "1",
-    "HorizontalContentAlignment": "Center",
-    "VerticalContentAlignment": "Center",
-    "Padding": "1",
-}
 _OPTION = {
     "Background": "#FFFFFFFF",  # OptionMark.Static.Background
     "BorderBrush": "#FF707070",  # OptionMark.Static.Border
@@ -25,9 +18,6 @@ _OPTION = {
 }
 
 THEME: dict[str, dict[str, str]] = {
-    "Button": _BUTTON,
-    "ToggleButton": _BUTTON,
-    "RepeatButton": _BUTTON,
     "CheckBox": _OPTION,
     "RadioButton": _OPTION,
     "Label": {

@@ -24,6 +24,10 @@ class Services(Protocol):
         """The implicit DataTemplate (``DataType`` without ``x:Key``) of type ``type_name``
         in scope at ``from_el``, or None."""
 
+    def theme_styles(self, type_name: str) -> list:
+        """The theme's Style chain for a ``type_name`` control, base first (the package's
+        theme dictionary, read on first use), or an empty list."""
+
     def wpf_type(self, el: Any) -> str | None:
         """The type name of a WPF (presentation namespace) element, else None (another
         namespace's, or not an element)."""

@@ -1,7 +1,8 @@
 """A control's Style and its property values as WPF's value precedence gives them at load:
 local value, then Style triggers, then template triggers (those of the control's template
 without TargetName), then Style setters (``BasedOn`` chains: the derived Style's win), then
-the theme's value (``aero2``).
+the theme Style's setters (the package's theme dictionary, ``Services.theme_styles``), then
+the theme's values not yet written as XAML and the properties' defaults (``aero2``).
 
 A value is ``("text", str)`` (an attribute's text, markup extensions kept for the reader) or
 ``("element", el)`` (an object written as an element: a brush, a template).
@@ -83,6 +84,7 @@ class Control:
                 if prop and value is not None and not s.get("TargetName"):
                     self.setters[property_name(prop)] = value
         self.triggered: dict[str, tuple] = {}  # Style triggers' and template triggers' values
+        self._theme: dict[str, tuple] | None = None  # read on first use: theme_setters()
 
     # ----------------------------------------------------------------- the Style
     def _style_chain(self) -> list:
@@ -113,6 +115,24 @@ class Control:
                 style = sv.find(key, style) if key is not None else None
         return chain[::-1]
 
+    def theme_setters(self) -> dict[str, tuple]:
+        """The Setters of the control's theme Style chain (the lowest Style precedence: WPF
+        applies it beside the user's Style, unless OverridesDefaultStyle), read on first use."""
+        if self._theme is None:
+            self._theme = {}
+            if (self.value_of_own("OverridesDefaultStyle") or "").strip().lower() != "true":
+                for style in self.services.theme_styles(self.type):
+                    for s in setters(style):
+                        prop, value = s.get("Property"), setter_value(s)
+                        if prop and value is not None and not s.get("TargetName"):
+                            self._theme[property_name(prop)] = value
+        return self._theme
+
+    def value_of_own(self, prop: str) -> str | None:
+        """``prop`` as the control or its Style writes it (text), else None."""
+        hit = self.local(prop) or self.setters.get(prop)
+        return hit[1] if hit is not None and hit[0] == "text" else None
+
     # ----------------------------------------------------------------- values
     def local(self, prop: str):
         """The control's local value of ``prop`` (attribute or property element), or None."""
@@ -137,6 +157,8 @@ class Control:
             hit = self.triggered.get(prop)
         if hit is None:
             hit = self.setters.get(prop)
+        if hit is None:
+            hit = self.theme_setters().get(prop)
         if hit is None:
             text = theme_value(self.type, prop)
             hit = None if text is None else ("text", text)

@@ -352,7 +352,21 @@ class _Instantiation:
                 self.sv.diag("TPL002", msg, part, attr=attr, once=("TPL002", id(part), attr))
                 del part.attrib[attr]
                 continue
-            put(self.sv, part, attr, c.value(prop))
+            put(self.sv, part, attr, self.in_control_scope(c, part, c.value(prop)))
+
+    def in_control_scope(self, c: Control, part, value):
+        """A resource reference in the control's value resolved where the control is: the
+        part, a copy, looks resources up in its template's scope, which does not hold the
+        control's resources when the template comes from another dictionary (a merged
+        dictionary's file, the application's). Left as written when the part finds the key
+        itself or the control does not (the reader then reports it)."""
+        if value is None or value[0] != "text":
+            return value
+        key = markup.resource_key(value[1])
+        if key is None or self.sv.find(key, part) is not None:
+            return value
+        entry = self.sv.find(key, c.el)
+        return value if entry is None else ("element", entry)
 
     def present(self, c: Control, presenter) -> None:
         """A ContentPresenter filled with the control's content (or its own Content)."""
@@ -493,7 +507,9 @@ def put(sv, el, prop: str, value) -> None:
     owner = prop if "." in prop else f"{local_name(el.tag)}.{prop}"
     holder = el.makeelement(_same_ns(el, owner), {})
     sv.made(holder, el)
-    holder.append(sv.copy(v))
+    made = sv.copy(v)
+    made.attrib.pop(f"{{{X_NS}}}Key", None)  # a resource entry's copy, now a property value
+    holder.append(made)
     el.insert(0, holder)
 
 

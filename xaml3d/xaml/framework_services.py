@@ -8,6 +8,7 @@ import copy
 
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.resources import data_template_key, type_key
+from xaml3d.xaml.theme import theme_styles
 
 _TEMPLATES = {"ControlTemplate", "DataTemplate", "ItemsPanelTemplate", "HierarchicalDataTemplate"}
 
@@ -34,6 +35,9 @@ class ReaderServices:
     def implicit_data_template(self, type_name: str, from_el):
         entry = self.resources.find(data_template_key(type_name), from_el)
         return entry if entry is not None and qname(entry.tag)[1] == "DataTemplate" else None
+
+    def theme_styles(self, type_name: str) -> list:
+        return theme_styles(type_name)
 
     def wpf_type(self, el) -> str | None:
         if not isinstance(el.tag, str):
