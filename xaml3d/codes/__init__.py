@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import functools
 
-from xaml3d import errors
+import xaml3d.errors as errors
 from xaml3d.codes import (
     animation,
     camera,

@@ -25,7 +25,7 @@ _done: set[tuple[str, str, str]] = set()  # (module, kernel, signature) saved by
 def remember(module, names: list[str]) -> None:
     """Save the compiled versions of ``module``'s kernels ``names`` (numba dispatchers that
     have run in this process) that the manifest does not list yet."""
-    from xaml3d import native
+    import xaml3d.native as native
 
     if not native.enabled():
         return

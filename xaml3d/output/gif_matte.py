@@ -22,7 +22,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from xaml3d import native
+import xaml3d.native as native
 from xaml3d.numba_env import mode
 
 # Share of a frame's covered pixels that must be translucent inside a surface before the frame

@@ -21,7 +21,7 @@ import importlib
 import importlib.util
 import sys
 
-from xaml3d import native
+import xaml3d.native as native
 from xaml3d.numba_env import ENV, MODES, mode, set_cache_dir
 
 __all__ = [

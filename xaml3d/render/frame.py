@@ -38,7 +38,7 @@ import sys
 
 import numpy as np
 
-from xaml3d import native
+import xaml3d.native as native
 from xaml3d.render import accel
 
 DEPTH_OFFSET = 2.0  # stored depth = d - 2: drawn samples < 0, the zero fill = empty

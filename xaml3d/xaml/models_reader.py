@@ -17,7 +17,7 @@ from functools import partial
 
 import numpy as np
 
-from xaml3d import native
+import xaml3d.native as native
 from xaml3d.errors import GeometryError
 from xaml3d.scene import tracks as K
 from xaml3d.scene import transforms as T

@@ -27,7 +27,8 @@ import warnings
 
 import numpy as np
 
-from xaml3d import native, numba_env
+import xaml3d.native as native
+import xaml3d.numba_env as numba_env
 from xaml3d.codes.values import VALUE_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.xaml import number_lists
