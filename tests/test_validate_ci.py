@@ -218,17 +218,17 @@ def test_the_pre_commit_hook_validates_xaml_files(tmp_path):
            "GIT_AUTHOR_EMAIL": "t@example.org", "GIT_COMMITTER_NAME": "t",
            "GIT_COMMITTER_EMAIL": "t@example.org"}  # fmt: skip
 
-    def hook(*files):
-        cmd = [sys.executable, "-m", "pre_commit", "try-repo", str(ROOT), "xaml3d-validate",
-               "--verbose", "--files", *files]  # fmt: skip
-        return subprocess.run(cmd, cwd=repo, env=env, capture_output=True, text=True,
-                              timeout=1800)  # fmt: skip
-
-    good = hook("cube.xaml", "notes.txt")
-    assert good.returncode == 0, good.stdout + good.stderr
-    assert re.search(r"xaml3d validate\.+Passed", good.stdout)
-    bad = hook("broken.xaml", "cube.xaml", "notes.txt")
-    assert bad.returncode == 1, bad.stdout + bad.stderr
-    assert re.search(r"xaml3d validate\.+Failed", bad.stdout)
-    assert "broken.xaml:3:41: error XAML004 PerspectiveCamera has no property" in bad.stdout
-    assert "notes.txt" not in bad.stdout  # files: \.xaml$
+    # one run (pre-commit builds the hook's environment, xaml3d and its dependencies, each
+    # time it is given the repository): a scene with errors fails the commit, a good scene
+    # passes silently, a file that is not .xaml is not given to the hook
+    cmd = [sys.executable, "-m", "pre_commit", "try-repo", str(ROOT), "xaml3d-validate",
+           "--verbose", "--files", "broken.xaml", "cube.xaml", "notes.txt"]  # fmt: skip
+    run = subprocess.run(cmd, cwd=repo, env=env, capture_output=True, text=True, timeout=1800)
+    out = run.stdout
+    assert run.returncode == 1, out + run.stderr
+    assert re.search(r"xaml3d validate\.+Failed", out)
+    assert "- hook id: xaml3d-validate" in out and "- exit code: 1" in out
+    assert "broken.xaml:3:41: error XAML004 PerspectiveCamera has no property" in out
+    assert "broken.xaml:3:5: error CAM003 " in out
+    assert "xaml3d: 2 error(s), 3 warning(s) in 2 files" in out  # broken.xaml and cube.xaml
+    assert "notes.txt" not in out.split("Failed", 1)[1]  # files: \.xaml$
