@@ -10,7 +10,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 MISSING = (
-    "<DiffuseMaterial><DiffuseMaterial.Brush><ImageBrush ImageSource=\"missing.png\"/>"
+    '<DiffuseMaterial><DiffuseMaterial.Brush><ImageBrush ImageSource="missing.png"/>'
     "</DiffuseMaterial.Brush></DiffuseMaterial>"
 )
 
