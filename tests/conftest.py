@@ -37,3 +37,35 @@ def corpus_dir() -> Path:
     if not CORPUS.is_dir():
         pytest.skip(f"the shared corpus is absent ({CORPUS})")
     return CORPUS
+
+
+# The quick run, `python -m pytest -m "not slow"`, leaves out what takes long: whole modules of
+# reference images, the corpus, browsers and node, worker pools, compiled code and command-line
+# runs in subprocesses, and single slow tests (by name). Measured with --durations (README).
+SLOW_MODULES = frozenset(
+    {
+        "test_reference.py",  # 666 reference images
+        "test_corpus_cli.py",
+        "test_corpus_layout.py",
+        "test_corpus_load.py",
+        "test_corpus_render.py",
+        "test_export_browser.py",  # headless Chromium
+        "test_export_validator.py",  # node's glTF validator
+        "test_executors.py",  # a dask cluster
+        "test_native_kernels.py",  # machine code compiled and loaded in fresh processes
+        "test_fuzz.py",
+        "test_workers.py",  # worker pools
+        "test_cli_jobs.py",
+        "test_cli_animate_safety.py",  # animations written by the command line
+        "test_cli_animate_window.py",
+        "test_cli_window_2d_animation.py",
+        "test_startup_imports.py",  # fresh interpreters
+    }
+)
+SLOW_TESTS: frozenset[str] = frozenset()
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if item.path.name in SLOW_MODULES or item.nodeid.split("[")[0] in SLOW_TESTS:
+            item.add_marker(pytest.mark.slow)

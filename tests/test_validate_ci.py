@@ -232,3 +232,18 @@ def test_the_pre_commit_hook_validates_xaml_files(tmp_path):
     assert "broken.xaml:3:5: error CAM003 " in out
     assert "xaml3d: 2 error(s), 3 warning(s) in 2 files" in out  # broken.xaml and cube.xaml
     assert "notes.txt" not in out.split("Failed", 1)[1]  # files: \.xaml$
+
+
+# --------------------------------------------------------------------------- the README's set-up
+
+
+def test_ci_runs_the_readme_test_command_exactly():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    block = re.search(r"run the\s+whole test suite:\n\n    ([^\n]+)\n", readme)
+    assert block, "the README's test command is not found"
+    script = (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()
+    assert block.group(1) in script
+    # and its set-up makes a virtual environment first
+    setup = re.search(r"\n    (python3 -m venv \.venv && \. \.venv/bin/activate && pip install \.)",
+                      readme)  # fmt: skip
+    assert setup
