@@ -70,6 +70,17 @@ def test_an_empty_lenient_picture_says_why(tmp_path):
         f"{name}: warning RND002 nothing was drawn in the image: the camera cannot produce one "
         "(CAM003 UpDirection is parallel to LookDirection: the roll is undefined)"
     ) in p.stderr.splitlines()
+    # animate --lenient: the frames are empty too, and one warning says so
+    p = xaml3d("animate", ROOT / BROKEN, "-o", tmp_path / "b.gif", "--lenient", "--fps", "2",
+               "-W", "32", "-j", "1", cwd=tmp_path)  # fmt: skip
+    assert p.returncode == 0, p.stderr
+    lines = p.stderr.splitlines()
+    assert " error " not in p.stderr
+    assert lines[-1] == (
+        f"{name}: warning RND002 nothing was drawn in the frames: the camera cannot produce an "
+        "image (CAM003 UpDirection is parallel to LookDirection: the roll is undefined)"
+    )
+    assert (tmp_path / "b.gif").stat().st_size > 0
 
 
 # --------------------------------------------------------------------------- GitHub

@@ -59,7 +59,7 @@ from xaml3d.cli_render_extras import (
     lens_arguments,
 )
 from xaml3d.codes.animation import ANIM_CODES
-from xaml3d.errors import ERROR, CameraError, Diagnostic, XamlError
+from xaml3d.errors import ERROR, WARNING, CameraError, Diagnostic, XamlError
 from xaml3d.findings import begun_by_name, has_errors, scene_findings
 from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.animation import (
@@ -278,10 +278,25 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     finally:
         if sequence is not None:
             sequence.discard()  # a failure or Ctrl-C: no frame file of this run is left
+    if lenient:
+        diags = _lenient_empty(diags, file)
     errors = [d for d in diags if d.severity == ERROR and d.code.startswith("CAM")]
     echo_diagnostics(_unshown(diags, shown), quiet=quiet, verbose=verbose)
     if errors:
         ctx.exit(1)
+
+
+def _lenient_empty(diags: list, file: str) -> list:
+    """--lenient: the frames' camera errors that the findings already reported (as warnings)
+    become one warning RND002 saying why the frames are empty, as WPF draws nothing."""
+    known = {(d.code, d.file, d.line, d.column) for d in diags if d.severity == WARNING}
+    moot = [d for d in diags
+            if d.severity == ERROR and (d.code, d.file, d.line, d.column) in known]  # fmt: skip
+    if not moot:
+        return diags
+    causes = "; ".join(dict.fromkeys(f"{d.code} {d.message}" for d in moot))
+    msg = f"nothing was drawn in the frames: the camera cannot produce an image ({causes})"
+    return [*(d for d in diags if d not in moot), Diagnostic("RND002", WARNING, msg, file)]
 
 
 def _unshown(diags, shown: set) -> list:
