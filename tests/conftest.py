@@ -54,15 +54,41 @@ SLOW_MODULES = frozenset(
         "test_executors.py",  # a dask cluster
         "test_native_kernels.py",  # machine code compiled and loaded in fresh processes
         "test_fuzz.py",
+        "test_number_scan.py",  # thousands of property examples, the scanner compiled
         "test_workers.py",  # worker pools
         "test_cli_jobs.py",
         "test_cli_animate_safety.py",  # animations written by the command line
         "test_cli_animate_window.py",
         "test_cli_window_2d_animation.py",
         "test_startup_imports.py",  # fresh interpreters
+        # most of their tests run the command line in a subprocess (about a second each)
+        "test_cli_render_outputs.py",
+        "test_cli_subprocess.py",
+        "test_cli_layout.py",
+        "test_lens.py",
+        "test_diagnostic_locations.py",
+        "test_wpf_errors.py",
+        "test_gif_delta.py",
+        "test_validate_ci.py",
+        "test_warnings_first.py",
     }
 )
-SLOW_TESTS: frozenset[str] = frozenset()
+# single tests of the other modules that take seconds (by name: every parameter of it)
+SLOW_TESTS = frozenset(
+    {
+        "tests/test_docs.py::test_api_examples_run",
+        "tests/test_frame_session.py::test_frame_passes_and_gif_passes_load_without_numba_registries",
+        "tests/test_kernels.py::test_cached_kernels_load_without_numba_registries",
+        "tests/test_values.py::test_million_points_one_vectorized_conversion",
+        "tests/test_reader_refusals.py::test_behaviors_window_validates_and_renders",
+        "tests/test_render_scenes.py::test_near_plane_crossing_no_ghost",
+        "tests/test_pass_loop.py::test_flat_solid_colours_loop_like_the_other_paths",
+        "tests/test_animation_scene.py::test_cli_animate_formats",
+        "tests/test_animation_scene.py::test_cli_animate_gif_transparency_and_frames_dir",
+        "tests/test_resources.py::test_missing_key_hint_gives_the_path_as_typed_from_the_current_directory",
+        "tests/test_export.py::test_cli_export_refuses_bad_input_without_writing",
+    }
+)
 
 
 def pytest_collection_modifyitems(config, items):
