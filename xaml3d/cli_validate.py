@@ -4,7 +4,8 @@ Collects, per file, a fatal reading error (XML, unreadable file...) if any, else
 ``xaml3d.findings.scene_findings``: the reader's diagnostics, ``check_camera`` for every viewport
 (at -W/-H when given) and ``check_scene`` of WPF's first frame, exactly the list
 ``xaml3d render`` prints and refuses a scene for. The findings are the command's data, so
-they go to stdout (text lines or JSON); a one-line summary goes to stderr.
+they go to stdout (text lines, JSON, SARIF or GitHub workflow commands: ``xaml3d.report``); a
+one-line summary goes to stderr (text and GitHub forms).
 """
 
 from __future__ import annotations
