@@ -61,25 +61,23 @@ def test_a_refused_look_direction_still_gets_the_checks_of_the_up_direction():
 
 
 def test_an_empty_lenient_picture_says_why(tmp_path):
+    # the camera WPF's defaults complete cannot produce an image: the picture is empty, and
+    # the camera's error, printed as a warning, says why (as for any camera error)
+    cam003 = (
+        f"{ROOT / BROKEN}:3:5: warning CAM003 UpDirection is parallel to LookDirection: the roll "
+        "is undefined (with WPF's default LookDirection: the markup's value was refused) "
+        "[an error, rendered anyway: --lenient]"
+    )
     p = xaml3d("render", ROOT / BROKEN, "-o", tmp_path / "b.png", "--lenient", cwd=tmp_path)
     assert p.returncode == 0
     image = np.asarray(Image.open(tmp_path / "b.png"))
     assert image.shape == (240, 320, 4) and int(image[..., 3].max()) == 0  # nothing drawn
-    name = str(ROOT / BROKEN)
-    assert (
-        f"{name}: warning RND002 nothing was drawn in the image: the camera cannot produce one "
-        "(CAM003 UpDirection is parallel to LookDirection: the roll is undefined)"
-    ) in p.stderr.splitlines()
-    # animate --lenient: the frames are empty too, and one warning says so
+    assert cam003 in p.stderr.splitlines() and " error " not in p.stderr
+    # animate --lenient: the frames are empty, said once, and the run succeeds
     p = xaml3d("animate", ROOT / BROKEN, "-o", tmp_path / "b.gif", "--lenient", "--fps", "2",
                "-W", "32", "-j", "1", cwd=tmp_path)  # fmt: skip
     assert p.returncode == 0, p.stderr
-    lines = p.stderr.splitlines()
-    assert " error " not in p.stderr
-    assert lines[-1] == (
-        f"{name}: warning RND002 nothing was drawn in the frames: the camera cannot produce an "
-        "image (CAM003 UpDirection is parallel to LookDirection: the roll is undefined)"
-    )
+    assert p.stderr.splitlines().count(cam003) == 1 and " error " not in p.stderr
     assert (tmp_path / "b.gif").stat().st_size > 0
 
 

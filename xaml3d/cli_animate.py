@@ -279,24 +279,19 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if sequence is not None:
             sequence.discard()  # a failure or Ctrl-C: no frame file of this run is left
     if lenient:
-        diags = _lenient_empty(diags, file)
+        diags = _lenient_empty(diags)
     errors = [d for d in diags if d.severity == ERROR and d.code.startswith("CAM")]
     echo_diagnostics(_unshown(diags, shown), quiet=quiet, verbose=verbose)
     if errors:
         ctx.exit(1)
 
 
-def _lenient_empty(diags: list, file: str) -> list:
-    """--lenient: the frames' camera errors that the findings already reported (as warnings)
-    become one warning RND002 saying why the frames are empty, as WPF draws nothing."""
+def _lenient_empty(diags: list) -> list:
+    """--lenient: the frames' camera errors that the findings already reported (as warnings,
+    which say why the frames are empty, as WPF draws nothing) are not errors again."""
     known = {(d.code, d.file, d.line, d.column) for d in diags if d.severity == WARNING}
-    moot = [d for d in diags
-            if d.severity == ERROR and (d.code, d.file, d.line, d.column) in known]  # fmt: skip
-    if not moot:
-        return diags
-    causes = "; ".join(dict.fromkeys(f"{d.code} {d.message}" for d in moot))
-    msg = f"nothing was drawn in the frames: the camera cannot produce an image ({causes})"
-    return [*(d for d in diags if d not in moot), Diagnostic("RND002", WARNING, msg, file)]
+    return [d for d in diags
+            if d.severity != ERROR or (d.code, d.file, d.line, d.column) not in known]  # fmt: skip
 
 
 def _unshown(diags, shown: set) -> list:

@@ -39,7 +39,7 @@ from xaml3d.cli_render_extras import (
     write_buffers,
     write_svg,
 )
-from xaml3d.errors import ERROR, WARNING, CameraError, Diagnostic, RenderError, XamlError
+from xaml3d.errors import ERROR, CameraError, RenderError, XamlError
 from xaml3d.findings import has_errors, scene_findings, with_file
 from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.atomic import together
@@ -246,11 +246,7 @@ def _checked(fresh, make_image, file: str, opts: RenderOptions, diags: list):
     diags.extend(d for d in fresh if d.severity != ERROR)
     fatal = [d for d in fresh if d.severity == ERROR]
     # Under --lenient a camera that cannot produce an image was already reported by the camera
-    # check (as a warning): the picture stays empty, as WPF draws nothing, and says so.
-    if fatal and opts.lenient:
-        causes = "; ".join(dict.fromkeys(f"{d.code} {d.message}" for d in fatal))
-        msg = f"nothing was drawn in the image: the camera cannot produce one ({causes})"
-        diags.append(Diagnostic("RND002", WARNING, msg, file))
+    # check (as a warning): the picture stays empty, as WPF draws nothing.
     if fatal and not opts.lenient:  # e.g. a camera that cannot produce an image
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
         echo_diagnostics(fatal)
