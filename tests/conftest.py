@@ -41,7 +41,9 @@ def corpus_dir() -> Path:
 
 # The quick run, `python -m pytest -m "not slow"`, leaves out what takes long: whole modules of
 # reference images, the corpus, browsers and node, worker pools, compiled code and command-line
-# runs in subprocesses, and single slow tests (by name). Measured with --durations (README).
+# runs in subprocesses, and single slow tests (by name): those that took a second or more of
+# CPU time (the process and its children, which a shared machine's load does not inflate as it
+# does --durations' wall-clock times). `python -m pytest -q` still runs everything.
 SLOW_MODULES = frozenset(
     {
         "test_reference.py",  # 666 reference images
