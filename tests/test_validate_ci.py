@@ -60,6 +60,28 @@ def test_a_refused_look_direction_still_gets_the_checks_of_the_up_direction():
     )
 
 
+def test_a_refused_position_still_says_the_scene_is_out_of_view(tmp_path):
+    # Position="0,0,abc": WPF's default (0,0,0) stands in, looking down -z at a triangle at
+    # z = 5 behind it: the lenient picture is empty and CAM107 says why, naming the default
+    scene = (ROOT / BROKEN).read_text(encoding="utf-8")
+    scene = (
+        scene.replace(
+            'Position="0,0,5" LookDirecton="0,0,-1" UpDirection="0,0,1"', 'Position="0,0,abc"'
+        )
+        .replace(",0 ", ",5 ")
+        .replace(',0"', ',5"')
+    )
+    scene = scene.replace(' 3"/>', '"/>')
+    (tmp_path / "s.xaml").write_text(scene, encoding="utf-8")
+    p = xaml3d("validate", "--format", "json", "s.xaml", cwd=tmp_path)
+    found = [(d["code"], d["severity"], d["message"]) for d in json.loads(p.stdout)]
+    assert [f[0] for f in found if f[1] != "info"] == ["CHK002", "CAM107", "VAL001"], found
+    assert found[2][2].endswith(
+        "behind the camera (entirely at or behind the eye, along LookDirection): the image will "
+        "be empty (with WPF's default Position: the markup's value was refused)"
+    )
+
+
 def test_an_empty_lenient_picture_says_why(tmp_path):
     # the camera WPF's defaults complete cannot produce an image: the picture is empty, and
     # the camera's error, printed as a warning, says why (as for any camera error)

@@ -56,6 +56,7 @@ _PROJECTION = frozenset(
     {"Position", "LookDirection", "UpDirection", "FieldOfView", "Width", "NearPlaneDistance",
      "FarPlaneDistance", "Transform"}
 )  # fmt: skip
+SCENE = "(the scene)"  # stands for the models' markup, always read
 FINDING_PROPERTIES: dict[str, frozenset[str]] = {
     "CAM001": frozenset({"LookDirection"}),
     "CAM002": frozenset({"UpDirection"}),
@@ -70,7 +71,8 @@ FINDING_PROPERTIES: dict[str, frozenset[str]] = {
     "CAM009": frozenset({"Width"}),
     "CAM011": frozenset({"Transform"}),
     "CAM012": frozenset({"ViewMatrix", "ProjectionMatrix"}),
-    "CAM107": _PROJECTION | {"ViewMatrix", "ProjectionMatrix"},
+    # the scene out of view: about the scene's markup too, and why a --lenient picture is empty
+    "CAM107": _PROJECTION | {"ViewMatrix", "ProjectionMatrix", SCENE},
     "CAM108": frozenset({"Position", "Transform"}),
     "CAM109": frozenset({"Position", "NearPlaneDistance", "Transform"}),
 }
@@ -81,7 +83,7 @@ def with_refused(diags: list[Diagnostic], camera, properties) -> list[Diagnostic
     no property the markup gives and WPF accepted (``properties[code]``; a code not listed is
     always kept) left out, the others told which defaults they used."""
     rejected = frozenset(getattr(camera, "rejected", ()))
-    read = frozenset(getattr(camera, "given", ())) - rejected
+    read = (frozenset(getattr(camera, "given", ())) - rejected) | {SCENE}
     out = []
     for d in diags:
         about = properties.get(d.code)
