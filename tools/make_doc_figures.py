@@ -372,8 +372,14 @@ def figure_depth() -> None:
     save(side_by_side(images, captions), "depth")
 
 
+def figure_readme() -> None:
+    """The README's gallery picture of samples/materials.xaml (the sample as it is)."""
+    save(render(ROOT / "samples" / "materials.xaml", width=480), "readme-materials")
+
+
 def main() -> None:
     FIGURES.mkdir(parents=True, exist_ok=True)
+    figure_readme()
     figure_cube()
     figure_worked_example()
     figure_frustum()

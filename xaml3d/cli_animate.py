@@ -59,7 +59,7 @@ from xaml3d.cli_render_extras import (
     lens_arguments,
 )
 from xaml3d.codes.animation import ANIM_CODES
-from xaml3d.errors import ERROR, CameraError, Diagnostic, XamlError
+from xaml3d.errors import ERROR, WARNING, CameraError, Diagnostic, XamlError
 from xaml3d.findings import begun_by_name, has_errors, scene_findings
 from xaml3d.findings import lenient as lenient_findings
 from xaml3d.output.animation import (
@@ -173,6 +173,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
     inputs += [Path(p) for p in scene_files_read(sc)]  # App.xaml, dictionaries, images
     file = sc.file or name
     diags = [with_file(d, file) for d in begun_by_name(sc.diagnostics, sc, storyboard)]
+    shown: set = set()  # printed before the first frame: not again at the end
     sequence = None
     try:
         start = start or 0.0
@@ -211,6 +212,10 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         sequence = FrameSequence(Path(output), names) if to_dir else None
         jobs = default_jobs() if jobs is None else jobs
         folder = str(Path(output) if to_dir else Path(output).parent)
+        # what is known before the first frame (the findings: a missing image, a light...)
+        # is said before the progress, not after a long run
+        echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+        shown.update(diags)
         if not quiet and (verbose or len(times) >= LONG_RUN):
             click.echo(_plan_line(name, sc, storyboard, len(times), fps, end - start), err=True)
 
@@ -263,20 +268,34 @@ def animate_command(scene, output, fps, start, end, duration, loop, clean, story
         if stale:
             diags.append(_note(file, stale_message(output, stale, len(names), clean), "IO004"))
     except XamlError as exc:
-        echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+        echo_diagnostics(_unshown(diags, shown), quiet=quiet, verbose=verbose)
         click.echo(exc.with_location(file=name).format(), err=True)
         ctx.exit(1)
     except (OSError, ValueError) as exc:
-        echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+        echo_diagnostics(_unshown(diags, shown), quiet=quiet, verbose=verbose)
         click.echo(io_error(name, describe_os_error(exc)), err=True)
         ctx.exit(1)
     finally:
         if sequence is not None:
             sequence.discard()  # a failure or Ctrl-C: no frame file of this run is left
+    if lenient:
+        diags = _lenient_empty(diags)
     errors = [d for d in diags if d.severity == ERROR and d.code.startswith("CAM")]
-    echo_diagnostics(diags, quiet=quiet, verbose=verbose)
+    echo_diagnostics(_unshown(diags, shown), quiet=quiet, verbose=verbose)
     if errors:
         ctx.exit(1)
+
+
+def _lenient_empty(diags: list) -> list:
+    """--lenient: the frames' camera errors that the findings already reported (as warnings,
+    which say why the frames are empty, as WPF draws nothing) are not errors again."""
+    known = {(d.code, d.file, d.line, d.column) for d in diags if d.severity == WARNING}
+    return [d for d in diags
+            if d.severity != ERROR or (d.code, d.file, d.line, d.column) not in known]  # fmt: skip
+
+
+def _unshown(diags, shown: set) -> list:
+    return [d for d in diags if d not in shown]
 
 
 def _plan_line(name: str, sc, storyboard, count: int, fps: float, length: float) -> str:

@@ -113,6 +113,8 @@ def _export_one(source: str, target: Path, opts: dict) -> bool:
                            err=True)  # fmt: skip
                 return False
             findings = lenient_findings(findings)
+        # the findings before the export (and its progress), not after a long sampling
+        echo_diagnostics(findings, quiet=opts["quiet"], verbose=opts["verbose"])
         progress = _Progress(f"{name}: sampling the animation", opts["progress"])
         try:
             notes = export(scene, target, viewport=opts["viewport"], fmt=opts["fmt"],
@@ -120,8 +122,8 @@ def _export_one(source: str, target: Path, opts: dict) -> bool:
         finally:
             progress.close()
         file = scene.file or name
-
-        echo_diagnostics([*findings, *(with_file(d, file) for d in notes)],
+        notes = [with_file(d, file) for d in notes]
+        echo_diagnostics([d for d in notes if d not in findings],
                          quiet=opts["quiet"], verbose=opts["verbose"])  # fmt: skip
     return True
 

@@ -281,19 +281,29 @@ class Progress:
     with ``log`` instead, where no bar can be drawn, a line every few seconds
     (``cli_common.ProgressLines``)."""
 
-    def __init__(self, label: str, enabled: bool, log: bool = False) -> None:
+    def __init__(self, label: str, enabled: bool, log: bool = False, before=None) -> None:
         self.label, self.enabled, self.bar, self.done = label, enabled, None, 0
         self.log, self.lines = log, None
+        # called once before the first progress is shown (the findings known so far are said
+        # then, not after a long run)
+        self.before = before
+
+    def _starting(self) -> None:
+        if self.before is not None:
+            before, self.before = self.before, None
+            before()
 
     def __call__(self, done: int, total: int) -> None:
         if not self.enabled and self.log:
             if self.lines is None:
+                self._starting()
                 self.lines = ProgressLines(self.label, total, "renders")
             self.lines(done)
             return
         if not self.enabled or total < SLOW_SAMPLES:
             return
         if self.bar is None:
+            self._starting()
             self.bar = click.progressbar(length=total, label=self.label, file=sys.stderr)
             self.bar.__enter__()
         self.bar.update(done - self.done)

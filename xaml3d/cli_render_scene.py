@@ -185,15 +185,24 @@ def _render_viewport(
     check_lens_camera(ex, vp)
     diags.extend(focus_notes(ex, vp, file))
     terminal = stderr_is_terminal()
+    said: list = []
+
+    def say_findings():  # before the first progress line: not after the long run
+        echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
+        said.extend(diags)
+        diags.clear()
+
     progress = Progress(f"{file}: lens samples", ex.progress and terminal,
-                        log=ex.progress and not terminal and not opts.quiet)  # fmt: skip
+                        log=ex.progress and not terminal and not opts.quiet,
+                        before=say_findings)  # fmt: skip
     try:
         # the depth and distance images only when a --depth/--ids file is written
         result = render_scene(scene, settings, size=size, progress=progress,
                               depth=bool(ex.depth or ex.ids))  # fmt: skip
     finally:
         progress.close()
-    image = _checked(result.diagnostics, result.image, file, opts, diags)
+    fresh = [d for d in result.diagnostics if d not in said]
+    image = _checked(fresh, result.image, file, opts, diags)
     if ex.depth or ex.ids:
         wire = settings.mode == "wireframe" and settings.hidden_lines
 

@@ -4,7 +4,8 @@ Collects, per file, a fatal reading error (XML, unreadable file...) if any, else
 ``xaml3d.findings.scene_findings``: the reader's diagnostics, ``check_camera`` for every viewport
 (at -W/-H when given) and ``check_scene`` of WPF's first frame, exactly the list
 ``xaml3d render`` prints and refuses a scene for. The findings are the command's data, so
-they go to stdout (text lines or JSON); a one-line summary goes to stderr.
+they go to stdout (text lines, JSON, SARIF or GitHub workflow commands: ``xaml3d.report``); a
+one-line summary goes to stderr (text and GitHub forms).
 """
 
 from __future__ import annotations
@@ -66,6 +67,8 @@ Examples:
   xaml3d validate scene.xaml
   xaml3d validate --strict scenes/*.xaml
   xaml3d validate --format json scene.xaml | jq '.[] | select(.severity == "error")'
+  xaml3d validate --format sarif scenes/*.xaml > xaml3d.sarif   # GitHub code scanning
+  xaml3d validate --format github scenes/*.xaml                 # GitHub Actions annotations
   cat scene.xaml | xaml3d validate -
 
 \b
@@ -80,10 +83,11 @@ Exit status: 0 no errors, 1 errors (or warnings with --strict), 2 usage error.
 @click.option(
     "--format",
     "fmt",
-    type=click.Choice(["text", "json"]),
+    type=click.Choice(["text", "json", "sarif", "github"]),
     default="text",
     show_default=True,
-    help="text: one line per finding; json: an array of objects (see docs/cli.md).",
+    help="text: one line per finding; json: an array of objects; sarif: a SARIF 2.1.0 log; "
+    "github: GitHub Actions workflow commands (see docs/cli.md).",
 )
 @click.option("--strict", is_flag=True, help="Warnings fail too (exit 1).")
 @click.option("-W", "--width", type=click.IntRange(min=1), help="Check the cameras at this width.")
@@ -102,12 +106,24 @@ def validate_command(scenes, resources, no_app, fmt, strict, width, height) -> N
         import json  # for --json only
 
         click.echo(json.dumps([d.to_dict() for d in findings], indent=2))
+    elif fmt == "sarif":
+        import json
+
+        from xaml3d import __version__
+        from xaml3d.report import sarif_log
+
+        click.echo(json.dumps(sarif_log(findings, __version__), indent=2, ensure_ascii=False))
+    elif fmt == "github":
+        from xaml3d.report import github_line
+
+        for d in findings:
+            click.echo(github_line(d))
     else:
         for d in findings:
             click.echo(d.format())
     errors = sum(d.severity == ERROR for d in findings)
     warnings = sum(d.severity == WARNING for d in findings)
-    if fmt == "text":
+    if fmt in ("text", "github"):  # (a summary in the log; JSON and SARIF are files)
         files = f"{len(scenes)} file" + ("" if len(scenes) == 1 else "s")
         click.echo(f"xaml3d: {errors} error(s), {warnings} warning(s) in {files}", err=True)
     if errors or (strict and warnings):

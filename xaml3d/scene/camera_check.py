@@ -45,18 +45,61 @@ def _box_corners(bounds) -> np.ndarray:
     return np.column_stack([xs.ravel(), ys.ravel(), zs.ravel()])
 
 
+# The camera properties each finding is about. A camera with a value the reader refused
+# (``rejected``: an error was reported there and WPF's default stands in, as it does for
+# --lenient) is still checked with that default, so that what the rest of the markup gets
+# wrong is reported too (an UpDirection parallel to the default LookDirection that stands in
+# for a misspelt one): a finding about no value the markup gives and WPF accepts is left out
+# (it would be about the defaults, not the markup: a camera "inside the scene" at the (0,0,0)
+# that replaced an unreadable Position), the others say which default they used.
+_PROJECTION = frozenset(
+    {"Position", "LookDirection", "UpDirection", "FieldOfView", "Width", "NearPlaneDistance",
+     "FarPlaneDistance", "Transform"}
+)  # fmt: skip
+SCENE = "(the scene)"  # stands for the models' markup, always read
+FINDING_PROPERTIES: dict[str, frozenset[str]] = {
+    "CAM001": frozenset({"LookDirection"}),
+    "CAM002": frozenset({"UpDirection"}),
+    "CAM003": frozenset({"LookDirection", "UpDirection"}),
+    "CAM101": frozenset({"LookDirection", "UpDirection"}),
+    "CAM004": frozenset({"FieldOfView"}),
+    "CAM105": frozenset({"FieldOfView"}),
+    "CAM106": frozenset({"FieldOfView"}),
+    "CAM005": frozenset({"NearPlaneDistance"}),
+    "CAM007": frozenset({"NearPlaneDistance", "FarPlaneDistance"}),
+    "CAM102": frozenset({"NearPlaneDistance", "FarPlaneDistance"}),
+    "CAM009": frozenset({"Width"}),
+    "CAM011": frozenset({"Transform"}),
+    "CAM012": frozenset({"ViewMatrix", "ProjectionMatrix"}),
+    # the scene out of view: about the scene's markup too, and why a --lenient picture is empty
+    "CAM107": _PROJECTION | {"ViewMatrix", "ProjectionMatrix", SCENE},
+    "CAM108": frozenset({"Position", "Transform"}),
+    "CAM109": frozenset({"Position", "NearPlaneDistance", "Transform"}),
+}
+
+
+def with_refused(diags: list[Diagnostic], camera, properties) -> list[Diagnostic]:
+    """``diags`` of a ``camera`` whose ``rejected`` values WPF's defaults replace: those about
+    no property the markup gives and WPF accepted (``properties[code]``; a code not listed is
+    always kept) left out, the others told which defaults they used."""
+    rejected = frozenset(getattr(camera, "rejected", ()))
+    read = (frozenset(getattr(camera, "given", ())) - rejected) | {SCENE}
+    out = []
+    for d in diags:
+        about = properties.get(d.code)
+        if about is None or not about & rejected:
+            out.append(d)
+        elif about & read:
+            names = ", ".join(sorted(about & rejected))
+            msg = f"{d.message} (with WPF's default {names}: the markup's value was refused)"
+            out.append(Diagnostic(d.code, d.severity, msg, d.file, d.line, d.column))
+    return out
+
+
 def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagnostic]:
     """Every problem of ``camera`` for a ``width`` x ``height`` viewport (and, when given, the
-    scene's world AABB ``bounds`` = (min, max)). Never raises.
-
-    A camera with a value the reader refused (``rejected``: an error was reported there and
-    WPF's default stands in) gets no camera findings: they would be about the default (a camera
-    "inside the scene" at the (0,0,0) that replaced an unreadable Position), not the markup.
-    Only the viewport's size (CAM010) is still checked."""
-    if getattr(camera, "rejected", None):
-        report = report_for(camera)
-        check_values(None, width, height, report)
-        return [d for d in report.items if d.code == "CAM010"]
+    scene's world AABB ``bounds`` = (min, max)). Never raises. A camera with refused values is
+    checked with WPF's defaults in their place (see ``with_refused``)."""
     report = report_for(camera)
     with np.errstate(all="ignore"):
         try:
@@ -64,6 +107,8 @@ def check_camera(camera, width: float, height: float, bounds=None) -> list[Diagn
         except (ArithmeticError, ValueError, TypeError, XamlError, np.linalg.LinAlgError) as e:
             # A check that itself fails must not hide the others; say what happened.
             report("CAM008", f"camera values could not be checked ({e})")
+    if getattr(camera, "rejected", None):
+        return with_refused(report.items, camera, FINDING_PROPERTIES)
     return report.items
 
 

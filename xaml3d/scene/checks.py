@@ -16,6 +16,7 @@ import numpy as np
 
 from xaml3d.codes.checks import CHECK_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import CameraError, Diagnostic, GeometryError
+from xaml3d.scene.camera_check import FINDING_PROPERTIES, with_refused
 from xaml3d.scene.camera_math import camera_pipeline
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
@@ -305,6 +306,13 @@ def _check_inside(vp: Viewport, file: str | None, points: np.ndarray) -> list[Di
     return []
 
 
+# the camera properties the findings about what the camera sees are about (see with_refused)
+_SEEN_PROPERTIES = {
+    "CHK003": FINDING_PROPERTIES["CAM107"],
+    "CHK009": FINDING_PROPERTIES["CAM108"],
+}
+
+
 def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     """Every scene-level finding for one viewport (its models, lights and camera coverage)."""
     out: list[Diagnostic] = []
@@ -315,14 +323,14 @@ def check_viewport(vp: Viewport, file: str | None = None) -> list[Diagnostic]:
     for i, model in enumerate(vp.models):
         out.extend(_check_model(model, i, file))
     out.extend(_check_lights(vp, file))
+    points = world_vertices(vp)  # (a million vertices: made once for both checks)
+    seen = _check_visibility(vp, file, points) + _check_inside(vp, file, points)
     if getattr(vp.camera, "rejected", None):
         # the camera holds a default standing in for a value WPF refused (an error says so):
-        # what it sees or is inside of would be about that default, not the markup
-        return out
-    points = world_vertices(vp)  # (a million vertices: made once for both checks)
-    out.extend(_check_visibility(vp, file, points))
-    out.extend(_check_inside(vp, file, points))
-    return out
+        # what it sees is still checked (as --lenient draws it), but not what would be about
+        # that default alone (the eye inside a model at a refused Position)
+        seen = with_refused(seen, vp.camera, _SEEN_PROPERTIES)
+    return out + seen
 
 
 def check_scene(scene: Scene) -> list[Diagnostic]:
