@@ -104,3 +104,55 @@ def test_a_big_render_prints_nothing_and_draws_the_same_picture(tmp_path):
         Image.open(first).save(EXPECTED)
         pytest.fail(f"{EXPECTED} written: look at it, then run again without XAML3D_REGENERATE")
     assert np.array_equal(picture, np.asarray(Image.open(EXPECTED)))
+
+
+def test_what_llvm_prints_goes_to_the_debug_log(tmp_path):
+    """Descriptor 2 (where LLVM writes) goes to the log inside the block and comes back after:
+    a C library's write and a parse in the pointer form the installed LLVM refuses print
+    nothing; Python's own stderr before and after is untouched."""
+    code = (
+        "import os, sys\n"
+        "from xaml3d.native import abi, quiet\n"
+        "import llvmlite.binding as llvm\n"
+        "print('before', file=sys.stderr, flush=True)\n"
+        "with quiet.llvm_output():\n"
+        "    os.write(2, b'from C\\n')\n"
+        "    wrong = abi.trampoline_ir('t', 'k', [['s', 'int64']], llvm.get_process_triple(), '',"
+        " typed=not abi.typed_pointers())\n"
+        "    try:\n"
+        "        llvm.parse_assembly(wrong)\n"
+        "    except RuntimeError:\n"
+        "        pass\n"
+        "print('after', file=sys.stderr, flush=True)\n"
+        "print(quiet.log_path())\n"
+    )
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
+    proc = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                          timeout=120)  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr == "before\nafter\n"
+    log = Path(proc.stdout.strip())
+    assert log == tmp_path / "cache" / "native" / "llvm.log"
+    assert log.read_text().startswith("from C\n")
+
+
+@pytest.mark.parametrize("command", ["render", "export"])
+def test_a_batch_with_q_prints_nothing_when_every_scene_went_well(tmp_path, command):
+    scenes = [str(ROOT / "samples" / n) for n in ("cube.xaml", "materials.xaml")]
+    out = tmp_path / "out"
+    args = [sys.executable, "-m", "xaml3d", command, "-q", *scenes, "-o", f"{out}/"]
+    if command == "export":
+        args += ["--format", "obj"]
+    proc = subprocess.run(args, capture_output=True, timeout=300, cwd=tmp_path,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == b"" and proc.stderr == b""
+    assert len(list(out.iterdir())) >= 2
+    bad = tmp_path / "bad.xaml"
+    bad.write_text("<Viewport3D")
+    with_bad = [*args[:5], *scenes, str(bad), *args[5 + len(scenes) :]]  # still -q
+    proc = subprocess.run(with_bad,
+                          capture_output=True, timeout=300, cwd=tmp_path,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)))  # fmt: skip
+    assert proc.returncode == 1
+    assert f" of 3 scenes; failed: {bad}" in proc.stderr.decode()
