@@ -110,14 +110,31 @@ def test_describe_refuses_what_the_block_cannot_carry():
 
 
 def test_trampoline_ir_is_valid_for_every_kind():
+    """In the pointer form the installed LLVM parses (``abi.typed_pointers``): LLVM 14 knows
+    typed pointers only, LLVM 17 on opaque ones only."""
     args = [["a", "uint8", 3, False], ["s", "int64"], ["s", "float64"], ["s", "float32"],
             ["s", "bool"]]  # fmt: skip
-    ir = abi.trampoline_ir("tramp", "kernel", args, llvm.get_process_triple(), "")
+    typed = abi.typed_pointers()
+    ir = abi.trampoline_ir("tramp", "kernel", args, llvm.get_process_triple(), "", typed=typed)
+    assert ("ptr" in ir.split()) is not typed and ("i64*" in ir) is typed
     mod = llvm.parse_assembly(ir)
     mod.verify()
     fn = mod.get_function("tramp")
-    assert [str(a.type) for a in fn.arguments] == ["ptr", "ptr", "ptr"]
+    want = ["i64*", "i8*", "i32*"] if typed else ["ptr", "ptr", "ptr"]
+    assert [str(a.type) for a in fn.arguments] == want
     assert len(list(mod.get_function("kernel").arguments)) == 2 + 11 + 4
+
+
+def test_pointer_form_follows_the_llvm_version():
+    import llvmlite
+
+    major = llvm.llvm_version_info[0]
+    if major < 15:
+        assert abi.typed_pointers()
+    elif major >= 17:
+        assert not abi.typed_pointers()
+    else:  # llvmlite 0.44 (LLVM 15): typed unless it turned opaque pointers on
+        assert abi.typed_pointers() is not llvmlite.opaque_pointers_enabled
 
 
 def test_undefined_symbols_of_an_object():
@@ -128,7 +145,7 @@ def test_undefined_symbols_of_an_object():
         declare double @external_one(double)
         @external_data = external global i64
         define double @here(double %x) {{
-          %v = load i64, ptr @external_data
+          %v = load i64, {"i64*" if abi.typed_pointers() else "ptr"} @external_data
           %d = sitofp i64 %v to double
           %r = call double @external_one(double %d)
           ret double %r

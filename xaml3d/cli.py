@@ -71,7 +71,15 @@ def main(ctx: click.Context) -> None:
     # handles extreme values itself, so no blanket numpy errstate hides what it would warn
     # (the test suite runs every command with numpy raising on each).
     # The first run on a machine compiles the kernels (seconds): say so when it happens.
-    native.notify = lambda message: click.echo(message, err=True)
+    native.notify = _note
+
+
+def _note(message: str) -> None:
+    """A note on stderr, unless the running command was given -q (it prints errors only)."""
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.params.get("quiet"):
+        return
+    click.echo(message, err=True)
 
 
 def run() -> None:

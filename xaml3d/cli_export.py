@@ -209,7 +209,7 @@ def export_command(scenes, output, fmt, viewport, storyboard, lenient, quiet, ve
     finally:
         if bar is not None:
             bar.__exit__(None, None, None)
-    if len(plan) > 1:  # as render's batch ends
+    if len(plan) > 1 and (failed or not quiet):  # as render's batch ends
         summary = f"xaml3d: exported {len(plan) - len(failed)} of {len(plan)} scenes"
         if failed:
             summary += f"; failed: {', '.join(failed)}"

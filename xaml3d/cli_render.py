@@ -340,7 +340,7 @@ def render_command(
     finally:
         if isinstance(steps, Batch):
             steps.close()
-    if len(plan) > 1:
+    if len(plan) > 1 and (failed or not quiet):  # -q: a batch that went well says nothing
         ok = len(plan) - len(failed)
         summary = f"xaml3d: rendered {ok} of {len(plan)} scenes"
         if failed:

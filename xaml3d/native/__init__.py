@@ -227,7 +227,7 @@ def kernels(name: str) -> Kernels:
 
 
 def _load(name: str) -> tuple[dict, dict, list]:
-    from xaml3d.native import abi, engine, store
+    from xaml3d.native import abi, engine, quiet, store
 
     spec = importlib.util.find_spec(name)
     if spec is None or not spec.origin:
@@ -242,21 +242,23 @@ def _load(name: str) -> tuple[dict, dict, list]:
     if manifest is None:
         return {}, {}, []
     linked = []
-    for kernel, versions in manifest.get("kernels", {}).items():
-        for entry in versions:
-            try:
-                objects = [(where / f).read_bytes() for f in entry["objects"]]
-            except OSError:
-                continue
-            # a damaged object would stop the process inside LLVM: check it is what was kept
-            if [hashlib.sha256(b).hexdigest() for b in objects] != entry.get("sha256"):
-                continue
-            if engine.link(objects, entry["undefined"]):
-                linked.append((kernel, entry))
     native: dict[str, list] = {}
-    for kernel, entry in linked:
-        fn = engine.function(entry["symbol"])
-        native.setdefault(kernel, []).append((abi.Signature(entry["args"], entry["result"]), fn))
+    with quiet.llvm_output():  # whatever LLVM says while linking goes to the debug log
+        for kernel, versions in manifest.get("kernels", {}).items():
+            for entry in versions:
+                try:
+                    objects = [(where / f).read_bytes() for f in entry["objects"]]
+                except OSError:
+                    continue
+                # a damaged object would stop the process inside LLVM: check it is what was kept
+                if [hashlib.sha256(b).hexdigest() for b in objects] != entry.get("sha256"):
+                    continue
+                if engine.link(objects, entry["undefined"]):
+                    linked.append((kernel, entry))
+        for kernel, entry in linked:
+            fn = engine.function(entry["symbol"])
+            sig = abi.Signature(entry["args"], entry["result"])
+            native.setdefault(kernel, []).append((sig, fn))
     if not native:
         return {}, {}, []
     store.touch(where)

@@ -106,28 +106,53 @@ def llvm_types(args: list) -> list[str]:
     return out
 
 
-def trampoline_ir(symbol: str, native: str, args: list, triple: str, layout: str) -> str:
+def typed_pointers() -> bool:
+    """Whether the installed llvmlite's LLVM parses typed pointers (``i64*``) rather than
+    opaque ones (``ptr``): LLVM 14 (llvmlite 0.42, 0.43) knows only typed ones; LLVM 15 and 16
+    (llvmlite 0.44) both, typed unless llvmlite turned opaque ones on; LLVM 17 on only opaque
+    ones. IR in the other form fails to parse (after a warning LLVM prints itself)."""
+    import llvmlite
+    import llvmlite.binding as llvm
+
+    major = llvm.llvm_version_info[0]
+    if major < 15:
+        return True
+    if major >= 17:
+        return False
+    return not getattr(llvmlite, "opaque_pointers_enabled", True)
+
+
+def trampoline_ir(
+    symbol: str, native: str, args: list, triple: str, layout: str, typed: bool = False
+) -> str:
     """LLVM IR of ``void symbol(i64* block, ret*, i32* status)``: load each flattened argument
-    from its 8-byte slot, call the kernel's native function, store its status."""
+    from its 8-byte slot, call the kernel's native function, store its status. Pointers are
+    opaque (``ptr``), or typed when ``typed`` (``typed_pointers``: every pointer the kernel
+    takes as ``i8*``; the types of a declaration do not reach the object, only its symbol)."""
     types = llvm_types(args)
+    if typed:
+        p, blk, exc, status = "i8*", "i64*", "i8**", "i32*"
+        types = ["i8*" if t == "ptr" else t for t in types]
+    else:
+        p = blk = exc = status = "ptr"
     lines = [
         f'target triple = "{triple}"',
         f'target datalayout = "{layout}"',
-        f'declare i32 @"{native}"(ptr, ptr{"".join(", " + t for t in types)})',
-        f'define void @"{symbol}"(ptr %blk, ptr %ret, ptr %status) {{',
+        f'declare i32 @"{native}"({p}, {exc}{"".join(", " + t for t in types)})',
+        f'define void @"{symbol}"({blk} %blk, {p} %ret, {status} %status) {{',
         "entry:",
-        "  %exc = alloca ptr",
-        "  store ptr null, ptr %exc",
+        f"  %exc = alloca {p}",
+        f"  store {p} null, {exc} %exc",
     ]
     call = []
     for k, t in enumerate(types):
-        lines.append(f"  %p{k} = getelementptr i64, ptr %blk, i64 {k}")
-        lines.append(f"  %v{k} = load i64, ptr %p{k}")
+        lines.append(f"  %p{k} = getelementptr i64, {blk} %blk, i64 {k}")
+        lines.append(f"  %v{k} = load i64, {blk} %p{k}")
         if t == "i64":
             call.append(f"i64 %v{k}")
             continue
-        if t == "ptr":
-            lines.append(f"  %a{k} = inttoptr i64 %v{k} to ptr")
+        if t == p:
+            lines.append(f"  %a{k} = inttoptr i64 %v{k} to {p}")
         elif t == "double":
             lines.append(f"  %a{k} = bitcast i64 %v{k} to double")
         elif t == "float":
@@ -139,9 +164,9 @@ def trampoline_ir(symbol: str, native: str, args: list, triple: str, layout: str
             raise Unsupported(t)
         call.append(f"{t} %a{k}")
     lines.append(
-        f'  %r = call i32 @"{native}"(ptr %ret, ptr %exc{"".join(", " + c for c in call)})'
+        f'  %r = call i32 @"{native}"({p} %ret, {exc} %exc{"".join(", " + c for c in call)})'
     )
-    lines.append("  store i32 %r, ptr %status")
+    lines.append(f"  store i32 %r, {status} %status")
     lines.append("  ret void")
     lines.append("}")
     return "\n".join(lines) + "\n"

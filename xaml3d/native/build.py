@@ -106,8 +106,6 @@ def _constants(module) -> dict:
 
 
 def _save(where: Path, name: str, index: int, dispatcher, sig) -> dict:
-    import llvmlite.binding as llvm
-
     cres = dispatcher.overloads[sig]
     args, result = abi.describe(sig, cres.signature.return_type)
     # the flattened argument types numba really uses must be the ones the trampoline passes
@@ -119,10 +117,7 @@ def _save(where: Path, name: str, index: int, dispatcher, sig) -> dict:
     undefined = elf.undefined_symbols(code)
     symbol = f"xaml3d_native_{name}_{index}"
     tm = cres.library.codegen._tm
-    ir = abi.trampoline_ir(symbol, native, args, llvm.get_process_triple(), str(tm.target_data))
-    mod = llvm.parse_assembly(ir)
-    mod.verify()
-    call = tm.emit_object(mod)
+    call = _trampoline_object(tm, symbol, native, args)
     files = [f"{name}-{index}.o", f"{name}-{index}-call.o"]
     store.write_atomically(where / files[0], code)
     store.write_atomically(where / files[1], call)
@@ -132,6 +127,28 @@ def _save(where: Path, name: str, index: int, dispatcher, sig) -> dict:
         "objects": files, "sha256": [hashlib.sha256(b).hexdigest() for b in (code, call)],
         "undefined": undefined,
     }  # fmt: skip
+
+
+def _trampoline_object(tm, symbol: str, native: str, args: list) -> bytes:
+    """The trampoline's object code, its IR in the pointer form the installed LLVM parses
+    (``abi.typed_pointers``; the other form if that one is refused). What LLVM prints on the
+    way goes to the debug log (``quiet``), never to the user's terminal."""
+    import llvmlite.binding as llvm
+
+    from xaml3d.native import quiet
+
+    typed = abi.typed_pointers()
+    triple, layout = llvm.get_process_triple(), str(tm.target_data)
+    with quiet.llvm_output():
+        for form in (typed, not typed):
+            try:
+                mod = llvm.parse_assembly(abi.trampoline_ir(symbol, native, args, triple, layout,
+                                                            typed=form))  # fmt: skip
+                mod.verify()
+            except RuntimeError:
+                continue
+            return tm.emit_object(mod)
+    raise ValueError(f"{symbol}: LLVM parses neither pointer form")
 
 
 def _cached_object(dispatcher, sig) -> bytes:
