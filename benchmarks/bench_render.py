@@ -83,7 +83,7 @@ CHILD = """
 import json, resource, sys, time
 t0 = time.perf_counter()
 from benchmarks.bench_render import scene
-from xaml3d.render.api import render, save_image
+from xaml3d.api import render, save_image
 kind, n, mode, ssaa, out = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4], sys.argv[5]
 t1 = time.perf_counter()
 sc = scene(kind, n)
@@ -100,7 +100,7 @@ BASELINE = """
 import json, resource, sys, time
 t1 = time.perf_counter()
 import numpy as np
-from xaml3d.render.api import save_image
+from xaml3d.api import save_image
 save_image(np.zeros((1080, 1920, 4), np.uint8), sys.argv[1])
 t2 = time.perf_counter()
 print(json.dumps({"total": t2 - t1,

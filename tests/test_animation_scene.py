@@ -16,7 +16,8 @@ import pytest
 from PIL import Image
 
 import xaml3d
-from xaml3d.render.frames import frame_durations, frame_times
+from xaml3d.output.animation import frame_durations
+from xaml3d.render.frames import frame_times
 
 NS = ('xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
       'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"')  # fmt: skip

@@ -17,8 +17,8 @@ import pytest
 from conftest import CORPUS, needs_corpus
 from PIL import Image
 
+from xaml3d.output.gif_matte import flatten, frames_for_gif, needs_matte
 from xaml3d.render import frames as frames_module
-from xaml3d.render.gif_matte import flatten, frames_for_gif, needs_matte
 
 NS = ('xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
       'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"')  # fmt: skip
@@ -292,7 +292,7 @@ def test_an_interrupted_write_leaves_no_partial_file(tmp_path, existing):
         fh.write(b"GIF89a half")
         raise KeyboardInterrupt  # Ctrl-C while the file is being encoded
 
-    from xaml3d.render.atomic import write_atomically
+    from xaml3d.output.atomic import write_atomically
 
     with pytest.raises(KeyboardInterrupt):
         write_atomically(target, write)

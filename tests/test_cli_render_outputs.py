@@ -14,8 +14,8 @@ from PIL import Image
 from test_cli import NS, NSX, square_scene
 from test_cli_subprocess import xaml3d
 
+from xaml3d.api import render_arrays
 from xaml3d.errors import RenderError
-from xaml3d.render.api import render_arrays
 
 SAMPLES = Path(__file__).resolve().parent.parent / "samples"
 ORTHO = SAMPLES / "orthographic-camera.xaml"  # its OrthographicCamera is at line 11, column 7
@@ -389,7 +389,7 @@ def test_the_default_focus_fallback_is_a_warning(tmp_path):
 
 
 def test_together_renames_every_file_at_the_end_or_none(tmp_path):
-    from xaml3d.render.atomic import together, write_atomically
+    from xaml3d.output.atomic import together, write_atomically
 
     with together():
         write_atomically(tmp_path / "a.bin", lambda fh: fh.write(b"a"))

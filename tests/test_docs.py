@@ -92,9 +92,9 @@ def api_blocks() -> list[str]:
 
 def test_xaml3d_render_stays_callable_after_importing_the_renderer():
     # api.md documents xaml3d.render(...) as a function; importing the subpackage
-    # xaml3d.render.api (which xaml3d.render itself does) must not replace it with the module.
+    # xaml3d.render.pipeline (which the API does) must not replace it with the module.
     import xaml3d
-    import xaml3d.render.api  # noqa: F401
+    import xaml3d.render.pipeline  # noqa: F401
 
     assert callable(xaml3d.render), "xaml3d.render was shadowed by the xaml3d.render subpackage"
 

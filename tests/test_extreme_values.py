@@ -13,10 +13,10 @@ import warnings
 import numpy as np
 import pytest
 
+from xaml3d.api import render_arrays
 from xaml3d.errors import XamlError
 from xaml3d.export import export_bytes
 from xaml3d.findings import scene_findings
-from xaml3d.render.api import render_arrays
 from xaml3d.xaml.loader import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'

@@ -131,7 +131,7 @@ def test_render_lenient_prints_the_same_findings(tmp_path):
 def test_an_animation_frame_keeps_what_was_refused():
     # a Loaded storyboard moves the camera: the frame at t is built again from the markup, and
     # the repeated errors of that build are dropped; the refusals stay on its objects
-    from xaml3d.render.api import scene_at
+    from xaml3d.api import scene_at
 
     animated = SCENE.replace(
         '<Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>',

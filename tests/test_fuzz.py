@@ -75,7 +75,7 @@ def _load(text: str):
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])  # fmt: skip
 @given(st.sampled_from(SEEDS), st.data())
 def test_mutated_scenes_load_and_render_cleanly(seed, data):
-    from xaml3d.render.api import render_arrays
+    from xaml3d.api import render_arrays
 
     text = mutate(seed.read_text(encoding="utf-8"), data)
     with warnings.catch_warnings(), np.errstate(under="ignore"):

@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from xaml3d.api import render_arrays
 from xaml3d.render import accel
-from xaml3d.render.api import render_arrays
 from xaml3d.xaml.loader import load
 
 REFERENCE = Path(__file__).resolve().parent / "reference"
@@ -153,7 +153,7 @@ def test_cache_dir_never_read_only(tmp_path):
 def test_small_scene_does_not_import_numba():
     """The small-scene path stays instant: no numba import for a small render."""
     code = (
-        "import sys; from xaml3d.render.api import render_arrays; "
+        "import sys; from xaml3d.api import render_arrays; "
         "render_arrays('samples/cube.xaml'); print('numba' in sys.modules)"
     )
     env = {k: v for k, v in os.environ.items() if k != accel.ENV}
@@ -350,7 +350,7 @@ def test_cached_kernels_load_without_numba_registries():
     installing numba's typing registries (typed lists among them), and draws the same picture
     as the numpy path."""
     code = (
-        "import sys, hashlib; from xaml3d.render.api import render_arrays; "
+        "import sys, hashlib; from xaml3d.api import render_arrays; "
         "from xaml3d.render import accel; "
         "r = render_arrays('samples/cube.xaml', width=160, height=120); "
         "k = accel.active(); "

@@ -682,7 +682,7 @@ def test_rounding_rounds_margin_sums_not_offsets_and_border_not_padding():
 
 
 def test_fractional_layout_size_keeps_its_exact_aspect_ratio():
-    from xaml3d.render.api import render_arrays
+    from xaml3d.api import render_arrays
 
     # a Viewport3D 100 x 33.4 (a third of 100.2): the image is 100 x 33, the projection keeps
     # 100 / 33.4, so an orthographic camera of Width 100 shows 33.4 units over the 33 rows and

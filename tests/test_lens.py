@@ -20,9 +20,10 @@ import pytest
 from PIL import Image
 from test_reference import compare_images, regenerate_requested
 
+from xaml3d.api import render_arrays
 from xaml3d.errors import RenderError
-from xaml3d.render.api import render_arrays
-from xaml3d.render.buffers import DEPTH_EMPTY, DEPTH_MAX, depth_png, ids_png, model_ids
+from xaml3d.output.buffers import DEPTH_EMPTY, DEPTH_MAX, depth_png, ids_png
+from xaml3d.render.ids import model_ids
 from xaml3d.render.lens import (
     anaglyph,
     linear_to_srgb,

@@ -10,8 +10,8 @@ import pytest
 from test_cli_subprocess import xaml3d
 
 from xaml3d.errors import RenderError
+from xaml3d.output.atomic import temporary_name
 from xaml3d.output.images import save_image
-from xaml3d.render.atomic import temporary_name
 
 ROOT = Path(__file__).resolve().parent.parent
 CUBE = ROOT / "samples" / "cube.xaml"

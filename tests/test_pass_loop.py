@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from xaml3d.api import render_arrays
 from xaml3d.render import accel, draw
-from xaml3d.render.api import render_arrays
 from xaml3d.xaml.loader import load
 
 REFERENCE = Path(__file__).resolve().parent / "reference"

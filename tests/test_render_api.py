@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from xaml3d.api import render, render_arrays, save_image
 from xaml3d.errors import RenderError, SceneError
-from xaml3d.render import api
-from xaml3d.render.api import render, render_arrays, save_image
+from xaml3d.render import settings as api
 from xaml3d.scene.types import (
     AmbientLight,
     DiffuseMaterial,
@@ -152,7 +152,7 @@ def test_saved_file_gets_the_usual_mode(tmp_path):
 
     from PIL import Image
 
-    from xaml3d.render.api import save_image
+    from xaml3d.api import save_image
 
     old = os.umask(0o022)
     try:

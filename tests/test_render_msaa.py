@@ -6,8 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from xaml3d.api import render_arrays
 from xaml3d.errors import RenderError
-from xaml3d.render.api import render_arrays
 from xaml3d.xaml.loader import load
 
 TEXTURED = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.render.api import render_arrays
+from xaml3d.api import render_arrays
 from xaml3d.render.frame import Framebuffer
 from xaml3d.render.raster import rasterize
 from xaml3d.scene.types import (

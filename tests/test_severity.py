@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 from conftest import CORPUS, ROOT
 
+from xaml3d.api import render_arrays
 from xaml3d.codes import all_codes
 from xaml3d.findings import scene_findings
-from xaml3d.render.api import render_arrays
 from xaml3d.xaml.loader import load
 
 FILES = sorted(

@@ -18,7 +18,7 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 import xaml3d
-from xaml3d.render.api import render_arrays, save_image
+from xaml3d.api import render_arrays, save_image
 from xaml3d.scene.camera_math import camera_pipeline
 from xaml3d.scene.transforms import transform_homogeneous
 from xaml3d.scene.types import PerspectiveCamera

@@ -18,8 +18,8 @@ import numpy as np
 from make_doc_figures import FIGURES, label, save, side_by_side, write_src
 from PIL import Image, ImageDraw
 
-from xaml3d.render.api import render_arrays
-from xaml3d.render.buffers import depth_png
+from xaml3d.api import render_arrays
+from xaml3d.output.buffers import depth_png
 from xaml3d.scene.lens import lens_frame, lens_pattern
 from xaml3d.scene.types import PerspectiveCamera
 from xaml3d.xaml.loader import load

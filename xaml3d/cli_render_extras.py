@@ -2,8 +2,8 @@
 
 The click options (``extras_options``), their checks (usage errors, exit 2), the arguments they
 add to ``render_arrays``, and the extra files they write (atomically, never over an input).
-The work itself lives in ``xaml3d.render.lens``, ``xaml3d.render.buffers`` and
-``xaml3d.render.svg``; docs/lens.md explains the lens.
+The work itself lives in ``xaml3d.render.lens``, ``xaml3d.render.ids``,
+``xaml3d.output.buffers`` and ``xaml3d.render.svg``; docs/lens.md explains the lens.
 """
 
 from __future__ import annotations

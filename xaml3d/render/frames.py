@@ -1,8 +1,7 @@
 """Whole animations: frame times and rendered frames.
 
-``frame_times`` samples [start, end) at ``fps``; ``frame_durations`` gives each frame's display
-time in whole units (milliseconds, or GIF's 10 ms) whose total is exactly the animation's
-length (rounding distributed: frame i lasts round((i+1)T/n) - round(iT/n)). ``render_frames``
+``frame_times`` samples [start, end) at ``fps`` (each frame's display time is
+``xaml3d.output.animation.frame_durations``). ``render_frames``
 yields one ordinary render of ``scene_at(scene, t)`` per time, in time order (the renderer
 knows nothing of animation). The files are written by ``xaml3d.output.animation``.
 """
@@ -14,7 +13,6 @@ from collections import OrderedDict, deque
 from collections.abc import Iterator
 
 from xaml3d.animation.moment import scene_and_values_at, scene_at
-from xaml3d.output.animation import frame_durations  # noqa: F401 (this module's interface)
 from xaml3d.render import accel
 from xaml3d.render.frame import FrameStore
 from xaml3d.render.pipeline import render_scene
