@@ -79,6 +79,9 @@ def _linear_to_srgb(c: np.ndarray) -> np.ndarray:
 
 def _sorted_stops(brush) -> tuple[np.ndarray, np.ndarray]:
     offsets = np.array([s.offset for s in brush.stops], dtype=np.float64)
+    # an infinite Offset (WPF takes any double): kept far but finite, so that the fraction
+    # between two stops is never inf / inf
+    offsets = np.clip(offsets, -1e300, 1e300)
     colors = np.array([s.color for s in brush.stops], dtype=np.float64).reshape(-1, 4)
     order = np.argsort(offsets, kind="stable")
     return offsets[order], colors[order]

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from xaml3d.errors import GeometryError
+from xaml3d.scene import trig
 from xaml3d.scene.types import frozen_array
 
 ArrayLike = Sequence[float] | np.ndarray
@@ -323,13 +324,13 @@ def rotation_2d(angle_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarra
     """Positive angles turn clockwise on screen (y down): x' = x cos - y sin."""
     a = math.radians(angle_deg)
     return frozen_array(
-        _about_2d(np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]), cx, cy)
+        _about_2d(np.array([[trig.cos(a), -trig.sin(a)], [trig.sin(a), trig.cos(a)]]), cx, cy)
     )
 
 
 def skew_2d(ax_deg: float, ay_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
     ax, ay = math.radians(ax_deg), math.radians(ay_deg)
-    return frozen_array(_about_2d(np.array([[1.0, math.tan(ax)], [math.tan(ay), 1.0]]), cx, cy))
+    return frozen_array(_about_2d(np.array([[1.0, trig.tan(ax)], [trig.tan(ay), 1.0]]), cx, cy))
 
 
 def compose_2d(*matrices: np.ndarray) -> np.ndarray:
@@ -351,8 +352,8 @@ def axis_angle_quaternion(axis, angle_deg: float) -> tuple[float, float, float, 
     if n == 0.0 or not math.isfinite(n):
         return (0.0, 0.0, 0.0, 1.0)
     half = math.radians(angle_deg) / 2.0
-    x, y, z = a / n * math.sin(half)
-    return (float(x), float(y), float(z), math.cos(half))
+    x, y, z = a / n * trig.sin(half)  # an infinite Angle: NaN, drawn as nothing (WPF's)
+    return (float(x), float(y), float(z), trig.cos(half))
 
 
 def node_matrix(node) -> np.ndarray:

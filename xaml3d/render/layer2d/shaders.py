@@ -52,6 +52,8 @@ def _gradient_stops(brush) -> tuple[list, list]:
     stops = [brush.stops[i] for i in order]
     colors = [_color(s.color) for s in stops]
     offsets = [min(1.0, max(0.0, float(s.offset))) for s in stops]
+    if len(stops) == 1:  # WPF paints one stop as its colour everywhere; skia needs two
+        colors, offsets = colors * 2, [0.0, 1.0]
     return colors, offsets
 
 
