@@ -114,17 +114,26 @@ def clock_state(timing: Timing, natural: float, parent_time: float | None) -> Cl
     return ClockState(frac * d, frac, n + 1, filling)
 
 
-def natural_duration(node: TimelineGroup | Animation) -> float:
+def natural_duration(node: TimelineGroup | Animation, known: dict | None = None) -> float:
     """The natural duration of a timeline: a group's latest child end (inf when one never
     ends, 0 with none); a key-frame animation's latest TimeSpan key time (else 1 s); a
-    From/To/By animation's 1 s."""
+    From/To/By animation's 1 s. ``known``: id(node) -> its natural duration, filled as the
+    tree is walked, so that a walk over a deep tree computes each node's once."""
+    if known is not None:
+        found = known.get(id(node))
+        if found is not None:
+            return found
     if isinstance(node, TimelineGroup):
-        ends = [end_time(c.timing, natural_duration(c)) for c in node.children]
+        ends = [end_time(c.timing, natural_duration(c, known)) for c in node.children]
         ends = [e for e in ends if e is not None]
-        return max(ends, default=0.0)
-    if node.key_frames:
-        return natural_key_frame_duration(node.key_frames)
-    return FROM_TO_NATURAL
+        value = max(ends, default=0.0)
+    elif node.key_frames:
+        value = natural_key_frame_duration(node.key_frames)
+    else:
+        value = FROM_TO_NATURAL
+    if known is not None:
+        known[id(node)] = value
+    return value
 
 
 def group_cycle(root: TimelineGroup) -> float:
@@ -137,16 +146,16 @@ def animation_states(root: TimelineGroup, t: float) -> list[tuple[Animation, Clo
     """Every animation of the tree with its clock at root parent time ``t`` (seconds since
     the storyboard was begun), in document order."""
     out: list[tuple[Animation, ClockState | None]] = []
-    _walk(root, t, out)
+    _walk(root, t, out, {})
     return out
 
 
-def _walk(node, parent_time: float | None, out: list) -> None:
-    state = clock_state(node.timing, natural_duration(node), parent_time)
+def _walk(node, parent_time: float | None, out: list, known: dict) -> None:
+    state = clock_state(node.timing, natural_duration(node, known), parent_time)
     if isinstance(node, TimelineGroup):
         child_time = None if state is None else state.time
         for c in node.children:
-            _walk(c, child_time, out)
+            _walk(c, child_time, out, known)
     else:
         out.append((node, state))
 

@@ -57,15 +57,26 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
     base = frames[0]
     tracks: dict = {}  # node or (outer, inner) nodes -> world matrices per sample
     lost: set[str] = set()
-    if all(len(f.models) == len(base.models) for f in frames):
-        for i, node in export.model_nodes.items():
+    # A frame shares every object the storyboards leave alone with the first (scene_at replaces
+    # only what changes): what is the same object is not compared, so that sampling costs what
+    # the animated values cost, not the whole scene at each time.
+    moved = [f for f in frames[1:] if f.models is not base.models]
+    if all(len(f.models) == len(base.models) for f in moved):
+        changed = sorted({i for f in moved for i, m in enumerate(f.models)
+                          if m is not base.models[i]})  # fmt: skip
+        for i in changed:
+            node = export.model_nodes.get(i)
+            if node is None:
+                continue
             worlds = [np.asarray(f.models[i].world) for f in frames]
             if any(_differs(w, worlds[0]) for w in worlds):
                 tracks[node] = worlds
-        for i in range(len(base.models)):
+        for i in changed:
             m0 = base.models[i]
-            for f in frames[1:]:
+            for f in moved:
                 m = f.models[i]
+                if m is m0:
+                    continue
                 if m.mesh is not m0.mesh and _differs(m.mesh.positions, m0.mesh.positions):
                     lost.add("mesh positions")
                 if m.material != m0.material or m.back_material != m0.back_material:
@@ -76,6 +87,8 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
         _camera_track(export, frames, tracks, lost)
     if all(len(f.lights) == len(base.lights) for f in frames):
         for i, node in export.light_nodes.items():
+            if all(f.lights[i] is base.lights[i] for f in frames):
+                continue  # not animated
             got = [light_node(f.lights[i]) for f in frames]
             if any(g is None for g in got):
                 continue
@@ -100,12 +113,15 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
 
 def _camera_track(export, frames, tracks, lost) -> None:
     worlds, cams = [], []
+    got, before = None, None
     for f in frames:
-        try:
-            got = gltf_camera(f)
-        except CameraError:
-            lost.add("the camera into a state WPF cannot draw")
-            return
+        if got is None or f.camera is not before:  # an unchanged camera: the same matrices
+            try:
+                got = gltf_camera(f)
+            except CameraError:
+                lost.add("the camera into a state WPF cannot draw")
+                return
+            before = f.camera
         if got is None:
             return
         cams.append(got[0])

@@ -286,7 +286,8 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
             return None  # not a direction WPF's renderer can use either
         spec["type"] = "directional"
         return spec, frame_looking(np.zeros(3), d)
-    p = world @ np.array([*light.position, 1.0])
+    with np.errstate(over="ignore", invalid="ignore"):  # out of range: left out just below
+        p = world @ np.array([*light.position, 1.0])
     if not np.all(np.isfinite(p)) or p[3] == 0:
         return None
     p = p[:3] / p[3]
