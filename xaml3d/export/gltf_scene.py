@@ -301,8 +301,11 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
             d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
         if not (_in_single(d) and np.any(d != 0.0)):
             return None  # not a direction WPF's renderer can use either
-        outer = min(max(math.radians(float(light.outer_cone_angle)) / 2.0, 1e-6), math.pi / 2)
-        inner = min(max(math.radians(float(light.inner_cone_angle)) / 2.0, 0.0), outer * 0.999)
+        # a NaN cone (WPF takes any double) is the narrowest glTF can hold, not a NaN in JSON
+        o, i = (float(a) if a == a else 0.0 for a in (light.outer_cone_angle,
+                                                        light.inner_cone_angle))  # fmt: skip
+        outer = min(max(math.radians(o) / 2.0, 1e-6), math.pi / 2)
+        inner = min(max(math.radians(i) / 2.0, 0.0), outer * 0.999)
         spec["type"] = "spot"
         spec["spot"] = {"innerConeAngle": inner, "outerConeAngle": outer}
         return spec, frame_looking(p, d)
