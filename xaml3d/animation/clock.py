@@ -104,8 +104,11 @@ def clock_state(timing: Timing, natural: float, parent_time: float | None) -> Cl
     period = d * (2.0 if timing.auto_reverse else 1.0)
     if math.isinf(t):  # held at the end of a forever-repeating timeline: not reachable
         return ClockState(d, 1.0, 1, filling)
-    n = math.floor(t / period)
-    offset = t - n * period
+    ratio = t / period
+    if not math.isfinite(ratio):  # a period far below t (1e-7 s at 1e308 s): the last instant
+        return ClockState(d, 1.0, 1, filling)
+    n = math.floor(ratio)
+    offset = t - n * period if n else t  # (0 * an infinite period is NaN)
     if filling and n > 0 and offset == 0.0:
         n, offset = n - 1, period  # the active period ends at the end of an iteration
     if offset > d:  # the backward half of an auto-reversing iteration

@@ -165,6 +165,11 @@ def _write(export, times, tracks) -> None:
         for target, path, values in paths:
             if np.allclose(values, values[0], rtol=0, atol=1e-12):
                 continue
+            if not np.all(np.abs(values) <= np.finfo(np.float32).max):
+                msg = (f"an animated {path} goes beyond single precision (3.4e38), which "
+                       "glTF cannot hold: its animation is not exported")  # fmt: skip
+                export.note("EXP009", msg)
+                continue
             out = doc.accessor(values.astype(np.float32))
             samplers.append({"input": time_acc, "output": out, "interpolation": "LINEAR"})
             channels.append({"sampler": len(samplers) - 1,

@@ -79,16 +79,19 @@ def bounds_matrix(bounds: Bounds) -> np.ndarray:
 
 
 def brush_to_texture_matrix(brush, bounds: Bounds, relative_content: bool) -> np.ndarray:
-    """T @ (B R B^-1) @ [B if the brush's own geometry is in relative units]."""
+    """T @ (B R B^-1) @ [B if the brush's own geometry is in relative units]. A transform past
+    the doubles' range gives a matrix that is not finite (its callers draw nothing of it, as
+    WPF's single-precision renderer), not a floating-point error."""
     b = bounds_matrix(bounds)
     m = np.eye(3)
     if relative_content:
         m = b
-    if brush.relative_transform is not None:
-        r = np.asarray(brush.relative_transform, dtype=np.float64)
-        m = b @ r @ np.linalg.inv(b) @ m
-    if brush.transform is not None:
-        m = np.asarray(brush.transform, dtype=np.float64) @ m
+    with np.errstate(over="ignore", invalid="ignore"):
+        if brush.relative_transform is not None:
+            r = np.asarray(brush.relative_transform, dtype=np.float64)
+            m = b @ r @ np.linalg.inv(b) @ m
+        if brush.transform is not None:
+            m = np.asarray(brush.transform, dtype=np.float64) @ m
     return m
 
 

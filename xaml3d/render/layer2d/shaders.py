@@ -70,6 +70,8 @@ def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
     bounds = _bounds(box)
     if isinstance(brush, LinearGradientBrush) and brush.stops:
         m = brush_to_texture_matrix(brush, bounds, brush.mapping_mode != "Absolute")
+        if not np.all(np.isfinite(m)):
+            return None  # a transform past the range: the flat colour of paint_of
         colors, offsets = _gradient_stops(brush)
         pts = [skia.Point(*brush.start_point), skia.Point(*brush.end_point)]
         return skia.GradientShader.MakeLinear(
@@ -77,6 +79,8 @@ def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
         )
     if isinstance(brush, RadialGradientBrush) and brush.stops:
         m = brush_to_texture_matrix(brush, bounds, brush.mapping_mode != "Absolute")
+        if not np.all(np.isfinite(m)):
+            return None
         rx, ry = float(brush.radius_x), float(brush.radius_y)
         if rx == 0 or ry == 0:
             return None
