@@ -86,11 +86,15 @@ def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
             return None
         cx, cy = brush.center
         ellipse = np.array([[rx, 0.0, cx], [0.0, ry, cy], [0.0, 0.0, 1.0]])
-        ox, oy = (brush.gradient_origin[0] - cx) / rx, (brush.gradient_origin[1] - cy) / ry
+        with np.errstate(all="ignore"):  # radii or a centre past the range: checked below
+            ox, oy = (brush.gradient_origin[0] - cx) / rx, (brush.gradient_origin[1] - cy) / ry
+            placed = m @ ellipse
+        if not (np.all(np.isfinite(placed)) and np.isfinite(ox) and np.isfinite(oy)):
+            return None  # the flat colour of paint_of, as for a degenerate gradient
         colors, offsets = _gradient_stops(brush)
         return skia.GradientShader.MakeTwoPointConical(
             skia.Point(ox, oy), 0.0, skia.Point(0.0, 0.0), 1.0, colors, offsets,
-            _SPREAD[brush.spread_method], 0, matrix(m @ ellipse),
+            _SPREAD[brush.spread_method], 0, matrix(placed),
         )  # fmt: skip
     if isinstance(brush, (ImageBrush, DrawingBrush)):
         return _tile_shader(brush, bounds)
