@@ -25,8 +25,11 @@ MAX_SAMPLES = 3600
 
 
 def _times(clip: Clip) -> np.ndarray:
-    n = max(2, min(MAX_SAMPLES, int(math.ceil(clip.seconds * SAMPLE_RATE)) + 1))
-    return np.linspace(0.0, clip.seconds, n) if clip.seconds > 0 else np.zeros(1)
+    want = clip.seconds * SAMPLE_RATE  # inf for a cycle of 1e308 s: the most samples
+    n = max(2, int(math.ceil(want)) + 1) if want < MAX_SAMPLES else MAX_SAMPLES
+    # glTF's times are single precision: a longer cycle is sampled up to the last one it holds
+    seconds = min(clip.seconds, float(np.finfo(np.float32).max))
+    return np.linspace(0.0, seconds, n) if seconds > 0 else np.zeros(1)
 
 
 def _differs(a, b) -> bool:
@@ -79,7 +82,8 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
                     continue
                 if m.mesh is not m0.mesh and _differs(m.mesh.positions, m0.mesh.positions):
                     lost.add("mesh positions")
-                if m.material != m0.material or m.back_material != m0.back_material:
+                # (not ==: a brush's transform is an array; scene_at replaces what it changes)
+                if m.material is not m0.material or m.back_material is not m0.back_material:
                     lost.add("materials and brushes")
     else:
         lost.add("models appearing or disappearing")

@@ -290,7 +290,10 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
         p = world @ np.array([*light.position, 1.0])
     if not np.all(np.isfinite(p)) or p[3] == 0:
         return None
-    p = p[:3] / p[3]
+    with np.errstate(over="ignore"):
+        p = p[:3] / p[3]
+    if not np.all(np.isfinite(p)):
+        return None
     if math.isfinite(light.range) and light.range > 0:
         spec["range"] = float(light.range)
     if isinstance(light, PointLight):

@@ -123,7 +123,10 @@ def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> Prepared
         if isinstance(light, AmbientLight):
             ambient = ambient + rgb
             continue
-        m = view @ np.asarray(light.world, dtype=np.float64)
+        with np.errstate(over="ignore", invalid="ignore"):
+            m = view @ np.asarray(light.world, dtype=np.float64)
+        if not np.all(np.isfinite(m)):
+            continue  # a light whose transform passes the range lights nothing (as in WPF)
         m3 = m[:3, :3]
         if isinstance(light, DirectionalLight):
             with np.errstate(over="ignore", invalid="ignore"):  # out of range: _unit drops it
