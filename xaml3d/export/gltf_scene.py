@@ -131,10 +131,14 @@ class ViewportExport:
         return self.doc.accessor(tri.astype(dtype).ravel(), target=ELEMENT_ARRAY_BUFFER)
 
     def _worlds(self, i: int, model) -> list[np.ndarray]:
-        """The model's world matrix at every animation sample (just its own when static)."""
+        """The model's world matrices over the animation samples (just its own when static)."""
         frames = self.frames
         if frames and all(len(f.models) == len(self.vp.models) for f in frames):
-            return [np.asarray(f.models[i].world) for f in frames]
+            # once per distinct model object: a sample shares what the storyboards leave alone
+            # (scene_at replaces only what changes), so a still model is checked once, not at
+            # every sample
+            distinct = {id(f.models[i]): f.models[i] for f in frames}
+            return [np.asarray(m.world) for m in distinct.values()]
         return [np.asarray(model.world)]
 
     def _model_node(self, i: int, model) -> int | None:

@@ -141,7 +141,8 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
         m = m @ placed_by_layout(n)
     if layer is not None and layer.render_transform is not None:
-        m = m @ layer.render_transform
+        with np.errstate(over="ignore", invalid="ignore"):  # a NaN angle: nothing is drawn
+            m = m @ layer.render_transform
     out.append(
         DrawingGroup(
             children=tuple(own),
