@@ -219,6 +219,18 @@ def test_2d_values_past_the_range_run_cleanly(inner):
     window_of(inner)
 
 
+def test_an_empty_grid_in_a_viewbox_on_a_3d_surface_runs_cleanly():
+    host = (
+        "<Viewport2DVisual3D><Viewport2DVisual3D.Geometry><MeshGeometry3D "
+        'Positions="-1,-1,0 1,-1,0 1,1,0 -1,1,0" TextureCoordinates="0,1 1,1 1,0 0,0" '
+        'TriangleIndices="0 1 2 0 2 3"/></Viewport2DVisual3D.Geometry>'
+        "<Viewport2DVisual3D.Material><DiffuseMaterial "
+        'Viewport2DVisual3D.IsVisualHostMaterial="True"/></Viewport2DVisual3D.Material>'
+        "<Viewbox><Grid/></Viewbox></Viewport2DVisual3D>"
+    )
+    clean_run(scene_text(model=MODEL + host))
+
+
 def test_infinite_gradient_offsets_export():
     model = MODEL.replace(
         '<DiffuseMaterial Brush="Red"/>',
