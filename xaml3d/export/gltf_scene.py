@@ -99,7 +99,10 @@ class ViewportExport:
         root_index = self.doc.add("nodes", root)
         scene = {"name": root["name"], "nodes": [root_index]}
         extras = self._ambient_extras()
-        extras["xaml3d"] = {"viewport": {"width": float(vp.width), "height": float(vp.height)}}
+        # (a size JSON cannot hold, an infinite or NaN Width, is left out)
+        size = {k: float(v) for k, v in (("width", vp.width), ("height", vp.height))
+                if math.isfinite(float(v))}  # fmt: skip
+        extras["xaml3d"] = {"viewport": size}
         scene["extras"] = extras
         self.doc.add("scenes", scene)
         self.doc.gltf["scene"] = 0

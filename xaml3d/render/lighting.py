@@ -298,7 +298,10 @@ def shade_vertices(
             return out
         if isinstance(material, SpecularMaterial):
             ks = _premultiplied_rgb(material.color)
-            _, specular = _accumulate(positions, normals, lights, float(material.specular_power))
+            power = float(material.specular_power)
+            if power != power:  # a NaN SpecularPower (WPF takes any double): no highlight
+                return out
+            _, specular = _accumulate(positions, normals, lights, power)
             out[:, :3] = np.minimum(specular * ks[None, :], 1.0)
             return out
     raise TypeError(f"not a material pass: {type(material).__name__}")

@@ -167,7 +167,8 @@ def rotation_axis_angle(
     """RotateTransform3D with AxisAngleRotation3D: right-hand rule about the (normalized) axis,
     about ``center``. A zero axis is the identity (WPF's rule)."""
     a = _unit_scaled(_vec(axis, 3, "axis"))
-    length = float(np.linalg.norm(a))
+    with np.errstate(over="ignore", invalid="ignore"):  # an infinite component: not an axis
+        length = float(np.linalg.norm(a))
     if length == 0.0 or not math.isfinite(length):
         return _about_center(np.eye(3), center)
     x, y, z = a / length
