@@ -349,7 +349,8 @@ def axis_angle_quaternion(axis, angle_deg: float) -> tuple[float, float, float, 
     """An AxisAngleRotation3D as the unit quaternion (x, y, z, w) animations interpolate; a
     zero (or non-finite) axis is no rotation, as in WPF."""
     a = _unit_scaled(np.asarray(axis, dtype=np.float64))
-    n = float(np.linalg.norm(a))
+    with np.errstate(over="ignore", invalid="ignore"):  # an infinite component: not an axis
+        n = float(np.linalg.norm(a))
     if n == 0.0 or not math.isfinite(n):
         return (0.0, 0.0, 0.0, 1.0)
     half = math.radians(angle_deg) / 2.0

@@ -38,6 +38,10 @@ def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[in
     """The tile (brush-space rectangle ``viewport``) as premultiplied float (H, W, 4)."""
     w, h = size
     vpx, vpy, vpw, vph = viewport
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        sx, sy = np.float64(w) / vpw, np.float64(h) / vph  # (numpy: 0 gives inf)
+    if not (np.isfinite(sx) and np.isfinite(sy)):  # a tile too small for any texel: empty
+        return np.zeros((h, w, 4))
     surface = skia.Surface.MakeRaster(
         skia.ImageInfo.Make(
             w, h, skia.ColorType.kRGBA_8888_ColorType, skia.AlphaType.kPremul_AlphaType
@@ -45,7 +49,7 @@ def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[in
     )
     canvas = surface.getCanvas()
     canvas.clear(skia.ColorTRANSPARENT)
-    canvas.scale(w / vpw, h / vph)
+    canvas.scale(float(sx), float(sy))
     canvas.translate(-vpx, -vpy)
     canvas.concat(matrix(content_matrix))
     draw_content(canvas, brush)
