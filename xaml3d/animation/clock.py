@@ -149,8 +149,24 @@ def animation_states(root: TimelineGroup, t: float) -> list[tuple[Animation, Clo
     """Every animation of the tree with its clock at root parent time ``t`` (seconds since
     the storyboard was begun), in document order."""
     out: list[tuple[Animation, ClockState | None]] = []
-    _walk(root, t, out, {})
+    _walk(root, t, out, _known_for(root))
     return out
+
+
+# The natural durations of the trees walked last (the tree, id(node) -> its natural duration):
+# a tree is immutable, and sampling one (animate's frames, an export's 3600 samples) walks it
+# at every time; kept with the tree itself, so the ids stay its nodes'.
+_KNOWN: list[tuple[TimelineGroup, dict]] = []
+
+
+def _known_for(root: TimelineGroup) -> dict:
+    for tree, known in _KNOWN:
+        if tree is root:
+            return known
+    known: dict = {}
+    _KNOWN.append((root, known))
+    del _KNOWN[:-8]
+    return known
 
 
 def _walk(node, parent_time: float | None, out: list, known: dict) -> None:
