@@ -231,6 +231,20 @@ def test_an_empty_grid_in_a_viewbox_on_a_3d_surface_runs_cleanly():
     clean_run(scene_text(model=MODEL + host))
 
 
+@pytest.mark.parametrize(
+    "attribute",
+    ['MinWidth="Infinity"', 'MaxHeight="-1"', 'BorderThickness="-1"', 'Padding="0,Infinity"',
+     'FontSize="0"', 'Margin="1e400"'],
+)  # fmt: skip
+def test_framework_values_wpf_refuses_are_located_errors(attribute):
+    element = "TextBlock" if attribute.startswith("FontSize") else "Border"
+    text = GRID.format(f"<{element} {attribute}/>{VIEWPORT}")
+    scene = load(text, text=True)
+    [d] = [d for d in scene.diagnostics if d.severity == "error"]
+    assert d.code == "VAL008" and "(WPF refuses it)" in d.message
+    assert d.column == text.index(attribute) + 1
+
+
 def test_infinite_gradient_offsets_export():
     model = MODEL.replace(
         '<DiffuseMaterial Brush="Red"/>',
