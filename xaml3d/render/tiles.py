@@ -59,7 +59,10 @@ def place_tile(brush, bounds, content: tuple[float, float, float, float]) -> Til
         vpy, vph = lo[1] + vpy * size[1], vph * size[1]
     if min(vbw, vbh, vpw, vph) <= 0.0 or not all(map(math.isfinite, (vbw, vbh, vpw, vph))):
         return None
-    sx, sy = vpw / vbw, vph / vbh
+    with np.errstate(over="ignore"):  # a ratio past the range: inf, refused just below
+        sx, sy = float(vpw / vbw), float(vph / vbh)
+    if not (math.isfinite(sx) and math.isfinite(sy)):
+        return None  # a Viewbox too small for the Viewport: a scale WPF cannot draw either
     if brush.stretch == "Uniform":
         sx = sy = min(sx, sy)
     elif brush.stretch == "UniformToFill":
