@@ -287,6 +287,25 @@ def test_animate_lenient_that_writes_its_file_exits_0(tmp_path):
     assert ": error " not in p.stderr and "warning CAM004" in p.stderr
 
 
+def test_animate_that_writes_its_file_exits_0_when_a_camera_goes_out_of_range(tmp_path):
+    # a storyboard drives FieldOfView past 180 after the first frame: the findings at --start
+    # have no error, the frames past it are drawn as WPF draws them, the file is written
+    anim = (
+        spin()
+        .replace('TargetName="Spin"', 'TargetName="Cam"')
+        .replace(
+            'TargetProperty="Angle" From="0" To="90"',
+            'TargetProperty="FieldOfView" From="45" To="250"',
+        )
+    )
+    text = scene_text(anim).replace("<PerspectiveCamera ", '<PerspectiveCamera x:Name="Cam" ')
+    (tmp_path / "s.xaml").write_text(text)
+    p = xaml3d("animate", "s.xaml", "-o", "s.gif", "--fps", "4", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "s.gif").stat().st_size > 0
+    assert ": error " not in p.stderr and "warning CAM004" in p.stderr
+
+
 def test_a_value_error_is_never_worded_as_a_file_error(tmp_path):
     text = scene_text(spin('SpeedRatio="Infinity"'))
     (tmp_path / "s.xaml").write_text(text)
