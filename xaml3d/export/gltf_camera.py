@@ -41,7 +41,11 @@ def gltf_camera(vp, file=None) -> tuple[dict, np.ndarray, list] | None:
     notes: list = []
     aspect = float(vp.width) / float(vp.height)
     pipe = camera_pipeline(cam, vp.width, vp.height, vp.bounds())  # CameraError: caller
-    world = np.linalg.inv(pipe.view_matrix)
+    try:
+        world = np.linalg.inv(pipe.view_matrix)
+    except np.linalg.LinAlgError:  # a view that collapses (a MatrixCamera's): no camera node
+        raise CameraError("the camera's view matrix is singular: WPF draws nothing",
+                          code="CAM012") from None  # fmt: skip
     name = cam.name or type(cam).__name__
     if isinstance(cam, MatrixCamera):
         return _matrix_camera(cam, world, aspect, name, file)

@@ -61,7 +61,8 @@ def brush_bounds(texcoords: np.ndarray) -> Bounds:
         return np.zeros(2), np.ones(2)
     lo = tc.min(axis=0)
     hi = tc.max(axis=0)
-    hi = np.where(hi - lo > 0.0, hi, lo + 1.0)
+    with np.errstate(over="ignore"):  # a box wider than the doubles reach still has width
+        hi = np.where(hi - lo > 0.0, hi, lo + 1.0)
     return lo, hi
 
 

@@ -138,7 +138,7 @@ def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> Prepared
             continue
         if not isinstance(light, (PointLight, SpotLight)):
             continue
-        with np.errstate(over="ignore", invalid="ignore"):  # past the range: no light, below
+        with np.errstate(all="ignore"):  # past the range (or a denormal): no light, below
             det = float(np.linalg.det(m3)) if np.all(np.isfinite(m3)) else math.nan
         s = abs(det) ** (1.0 / 3.0) if math.isfinite(det) else 0.0
         c = (light.constant_attenuation, light.linear_attenuation, light.quadratic_attenuation)
