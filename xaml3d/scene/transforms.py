@@ -57,7 +57,12 @@ def _sine_measure(vectors: list[np.ndarray]) -> float:
 def _solve_homogeneous(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
     """The matrix M with M @ src = dst (src, dst: columns are homogeneous points/vectors)."""
     # M src = dst  <=>  src^T M^T = dst^T: one linear solve for all rows of M at once.
-    m = np.linalg.solve(src.T, dst.T).T
+    try:
+        m = np.linalg.solve(src.T, dst.T).T
+    except np.linalg.LinAlgError:  # vectors that collapse in double precision (a 1e-300 Width)
+        raise GeometryError("the source points and vectors are degenerate (a size too small "
+                            "for double precision): no map of 3-space is fixed by them",
+                            code="GEO001") from None  # fmt: skip
     return frozen_array(m)
 
 
