@@ -73,6 +73,7 @@ def _accelerate(frac: float, a: float, d: float) -> float:
     if a == 0.0 and d == 0.0:
         return frac
     top = 2.0 / (2.0 - a - d)  # the top speed, so that the area under the speed curve is 1
+    frac = min(max(frac, 0.0), 1.0)  # (a rounding past 1 with d = 0 would divide by 0 below)
     if frac < a:
         return top * frac * frac / (2.0 * a)
     if frac <= 1.0 - d:

@@ -104,8 +104,9 @@ def sample_drawing_brush(brush: DrawingBrush, uv: np.ndarray, bounds, density=No
     if q is None:
         return out
     mode = edge_mode(brush.tile_mode, matrix, bounds, (vpx, vpy, vpw, vph))
-    fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
-    fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+    with np.errstate(over="ignore", invalid="ignore"):  # a tile far below a texel: inf, outside
+        fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+        fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     keep = in_x & in_y
     if keep.any():
         h, w = tile.shape[:2]
