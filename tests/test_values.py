@@ -380,6 +380,7 @@ def test_every_value_code_is_raised_somewhere():
         "VAL005": (parse_bool, "maybe"),
         "VAL006": (parse_duration, "soon"),
         "VAL007": (parse_size3d, "-1 1 1"),
+        "VAL008": (V.parse_speed_ratio, "Infinity"),
     }
     assert set(examples) == set(VALUE_CODES)
     for code, (fn, text) in examples.items():

@@ -59,6 +59,28 @@ def io_error(file: str | None, message: str, code: str = "IO001") -> str:
     return f"{file or '<input>'}: error {code} {message}"
 
 
+def is_file_problem(exc: BaseException) -> bool:
+    """Whether ``exc`` is a file-system problem (IO001): an OSError, or the ValueError of a
+    path with a NUL character in it. Any other exception from reading or drawing a scene is
+    a defect (INT001), never worded as a file error."""
+    return isinstance(exc, OSError) or (isinstance(exc, ValueError) and "null byte" in str(exc))
+
+
+def failure(exc: BaseException) -> tuple[str, str]:
+    """(code, message) for an exception that is not a located XamlError: IO001 for a
+    file-system problem, else INT001 naming the exception (printed instead of a traceback)."""
+    if is_file_problem(exc):
+        return "IO001", describe_os_error(exc)
+    what = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+    return "INT001", f"internal error ({what}); please report it with the scene"
+
+
+def failure_line(file: str | None, exc: BaseException) -> str:
+    """``file: error CODE message`` for ``failure(exc)``."""
+    code, message = failure(exc)
+    return io_error(file, message, code)
+
+
 def describe_os_error(exc: BaseException) -> str:
     if isinstance(exc, OSError) and exc.strerror:
         name = f": {exc.filename}" if exc.filename else ""
@@ -288,8 +310,8 @@ def exit_on_input_error(name: str) -> Iterator[None]:
     except XamlError as exc:
         click.echo(exc.with_location(file=name).format(), err=True)
         click.get_current_context().exit(1)
-    except (OSError, ValueError) as exc:
-        click.echo(io_error(name, describe_os_error(exc)), err=True)
+    except (OSError, ValueError, ArithmeticError, RecursionError) as exc:
+        click.echo(failure_line(name, exc), err=True)
         click.get_current_context().exit(1)
 
 

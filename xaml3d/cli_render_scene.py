@@ -22,9 +22,9 @@ from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
     Sizes,
     _resolved,
-    describe_os_error,
     display_name,
     echo_diagnostics,
+    failure_line,
     io_error,
     load_scene,
     same_file,
@@ -316,9 +316,9 @@ def _render_one(source: str, target, opts: RenderOptions, inputs: list[Path]) ->
             ).replace("(raise max_size to allow it)", "(lower -W/-H or --scale)")
         click.echo(exc.format(), err=True)
         raise _Failed from None
-    except (OSError, ValueError) as exc:
+    except (OSError, ValueError, ArithmeticError, RecursionError) as exc:
         echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
-        click.echo(io_error(name, describe_os_error(exc)), err=True)
+        click.echo(failure_line(name, exc), err=True)
         raise _Failed from None
     echo_diagnostics(diags, quiet=opts.quiet, verbose=opts.verbose)
 

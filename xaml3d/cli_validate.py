@@ -14,8 +14,8 @@ import click
 
 from xaml3d.animation.moment import scene_at
 from xaml3d.cli_common import (
-    describe_os_error,
     display_name,
+    failure,
     load_scene,
     no_app_option,
     render_size,
@@ -45,8 +45,9 @@ def collect_findings(
     except XamlError as exc:
         exc.with_location(file=name)
         return [exc.as_diagnostic()]
-    except (OSError, ValueError) as exc:
-        return [Diagnostic("IO001", ERROR, describe_os_error(exc), name)]
+    except (OSError, ValueError, ArithmeticError, RecursionError) as exc:
+        code, message = failure(exc)
+        return [Diagnostic(code, ERROR, message, name)]
 
     def size_of(vp):
         return render_size(vp, width, height) if (width or height) else (vp.width, vp.height)

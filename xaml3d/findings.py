@@ -45,11 +45,14 @@ def scene_findings(
     found: list[Diagnostic] = begun_by_name(scene.diagnostics, scene, storyboard)
     for vp in scene.viewports:
         w, h = size_of(vp)
-        own_empty = not (w > 0 and h > 0) and (w, h) == (vp.width, vp.height)
+        own_empty = not (w > 0 and h > 0) or not 1e-38 < w / h < 1e38  # a denormal side too
+        own_empty = own_empty and (w, h) == (vp.width, vp.height)
         if own_empty:
             # Width="0" in markup, or laid out empty: WPF loads it and draws nothing (LAY001 /
             # LAY002 say why, a warning). The camera's own problems are still reported; those
-            # of the size (CAM010) and of the scene seen through it are not.
+            # of the size (CAM010) and of the scene seen through it are not. A side so small
+            # that the aspect ratio is 0 or infinite in single precision (Width="5e-324") is
+            # drawn as nothing too.
             diags = [d for d in check_camera(vp.camera, 1.0, 1.0) if d.code != "CAM010"]
         else:
             diags = check_camera(vp.camera, w, h, vp.bounds())

@@ -73,6 +73,7 @@ def _accelerate(frac: float, a: float, d: float) -> float:
     if a == 0.0 and d == 0.0:
         return frac
     top = 2.0 / (2.0 - a - d)  # the top speed, so that the area under the speed curve is 1
+    frac = min(max(frac, 0.0), 1.0)  # (a rounding past 1 with d = 0 would divide by 0 below)
     if frac < a:
         return top * frac * frac / (2.0 * a)
     if frac <= 1.0 - d:
@@ -104,8 +105,11 @@ def clock_state(timing: Timing, natural: float, parent_time: float | None) -> Cl
     period = d * (2.0 if timing.auto_reverse else 1.0)
     if math.isinf(t):  # held at the end of a forever-repeating timeline: not reachable
         return ClockState(d, 1.0, 1, filling)
-    n = math.floor(t / period)
-    offset = t - n * period
+    ratio = t / period
+    if not math.isfinite(ratio):  # a period far below t (1e-7 s at 1e308 s): the last instant
+        return ClockState(d, 1.0, 1, filling)
+    n = math.floor(ratio)
+    offset = t - n * period if n else t  # (0 * an infinite period is NaN)
     if filling and n > 0 and offset == 0.0:
         n, offset = n - 1, period  # the active period ends at the end of an iteration
     if offset > d:  # the backward half of an auto-reversing iteration
@@ -114,17 +118,26 @@ def clock_state(timing: Timing, natural: float, parent_time: float | None) -> Cl
     return ClockState(frac * d, frac, n + 1, filling)
 
 
-def natural_duration(node: TimelineGroup | Animation) -> float:
+def natural_duration(node: TimelineGroup | Animation, known: dict | None = None) -> float:
     """The natural duration of a timeline: a group's latest child end (inf when one never
     ends, 0 with none); a key-frame animation's latest TimeSpan key time (else 1 s); a
-    From/To/By animation's 1 s."""
+    From/To/By animation's 1 s. ``known``: id(node) -> its natural duration, filled as the
+    tree is walked, so that a walk over a deep tree computes each node's once."""
+    if known is not None:
+        found = known.get(id(node))
+        if found is not None:
+            return found
     if isinstance(node, TimelineGroup):
-        ends = [end_time(c.timing, natural_duration(c)) for c in node.children]
+        ends = [end_time(c.timing, natural_duration(c, known)) for c in node.children]
         ends = [e for e in ends if e is not None]
-        return max(ends, default=0.0)
-    if node.key_frames:
-        return natural_key_frame_duration(node.key_frames)
-    return FROM_TO_NATURAL
+        value = max(ends, default=0.0)
+    elif node.key_frames:
+        value = natural_key_frame_duration(node.key_frames)
+    else:
+        value = FROM_TO_NATURAL
+    if known is not None:
+        known[id(node)] = value
+    return value
 
 
 def group_cycle(root: TimelineGroup) -> float:
@@ -137,16 +150,32 @@ def animation_states(root: TimelineGroup, t: float) -> list[tuple[Animation, Clo
     """Every animation of the tree with its clock at root parent time ``t`` (seconds since
     the storyboard was begun), in document order."""
     out: list[tuple[Animation, ClockState | None]] = []
-    _walk(root, t, out)
+    _walk(root, t, out, _known_for(root))
     return out
 
 
-def _walk(node, parent_time: float | None, out: list) -> None:
-    state = clock_state(node.timing, natural_duration(node), parent_time)
+# The natural durations of the trees walked last (the tree, id(node) -> its natural duration):
+# a tree is immutable, and sampling one (animate's frames, an export's 3600 samples) walks it
+# at every time; kept with the tree itself, so the ids stay its nodes'.
+_KNOWN: list[tuple[TimelineGroup, dict]] = []
+
+
+def _known_for(root: TimelineGroup) -> dict:
+    for tree, known in _KNOWN:
+        if tree is root:
+            return known
+    known: dict = {}
+    _KNOWN.append((root, known))
+    del _KNOWN[:-8]
+    return known
+
+
+def _walk(node, parent_time: float | None, out: list, known: dict) -> None:
+    state = clock_state(node.timing, natural_duration(node, known), parent_time)
     if isinstance(node, TimelineGroup):
         child_time = None if state is None else state.time
         for c in node.children:
-            _walk(c, child_time, out)
+            _walk(c, child_time, out, known)
     else:
         out.append((node, state))
 

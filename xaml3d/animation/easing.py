@@ -31,21 +31,33 @@ MODES = ("EaseIn", "EaseOut", "EaseInOut")
 
 
 def _back(t: float, amplitude: float) -> float:
-    return t**3 - t * max(0.0, amplitude) * math.sin(math.pi * t)
+    amp = amplitude if amplitude != amplitude else max(0.0, amplitude)  # C#'s Math.Max keeps NaN
+    if amp == math.inf:  # t * inf is NaN at t = 0: the curve's limit is 0 there
+        return t**3 if t <= 0.0 or t >= 1.0 else -math.inf
+    return t**3 - t * amp * math.sin(math.pi * t)
+
+
+# BounceEase: the curve's bounces, counted back from the last, depend on n only by terms of
+# b**-n; with b**(n + 1) kept below this they are below double precision's reach, so the curve
+# is the same with n cut there, and no term overflows (WPF's own b**n overflows to NaN)
+_BOUNCE_TOP = 1e150  # and 1/units**2, the first bounce's scale, stays a normal double
 
 
 def _bounce(t: float, bounces: float, bounciness: float) -> float:
     # Bounces are parabolas whose widths shrink by 1/bounciness each; the last one (at t = 1)
     # is half a parabola. "bounces" is an integer count in WPF.
-    n = max(0.0, float(int(bounces)))
     b = bounciness
+    if b != b or b == math.inf:
+        return math.nan  # WPF's curve is NaN throughout: the animated value makes no picture
+    n = max(0.0, float(bounces))
     if b < 1.0 or b == 1.0:
         b = 1.001  # WPF: keeps the geometric series defined
+    n = min(n, max(0.0, math.floor(math.log(_BOUNCE_TOP) / math.log(b)) - 1.0))
     pw = b**n
     one_minus_b = 1.0 - b
     units = (1.0 - pw) / one_minus_b + pw * 0.5
     at = t * units
-    bounce = math.log(-at * (1.0 - b) + 1.0, b)
+    bounce = math.log(max(-at * (1.0 - b) + 1.0, 1.0), b)
     start = math.floor(bounce)
     end = start + 1.0
     t0 = (1.0 - b**start) / (one_minus_b * units)
@@ -57,17 +69,40 @@ def _bounce(t: float, bounces: float, bounciness: float) -> float:
     return (-amp / (radius * radius)) * (rel - radius) * (rel + radius)
 
 
+def _expo(t: float, k: float) -> float:
+    """(e^(k t) - 1) / (e^k - 1), 0..1 for t in 0..1, without overflow for a big k (WPF's
+    own form overflows to inf / inf = NaN past k = 709): for k > 0 it is written
+    e^(k (t - 1)) (1 - e^(-k t)) / (1 - e^(-k)), whose terms are all at most 1."""
+    if k != k:
+        return math.nan
+    if k == 0.0:
+        return t
+    if math.isinf(k):  # the limits: a step at the end (k = +inf) or the start (k = -inf)
+        return (1.0 if t >= 1.0 else 0.0) if k > 0 else (0.0 if t <= 0.0 else 1.0)
+    if k < 0.0:
+        return math.expm1(k * t) / math.expm1(k)
+    if k * (t - 1.0) > 700.0:  # t far past 1 (not a progress): the value overflows, as WPF's
+        return math.inf
+    return math.exp(k * (t - 1.0)) * math.expm1(-k * t) / math.expm1(-k)
+
+
 def _elastic(t: float, oscillations: float, springiness: float) -> float:
-    n = max(0.0, float(int(oscillations)))
-    s = max(0.0, springiness)
-    expo = t if s == 0.0 else (math.exp(s * t) - 1.0) / (math.exp(s) - 1.0)
-    return expo * math.sin((2.0 * math.pi * n + math.pi / 2.0) * t)
+    n = max(0.0, float(oscillations))
+    s = springiness if springiness != springiness else max(0.0, springiness)
+    return _expo(t, s) * math.sin((2.0 * math.pi * n + math.pi / 2.0) * t)
 
 
 def _exponential(t: float, exponent: float) -> float:
-    if exponent == 0.0:
-        return t
-    return (math.exp(exponent * t) - 1.0) / (math.exp(exponent) - 1.0)
+    return _expo(t, exponent)
+
+
+def _power(t: float, power: float) -> float:
+    if power != power:
+        return math.nan
+    base, p = max(0.0, t), max(0.0, power)
+    if base > 1.0 and p * math.log(base) > 709.0:
+        return math.inf  # C#'s Math.Pow overflows to infinity, Python's ** raises
+    return base**p
 
 
 def ease_in(kind: str, t: float, params: dict[str, float]) -> float:
@@ -84,7 +119,7 @@ def ease_in(kind: str, t: float, params: dict[str, float]) -> float:
     if kind == "Exponential":
         return _exponential(t, params["Exponent"])
     if kind == "Power":
-        return max(0.0, t) ** max(0.0, params["Power"])
+        return _power(t, params["Power"])
     if kind == "Sine":
         return 1.0 - math.sin(math.pi / 2.0 * (1.0 - t))
     power = {"Cubic": 3, "Quadratic": 2, "Quartic": 4, "Quintic": 5}[kind]

@@ -155,6 +155,7 @@ def distance(vtype: str, a, b) -> float:
         d = abs(sum(x * y for x, y in zip(a, b, strict=True)))
         n = math.sqrt(sum(x * x for x in a) * sum(y * y for y in b))
         return 2.0 * math.acos(min(1.0, d / n)) if n else 0.0
+    # math.dist: no overflow for values whose squares pass the doubles' range (inf at worst)
     if vtype == "Color":
-        return math.sqrt(sum((x - y) ** 2 for x, y in zip(to_scrgb(a), to_scrgb(b), strict=True)))
-    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b, strict=True)))
+        return math.dist(to_scrgb(a), to_scrgb(b))
+    return math.dist(a, b)

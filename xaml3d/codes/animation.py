@@ -57,6 +57,10 @@ ANIM_CODES: dict[str, tuple[str, str]] = {
         "animate: the viewport is moved by its own RenderTransform (or an element's around it): "
         "the frames show its box, which the picture slides out of (--window draws the window)",
     ),  # fmt: skip
+    "ANIM017": (
+        ERROR,
+        "animate: the length and --fps ask for more frames than --max-frames: nothing is drawn",
+    ),
     "ANIM012": (
         WARNING,
         "animate: GIF frames shorter than 20 ms (over 50 fps), which most viewers slow to 100 ms",

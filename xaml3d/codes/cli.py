@@ -15,6 +15,11 @@ CLI_CODES: dict[str, tuple[str, str]] = {
         ERROR,
         "two outputs would be the same file (two scenes of a batch, two viewports of a scene)",
     ),
+    "INT001": (
+        ERROR,
+        "an error inside xaml3d that no check of the input foresaw (a defect: please report it "
+        "with the scene)",
+    ),
     "OPT001": (WARNING, "a command-line option has no effect with the others given"),
     "PRV001": (
         ERROR,

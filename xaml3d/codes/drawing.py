@@ -17,6 +17,11 @@ DRAWING_CODES: dict[str, tuple[str, str]] = {
     ),  # fmt: skip
     "DRW003": (INFO, "a 2D effect, mask or property of the viewport's picture not applied"),
     "DRW004": (WARNING, "VisualBrush without a Visual: it draws nothing"),
+    "DRW009": (
+        WARNING,
+        "a VisualBrush that shows the element it paints (or one around it): the cycle's inner "
+        "copy is not drawn",
+    ),
     "DRW007": (INFO, "a control beside the viewports that render --window does not draw"),
     "DRW008": (
         INFO,

@@ -16,4 +16,5 @@ VALUE_CODES: dict[str, tuple[str, str]] = {
     "VAL005": (ERROR, "bad enumeration value or boolean"),
     "VAL006": (ERROR, "bad duration, time span, key time, key spline or repeat behaviour"),
     "VAL007": (ERROR, "negative size (Size3D, Rect, Rect3D)"),
+    "VAL008": (ERROR, "a number the property's validation refuses (not finite, out of range)"),
 }

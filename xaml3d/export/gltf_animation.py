@@ -25,8 +25,11 @@ MAX_SAMPLES = 3600
 
 
 def _times(clip: Clip) -> np.ndarray:
-    n = max(2, min(MAX_SAMPLES, int(math.ceil(clip.seconds * SAMPLE_RATE)) + 1))
-    return np.linspace(0.0, clip.seconds, n) if clip.seconds > 0 else np.zeros(1)
+    want = clip.seconds * SAMPLE_RATE  # inf for a cycle of 1e308 s: the most samples
+    n = max(2, int(math.ceil(want)) + 1) if want < MAX_SAMPLES else MAX_SAMPLES
+    # glTF's times are single precision: a longer cycle is sampled up to the last one it holds
+    seconds = min(clip.seconds, float(np.finfo(np.float32).max))
+    return np.linspace(0.0, seconds, n) if seconds > 0 else np.zeros(1)
 
 
 def _differs(a, b) -> bool:
@@ -57,18 +60,30 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
     base = frames[0]
     tracks: dict = {}  # node or (outer, inner) nodes -> world matrices per sample
     lost: set[str] = set()
-    if all(len(f.models) == len(base.models) for f in frames):
-        for i, node in export.model_nodes.items():
+    # A frame shares every object the storyboards leave alone with the first (scene_at replaces
+    # only what changes): what is the same object is not compared, so that sampling costs what
+    # the animated values cost, not the whole scene at each time.
+    moved = [f for f in frames[1:] if f.models is not base.models]
+    if all(len(f.models) == len(base.models) for f in moved):
+        changed = sorted({i for f in moved for i, m in enumerate(f.models)
+                          if m is not base.models[i]})  # fmt: skip
+        for i in changed:
+            node = export.model_nodes.get(i)
+            if node is None:
+                continue
             worlds = [np.asarray(f.models[i].world) for f in frames]
             if any(_differs(w, worlds[0]) for w in worlds):
                 tracks[node] = worlds
-        for i in range(len(base.models)):
+        for i in changed:
             m0 = base.models[i]
-            for f in frames[1:]:
+            for f in moved:
                 m = f.models[i]
+                if m is m0:
+                    continue
                 if m.mesh is not m0.mesh and _differs(m.mesh.positions, m0.mesh.positions):
                     lost.add("mesh positions")
-                if m.material != m0.material or m.back_material != m0.back_material:
+                # (not ==: a brush's transform is an array; scene_at replaces what it changes)
+                if m.material is not m0.material or m.back_material is not m0.back_material:
                     lost.add("materials and brushes")
     else:
         lost.add("models appearing or disappearing")
@@ -76,6 +91,8 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
         _camera_track(export, frames, tracks, lost)
     if all(len(f.lights) == len(base.lights) for f in frames):
         for i, node in export.light_nodes.items():
+            if all(f.lights[i] is base.lights[i] for f in frames):
+                continue  # not animated
             got = [light_node(f.lights[i]) for f in frames]
             if any(g is None for g in got):
                 continue
@@ -100,12 +117,15 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
 
 def _camera_track(export, frames, tracks, lost) -> None:
     worlds, cams = [], []
+    got, before = None, None
     for f in frames:
-        try:
-            got = gltf_camera(f)
-        except CameraError:
-            lost.add("the camera into a state WPF cannot draw")
-            return
+        if got is None or f.camera is not before:  # an unchanged camera: the same matrices
+            try:
+                got = gltf_camera(f)
+            except CameraError:
+                lost.add("the camera into a state WPF cannot draw")
+                return
+            before = f.camera
         if got is None:
             return
         cams.append(got[0])
@@ -148,6 +168,11 @@ def _write(export, times, tracks) -> None:
             paths.append((node[1], "rotation", _continuous(inner)))
         for target, path, values in paths:
             if np.allclose(values, values[0], rtol=0, atol=1e-12):
+                continue
+            if not np.all(np.abs(values) <= np.finfo(np.float32).max):
+                msg = (f"an animated {path} goes beyond single precision (3.4e38), which "
+                       "glTF cannot hold: its animation is not exported")  # fmt: skip
+                export.note("EXP009", msg)
                 continue
             out = doc.accessor(values.astype(np.float32))
             samplers.append({"input": time_acc, "output": out, "interpolation": "LINEAR"})

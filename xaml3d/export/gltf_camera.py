@@ -41,7 +41,11 @@ def gltf_camera(vp, file=None) -> tuple[dict, np.ndarray, list] | None:
     notes: list = []
     aspect = float(vp.width) / float(vp.height)
     pipe = camera_pipeline(cam, vp.width, vp.height, vp.bounds())  # CameraError: caller
-    world = np.linalg.inv(pipe.view_matrix)
+    try:
+        world = np.linalg.inv(pipe.view_matrix)
+    except np.linalg.LinAlgError:  # a view that collapses (a MatrixCamera's): no camera node
+        raise CameraError("the camera's view matrix is singular: WPF draws nothing",
+                          code="CAM012") from None  # fmt: skip
     name = cam.name or type(cam).__name__
     if isinstance(cam, MatrixCamera):
         return _matrix_camera(cam, world, aspect, name, file)
@@ -82,11 +86,12 @@ def _matrix_camera(cam, world, aspect, name, file):
         lost.append("a skewed projection")
     if p[3, 3] == 0.0 and p[2, 3] != 0.0:
         m00, m11, m22, m32 = p[0, 0], p[1, 1], p[2, 2], p[3, 2]
-        near = m32 / m22 if m22 else 0.125
-        far = m32 / (m22 + 1.0) if m22 != -1.0 else math.inf
-        if not (m11 > 0 and m00 > 0 and near > 0):
-            return None
-        persp = {"yfov": 2.0 * math.atan(1.0 / m11), "aspectRatio": m11 / m00, "znear": near}
+        with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # checked below
+            near = m32 / m22 if m22 else 0.125
+            far = m32 / (m22 + 1.0) if m22 != -1.0 else math.inf
+            if not (m11 > 0 and m00 > 0 and near > 0):
+                return None
+            persp = {"yfov": 2.0 * math.atan(1.0 / m11), "aspectRatio": m11 / m00, "znear": near}
         if math.isfinite(far) and far > near:
             persp["zfar"] = far
         camera = {"type": "perspective", "perspective": persp, "name": name}
@@ -95,11 +100,17 @@ def _matrix_camera(cam, world, aspect, name, file):
         m00, m11, m22, m32 = p[0, 0], p[1, 1], p[2, 2], p[3, 2]
         if not (m00 > 0 and m11 > 0 and m22 != 0):
             return None
-        near = max(m32 / m22, 0.0)
-        far = max(near - 1.0 / m22, near + 1e-6)
-        ortho = {"xmag": 1.0 / m00, "ymag": 1.0 / m11, "znear": near, "zfar": far}
+        with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # checked below
+            near = max(m32 / m22, 0.0)
+            far = max(near - 1.0 / m22, near + 1e-6)
+            ortho = {"xmag": 1.0 / m00, "ymag": 1.0 / m11, "znear": near, "zfar": far}
         camera = {"type": "orthographic", "orthographic": ortho, "name": name}
         kind = "an OrthographicCamera"
+    if not all(
+        math.isfinite(float(v))
+        for v in (*camera.get("perspective", {}).values(), *camera.get("orthographic", {}).values())
+    ):
+        return None  # scales past the doubles' range (a denormal of the matrix): not a camera
     what = f" ({', '.join(lost)} is lost)" if lost else ""
     notes = [
         diag(

@@ -66,8 +66,12 @@ class Bake:
 
 
 def bake_for(texcoords: np.ndarray, brushes) -> Bake:
-    lo = texcoords.min(axis=0) if texcoords.shape[0] else np.zeros(2)
-    hi = texcoords.max(axis=0) if texcoords.shape[0] else np.zeros(2)
+    # the box of the coordinates WPF can sample: infinite ones kept far but finite (the box's
+    # size stays a number), NaN ones (no place on the brush) left out
+    tc = np.clip(texcoords, -1e300, 1e300)
+    known = tc[~np.isnan(tc).any(axis=1)] if tc.shape[0] else tc
+    lo = known.min(axis=0) if known.shape[0] else np.zeros(2)
+    hi = known.max(axis=0) if known.shape[0] else np.zeros(2)
     side = GRADIENT_TEXELS
     for b in brushes:
         image = getattr(b, "image", None)

@@ -99,7 +99,10 @@ class ViewportExport:
         root_index = self.doc.add("nodes", root)
         scene = {"name": root["name"], "nodes": [root_index]}
         extras = self._ambient_extras()
-        extras["xaml3d"] = {"viewport": {"width": float(vp.width), "height": float(vp.height)}}
+        # (a size JSON cannot hold, an infinite or NaN Width, is left out)
+        size = {k: float(v) for k, v in (("width", vp.width), ("height", vp.height))
+                if math.isfinite(float(v))}  # fmt: skip
+        extras["xaml3d"] = {"viewport": size}
         scene["extras"] = extras
         self.doc.add("scenes", scene)
         self.doc.gltf["scene"] = 0
@@ -131,10 +134,14 @@ class ViewportExport:
         return self.doc.accessor(tri.astype(dtype).ravel(), target=ELEMENT_ARRAY_BUFFER)
 
     def _worlds(self, i: int, model) -> list[np.ndarray]:
-        """The model's world matrix at every animation sample (just its own when static)."""
+        """The model's world matrices over the animation samples (just its own when static)."""
         frames = self.frames
         if frames and all(len(f.models) == len(self.vp.models) for f in frames):
-            return [np.asarray(f.models[i].world) for f in frames]
+            # once per distinct model object: a sample shares what the storyboards leave alone
+            # (scene_at replaces only what changes), so a still model is checked once, not at
+            # every sample
+            distinct = {id(f.models[i]): f.models[i] for f in frames}
+            return [np.asarray(m.world) for m in distinct.values()]
         return [np.asarray(model.world)]
 
     def _model_node(self, i: int, model) -> int | None:
@@ -286,10 +293,14 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
             return None  # not a direction WPF's renderer can use either
         spec["type"] = "directional"
         return spec, frame_looking(np.zeros(3), d)
-    p = world @ np.array([*light.position, 1.0])
+    with np.errstate(over="ignore", invalid="ignore"):  # out of range: left out just below
+        p = world @ np.array([*light.position, 1.0])
     if not np.all(np.isfinite(p)) or p[3] == 0:
         return None
-    p = p[:3] / p[3]
+    with np.errstate(over="ignore"):
+        p = p[:3] / p[3]
+    if not np.all(np.isfinite(p)):
+        return None
     if math.isfinite(light.range) and light.range > 0:
         spec["range"] = float(light.range)
     if isinstance(light, PointLight):
@@ -300,8 +311,11 @@ def light_node(light) -> tuple[dict, np.ndarray] | None:
             d = world[:3, :3] @ np.asarray(light.direction, dtype=np.float64)
         if not (_in_single(d) and np.any(d != 0.0)):
             return None  # not a direction WPF's renderer can use either
-        outer = min(max(math.radians(float(light.outer_cone_angle)) / 2.0, 1e-6), math.pi / 2)
-        inner = min(max(math.radians(float(light.inner_cone_angle)) / 2.0, 0.0), outer * 0.999)
+        # a NaN cone (WPF takes any double) is the narrowest glTF can hold, not a NaN in JSON
+        o, i = (float(a) if a == a else 0.0 for a in (light.outer_cone_angle,
+                                                        light.inner_cone_angle))  # fmt: skip
+        outer = min(max(math.radians(o) / 2.0, 1e-6), math.pi / 2)
+        inner = min(max(math.radians(i) / 2.0, 0.0), outer * 0.999)
         spec["type"] = "spot"
         spec["spot"] = {"innerConeAngle": inner, "outerConeAngle": outer}
         return spec, frame_looking(p, d)

@@ -61,7 +61,8 @@ def brush_bounds(texcoords: np.ndarray) -> Bounds:
         return np.zeros(2), np.ones(2)
     lo = tc.min(axis=0)
     hi = tc.max(axis=0)
-    hi = np.where(hi - lo > 0.0, hi, lo + 1.0)
+    with np.errstate(over="ignore"):  # a box wider than the doubles reach still has width
+        hi = np.where(hi - lo > 0.0, hi, lo + 1.0)
     return lo, hi
 
 
@@ -79,6 +80,9 @@ def _linear_to_srgb(c: np.ndarray) -> np.ndarray:
 
 def _sorted_stops(brush) -> tuple[np.ndarray, np.ndarray]:
     offsets = np.array([s.offset for s in brush.stops], dtype=np.float64)
+    # an infinite Offset (WPF takes any double): kept far but finite, so that the fraction
+    # between two stops is never inf / inf
+    offsets = np.clip(offsets, -1e300, 1e300)
     colors = np.array([s.color for s in brush.stops], dtype=np.float64).reshape(-1, 4)
     order = np.argsort(offsets, kind="stable")
     return offsets[order], colors[order]

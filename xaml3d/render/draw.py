@@ -539,8 +539,9 @@ def interpolate(planes: np.ndarray, indices: np.ndarray, tri: np.ndarray, w: np.
     i0, i1, i2 = ci[:, 0], ci[:, 1], ci[:, 2]
     w0, w1, w2 = w[:, 0], w[:, 1], w[:, 2]
     out = np.empty((tri.shape[0], planes.shape[0]))
-    for c, plane in enumerate(planes):
-        out[:, c] = w0 * plane[i0] + w1 * plane[i1] + w2 * plane[i2]
+    with np.errstate(over="ignore", invalid="ignore"):  # attributes past the range: NaN/inf
+        for c, plane in enumerate(planes):
+            out[:, c] = w0 * plane[i0] + w1 * plane[i1] + w2 * plane[i2]
     return out
 
 
@@ -681,9 +682,12 @@ def _work(pm: PreparedModel, ctx: DrawContext, mode: str) -> float:
     clip = pm.clip[pm.clip[:, 3] > 0.0]
     if clip.shape[0] == 0:
         return 0.0
-    q = 1.0 / clip[:, 3]
-    sx = np.clip((clip[:, 0] * q + 1.0) * (ctx.width / 2.0), 0.0, ctx.width)
-    sy = np.clip((1.0 - clip[:, 1] * q) * (ctx.height / 2.0), 0.0, ctx.height)
-    area = float((sx.max() - sx.min()) * (sy.max() - sy.min()))
+    with np.errstate(over="ignore", invalid="ignore"):  # an estimate: a vertex at w ~ 0 is inf
+        q = 1.0 / clip[:, 3]
+        sx = np.clip((clip[:, 0] * q + 1.0) * (ctx.width / 2.0), 0.0, ctx.width)
+        sy = np.clip((1.0 - clip[:, 1] * q) * (ctx.height / 2.0), 0.0, ctx.height)
+        area = float((sx.max() - sx.min()) * (sy.max() - sy.min()))
+    if area != area:
+        area = float(ctx.width * ctx.height)  # the estimate's worst case
     weights = mode != "flat" or not all(brush_is_uniform(p.brush) for p in passes)
     return area * sides * (2 if weights else 1)

@@ -9,6 +9,7 @@ knows nothing of animation). The files are written by ``xaml3d.output.animation`
 from __future__ import annotations
 
 import copy
+import math
 from collections import OrderedDict, deque
 from collections.abc import Iterator
 
@@ -22,10 +23,19 @@ from xaml3d.render.window import compose_window
 from xaml3d.render.workers import ordered, worker_pool
 
 
+def frame_count(start: float, end: float, fps: float) -> float:
+    """How many frames ``frame_times`` gives, known before any list is built (a float: inf
+    when the length times the rate overflows, a Duration of days at 1e308 fps)."""
+    span = (end - start) * fps
+    return float(max(1, round(span))) if math.isfinite(span) else math.inf
+
+
 def frame_times(start: float, end: float, fps: float) -> list[float]:
     """Times of the frames from ``start`` (included) to ``end`` (excluded): at least one."""
-    n = max(1, round((end - start) * fps))
-    return [start + i / fps for i in range(n)]
+    n = frame_count(start, end, fps)
+    if not math.isfinite(n):
+        raise OverflowError(f"{end - start:g} s at {fps:g} fps is not a count of frames")
+    return [start + i / fps for i in range(int(n))]
 
 
 def render_frames(

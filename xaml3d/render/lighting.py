@@ -123,7 +123,10 @@ def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> Prepared
         if isinstance(light, AmbientLight):
             ambient = ambient + rgb
             continue
-        m = view @ np.asarray(light.world, dtype=np.float64)
+        with np.errstate(over="ignore", invalid="ignore"):
+            m = view @ np.asarray(light.world, dtype=np.float64)
+        if not np.all(np.isfinite(m)):
+            continue  # a light whose transform passes the range lights nothing (as in WPF)
         m3 = m[:3, :3]
         if isinstance(light, DirectionalLight):
             with np.errstate(over="ignore", invalid="ignore"):  # out of range: _unit drops it
@@ -135,7 +138,8 @@ def prepare_lights(lights: Sequence[Light], view_matrix: np.ndarray) -> Prepared
             continue
         if not isinstance(light, (PointLight, SpotLight)):
             continue
-        det = float(np.linalg.det(m3))
+        with np.errstate(all="ignore"):  # past the range (or a denormal): no light, below
+            det = float(np.linalg.det(m3)) if np.all(np.isfinite(m3)) else math.nan
         s = abs(det) ** (1.0 / 3.0) if math.isfinite(det) else 0.0
         c = (light.constant_attenuation, light.linear_attenuation, light.quadratic_attenuation)
         ok = all(math.isfinite(x) and x >= 0.0 for x in c) and any(x > 0.0 for x in c)
@@ -294,7 +298,10 @@ def shade_vertices(
             return out
         if isinstance(material, SpecularMaterial):
             ks = _premultiplied_rgb(material.color)
-            _, specular = _accumulate(positions, normals, lights, float(material.specular_power))
+            power = float(material.specular_power)
+            if power != power:  # a NaN SpecularPower (WPF takes any double): no highlight
+                return out
+            _, specular = _accumulate(positions, normals, lights, power)
             out[:, :3] = np.minimum(specular * ks[None, :], 1.0)
             return out
     raise TypeError(f"not a material pass: {type(material).__name__}")

@@ -132,7 +132,9 @@ def draw_viewport(
         diags.append(Diagnostic("RND009", WARNING, msg, scene.file))
     place = None
     if picture is not None:
-        scale = (w / vp.width if vp.width > 0 else 1.0, h / vp.height if vp.height > 0 else 1.0)
+        # (a side that is 0, infinite or NaN in markup: one pixel per DIP, not a zero scale)
+        scale = (w / vp.width if 0 < vp.width < math.inf else 1.0,
+                 h / vp.height if 0 < vp.height < math.inf else 1.0)  # fmt: skip
         # LayoutTransforms around the viewport: the output is its box as turned on screen
         place = placement(picture, w, h, scale)
     if picture is not None and not nearest:

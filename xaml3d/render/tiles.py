@@ -59,7 +59,10 @@ def place_tile(brush, bounds, content: tuple[float, float, float, float]) -> Til
         vpy, vph = lo[1] + vpy * size[1], vph * size[1]
     if min(vbw, vbh, vpw, vph) <= 0.0 or not all(map(math.isfinite, (vbw, vbh, vpw, vph))):
         return None
-    sx, sy = vpw / vbw, vph / vbh
+    with np.errstate(over="ignore"):  # a ratio past the range: inf, refused just below
+        sx, sy = float(vpw / vbw), float(vph / vbh)
+    if not (math.isfinite(sx) and math.isfinite(sy)):
+        return None  # a Viewbox too small for the Viewport: a scale WPF cannot draw either
     if brush.stretch == "Uniform":
         sx = sy = min(sx, sy)
     elif brush.stretch == "UniformToFill":
@@ -79,16 +82,19 @@ def bounds_matrix(bounds: Bounds) -> np.ndarray:
 
 
 def brush_to_texture_matrix(brush, bounds: Bounds, relative_content: bool) -> np.ndarray:
-    """T @ (B R B^-1) @ [B if the brush's own geometry is in relative units]."""
+    """T @ (B R B^-1) @ [B if the brush's own geometry is in relative units]. A transform past
+    the doubles' range gives a matrix that is not finite (its callers draw nothing of it, as
+    WPF's single-precision renderer), not a floating-point error."""
     b = bounds_matrix(bounds)
     m = np.eye(3)
     if relative_content:
         m = b
-    if brush.relative_transform is not None:
-        r = np.asarray(brush.relative_transform, dtype=np.float64)
-        m = b @ r @ np.linalg.inv(b) @ m
-    if brush.transform is not None:
-        m = np.asarray(brush.transform, dtype=np.float64) @ m
+    with np.errstate(over="ignore", invalid="ignore"):
+        if brush.relative_transform is not None:
+            r = np.asarray(brush.relative_transform, dtype=np.float64)
+            m = b @ r @ np.linalg.inv(b) @ m
+        if brush.transform is not None:
+            m = np.asarray(brush.transform, dtype=np.float64) @ m
     return m
 
 

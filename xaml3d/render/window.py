@@ -145,7 +145,8 @@ def _rounded(w: float, h: float, radii):
                 continue
             dx, dy = (px - cx) * sx, (py - cy) * sy
             corner = (dx > 0) & (dy > 0)
-            q = np.hypot(dx / rx, dy / ry)
+            with np.errstate(over="ignore"):  # a radius far below a pixel: outside (inf)
+                q = np.hypot(dx / rx, dy / ry)
             # the distance past the arc in pixels, near enough for a pixel's coverage
             edge = np.clip(0.5 - (q - 1.0) * min(rx, ry), 0.0, 1.0).astype(np.float32)
             cov = np.where(corner, np.minimum(cov, edge), cov)

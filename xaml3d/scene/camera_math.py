@@ -472,7 +472,11 @@ def camera_pipeline(
         m_per = perspective_mper(P, camera.look_direction, camera.up_direction, fov_h, far, aspect)
         c = -near / far
         m_pp = mpp(c)
-        clip = m_pp @ m_per @ t_inv
+        with np.errstate(over="ignore", invalid="ignore"):
+            clip = m_pp @ m_per @ t_inv
+        if not np.all(np.isfinite(clip)):
+            raise CameraError("the camera's values, each within range, give a projection past "
+                              "the doubles' range: WPF draws nothing", code="CAM008")  # fmt: skip
         return CameraPipeline(
             fov_h=fov_h, fov_v=_fov_v(fov_h, aspect), A=_m(A), B=_m(B), C=_m(C), c=c,
             m_per=m_per, m_pp=m_pp, m_ortho=None, clip_matrix=_m(clip),

@@ -71,6 +71,11 @@ def check_values(camera, width, height, report: Report) -> None:
         size_ok = False
     if not size_ok:
         report("CAM010", f"viewport size {_num(width)} x {_num(height)} is empty or invalid")
+    elif not 1.0 / SINGLE_MAX <= float(width) / float(height) <= SINGLE_MAX:
+        # a denormal Width: the layout rounds it to no pixel, and the aspect ratio of the
+        # projection is 0 or infinite in single precision (WPF draws nothing)
+        report("CAM010", f"viewport size {_num(width)} x {_num(height)} has no usable aspect "
+               "ratio: one side is too small to draw")  # fmt: skip
     if camera is None:
         report("CAM104", "Viewport3D.Camera is null: WPF draws nothing")
         return
@@ -142,6 +147,10 @@ def _check_projection_camera(camera, report: Report) -> None:
             report("CAM008", f"FieldOfView {fov} is {_RANGE}")
         elif fov <= 0.0 or fov >= 180.0:
             report("CAM004", f"FieldOfView {fov:g} is outside (0, 180) degrees")
+        elif math.tan(math.radians(fov) / 2.0) < 1.0 / SINGLE_MAX:
+            # the projection's 1 / tan(FieldOfView / 2) is infinite in WPF's single precision
+            report("CAM008", f"FieldOfView {fov:g} degrees is so small that its projection "
+                   "is infinite in single precision: WPF draws nothing")  # fmt: skip
         elif fov < FOV_SMALL_DEG:
             report("CAM105", f"FieldOfView {fov:g} degrees is very small: almost nothing is seen")
         elif fov > FOV_LARGE_DEG:
@@ -154,6 +163,9 @@ def _check_projection_camera(camera, report: Report) -> None:
             report("CAM008", f"Width {width} is {_RANGE}")
         elif width <= 0.0:
             report("CAM009", f"orthographic Width {width:g} <= 0")
+        elif 2.0 / width > SINGLE_MAX:
+            report("CAM008", f"orthographic Width {width:g} is so small that its projection "
+                   "is infinite in single precision: WPF draws nothing")  # fmt: skip
     if near_ok and far_ok and far <= near:
         report("CAM007", f"FarPlaneDistance {far:g} <= NearPlaneDistance {near:g}")
 

@@ -107,7 +107,8 @@ def unmapped(brush, mesh) -> bool:
     if not _varies(brush):
         return False
     uv = mesh.texcoords
-    return not (uv.shape[0] and np.ptp(uv, axis=0).any())
+    with np.errstate(over="ignore", invalid="ignore"):  # a span past the range still varies
+        return not (uv.shape[0] and np.ptp(uv, axis=0).any())
 
 
 def _check_texture_coordinates(model: Model, label: str, file: str | None) -> list[Diagnostic]:

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from xaml3d.errors import GeometryError
+from xaml3d.scene import trig
 from xaml3d.scene.types import frozen_array
 
 ArrayLike = Sequence[float] | np.ndarray
@@ -56,7 +57,12 @@ def _sine_measure(vectors: list[np.ndarray]) -> float:
 def _solve_homogeneous(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
     """The matrix M with M @ src = dst (src, dst: columns are homogeneous points/vectors)."""
     # M src = dst  <=>  src^T M^T = dst^T: one linear solve for all rows of M at once.
-    m = np.linalg.solve(src.T, dst.T).T
+    try:
+        m = np.linalg.solve(src.T, dst.T).T
+    except np.linalg.LinAlgError:  # vectors that collapse in double precision (a 1e-300 Width)
+        raise GeometryError("the source points and vectors are degenerate (a size too small "
+                            "for double precision): no map of 3-space is fixed by them",
+                            code="GEO001") from None  # fmt: skip
     return frozen_array(m)
 
 
@@ -166,7 +172,8 @@ def rotation_axis_angle(
     """RotateTransform3D with AxisAngleRotation3D: right-hand rule about the (normalized) axis,
     about ``center``. A zero axis is the identity (WPF's rule)."""
     a = _unit_scaled(_vec(axis, 3, "axis"))
-    length = float(np.linalg.norm(a))
+    with np.errstate(over="ignore", invalid="ignore"):  # an infinite component: not an axis
+        length = float(np.linalg.norm(a))
     if length == 0.0 or not math.isfinite(length):
         return _about_center(np.eye(3), center)
     x, y, z = a / length
@@ -323,13 +330,13 @@ def rotation_2d(angle_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarra
     """Positive angles turn clockwise on screen (y down): x' = x cos - y sin."""
     a = math.radians(angle_deg)
     return frozen_array(
-        _about_2d(np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]), cx, cy)
+        _about_2d(np.array([[trig.cos(a), -trig.sin(a)], [trig.sin(a), trig.cos(a)]]), cx, cy)
     )
 
 
 def skew_2d(ax_deg: float, ay_deg: float, cx: float = 0.0, cy: float = 0.0) -> np.ndarray:
     ax, ay = math.radians(ax_deg), math.radians(ay_deg)
-    return frozen_array(_about_2d(np.array([[1.0, math.tan(ax)], [math.tan(ay), 1.0]]), cx, cy))
+    return frozen_array(_about_2d(np.array([[1.0, trig.tan(ax)], [trig.tan(ay), 1.0]]), cx, cy))
 
 
 def compose_2d(*matrices: np.ndarray) -> np.ndarray:
@@ -347,12 +354,13 @@ def axis_angle_quaternion(axis, angle_deg: float) -> tuple[float, float, float, 
     """An AxisAngleRotation3D as the unit quaternion (x, y, z, w) animations interpolate; a
     zero (or non-finite) axis is no rotation, as in WPF."""
     a = _unit_scaled(np.asarray(axis, dtype=np.float64))
-    n = float(np.linalg.norm(a))
+    with np.errstate(over="ignore", invalid="ignore"):  # an infinite component: not an axis
+        n = float(np.linalg.norm(a))
     if n == 0.0 or not math.isfinite(n):
         return (0.0, 0.0, 0.0, 1.0)
     half = math.radians(angle_deg) / 2.0
-    x, y, z = a / n * math.sin(half)
-    return (float(x), float(y), float(z), math.cos(half))
+    x, y, z = a / n * trig.sin(half)  # an infinite Angle: NaN, drawn as nothing (WPF's)
+    return (float(x), float(y), float(z), trig.cos(half))
 
 
 def node_matrix(node) -> np.ndarray:

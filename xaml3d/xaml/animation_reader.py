@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from xaml3d.animation.easing import PARAMETERS
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.scene.types import Animation, Easing, KeyFrame, Storyboard, TimelineGroup, Timing
 from xaml3d.xaml import values as V
@@ -44,6 +45,13 @@ _GROUPS = ("Storyboard", "ParallelTimeline")
 _EASING_MODES = ("EaseIn", "EaseOut", "EaseInOut")
 
 
+def _int_count(s: str) -> float:
+    return float(V.parse_int(s))
+
+
+_EASING_INTS = {"Bounces": _int_count, "Oscillations": _int_count}
+
+
 def _value_type(type_name: str) -> str | None:
     for v in _VALUE_TYPES:
         if type_name.startswith(v + "Animation"):
@@ -58,8 +66,7 @@ def _read_value(r, p, prop: str, vtype: str):
 
 
 def _ratio(p, prop: str) -> float:
-    v = p.value(prop, V.parse_double, 0.0)
-    return v if 0.0 <= v <= 1.0 else 0.0  # WPF refuses others (reported by validate)
+    return p.value(prop, V.parse_ratio, 0.0)  # outside 0..1: VAL008, WPF's loader refuses it
 
 
 _DAY_PROPS = ("BeginTime", "Duration", "RepeatBehavior")
@@ -81,9 +88,12 @@ def _timing(r, p) -> Timing:
         begin = None  # never begins
     elif p.has("BeginTime"):
         begin = p.value("BeginTime", V.parse_timespan, 0.0)
-    speed = p.value("SpeedRatio", V.parse_double, 1.0)
+    speed = p.value("SpeedRatio", V.parse_speed_ratio, 1.0)
     accel, decel = _ratio(p, "AccelerationRatio"), _ratio(p, "DecelerationRatio")
-    if accel + decel > 1.0:
+    if accel + decel > 1.0:  # WPF throws when the clock is made (the storyboard begins)
+        msg = (f"{p.type}: AccelerationRatio {accel:g} and DecelerationRatio {decel:g} add up "
+               "to more than 1")  # fmt: skip
+        r.ctx.diag("VAL008", msg, p.el, attr=p.attr_keys.get("AccelerationRatio"))
         accel = decel = 0.0
     return Timing(
         begin_time=begin,
@@ -93,7 +103,7 @@ def _timing(r, p) -> Timing:
         fill_behavior=p.value(
             "FillBehavior", lambda s: V.parse_enum(s, ("HoldEnd", "Stop")), "HoldEnd"
         ),  # fmt: skip
-        speed_ratio=speed if speed > 0.0 else 1.0,
+        speed_ratio=speed,
         acceleration_ratio=accel,
         deceleration_ratio=decel,
     )
@@ -107,8 +117,10 @@ def read_easing(r, p, prop: str = "EasingFunction") -> Easing | None:
         if ep.etype is None or ep.etype.kind != "easing":
             r.ctx.diag("ANI003", f"{ep.type} is not one of WPF's easing functions: linear", el)
             return None
+        # Bounces and Oscillations are Int32 in WPF ('Infinity' or '2.5' is refused); the
+        # other parameters are doubles WPF takes as written (easing.py keeps them finite)
         params = tuple(
-            (k, ep.value(k, V.parse_double, 0.0))
+            (k, ep.value(k, _EASING_INTS.get(k, V.parse_double), PARAMETERS[ep.type[:-4]][k]))
             for k in sorted(ep.etype.properties)
             if k != "EasingMode" and ep.has(k)
         )

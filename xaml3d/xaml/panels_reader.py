@@ -141,6 +141,44 @@ def parse_grid_length(s: str) -> tuple[str, float]:
     return "pixel", v
 
 
+# WPF's validate callbacks of framework properties: a value they refuse is an error where it is
+# written (VAL008), and WPF's default stands in
+_VALID = {
+    "MinWidth": (lambda v: 0.0 <= v < math.inf, "a size must be finite and >= 0"),
+    "MinHeight": (lambda v: 0.0 <= v < math.inf, "a size must be finite and >= 0"),
+    "MaxWidth": (lambda v: v >= 0.0, "a size must be >= 0"),
+    "MaxHeight": (lambda v: v >= 0.0, "a size must be >= 0"),
+    "BorderThickness": (
+        lambda t: all(0.0 <= x < math.inf for x in t),
+        "a thickness must be finite and >= 0",
+    ),
+    "Padding": (
+        lambda t: all(0.0 <= x < math.inf for x in t),
+        "a thickness must be finite and >= 0",
+    ),
+    "Margin": (lambda t: all(math.isfinite(x) for x in t), "a margin must be finite"),
+    "FontSize": (
+        lambda v: 0.0 < v <= 35791.39453125,
+        "a font size must be above 0 and at most 35791.39",
+    ),
+}
+
+
+def _validated(prop: str, conv):
+    rule = _VALID.get(prop)
+    if rule is None:
+        return conv
+    ok, what = rule
+
+    def convert(s: str):
+        v = conv(s)
+        if not ok(v):
+            raise ValueSyntaxError(f"{s.strip()!r}: {what} (WPF refuses it)", code="VAL008")
+        return v
+
+    return convert
+
+
 class ElementValues:
     """Property values of one element, through Props (presentation elements) or, for custom
     elements, their plain attributes with bad values ignored."""
@@ -151,6 +189,7 @@ class ElementValues:
         self.style = style or {}
 
     def get(self, prop: str, conv, default):
+        conv = _validated(prop, conv)
         if self.p is not None:
             p = self.p
             raw = self.style.get(prop)

@@ -557,6 +557,22 @@ def parse_repeat_behavior(s: str) -> float | str | tuple[str, float]:
     return ("time", _non_negative_timespan(t, "RepeatBehavior"))
 
 
+def parse_speed_ratio(s: str) -> float:
+    """A Timeline's SpeedRatio: WPF's validation takes a finite number above 0 only."""
+    v = parse_double(s)
+    if not (0.0 < v < INF):
+        raise _fail("VAL008", f"SpeedRatio: {_show(s)} is not a finite number above 0")
+    return v
+
+
+def parse_ratio(s: str) -> float:
+    """An Acceleration/DecelerationRatio: WPF's validation takes 0..1 only (NaN refused)."""
+    v = parse_double(s)
+    if not (0.0 <= v <= 1.0):
+        raise _fail("VAL008", f"{_show(s)} is not between 0 and 1")
+    return v
+
+
 def parse_key_time(s: str) -> tuple[str, float] | str:
     """A KeyTime: ('time', seconds), ('percent', fraction 0..1), 'Uniform' or 'Paced'."""
     t = s.strip()

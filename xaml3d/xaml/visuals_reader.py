@@ -72,7 +72,25 @@ _SHAPES = SHAPES
 
 
 def visual_drawing(r, el):
-    """(Drawing, (0, 0, width, height)) of the visual ``el`` laid out at its desired size."""
+    """(Drawing, (0, 0, width, height)) of the visual ``el`` laid out at its desired size.
+    A visual met again while it is being drawn (a VisualBrush on an element inside the visual
+    it shows) is a cycle: the inner copy draws nothing (DRW009), as WPF's cyclic brushes."""
+    drawing = getattr(r, "visuals_drawn", None)
+    if drawing is None:
+        drawing = r.visuals_drawn = set()
+    if id(el) in drawing:
+        msg = (f"VisualBrush shows the {qname(el.tag)[1]} it paints (or one around it): a cycle, "
+               "its inner copy is not drawn")  # fmt: skip
+        r.ctx.diag("DRW009", msg, el)
+        return None
+    drawing.add(id(el))
+    try:
+        return _visual_drawing(r, el)
+    finally:
+        drawing.discard(id(el))
+
+
+def _visual_drawing(r, el):
     reader = MeasuringPanels(r, [])
     root = reader.build(el)
     if root is None:
@@ -125,7 +143,8 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
         m = m @ placed_by_layout(n)
     if layer is not None and layer.render_transform is not None:
-        m = m @ layer.render_transform
+        with np.errstate(over="ignore", invalid="ignore"):  # a NaN angle: nothing is drawn
+            m = m @ layer.render_transform
     out.append(
         DrawingGroup(
             children=tuple(own),

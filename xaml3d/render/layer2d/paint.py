@@ -23,6 +23,7 @@ from xaml3d.render.layer2d.paths import matrix, path_of
 from xaml3d.render.layer2d.pens import caps_path, stroke_paint
 from xaml3d.render.layer2d.picture import effect_filter
 from xaml3d.render.layer2d.shaders import image_of, paint_of
+from xaml3d.scene import trig
 from xaml3d.scene.drawing import (
     DrawingGroup,
     GeometryDrawing,
@@ -226,8 +227,8 @@ def _effect_bounds(r: skia.Rect, effect) -> skia.Rect:
     right, bottom = r.right() + spread, r.bottom() + spread
     if effect.kind == "DropShadow":
         a = math.radians(float(effect.direction))
-        dx = float(effect.shadow_depth) * math.cos(a)
-        dy = float(effect.shadow_depth) * math.sin(a)
+        dx = float(effect.shadow_depth) * trig.cos(a)
+        dy = float(effect.shadow_depth) * trig.sin(a)
         left, right = (left, right + dx) if dx >= 0 else (left + dx, right)
         top, bottom = (top - dy, bottom) if dy >= 0 else (top, bottom - dy)
     return skia.Rect(left, top, right, bottom)

@@ -73,7 +73,10 @@ def path_of(geometry, filled: bool = False) -> skia.Path | None:
     elif isinstance(geometry, CombinedGeometry):
         a = path_of(geometry.geometry1, filled) or skia.Path()
         b = path_of(geometry.geometry2, filled) or skia.Path()
-        p = skia.Op(a, b, _OPS.get(geometry.mode, skia.PathOp.kUnion_PathOp)) or skia.Path()
+        try:
+            p = skia.Op(a, b, _OPS.get(geometry.mode, skia.PathOp.kUnion_PathOp)) or skia.Path()
+        except RuntimeError:  # coordinates past single precision (a 1e308 BorderThickness):
+            p = skia.Path()  # infinite in WPF's renderer too, which draws nothing of them
     else:
         return None
     if geometry.transform is not None:

@@ -24,6 +24,7 @@ import skia
 
 from xaml3d.render.layer2d.paths import matrix, path_of
 from xaml3d.render.layer2d.shaders import image_of, paint_of
+from xaml3d.scene import trig
 from xaml3d.scene.drawing import Viewport2D
 
 
@@ -35,8 +36,8 @@ def effect_filter(effect):
     if effect.kind == "Blur":
         return skia.ImageFilters.Blur(sigma, sigma) if sigma > 0 else None
     a = math.radians(float(effect.direction))
-    dx = float(effect.shadow_depth) * math.cos(a)
-    dy = -float(effect.shadow_depth) * math.sin(a)
+    dx = float(effect.shadow_depth) * trig.cos(a)
+    dy = -float(effect.shadow_depth) * trig.sin(a)
     r, g, b, alpha = (float(c) for c in effect.color)
     color = skia.Color4f(r, g, b, alpha * float(effect.opacity)).toColor()
     return skia.ImageFilters.DropShadow(dx, dy, sigma, sigma, color)

@@ -52,6 +52,8 @@ def _gradient_stops(brush) -> tuple[list, list]:
     stops = [brush.stops[i] for i in order]
     colors = [_color(s.color) for s in stops]
     offsets = [min(1.0, max(0.0, float(s.offset))) for s in stops]
+    if len(stops) == 1:  # WPF paints one stop as its colour everywhere; skia needs two
+        colors, offsets = colors * 2, [0.0, 1.0]
     return colors, offsets
 
 
@@ -68,6 +70,8 @@ def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
     bounds = _bounds(box)
     if isinstance(brush, LinearGradientBrush) and brush.stops:
         m = brush_to_texture_matrix(brush, bounds, brush.mapping_mode != "Absolute")
+        if not np.all(np.isfinite(m)):
+            return None  # a transform past the range: the flat colour of paint_of
         colors, offsets = _gradient_stops(brush)
         pts = [skia.Point(*brush.start_point), skia.Point(*brush.end_point)]
         return skia.GradientShader.MakeLinear(
@@ -75,16 +79,22 @@ def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
         )
     if isinstance(brush, RadialGradientBrush) and brush.stops:
         m = brush_to_texture_matrix(brush, bounds, brush.mapping_mode != "Absolute")
+        if not np.all(np.isfinite(m)):
+            return None
         rx, ry = float(brush.radius_x), float(brush.radius_y)
         if rx == 0 or ry == 0:
             return None
         cx, cy = brush.center
         ellipse = np.array([[rx, 0.0, cx], [0.0, ry, cy], [0.0, 0.0, 1.0]])
-        ox, oy = (brush.gradient_origin[0] - cx) / rx, (brush.gradient_origin[1] - cy) / ry
+        with np.errstate(all="ignore"):  # radii or a centre past the range: checked below
+            ox, oy = (brush.gradient_origin[0] - cx) / rx, (brush.gradient_origin[1] - cy) / ry
+            placed = m @ ellipse
+        if not (np.all(np.isfinite(placed)) and np.isfinite(ox) and np.isfinite(oy)):
+            return None  # the flat colour of paint_of, as for a degenerate gradient
         colors, offsets = _gradient_stops(brush)
         return skia.GradientShader.MakeTwoPointConical(
             skia.Point(ox, oy), 0.0, skia.Point(0.0, 0.0), 1.0, colors, offsets,
-            _SPREAD[brush.spread_method], 0, matrix(m @ ellipse),
+            _SPREAD[brush.spread_method], 0, matrix(placed),
         )  # fmt: skip
     if isinstance(brush, (ImageBrush, DrawingBrush)):
         return _tile_shader(brush, bounds)

@@ -38,6 +38,10 @@ def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[in
     """The tile (brush-space rectangle ``viewport``) as premultiplied float (H, W, 4)."""
     w, h = size
     vpx, vpy, vpw, vph = viewport
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        sx, sy = np.float64(w) / vpw, np.float64(h) / vph  # (numpy: 0 gives inf)
+    if not (np.isfinite(sx) and np.isfinite(sy)):  # a tile too small for any texel: empty
+        return np.zeros((h, w, 4))
     surface = skia.Surface.MakeRaster(
         skia.ImageInfo.Make(
             w, h, skia.ColorType.kRGBA_8888_ColorType, skia.AlphaType.kPremul_AlphaType
@@ -45,7 +49,7 @@ def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[in
     )
     canvas = surface.getCanvas()
     canvas.clear(skia.ColorTRANSPARENT)
-    canvas.scale(w / vpw, h / vph)
+    canvas.scale(float(sx), float(sy))
     canvas.translate(-vpx, -vpy)
     canvas.concat(matrix(content_matrix))
     draw_content(canvas, brush)
@@ -100,8 +104,9 @@ def sample_drawing_brush(brush: DrawingBrush, uv: np.ndarray, bounds, density=No
     if q is None:
         return out
     mode = edge_mode(brush.tile_mode, matrix, bounds, (vpx, vpy, vpw, vph))
-    fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
-    fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+    with np.errstate(over="ignore", invalid="ignore"):  # a tile far below a texel: inf, outside
+        fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+        fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
     keep = in_x & in_y
     if keep.any():
         h, w = tile.shape[:2]
