@@ -55,7 +55,13 @@ def test_window_picture_and_outline(tmp_path):
 
 
 @pytest.mark.parametrize(
-    "case", ["window-two-viewports", "window-around-layer", "window-layout-transform"]
+    "case",
+    [
+        "window-two-viewports",
+        "window-around-layer",
+        "window-layout-transform",
+        "window-tabs-expander",
+    ],
 )
 def test_window_reference_case_through_the_cli(tmp_path, case):
     src = REF / f"{case}.xaml"
@@ -64,6 +70,56 @@ def test_window_reference_case_through_the_cli(tmp_path, case):
     with Image.open(tmp_path / "w.png") as got, Image.open(src.with_suffix(".png")) as want:
         diff = np.abs(np.asarray(got, dtype=int) - np.asarray(want.convert("RGBA"), dtype=int))
     assert diff.max() <= 3
+
+
+def test_viewports_in_a_tab_not_selected_or_a_collapsed_expander_are_not_shown(tmp_path):
+    src = REF / "window-tabs-expander.xaml"
+    p = xaml3d("info", src, "--json")
+    assert p.returncode == 0, p.stderr
+    vps = json.loads(p.stdout)["viewports"]
+    # the Red tab's and the Expander's viewports are not laid out: their own size, else the
+    # default; the selected tab's fills the content panel (1 px border, Padding 2)
+    assert [(v["width"], v["height"], v["layout_rect"]) for v in vps] == [
+        (640, 480, None),
+        (194, 172, [3, 26, 194, 172]),
+        (640, 480, None),
+    ]
+    p = xaml3d("render", src, "-o", tmp_path / "v.png", "--viewport", "all", "-v")
+    assert p.returncode == 0, p.stderr
+    sizes = []
+    for i in range(3):
+        with Image.open(tmp_path / f"v-{i}.png") as im:
+            sizes.append(im.size)
+    assert sizes == [(640, 480), (194, 172), (640, 480)]
+    lines = [x for x in p.stderr.decode().splitlines() if "LAY008" in x]
+    assert len(lines) == 2
+    said = "info LAY008 the Viewport3D is in"
+    assert f":10:9: {said} the TabItem 'Red' that its TabControl does not select" in lines[0]
+    assert f":31:9: {said} an Expander whose IsExpanded is False" in lines[1]
+
+
+TABS = """<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
+    Width="216" Height="139" UseLayoutRounding="True">
+  <TabControl>
+    <TabItem Header="A"><Viewport3D Width="30" Height="20"/></TabItem>
+    <TabItem Header="B" IsSelected="True"><Viewport3D/></TabItem>
+    <TabItem><TabItem.Header><Viewport3D Width="12" Height="10"/></TabItem.Header></TabItem>
+  </TabControl>
+</Window>"""
+
+
+def test_is_selected_chooses_the_tab_and_a_header_viewport_is_shown(tmp_path):
+    (tmp_path / "tabs.xaml").write_text(TABS)
+    p = xaml3d("info", "tabs.xaml", "--json", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    vps = json.loads(p.stdout)["viewports"]
+    assert (vps[0]["width"], vps[0]["height"], vps[0]["layout_rect"]) == (30, 20, None)
+    assert vps[0]["size_source"] == "viewport"
+    # client 200 x 100; the content panel under the tab strip, its border and Padding inside
+    x, y, w, h = vps[1]["layout_rect"]
+    assert (x, w) == (3, 194) and y + h == 97
+    assert vps[2]["layout_rect"] is not None and vps[2]["layout_rect"][2:] == [12, 10]
+    assert b"LAY008" not in p.stderr
 
 
 def test_window_size_relays_out_render_info_camera(tmp_path):

@@ -23,4 +23,8 @@ LAYOUT_CODES: dict[str, tuple[str, str]] = {
         "warning",
         "a control xaml3d does not measure takes an estimated size that places a Viewport3D",
     ),
+    "LAY008": (
+        "info",
+        "a Viewport3D in a TabItem not selected or a collapsed Expander is not shown in the window",
+    ),
 }

@@ -11,6 +11,7 @@ control is built: a document of viewports and panels alone never loads them.
 from __future__ import annotations
 
 from xaml3d.layout import tree as L
+from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
@@ -20,12 +21,28 @@ from xaml3d.xaml.panels_reader import (
     parse_thickness,
 )
 
+# The controls that show only part of their content (the selected tab, an expanded Expander's)
+_SELECTING = {"TabControl", "TabItem", "Expander"}
+
 
 class MeasuringPanels(PanelsReader):
     """The panel reader with the controls' content measured as WPF's templates do, and the
     controls that hold content laid out through their template's parts (``templates``)."""
 
     built_controls = False  # True once a control was built (``layout_step`` asks)
+
+    def kind_of(self, el):
+        """A TabControl, TabItem or Expander holding a viewport is laid out through its
+        template like any other (``templates``): only the selected tab's content, and an
+        Expander's only when IsExpanded, is laid out; the others' viewports are not shown."""
+        kind = super().kind_of(el)
+        ns, local = qname(el.tag)
+        if (kind == L.CONTAINER and local in _SELECTING and is_presentation(ns)
+                and not self.r.ctx.is_templated(el)):  # fmt: skip
+            v = ElementValues(self.r, el, self.style_setters(el, local))
+            if not _turns(_layout_transform(self.r, v)):  # a turned one is not expanded
+                return L.CONTROL
+        return kind
 
     def build(self, el, font: float = FONT_SIZE):
         n = super().build(el, font)

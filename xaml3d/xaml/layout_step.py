@@ -2,8 +2,9 @@
 (xaml3d.layout) and turned into each viewport's size, its derivation, the gotcha warnings and
 the Scene's record of the laid-out boxes (``xaml3d.scene.boxes``).
 
-A viewport that the panel walk does not reach (inside a header, a tooltip...) keeps its own
-Width/Height, else the default 640 x 480, and says so.
+A viewport that the panel walk does not reach (inside a header, a tooltip, a TabItem not
+selected, a collapsed Expander...) keeps its own Width/Height, else the default 640 x 480, and
+says so.
 """
 
 from __future__ import annotations
@@ -140,6 +141,8 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
         n = nodes.get(i)
         if n is None:
             out[i] = unreached(r, el)
+            if reader.built_controls:
+                _not_shown(r, el)
             continue
         background = next((a.background for a in n.ancestors() if a.background is not None), None)
         w, h = n.rect[2], n.rect[3]
@@ -215,6 +218,18 @@ def _animated(r, layer: Layer2D, note) -> Layer2D:
         if opacity:
             r.tag(layer, el, {"Opacity": "opacity"})
     return layer
+
+
+def _not_shown(r, el) -> None:
+    """LAY008 for a viewport the layout did not reach because its TabItem is not selected or
+    its Expander is collapsed (``templates.not_shown``)."""
+    from xaml3d.xaml.templates import not_shown
+
+    why = not_shown(r, el)
+    if why is not None:
+        r.ctx.add(Diagnostic("LAY008", LAYOUT_CODES["LAY008"][0], f"the Viewport3D is {why}: "
+                  "WPF does not show it, render --window leaves it out and render draws it at "
+                  "its own Width/Height (else 640 x 480)"), el)  # fmt: skip
 
 
 def unreached(r, el) -> ViewportLayout:

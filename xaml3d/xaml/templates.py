@@ -269,6 +269,58 @@ def _selected_index(v, items, el) -> int:
     return -1
 
 
+def _chosen_tab(r, tab_control, tabs) -> int:
+    """The index of the tab a TabControl shows: SelectedIndex or IsSelected, else the first."""
+    from xaml3d.xaml.panels_reader import style_setters
+
+    v = ElementValues(r, tab_control, style_setters(r, tab_control, "TabControl"))
+    chosen = _selected_index(v, tabs, tab_control)
+    return 0 if chosen < 0 and tabs else chosen
+
+
+def not_shown(r, el) -> str | None:
+    """Why WPF does not show ``el`` (a Viewport3D): the nearest TabItem around it that its
+    TabControl does not select, or Expander around it that is not IsExpanded (a Header is
+    shown either way); None when neither holds it."""
+    from xaml3d.xaml.panels_reader import style_setters
+
+    node = el.getparent()
+    while node is not None:
+        ns, local = qname(node.tag)
+        if local.endswith(".Header"):  # what a header holds is shown: skip its owner
+            owner = node.getparent()
+            node = None if owner is None else owner.getparent()
+            continue
+        if is_presentation(ns) and local == "TabItem":
+            owner = node.getparent()
+            if owner is not None and qname(owner.tag)[1].endswith(".Items"):
+                owner = owner.getparent()
+            if owner is not None and qname(owner.tag)[1] == "TabControl":
+                tabs = [k for k in _elements(_items(owner)) if qname(k.tag)[1] == "TabItem"]
+                chosen = _chosen_tab(r, owner, tabs)
+                if node in tabs and tabs.index(node) != chosen:
+                    header = node.get("Header")
+                    named = f" {header!r}" if header is not None else ""
+                    return f"in the TabItem{named} that its TabControl does not select"
+        if is_presentation(ns) and local == "Expander":
+            v = ElementValues(r, node, style_setters(r, node, "Expander"))
+            if not v.get("IsExpanded", V.parse_bool, False):
+                return "in an Expander whose IsExpanded is False"
+        node = node.getparent()
+    return None
+
+
+def _items(owner) -> list:
+    """A TabControl's items: its element children, and those of its Items property element."""
+    out = []
+    for k in _elements(owner):
+        if qname(k.tag)[1].endswith(".Items"):
+            out.extend(_elements(k))
+        elif "." not in qname(k.tag)[1]:
+            out.append(k)
+    return out
+
+
 def _list_box(reader, n, el, v, font) -> None:
     _chrome(reader, n, v, _WHITE, _LIST_BORDER)
     # the template's Border has Padding 1; the ScrollViewer inside it the ListBox's Padding
