@@ -317,3 +317,43 @@ def test_a_value_error_is_never_worded_as_a_file_error(tmp_path):
         assert p.returncode == 1 and "IO001" not in p.stderr + p.stdout
         assert f"s.xaml:1:{col}: error VAL008" in p.stderr + p.stdout
         assert "Traceback" not in p.stderr
+
+
+def _textured(texcoords: str) -> str:
+    return (
+        '<ModelVisual3D><ModelVisual3D.Content><Model3DGroup><AmbientLight Color="White"/>'
+        '<GeometryModel3D><GeometryModel3D.Geometry><MeshGeometry3D Positions="-1,-1,0 1,-1,0 '
+        f'1,1,0 -1,1,0" TriangleIndices="0 1 2 0 2 3" TextureCoordinates="{texcoords}"/>'
+        "</GeometryModel3D.Geometry><GeometryModel3D.Material><DiffuseMaterial><DiffuseMaterial."
+        'Brush><LinearGradientBrush StartPoint="0,0" EndPoint="1,1"><GradientStop Color="Red" '
+        'Offset="0"/><GradientStop Color="Blue" Offset="1"/></LinearGradientBrush>'
+        "</DiffuseMaterial.Brush></DiffuseMaterial></GeometryModel3D.Material></GeometryModel3D>"
+        "</Model3DGroup></ModelVisual3D.Content></ModelVisual3D>"
+    )
+
+
+@pytest.mark.parametrize(
+    "texcoords",
+    [
+        "0.5,3.5e38 1,-3.5e38 1.7976931348623157E+308,0.001 -Infinity,-1",  # overflow on the way
+        "0,0 0,Infinity 0.001,0.5 -1e308,NaN",  # a tiny fraction: underflow in single precision
+    ],
+)
+def test_glb_of_texture_coordinates_at_the_doubles_edge(texcoords):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        scene = load(scene_text(model=_textured(texcoords)), text=True)
+        data, _ = export_bytes(scene, "glb")
+    assert data[""][:4] == b"glTF"
+
+
+def test_a_projection_past_the_doubles_range_is_a_camera_error_not_an_overflow():
+    # a document the structured fuzzing wrote (tests/fuzz_cases): a 1.8e308 viewport whose
+    # camera's matrices are finite but whose pixel mapping is not; every stage runs clean
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from fuzz_documents import run_document
+
+    text = Path(__file__).resolve().parent / "fuzz_cases" / "camera-pixel-overflow.xaml"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        run_document(text.read_text(encoding="utf-8"))

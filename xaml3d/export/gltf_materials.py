@@ -61,8 +61,12 @@ class Bake:
         """The mesh's texture coordinates in the baked texture's 0..1 space."""
         size = self.hi - self.lo
         safe = np.where(size > 0, size, 1.0)
-        out = np.where(size > 0, (tc - self.lo) / safe, 0.5)
-        return out.astype(np.float32)
+        # coordinates near the doubles' range (the box is clipped to +-1e300) overflow on the
+        # way: they land at the box's edges, where the bake's edge texels are
+        with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+            out = np.where(size > 0, (tc - self.lo) / safe, 0.5)
+            # NaN stays NaN (no place on the brush); a tiny fraction is 0 in single precision
+            return np.clip(out, 0.0, 1.0).astype(np.float32)
 
 
 def bake_for(texcoords: np.ndarray, brushes) -> Bake:

@@ -474,13 +474,11 @@ def camera_pipeline(
         m_pp = mpp(c)
         with np.errstate(over="ignore", invalid="ignore"):
             clip = m_pp @ m_per @ t_inv
-        if not np.all(np.isfinite(clip)):
-            raise CameraError("the camera's values, each within range, give a projection past "
-                              "the doubles' range: WPF draws nothing", code="CAM008")  # fmt: skip
+        clip, to_pixel = _finite_projection(clip, wind4)
         return CameraPipeline(
             fov_h=fov_h, fov_v=_fov_v(fov_h, aspect), A=_m(A), B=_m(B), C=_m(C), c=c,
             m_per=m_per, m_pp=m_pp, m_ortho=None, clip_matrix=_m(clip),
-            world_to_pixel=_m(wind4 @ clip), **fields,
+            world_to_pixel=_m(to_pixel), **fields,
         )  # fmt: skip
     if not isinstance(camera, OrthographicCamera):
         raise CameraError(f"unknown camera type {type(camera).__name__}", code="CAM015")
@@ -488,8 +486,21 @@ def camera_pipeline(
         P, camera.look_direction, camera.up_direction, near, far,
         width=float(camera.width), aspect=aspect,
     )  # fmt: skip
-    clip = m_ortho @ t_inv
+    with np.errstate(over="ignore", invalid="ignore"):
+        clip = m_ortho @ t_inv
+    clip, to_pixel = _finite_projection(clip, wind4)
     return CameraPipeline(
         fov_h=None, fov_v=None, A=None, B=None, C=None, c=None, m_per=None, m_pp=None,
-        m_ortho=m_ortho, clip_matrix=_m(clip), world_to_pixel=_m(wind4 @ clip), **fields,
+        m_ortho=m_ortho, clip_matrix=_m(clip), world_to_pixel=_m(to_pixel), **fields,
     )  # fmt: skip
+
+
+def _finite_projection(clip: np.ndarray, wind4: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The clip matrix and the world-to-pixel product, both finite, or CAM008: camera values
+    each within range can still multiply past the doubles' range (a picture WPF cannot draw)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        to_pixel = wind4 @ clip
+    if not (np.all(np.isfinite(clip)) and np.all(np.isfinite(to_pixel))):
+        raise CameraError("the camera's values, each within range, give a projection past "
+                          "the doubles' range: WPF draws nothing", code="CAM008")  # fmt: skip
+    return clip, to_pixel
