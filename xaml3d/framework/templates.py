@@ -28,6 +28,7 @@ Controls whose template the reader's theme draws (no user template) are left as 
 from __future__ import annotations
 
 from xaml3d.framework import items, markup
+from xaml3d.framework.access_text import access_text
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -423,7 +424,7 @@ class _Instantiation:
                 return
         if kind == "element":  # an object without a template: its type's name
             value = local_name(value.tag)
-        text = _access_text(value) if access else value
+        text = access_text(value) if access else value
         block = presenter.makeelement(_same_ns(presenter, "TextBlock"), {"Text": _literal(text)})
         sv.made(block, presenter)
         presenter.append(block)
@@ -521,26 +522,6 @@ def _same_ns(el, local: str) -> str:
 def _literal(text: str) -> str:
     """Text set as an attribute value: a leading brace escaped (not a markup extension)."""
     return "{}" + text if text.lstrip().startswith("{") else text
-
-
-def _access_text(text: str) -> str:
-    """AccessText's text: the first lone underscore marks the access key (not shown); a
-    doubled one is an underscore."""
-    out, i, marked = [], 0, False
-    while i < len(text):
-        ch = text[i]
-        if ch == "_" and i + 1 < len(text):
-            if text[i + 1] == "_":
-                out.append("_")
-                i += 2
-                continue
-            if not marked:
-                marked = True
-                i += 1
-                continue
-        out.append(ch)
-        i += 1
-    return "".join(out)
 
 
 def _is_template(el) -> bool:

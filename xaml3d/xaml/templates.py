@@ -54,6 +54,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from xaml3d.framework.access_text import access_text
 from xaml3d.layout import tree as L
 from xaml3d.layout.text import baseline, line_height, text_width
 from xaml3d.scene.drawing import (
@@ -71,7 +72,7 @@ from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
-from xaml3d.xaml.text_content import access_text, holder_text, property_element
+from xaml3d.xaml.text_content import holder_text, property_element
 from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _rgb, warn_uncovered
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
@@ -199,7 +200,7 @@ def _content(reader, el, font) -> list:
 def _header(reader, el, font, access: bool = True) -> list:
     """A headered control's Header: its text (attribute or property element) or elements.
     ``access``: its template's ContentPresenter recognizes access keys (GroupBox, Expander,
-    TabItem, MenuItem): a text header is AccessText (``text_content.access_text``)."""
+    TabItem, MenuItem): a text header is AccessText (``framework.access_text``)."""
     shown = access_text if access else str
     raw = el.get("Header")
     if raw is not None:

@@ -8,11 +8,12 @@ inline_text, templates: the text of TextBlock, TextBox, the content controls and
   space, none is kept at the start and the end (``xaml_text``); only those four characters are
   white space (a no-break space stays). ``xml:space="preserve"`` on the element or an ancestor
   keeps the text as written, line feeds included (``preserves_space``).
-- AccessText (``access_text``): the text of a control whose template's ContentPresenter has
-  RecognizesAccessKey="True" (Aero2: Label, Button, ToggleButton, RepeatButton, CheckBox,
-  RadioButton; the headers of GroupBox, Expander, TabItem and MenuItem) loses its first lone
-  underscore, the access-key marker; ``__`` shows one underscore. The access key is underlined
-  only while Alt is held, so never in a still picture.
+- AccessText (``xaml3d.framework.access_text``, shared with the framework step): the text of a
+  control whose template's ContentPresenter has RecognizesAccessKey="True" (Aero2: Label,
+  Button, ToggleButton, RepeatButton, CheckBox, RadioButton; the headers of GroupBox, Expander,
+  TabItem and MenuItem) loses its first lone underscore, the access-key marker; ``__`` shows
+  one underscore. The access key is underlined only while Alt is held, so never in a still
+  picture.
 """
 
 from __future__ import annotations
@@ -79,27 +80,6 @@ def holder_text(holder) -> str | None:
     if any(isinstance(k.tag, str) for k in holder):
         return None
     return xaml_text(holder.text or "", preserves_space(holder))
-
-
-def access_text(text: str) -> str:
-    """``text`` as AccessText shows it at rest: the first lone ``_`` (one not doubled, and not
-    the last character) is the access-key marker and is not shown; every ``__`` shows one
-    ``_``."""
-    out, i, marked = [], 0, False
-    while i < len(text):
-        c = text[i]
-        if c == "_" and i + 1 < len(text):
-            if text[i + 1] == "_":
-                out.append("_")
-                i += 2
-                continue
-            if not marked:
-                marked = True
-                i += 1
-                continue
-        out.append(c)
-        i += 1
-    return "".join(out)
 
 
 def content_text(el) -> str:

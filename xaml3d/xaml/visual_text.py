@@ -15,6 +15,7 @@ import math
 
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.fonts import WEIGHTS
+from xaml3d.framework.access_text import access_text
 from xaml3d.layout.text import UI, baseline, line_height, text_width, uncovered
 from xaml3d.scene.drawing import (
     CombinedGeometry,
@@ -31,7 +32,6 @@ from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
 from xaml3d.xaml.panels_reader import element_style
 from xaml3d.xaml.text_content import (
     ACCESS_KEY_CONTROLS,
-    access_text,
     content_text,
     holder_text,
     property_element,
