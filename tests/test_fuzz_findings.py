@@ -347,13 +347,17 @@ def test_glb_of_texture_coordinates_at_the_doubles_edge(texcoords):
     assert data[""][:4] == b"glTF"
 
 
-def test_a_projection_past_the_doubles_range_is_a_camera_error_not_an_overflow():
-    # a document the structured fuzzing wrote (tests/fuzz_cases): a 1.8e308 viewport whose
-    # camera's matrices are finite but whose pixel mapping is not; every stage runs clean
+CASES = Path(__file__).resolve().parent / "fuzz_cases"
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in CASES.glob("*.xaml")))
+def test_documents_the_structured_fuzzing_found_run_clean(name):
+    # documents the structured fuzzing wrote (tests/fuzz_cases): camera-pixel-overflow, a
+    # 1.8e308 viewport whose camera's matrices are finite but whose pixel mapping is not
+    # (CAM008); viewbox-zero-unit, a layer scaled to nothing around a viewport (draws nothing)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 
-    text = Path(__file__).resolve().parent / "fuzz_cases" / "camera-pixel-overflow.xaml"
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        run_document(text.read_text(encoding="utf-8"))
+        run_document((CASES / name).read_text(encoding="utf-8"))

@@ -67,6 +67,9 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=N
     canvas.scale(sx, sy)
     if place is not None:  # the turned box's corner at the output's
         canvas.translate(-place.origin[0], -place.origin[1])
+    if not all(u != 0.0 and math.isfinite(u) for _, _, unit in levels for u in unit):
+        # an element scaled to nothing (a Viewbox of a zero-sized child...): WPF draws nothing
+        return _pixels(surface)
     at, unit = (0.0, 0.0), (1.0, 1.0)  # the canvas's origin and unit, in picture DIPs
     for layer, (x, y, _, _), (ux, uy) in levels:
         canvas.save()
@@ -104,6 +107,11 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=N
             canvas.drawPaint(mask)  # the whole layer: its edge pixels too (paint._draw_group)
         canvas.restore()  # the layer: faded and filtered into its parent
         canvas.restore()
+    return _pixels(surface)
+
+
+def _pixels(surface) -> np.ndarray:
+    """The surface as straight-alpha RGBA bytes."""
     return surface.makeImageSnapshot().toarray(
         colorType=skia.ColorType.kRGBA_8888_ColorType, alphaType=skia.AlphaType.kUnpremul_AlphaType
     )
