@@ -354,7 +354,8 @@ CASES = Path(__file__).resolve().parent / "fuzz_cases"
 def test_documents_the_structured_fuzzing_found_run_clean(name):
     # documents the structured fuzzing wrote (tests/fuzz_cases): camera-pixel-overflow, a
     # 1.8e308 viewport whose camera's matrices are finite but whose pixel mapping is not
-    # (CAM008); viewbox-zero-unit, a layer scaled to nothing around a viewport (draws nothing)
+    # (CAM008); viewbox-zero-unit, a layer scaled to nothing around a viewport (draws nothing);
+    # gltf-tiny-normals, normals below single precision (0 in the glTF file)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 

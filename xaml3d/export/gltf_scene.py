@@ -172,12 +172,13 @@ class ViewportExport:
             return None
         key = id(model.mesh)
         if key not in self.mesh_cache:
+            with np.errstate(under="ignore"):  # glTF's single precision: a tiny value is 0
+                pos32, nrm32 = pos.astype(np.float32), nrm.astype(np.float32)
             store = {
-                "POSITION": self.doc.accessor(pos.astype(np.float32), target=ARRAY_BUFFER,
-                                              bounds=True),
-                "NORMAL": self.doc.accessor(nrm.astype(np.float32), target=ARRAY_BUFFER),
+                "POSITION": self.doc.accessor(pos32, target=ARRAY_BUFFER, bounds=True),
+                "NORMAL": self.doc.accessor(nrm32, target=ARRAY_BUFFER),
             }  # fmt: skip
-            flipped = self.doc.accessor((-nrm).astype(np.float32), target=ARRAY_BUFFER)
+            flipped = self.doc.accessor(-nrm32, target=ARRAY_BUFFER)
             uv = None
             if front.textured or back.textured:
                 bake = bake_for(tc, [])
