@@ -128,7 +128,10 @@ def test_the_page_follows_edits_and_keeps_the_last_good_picture(browser, tmp_pat
 
         # broken markup: the XML error at its line, the last good picture kept beside it
         save(scene, edited.replace("</Viewport3D>", "</Viewport3D"))
-        page = wait_for(browser, lambda s: s["status"] == "broken", page["version"])
+        # the view is a live three.js page: under load it may report itself not ready for a
+        # moment (it is not reloaded: its src stays the last good one), so wait for it too
+        page = wait_for(browser, lambda s: s["status"] == "broken" and s["viewReady"],
+                        page["version"])  # fmt: skip
         assert [f[:3] for f in page["findings"] if f[0] == "error"] == [
             ["error", "XML001", str(len(lines) + 1)]
         ]
