@@ -9,7 +9,6 @@ from __future__ import annotations
 import base64
 import io
 import json
-import shutil
 import subprocess
 import sys
 import time
@@ -17,39 +16,20 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from headless_browser import chromium, needs_browser
 
 import xaml3d
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = sorted((ROOT / "samples").glob("*.xaml"))
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-DRIVER = shutil.which("chromedriver")
-try:
-    import selenium  # noqa: F401
 
-    HAVE_SELENIUM = True
-except ImportError:
-    HAVE_SELENIUM = False
-
-pytestmark = pytest.mark.skipif(
-    not (CHROMIUM and DRIVER and HAVE_SELENIUM),
-    reason="headless Chromium, chromedriver or selenium is absent (.ci/run installs them)",
-)
+pytestmark = needs_browser
 PANEL = ("u", "v", "w", "m_per", "m_pp", "m_ortho", "m_wind", "world_to_pixel")
 
 
 @pytest.fixture(scope="module")
 def browser():
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = CHROMIUM
-    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
-                "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                "--window-size=1800,1400", "--force-device-scale-factor=1"):  # fmt: skip
-        opts.add_argument(arg)
-    driver = webdriver.Chrome(service=Service(DRIVER), options=opts)
+    driver = chromium(1800, 1400)
     yield driver
     driver.quit()
 

@@ -6,41 +6,21 @@ Chromium, its driver or Selenium is absent (.ci/run installs them)."""
 
 from __future__ import annotations
 
-import shutil
 import time
 from pathlib import Path
 
 import pytest
+from headless_browser import chromium, needs_browser
 from preview_process import CHANGE, PreviewProcess, save
 
 ROOT = Path(__file__).resolve().parent.parent
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-DRIVER = shutil.which("chromedriver")
-try:
-    import selenium  # noqa: F401
 
-    HAVE_SELENIUM = True
-except ImportError:
-    HAVE_SELENIUM = False
-
-pytestmark = pytest.mark.skipif(
-    not (CHROMIUM and DRIVER and HAVE_SELENIUM),
-    reason="headless Chromium, chromedriver or selenium is absent (.ci/run installs them)",
-)
+pytestmark = needs_browser
 
 
 @pytest.fixture(scope="module")
 def browser():
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = CHROMIUM
-    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
-                "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                "--window-size=1500,1300", "--force-device-scale-factor=1"):  # fmt: skip
-        opts.add_argument(arg)
-    driver = webdriver.Chrome(service=Service(DRIVER), options=opts)
+    driver = chromium(1500, 1300)
     yield driver
     driver.quit()
 
