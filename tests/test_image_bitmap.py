@@ -95,6 +95,21 @@ def test_bitmap_image_takes_its_size_in_dips_from_the_files_resolution(pictures)
     assert rows[1][24:] == "W" * 40 and rows[22][24:] == "W" * 40
 
 
+def test_a_bitmap_image_resource_and_property_element_are_measured_alike(pictures):
+    scene = _visual_scene(
+        pictures,
+        """<Canvas Width="64" Height="32" Background="White">
+      <Canvas.Resources><BitmapImage x:Key="pic" UriSource="hi.png"/></Canvas.Resources>
+      <Image Canvas.Left="2" Canvas.Top="2" Source="{StaticResource pic}"/>
+      <Image Canvas.Left="20" Canvas.Top="2">
+        <Image.Source><BitmapImage UriSource="hi.png"/></Image.Source></Image></Canvas>""",
+    )
+    rows = _colours(xaml3d.render_arrays(scene).rgba)
+    assert rows[4][:32] == "WW" + "R" * 5 + "B" * 5 + "W" * 8 + "R" * 5 + "B" * 5 + "WW"
+    assert _run("".join(r[3] for r in rows), "R") == (2, 7)
+    assert _run("".join(r[21] for r in rows), "R") == (2, 7)
+
+
 @pytest.mark.parametrize(
     ("attrs", "red", "blue", "rows"),
     [
