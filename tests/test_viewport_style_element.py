@@ -104,3 +104,14 @@ def test_a_flip_its_style_property_element_sets(tmp_path):
     assert (xs.min(), ys.min(), xs.max(), ys.max()) == (16, 8, 47, 23)
     ys, xs = np.nonzero(compose_window(scene)[0][..., 3])
     assert (xs.min(), ys.min(), xs.max(), ys.max()) == (20, 14, 51, 29)  # at its Margin 4,6
+
+
+def test_a_style_property_element_of_a_panel_around_the_viewport():
+    style = (
+        '<Style TargetType="Border"><Setter Property="Padding" Value="10,5,0,0"/>'
+        '<Setter Property="BorderThickness" Value="2"/></Style>'
+    )
+    doc = f"""<Grid {_HEAD} Width="128" Height="96"><Border><Border.Style>{style}</Border.Style>
+  <Viewport3D/></Border></Grid>"""
+    box = next(b for b in load(doc, text=True).layout.boxes if b.type == "Viewport3D")
+    assert box.rect == (12.0, 7.0, 114.0, 87.0)
