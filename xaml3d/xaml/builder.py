@@ -51,6 +51,7 @@ from xaml3d.xaml.framework_services import ReaderServices
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
+from xaml3d.xaml.panels_reader import element_style, style_value_element
 from xaml3d.xaml.parser import PRESENTATION_NS, XAML_NS, ParsedDocument
 from xaml3d.xaml.props import Props
 from xaml3d.xaml.resource_check import check_dictionary
@@ -316,6 +317,18 @@ def _referenced(r: Reader, el):
 # --------------------------------------------------------------------------- viewports
 
 
+def _styled_camera(r: Reader, el):
+    """The camera a Setter of the viewport's Style gives (a camera in ``<Setter.Value>``, or a
+    ``{StaticResource}`` Value naming one), None when its Style sets none."""
+    given = style_value_element(r, el, "Camera")
+    if given is None:
+        value = element_style(r, el).get("Camera")
+        m = split_markup(value) if value else None
+        if m is not None and m[0] in _REFERENCE:
+            given = r.resources.find(markup_key(m[1]), el)
+    return None if given is None else r.build_node(given, lambda e: camera(r, e), None)
+
+
 def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     p = r.props(el)
     lay = lay or unreached(r, el)
@@ -332,8 +345,10 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
             else:
                 cam = PerspectiveCamera(is_default=True)
     else:
-        cam = PerspectiveCamera(is_default=True)
-        r.ctx.diag("SCN004", "no Camera: WPF's default PerspectiveCamera is used", el)
+        cam = _styled_camera(r, el)
+        if cam is None:
+            cam = PerspectiveCamera(is_default=True)
+            r.ctx.diag("SCN004", "no Camera: WPF's default PerspectiveCamera is used", el)
 
     background = lay.background
 

@@ -297,18 +297,38 @@ def _enum(allowed):
     return lambda s: V.parse_enum(s, allowed)
 
 
+def _style_property(r, el):
+    """The Style a ``<X.Style>`` property element of ``el`` holds: a Style written in place, or
+    the entry a ``<StaticResource ResourceKey="k"/>`` in it names; None without one."""
+    for child in el:
+        if isinstance(child.tag, str) and qname(child.tag)[1].endswith(".Style"):
+            kids = [k for k in child if isinstance(k.tag, str)]
+            if len(kids) != 1:
+                return None
+            k = kids[0]
+            if qname(k.tag)[1] in ("StaticResource", "DynamicResource"):
+                key = k.get("ResourceKey")
+                return r.resources.find(key, k) if key else None
+            return k
+    return None
+
+
 def _style_chain(r, el, local: str, report: bool = True) -> list:
     """The Styles that apply to ``el``, most derived first: ``Style="{StaticResource k}"`` (or
-    DynamicResource), else the implicit Style keyed by the element's type in scope, then the
-    ones it is BasedOn. ``report``: say (XAML022) that a Style of another TargetType is not
-    applied (none apply then)."""
+    DynamicResource) or a Style given as the ``<X.Style>`` property element, else the implicit
+    Style keyed by the element's type in scope, then the ones it is BasedOn. ``report``: say
+    (XAML022) that a Style of another TargetType is not applied (none apply then)."""
     res = r.resources
     ref = el.get("Style")
-    if ref is not None:
-        m = split_markup(ref)
-        if m is None or m[0] not in ("StaticResource", "DynamicResource"):
-            return []
-        entry = res.find(markup_key(m[1]), el)
+    given = _style_property(r, el) if ref is None else None
+    if ref is not None or given is not None:
+        if ref is not None:
+            m = split_markup(ref)
+            if m is None or m[0] not in ("StaticResource", "DynamicResource"):
+                return []
+            entry = res.find(markup_key(m[1]), el)
+        else:
+            entry = given
         if entry is not None and qname(entry.tag)[1] == "Style":
             target = type_name(entry.get("TargetType") or "")
             if is_presentation(qname(el.tag)[0]) and _mismatched(target, local):
@@ -316,7 +336,7 @@ def _style_chain(r, el, local: str, report: bool = True) -> list:
                     return []
                 r.ctx.diag("XAML022", f"the Style's TargetType {target} does not match "
                                 f"this {local}: WPF refuses to apply it", el,
-                                attr="Style")  # fmt: skip
+                                attr="Style" if ref is not None else None)  # fmt: skip
                 return []
     else:
         # (every dictionary of the document is read by now: the walk before layout reads

@@ -24,6 +24,7 @@ rest is drawn.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -131,7 +132,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     if not own:
         return
     opacity = v.get("Opacity", V.parse_double, 1.0) if v is not None else 1.0
-    clip = _layout_clip(n, v) if n.type in _TEXT_CONTROLS | _SHAPES else None
+    clip = _layout_clip(n, v) if n.type in _TEXT_CONTROLS | _SHAPES | {"Image"} else None
     if clip is not None:  # the clip is in the element's own coordinates, under its transform
         own = [DrawingGroup(children=tuple(own), clip=clip)]
     # RenderTransform (about RenderTransformOrigin), Clip and Effect act on the element and its
@@ -165,7 +166,7 @@ def _layout_clip(n, v=None):
     is below its size (at that size), when its slot is smaller than it (at the slot) or by
     ClipToBounds (at its box): a shape in a Canvas, which gives it its desired size, draws
     whatever its geometry and pen cover, inside its box or not."""
-    if n.type in _SHAPES:
+    if n.type in _SHAPES or n.type == "Image":
         return _shape_clip(n, v)
     if n.type not in _TEXT_CONTROLS or n.estimate is None:
         return None
@@ -252,8 +253,10 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "ScrollBar":
         _scroll_bar(r, v, w, h, out)
         return
-    if local == "Image" and isinstance(n.state, ImageLayout):  # a DrawingImage
-        d = n.state.drawn(w, h)
+    if local == "Image" and isinstance(n.state, ImageLayout):  # stretched (image_element)
+        d = n.state.drawn(*n.size)  # into its RenderSize; the layout clip cuts it to its box
+        if isinstance(d, ImageDrawing):
+            d = replace(d, scaling=bitmap_scaling_mode(r, el))
         if d is not None:
             out.append(d)
         return
