@@ -15,7 +15,7 @@ attributes).
 
 from __future__ import annotations
 
-from xaml3d.framework import markup
+from xaml3d.framework import markup, string_formats
 from xaml3d.framework.styles import Control, elements, local_name
 
 CONTAINERS = {"ItemsControl": "ContentPresenter", "ListBox": "ListBoxItem",
@@ -129,7 +129,19 @@ def template_element(value, where, sv, kind: str):
 
 def shown(c: Control, item, sv):
     """What a container shows for a data or text item: ("visual", el) an instantiated
-    DataTemplate, or ("text", str)."""
+    DataTemplate, or ("text", str) (formatted by the ItemStringFormat)."""
+    what, value = _shown(c, item, sv)
+    fmt = c.value("ItemStringFormat")
+    if what != "text" or fmt is None or fmt[0] != "text":
+        return what, value
+    found = string_formats.number_text(item[2]) if item[0] == "text" and item[2] is not None \
+        else None  # fmt: skip
+    number = found is not None and found[1]
+    where = "ItemStringFormat" if c.el.get("ItemStringFormat") is not None else None
+    return "text", string_formats.format_text(sv, fmt[1], value, number, c.el, where)
+
+
+def _shown(c: Control, item, sv):
     template = data_template(c, item, sv)
     if template is not None:
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
@@ -173,8 +185,10 @@ def container_style(c: Control, sv):
     return None if value is None else template_element(value, c.el, sv, "Style")
 
 
-def containers(c: Control, sv) -> list | None:
-    """The containers of ``c``'s items, in order (None: the items are not known at load)."""
+def containers(c: Control, sv, on_item=None) -> list | None:
+    """The containers of ``c``'s items, in order (None: the items are not known at load).
+    ``on_item(container, item, instance)`` is told of each data or text item's container
+    (``instance``: the DataTemplate's copy that shows it, or None)."""
     found = items_of(c, sv)
     if found is None:
         return None
@@ -216,6 +230,8 @@ def containers(c: Control, sv) -> list | None:
                 box.set("Content", "{}" + value if value.lstrip().startswith("{") else value)
             if own:
                 source.getparent().remove(source)
+            if on_item is not None:
+                on_item(box, item, value if what == "visual" else None)
         out.append(box)
     count = c.value("AlternationCount")
     try:
