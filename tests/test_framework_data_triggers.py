@@ -250,3 +250,104 @@ def test_a_binding_that_needs_code_leaves_the_trigger_unfired_said_once(tmp_path
     assert not [c for c in codes if c[0] == "TPL003"]
     px = _window_pixels(tmp_path / "doc.xaml")
     assert tuple(px[10, 40][:3]) == (0, 0, 255)
+
+
+# ------------------------------------------------------------------ DataTemplate.Triggers
+
+PEOPLE = """
+    <x:Array x:Key="people" Type="local:Person">
+      <local:Person Name="Ann" Busy="True" />
+      <local:Person Name="Bob" Busy="False" />
+    </x:Array>"""
+
+
+def test_data_template_trigger_reads_the_item(tmp_path):
+    feature = window(
+        PEOPLE,
+        """
+      <ItemsControl ItemsSource="{StaticResource people}">
+        <ItemsControl.ItemTemplate>
+          <DataTemplate>
+            <Border x:Name="b" Background="Blue" Height="16"><TextBlock Text="{Binding Name}" />
+            </Border>
+            <DataTemplate.Triggers>
+              <DataTrigger Binding="{Binding Busy}" Value="true">
+                <Setter TargetName="b" Property="Background" Value="Red" />
+                <Setter Property="Margin" Value="4" />
+              </DataTrigger>
+            </DataTemplate.Triggers>
+          </DataTemplate>
+        </ItemsControl.ItemTemplate>
+      </ItemsControl>""",
+    )
+    rows = (
+        '<ContentPresenter Margin="4"><Border Background="Red" Height="16">'
+        '<TextBlock Text="Ann" /></Border></ContentPresenter>'
+        '<ContentPresenter><Border Background="Blue" Height="16">'
+        '<TextBlock Text="Bob" /></Border></ContentPresenter>'
+    )
+    twin = window(
+        "", f"<ContentControl><Border><StackPanel>{rows}</StackPanel></Border></ContentControl>"
+    )
+    px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
+    assert tuple(px[10, 40][:3]) == RED
+    assert tuple(px[30, 40][:3]) == (0, 0, 255)
+
+
+def test_item_container_style_data_trigger_reads_the_item(tmp_path):
+    feature = window(
+        PEOPLE,
+        """
+      <ListBox Height="60" ItemsSource="{StaticResource people}" DisplayMemberPath="Name">
+        <ListBox.ItemContainerStyle>
+          <Style TargetType="ListBoxItem">
+            <Style.Triggers>
+              <DataTrigger Binding="{Binding Busy}" Value="True">
+                <Setter Property="Background" Value="Red" />
+              </DataTrigger>
+            </Style.Triggers>
+          </Style>
+        </ListBox.ItemContainerStyle>
+      </ListBox>""",
+    )
+    twin = window(
+        "",
+        """
+      <ListBox Height="60">
+        <ListBox.ItemContainerStyle><Style TargetType="ListBoxItem" /></ListBox.ItemContainerStyle>
+        <ListBoxItem Content="Ann" Background="Red" /><ListBoxItem Content="Bob" />
+      </ListBox>""",
+    )
+    px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
+    assert ((px[..., 0] == 255) & (px[..., 1] == 0) & (px[..., 2] == 0)).any()
+
+
+def test_content_template_trigger_on_string_content(tmp_path):
+    feature = window(
+        "",
+        """
+      <ContentControl Content="stop">
+        <ContentControl.ContentTemplate>
+          <DataTemplate>
+            <Border x:Name="b" Height="20" Background="Blue" />
+            <DataTemplate.Triggers>
+              <DataTrigger Binding="{Binding}" Value="stop">
+                <Setter TargetName="b" Property="Background" Value="Red" />
+              </DataTrigger>
+              <Trigger Property="IsMouseOver" Value="True">
+                <Setter TargetName="b" Property="Background" Value="Lime" />
+              </Trigger>
+            </DataTemplate.Triggers>
+          </DataTemplate>
+        </ContentControl.ContentTemplate>
+      </ContentControl>""",
+    )
+    twin = window(
+        "",
+        '<ContentControl><ContentPresenter><Border Height="20" Background="Red" />'
+        "</ContentPresenter></ContentControl>",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[10, 40][:3]) == RED
+    codes = _codes(tmp_path, feature)
+    assert ("TPL003", _line(feature, "<Trigger Property")) in codes
