@@ -66,6 +66,24 @@ def value_text(root, services, el, text: str, prop: str = "") -> str | None:
         return None
 
 
+def bound_items(root, services, el, text: str) -> list | None:
+    """The items an ``ItemsSource="{Binding ...}"`` on ``el`` gives at load (the nodes of an
+    XmlDataProvider's inline data an XPath selects), or None when they are not known (what
+    the bindings pass said already, or a binding to no collection). Nothing is said."""
+    try:
+        ext = parse(text)
+    except MarkupSyntaxError:
+        return None
+    if ext.name not in BINDINGS:
+        return None
+    ev = Evaluator(services, name_scope(root), {})
+    try:
+        v = ev.binding_value(el, "ItemsSource", ext)
+    except (Cycle, Unresolved):
+        return None
+    return list(v.items) if v.items is not None and ext.arg("XPath", None) is not None else None
+
+
 def _outcome(site: Site, ev: Evaluator, services):
     """The text the site's property takes, or _KEEP / _REMOVE; diagnostics said."""
     try:
