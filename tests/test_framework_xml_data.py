@@ -124,3 +124,42 @@ def test_text_bound_by_xpath_and_one_outside_the_subset(tmp_path):
     said = [d for d in load(tmp_path / "feature.xaml").diagnostics if d.code == "BND001"]
     assert [d.line for d in said] == [_line(feature, "count(//Book)") - 0]
     assert "count(//Book)" in said[0].message
+
+
+def test_a_source_file_is_read_as_inline_data(tmp_path):
+    books = DATA.split("<x:XData>")[1].split("</x:XData>")[0].replace(' xmlns=""', "")
+    (tmp_path / "books.xml").write_text(books, encoding="utf-8")
+    items = """
+      <ItemsControl ItemsSource="{Binding Source={StaticResource books}, XPath=//Book/@ISBN}" />"""
+    feature = window('<XmlDataProvider x:Key="books" Source="books.xml" />', items)
+    twin = window(
+        "",
+        """<ContentControl><Border><StackPanel>
+        <ContentPresenter><TextBlock Text="1" /></ContentPresenter>
+        <ContentPresenter><TextBlock Text="2" /></ContentPresenter>
+        <ContentPresenter><TextBlock Text="3" /></ContentPresenter>
+      </StackPanel></Border></ContentControl>""",
+    )
+    _same(tmp_path, feature, twin)
+
+
+@pytest.mark.parametrize(
+    ("content", "why"),
+    [
+        (None, "cannot read file"),
+        ('<!DOCTYPE a [<!ENTITY e "x">]><a>&e;</a>', "DOCTYPE"),
+        ("<a><b></a>", "not well-formed"),
+    ],
+)
+def test_a_source_file_that_cannot_be_read_is_said(tmp_path, content, why):
+    if content is not None:
+        (tmp_path / "bad.xml").write_text(content, encoding="utf-8")
+    feature = window(
+        '<XmlDataProvider x:Key="books" Source="bad.xml" />',
+        '<TextBlock Text="{Binding Source={StaticResource books}, XPath=a, FallbackValue=no}" />',
+    )
+    twin = window("", '<TextBlock Text="no" />')
+    _same(tmp_path, feature, twin)
+    said = [d for d in load(tmp_path / "feature.xaml").diagnostics if d.code.startswith("BND")]
+    assert [(d.code, d.line) for d in said] == [("BND004", _line(feature, "bad.xml"))]
+    assert why in said[0].message

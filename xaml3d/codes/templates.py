@@ -29,4 +29,9 @@ TEMPLATE_CODES: dict[str, tuple[str, str]] = {
     "TPL008": (INFO, "the ItemsPanel of a ListBox or ComboBox in the theme's look is not used"),
     "TPL009": (WARNING, "a trigger Condition's SourceName names no part of the template: skipped"),
     "TPL010": (WARNING, "a content, header or item string format .NET refuses: shown unformatted"),
+    "BND004": (
+        INFO,
+        "an XmlDataProvider's Source file cannot be read: the bindings to it take their "
+        "FallbackValue",
+    ),
 }

@@ -224,10 +224,12 @@ class Evaluator(PropertyValues):
         if not isinstance(xpath, str):
             raise needs_code("XPath object", "an XPath given as an object")
         if v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider":
-            nodes = X.provider_nodes(v.el)
+            nodes = X.provider_nodes(v.el, self.s)
+            if nodes is None and v.el.get("Source") is not None:
+                raise Unresolved(None, "XmlDataProvider")  # said where the file was read
             if nodes is None:
-                raise needs_code("XmlDataProvider", "an XmlDataProvider without inline x:XData "
-                                                    "data is not read")  # fmt: skip
+                raise fails("XmlDataProvider", "an XmlDataProvider without data (no x:XData, "
+                                               "no Source)")  # fmt: skip
         elif v.el is not None and not is_wpf(v.el) and X.is_data(v.el):
             nodes = [v.el]
         else:

@@ -44,8 +44,19 @@ def _elements(el) -> list:
     return [k for k in el if isinstance(k.tag, str)]
 
 
-def document(provider) -> Document | None:
-    """The document of an ``XmlDataProvider`` with inline ``<x:XData>`` data, else None."""
+def document(provider, services=None) -> Document | None:
+    """The document of an ``XmlDataProvider``: its inline ``<x:XData>`` data, else its
+    ``Source`` file read through ``services`` (the file's root put in an ``x:XData`` holder
+    of its own, so that its nodes are data as inline ones are); None without either."""
+    source = provider.get("Source")
+    if source is not None and services is not None and source.strip():
+        root = services.xml_file(source.strip(), provider)
+        if root is None:
+            return None
+        if root.getparent() is None:
+            holder = provider.makeelement(XDATA, {})
+            holder.append(root)
+        return Document(root)
     for child in _elements(provider):
         holder = child
         if child.tag.endswith(".XmlSerializer") or child.tag.endswith("}XmlDataProvider.XData"):
@@ -58,10 +69,10 @@ def document(provider) -> Document | None:
     return None
 
 
-def provider_nodes(provider) -> list | None:
+def provider_nodes(provider, services=None) -> list | None:
     """The nodes a provider gives a binding: its document, or what its own ``XPath``
-    selects in it; None when its data is not inline."""
-    doc = document(provider)
+    selects in it; None when it has no data that can be read."""
+    doc = document(provider, services)
     if doc is None:
         return None
     own = provider.get("XPath")
