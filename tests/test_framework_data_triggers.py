@@ -351,3 +351,45 @@ def test_content_template_trigger_on_string_content(tmp_path):
     assert tuple(px[10, 40][:3]) == RED
     codes = _codes(tmp_path, feature)
     assert ("TPL003", _line(feature, "<Trigger Property")) in codes
+
+
+def test_style_data_trigger_on_elements_that_are_not_controls(tmp_path):
+    style = """
+    <Style TargetType="TextBlock">
+      <Setter Property="Background" Value="Blue" />
+      <Style.Triggers>
+        <DataTrigger Binding="{Binding IsChecked, ElementName=box}" Value="True">
+          <Setter Property="Background" Value="Red" />
+        </DataTrigger>
+      </Style.Triggers>
+    </Style>
+    <Style x:Key="b" TargetType="Border">
+      <Style.Triggers>
+        <MultiDataTrigger>
+          <MultiDataTrigger.Conditions>
+            <Condition Binding="{Binding Tag, RelativeSource={RelativeSource Self}}" Value="on" />
+            <Condition Binding="{Binding IsChecked, ElementName=box}" Value="True" />
+          </MultiDataTrigger.Conditions>
+          <Setter Property="Height" Value="12" />
+          <Setter Property="Background" Value="Orange" />
+        </MultiDataTrigger>
+      </Style.Triggers>
+    </Style>"""
+    feature = window(
+        style,
+        """
+      <CheckBox x:Name="box" IsChecked="True" Content="c" />
+      <TextBlock Text="x" />
+      <TextBlock Text="y" Background="Lime" />
+      <Border Style="{StaticResource b}" Tag="on" />""",
+    )
+    twin = window(
+        "",
+        """
+      <CheckBox x:Name="box" IsChecked="True" Content="c" />
+      <TextBlock Text="x" Background="Red" />
+      <TextBlock Text="y" Background="Lime" />
+      <Border Height="12" Background="Orange" />""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[20, 40][:3]) == RED

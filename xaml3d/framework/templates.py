@@ -76,10 +76,17 @@ TAGS = tuple(f"{{*}}{t}" for t in sorted(SUPPORTED | UNSUPPORTED))
 
 
 def instantiate(root, services) -> None:
-    """Instantiate every user control template that applies under ``root`` (in place)."""
-    if next(root.iter(*TAGS), None) is None:
+    """Instantiate every user control template that applies under ``root`` (in place); then
+    apply the Style triggers of the other elements when the document writes any."""
+    controls = next(root.iter(*TAGS), None) is not None
+    styled = next(root.iter("{*}Style.Triggers"), None) is not None
+    if not controls and not styled:
         return
-    _Instantiation(root, services, TAGS).run()
+    run = _Instantiation(root, services, TAGS)
+    if controls:
+        run.run()
+    if styled:
+        run.styled()
 
 
 class _Instantiation:
@@ -94,6 +101,19 @@ class _Instantiation:
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
             self.control(el, 0)
+
+    def styled(self) -> None:
+        """The elements that are not controls (a TextBlock, a Border, a panel) whose Style
+        has triggers: those that fire at load set the element's values where it has none of
+        its own, as a control's in the theme's look (instances of templates included)."""
+        for el in list(self.root.iter()):
+            if not isinstance(el.tag, str) or id(el) in self.done:
+                continue
+            t = self.sv.wpf_type(el)
+            if t is None or "." in t or t in SUPPORTED or t in UNSUPPORTED or t in _NOT_VISUAL:
+                continue
+            if _visual(el, self.sv):
+                self.themed_triggers(Control(el, t, self.sv))
 
     # ----------------------------------------------------------------- one control
     def control(self, el, depth: int) -> None:
