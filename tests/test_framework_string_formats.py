@@ -95,3 +95,19 @@ def test_a_refused_format_is_said_and_the_content_shown_as_it_is(tmp_path):
     _same(tmp_path, feature, twin)
     codes = {(d.code, d.line) for d in load(tmp_path / "feature.xaml").diagnostics}
     assert ("TPL010", _line(feature, "ContentStringFormat")) in codes
+
+
+def test_a_bound_number_takes_the_content_string_format(tmp_path):
+    feature = window(
+        "",
+        """
+      <Slider x:Name="s" Value="2.345" Height="20" />
+      <Label Content="{Binding Value, ElementName=s}" ContentStringFormat="{}{0:F1} cm" />""",
+    )
+    twin = window(
+        "",
+        """
+      <Slider x:Name="s" Value="2.345" Height="20" />
+      <Label Content="2.3 cm" />""",
+    )
+    _same(tmp_path, feature, twin)

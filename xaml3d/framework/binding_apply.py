@@ -110,7 +110,23 @@ def _outcome(site: Site, ev: Evaluator, services):
     except Unresolved as u:
         _report(services, u, site)
         return _fallback(site, ev)
+    text = _content_format(site, v, text, services)
     return "{}" + text if text.startswith("{") else text
+
+
+def _content_format(site: Site, v: Value, text: str, services) -> str:
+    """A bound number as a control's Content or Header, formatted by the control's own
+    ``ContentStringFormat`` (``HeaderStringFormat``) while it is still a number (written
+    back, it is text, which takes no number format); the format is then spent."""
+    attr = f"{site.prop}StringFormat"
+    fmt = site.el.get(attr) if site.prop in ("Content", "Header") else None
+    if fmt is None or v.clr not in ("Double", "Int32"):
+        return text
+    from xaml3d.framework.string_formats import format_text
+
+    out = format_text(services, fmt, text, True, site.el, attr)
+    del site.el.attrib[attr]
+    return out
 
 
 def _attribute_form(site: Site):

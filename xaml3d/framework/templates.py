@@ -200,6 +200,8 @@ class _Instantiation:
                 continue
             if source == "Header" and c.type not in HEADERED:
                 continue
+            if c.value(f"{source}Template") is not None:
+                continue  # a DataTemplate shows the content: no format (WPF's)
             shown = _content(c, source)
             if shown is None or shown[0] == "elements" and (
                     len(shown[1]) != 1 or self.sv.wpf_type(shown[1][0]) is not None):  # fmt: skip
