@@ -393,3 +393,29 @@ def test_style_data_trigger_on_elements_that_are_not_controls(tmp_path):
     )
     px = _same(tmp_path, feature, twin)
     assert tuple(px[20, 40][:3]) == RED
+
+
+def test_data_trigger_on_find_ancestor(tmp_path):
+    style = """
+    <Style TargetType="Label">
+      <Style.Triggers>
+        <DataTrigger Binding="{Binding Tag, RelativeSource={RelativeSource
+                               AncestorType=StackPanel}}" Value="alert">
+          <Setter Property="Background" Value="Red" />
+        </DataTrigger>
+      </Style.Triggers>
+    </Style>"""
+    feature = window(
+        style,
+        """
+      <StackPanel Tag="alert"><Label Content="a" /></StackPanel>
+      <StackPanel Tag="calm"><Label Content="b" /></StackPanel>""",
+    )
+    twin = window(
+        "",
+        """
+      <StackPanel><Label Content="a" Background="Red" /></StackPanel>
+      <StackPanel><Label Content="b" /></StackPanel>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[5, 40][:3]) == RED

@@ -163,3 +163,23 @@ def test_a_source_file_that_cannot_be_read_is_said(tmp_path, content, why):
     said = [d for d in load(tmp_path / "feature.xaml").diagnostics if d.code.startswith("BND")]
     assert [(d.code, d.line) for d in said] == [("BND004", _line(feature, "bad.xml"))]
     assert why in said[0].message
+
+
+def test_predicates_written_in_the_binding_markup(tmp_path):
+    feature = window(
+        RESOURCES,
+        """
+      <ItemsControl ItemsSource="{Binding Source={StaticResource books},
+                                  XPath=/Inventory/Books/Book[@Stock='in']/Title}" />
+      <TextBlock Text="{Binding Source={StaticResource books},
+                        XPath=//Book[Title='Inside C#']/@ISBN}" />""",
+    )
+    twin = window(
+        "",
+        """<ContentControl><Border><StackPanel>
+        <ContentPresenter><TextBlock Text="XML in Action" /></ContentPresenter>
+        <ContentPresenter><TextBlock Text="Writing Secure Code" /></ContentPresenter>
+      </StackPanel></Border></ContentControl>
+      <TextBlock Text="2" />""",
+    )
+    _same(tmp_path, feature, twin)
