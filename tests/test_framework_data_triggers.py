@@ -419,3 +419,18 @@ def test_data_trigger_on_find_ancestor(tmp_path):
     )
     px = _same(tmp_path, feature, twin)
     assert tuple(px[5, 40][:3]) == RED
+
+
+def test_a_value_of_code_is_not_known(tmp_path):
+    style = """
+    <Style TargetType="Label">
+      <Style.Triggers>
+        <DataTrigger Binding="{Binding Tag, RelativeSource={RelativeSource Self}}"
+                     Value="{x:Static SystemColors.ControlBrush}">
+          <Setter Property="Background" Value="Red" />
+        </DataTrigger>
+      </Style.Triggers>
+    </Style>"""
+    feature = window(style, '<Label Content="a" Tag="x" />')
+    codes = _codes(tmp_path, feature)
+    assert ("TPL003", _line(feature, "<DataTrigger")) in codes

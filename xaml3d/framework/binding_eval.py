@@ -1,7 +1,8 @@
 """One binding's value as WPF computes it at load: its source (ElementName, RelativeSource
 Self / FindAncestor, Source={StaticResource}, x:Reference, or the DataContext set in markup
 and inherited), its path through properties, attached properties and indexers (each step the
-source's effective value: binding_props.py), then BooleanToVisibilityConverter,
+source's effective value: binding_props.py) or its XPath over an XmlDataProvider's data
+(xml_data.py), then BooleanToVisibilityConverter,
 TargetNullValue and StringFormat; MultiBinding with a StringFormat, PriorityBinding, and the
 element form's arguments. What cannot be known without
 code (a DataContext set by code-behind, an application's converter class, x:Static, a property

@@ -102,6 +102,10 @@ class Conditions:
                 wanted = _value_element_text(c)
             if wanted is None:
                 return False
+            m = markup.split(wanted)
+            if m is not None and m[0] != "Null":
+                verdict = None  # {x:Static}, a resource: a value of code xaml3d does not read
+                continue
             binding = _binding(c)
             if binding is not None:
                 v = self._binding_value(c, binding, el, item)
@@ -307,7 +311,12 @@ def data_template_setters(conds: Conditions, template, instance, item, holder) -
                    "its Setters are not applied")  # fmt: skip
             conds.sv.diag("TPL003", msg, trigger, once=("TPL003", id(trigger)))
             continue
-        if not conds.fires(trigger, holder if holder is not None else instance, item=item):
+        verdict = conds.fires(trigger, holder if holder is not None else instance, item=item)
+        if verdict is None:
+            msg = (f"this {kind}'s condition is not known at load (a Value of code): its "
+                   "Setters are not applied")  # fmt: skip
+            conds.sv.diag("TPL003", msg, trigger, once=("TPL003", id(trigger)))
+        if not verdict:
             continue
         if names is None:
             names = _names(instance)

@@ -18,9 +18,13 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
   window's names and storyboard targets never see them) and serve the triggers' TargetName;
 - triggers whose condition is known at load (``Trigger`` and ``MultiTrigger`` on a property
   the control sets, its Style sets, or a state a picture shows: enabled, not checked, not
-  selected, no mouse, no focus) apply their Setters: a ControlTemplate trigger's to its
-  TargetName part (above the part's own values) or to the control, a Style trigger's to the
-  control (below its local values).
+  selected, no mouse, no focus; on a named part's property with ``SourceName``;
+  ``DataTrigger`` and ``MultiDataTrigger`` on a binding evaluated at load: data_triggers.py)
+  apply their Setters: a ControlTemplate trigger's to its TargetName part (above the part's
+  own values) or to the control, a Style trigger's to the control (below its local values), a
+  DataTemplate trigger's to its named part or the ContentPresenter holding the item;
+- ``ContentStringFormat`` / ``HeaderStringFormat`` / ``ItemStringFormat`` format content that
+  is not an element (string_formats.py).
 
 Controls whose template the reader's theme draws (no user template) are left as they are.
 """
