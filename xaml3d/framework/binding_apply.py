@@ -66,6 +66,24 @@ def value_text(root, services, el, text: str, prop: str = "") -> str | None:
         return None
 
 
+def bound_items(root, services, el, text: str) -> list | None:
+    """The items an ``ItemsSource="{Binding ...}"`` on ``el`` gives at load (the nodes of an
+    XmlDataProvider's inline data an XPath selects), or None when they are not known (what
+    the bindings pass said already, or a binding to no collection). Nothing is said."""
+    try:
+        ext = parse(text)
+    except MarkupSyntaxError:
+        return None
+    if ext.name not in BINDINGS:
+        return None
+    ev = Evaluator(services, name_scope(root), {})
+    try:
+        v = ev.binding_value(el, "ItemsSource", ext)
+    except (Cycle, Unresolved):
+        return None
+    return list(v.items) if v.items is not None and ext.arg("XPath", None) is not None else None
+
+
 def _outcome(site: Site, ev: Evaluator, services):
     """The text the site's property takes, or _KEEP / _REMOVE; diagnostics said."""
     try:
@@ -92,7 +110,23 @@ def _outcome(site: Site, ev: Evaluator, services):
     except Unresolved as u:
         _report(services, u, site)
         return _fallback(site, ev)
+    text = _content_format(site, v, text, services)
     return "{}" + text if text.startswith("{") else text
+
+
+def _content_format(site: Site, v: Value, text: str, services) -> str:
+    """A bound number as a control's Content or Header, formatted by the control's own
+    ``ContentStringFormat`` (``HeaderStringFormat``) while it is still a number (written
+    back, it is text, which takes no number format); the format is then spent."""
+    attr = f"{site.prop}StringFormat"
+    fmt = site.el.get(attr) if site.prop in ("Content", "Header") else None
+    if fmt is None or v.clr not in ("Double", "Int32"):
+        return text
+    from xaml3d.framework.string_formats import format_text
+
+    out = format_text(services, fmt, text, True, site.el, attr)
+    del site.el.attrib[attr]
+    return out
 
 
 def _attribute_form(site: Site):

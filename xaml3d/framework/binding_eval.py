@@ -1,7 +1,8 @@
 """One binding's value as WPF computes it at load: its source (ElementName, RelativeSource
 Self / FindAncestor, Source={StaticResource}, x:Reference, or the DataContext set in markup
 and inherited), its path through properties, attached properties and indexers (each step the
-source's effective value: binding_props.py), then BooleanToVisibilityConverter,
+source's effective value: binding_props.py) or its XPath over an XmlDataProvider's data
+(xml_data.py), then BooleanToVisibilityConverter,
 TargetNullValue and StringFormat; MultiBinding with a StringFormat, PriorityBinding, and the
 element form's arguments. What cannot be known without
 code (a DataContext set by code-behind, an application's converter class, x:Static, a property
@@ -103,10 +104,17 @@ class Evaluator(PropertyValues):
         mode = ext.arg("Mode", None)
         if isinstance(mode, str) and mode.strip() == "OneWayToSource":
             raise fails("OneWayToSource", "Mode=OneWayToSource never sets the target")
-        if ext.arg("XPath", None) is not None:
-            raise needs_code("XPath", "an XPath binding reads XML data xaml3d does not load")
         v = self._source(el, prop, ext)
+        xpath = ext.arg("XPath", None)
         path = ext.arg("Path")
+        if xpath is not None:
+            v = self._xpath(v, xpath, prop)
+            if v.items is not None or path is not None:
+                if path is not None:
+                    raise needs_code("XPath and Path", "a Path after an XPath reads the XML "
+                                                       "node's members: not evaluated")  # fmt: skip
+                return v
+            path = None
         if path is not None and not isinstance(path, str):
             raise needs_code("Path object", "a Path given as an object")
         try:
@@ -207,6 +215,36 @@ class Evaluator(PropertyValues):
         if isinstance(arg, Extension):
             return self._extension_value(el, arg, attr or None)
         return self.element_value(arg)
+
+    # ----------------------------------------------------------------- XML data
+    def _xpath(self, v: Value, xpath, prop: str) -> Value:
+        """An XPath binding's value: over an XmlDataProvider's inline data or an XML node (an
+        item of it): the nodes for an ItemsSource, else the first node's text."""
+        from xaml3d.framework import xml_data as X  # for a document that binds XML only
+
+        if not isinstance(xpath, str):
+            raise needs_code("XPath object", "an XPath given as an object")
+        if v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider":
+            nodes = X.provider_nodes(v.el, self.s)
+            if nodes is None and v.el.get("Source") is not None:
+                raise Unresolved(None, "XmlDataProvider")  # said where the file was read
+            if nodes is None:
+                raise fails("XmlDataProvider", "an XmlDataProvider without data (no x:XData, "
+                                               "no Source)")  # fmt: skip
+        elif v.el is not None and not is_wpf(v.el) and X.is_data(v.el):
+            nodes = [v.el]
+        else:
+            raise fails("XPath", f"XPath {xpath!r} on a source that is not XML data")
+        try:
+            picked = X.select(nodes, xpath)
+        except X.XPathError as exc:
+            detail = f"XPath {xpath!r} is not evaluated ({exc})"
+            raise needs_code(f"XPath {xpath}", detail) from None
+        if prop == "ItemsSource":
+            return Value(items=tuple(picked), el=v.el)
+        if not picked:
+            raise fails("XPath", f"XPath {xpath!r} selects nothing")
+        return Value(X.text_of(picked[0]), "String")
 
     # ----------------------------------------------------------------- path steps
     def _step(self, v: Value, step) -> Value:

@@ -15,7 +15,7 @@ attributes).
 
 from __future__ import annotations
 
-from xaml3d.framework import markup
+from xaml3d.framework import markup, string_formats, xml_data
 from xaml3d.framework.styles import Control, elements, local_name
 
 CONTAINERS = {"ItemsControl": "ContentPresenter", "ListBox": "ListBoxItem",
@@ -49,6 +49,8 @@ def items_of(c: Control, sv):
         else:
             key = markup.resource_key(source[1])
             holder = sv.find(key, c.el) if key is not None else None
+            if key is None and (markup.split(source[1]) or ("",))[0] == "Binding":
+                return _bound_items(c, sv, source[1])
         if holder is None:
             return None
         kids = [k for k in elements(holder) if "." not in local_name(k.tag)]
@@ -66,6 +68,22 @@ def items_of(c: Control, sv):
     return [_item(k, sv) for k in kids], True
 
 
+def _bound_items(c: Control, sv, text: str):
+    """An ItemsSource binding's items (an XPath over XML data), or None."""
+    from xaml3d.framework.binding_apply import bound_items  # a document that binds items only
+
+    root = c.el
+    while root.getparent() is not None:
+        root = root.getparent()
+    found = bound_items(root, sv, c.el, text)
+    if found is None:
+        return None
+    # an attribute or text node: a string, its position the control's
+    out = [_item(k, sv) if isinstance(getattr(k, "tag", None), str)
+           else ("text", xml_data.text_of(k), c.el) for k in found]  # fmt: skip
+    return out, False
+
+
 def _item(el, sv):
     if sv.wpf_type(el) is not None:
         return ("element", el, el)
@@ -78,7 +96,9 @@ def _item(el, sv):
 def item_property(item, path: str) -> str | None:
     """The text of ``path`` (dotted) on an item: a data object's attribute or property element
     text; "" is the item itself (a string's text)."""
-    kind, value, _ = item
+    kind, value, source = item
+    if source is not None and kind != "element" and xml_data.is_data(source):
+        return xml_data.item_text(source, path)  # an XML node's DisplayMemberPath: an XPath
     if path == "":
         return value if kind == "text" else None
     if kind == "text":
@@ -129,7 +149,19 @@ def template_element(value, where, sv, kind: str):
 
 def shown(c: Control, item, sv):
     """What a container shows for a data or text item: ("visual", el) an instantiated
-    DataTemplate, or ("text", str)."""
+    DataTemplate, or ("text", str) (formatted by the ItemStringFormat)."""
+    what, value = _shown(c, item, sv)
+    fmt = c.value("ItemStringFormat")
+    if what != "text" or fmt is None or fmt[0] != "text":
+        return what, value
+    found = string_formats.number_text(item[2]) if item[0] == "text" and item[2] is not None \
+        else None  # fmt: skip
+    number = found is not None and found[1]
+    where = "ItemStringFormat" if c.el.get("ItemStringFormat") is not None else None
+    return "text", string_formats.format_text(sv, fmt[1], value, number, c.el, where)
+
+
+def _shown(c: Control, item, sv):
     template = data_template(c, item, sv)
     if template is not None:
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
@@ -156,9 +188,14 @@ def fill_data(root, item) -> None:
             continue
         for attr, value in list(el.attrib.items()):
             path = markup.data_binding(value)
-            if path is None:
+            xpath = xml_data.xpath_binding(value) if path is None else None
+            if path is None and xpath is None:
                 continue
-            text = item_property(item, path)
+            if xpath is not None:
+                node = item[2]
+                text = xml_data.item_text(node, xpath) if xml_data.is_data(node) else None
+            else:
+                text = item_property(item, path)
             if text is None:
                 del el.attrib[attr]
             else:
@@ -173,8 +210,10 @@ def container_style(c: Control, sv):
     return None if value is None else template_element(value, c.el, sv, "Style")
 
 
-def containers(c: Control, sv) -> list | None:
-    """The containers of ``c``'s items, in order (None: the items are not known at load)."""
+def containers(c: Control, sv, on_item=None) -> list | None:
+    """The containers of ``c``'s items, in order (None: the items are not known at load).
+    ``on_item(container, item, instance)`` is told of each data or text item's container
+    (``instance``: the DataTemplate's copy that shows it, or None)."""
     found = items_of(c, sv)
     if found is None:
         return None
@@ -216,6 +255,8 @@ def containers(c: Control, sv) -> list | None:
                 box.set("Content", "{}" + value if value.lstrip().startswith("{") else value)
             if own:
                 source.getparent().remove(source)
+            if on_item is not None:
+                on_item(box, item, value if what == "visual" else None)
         out.append(box)
     count = c.value("AlternationCount")
     try:

@@ -45,6 +45,11 @@ class Services(Protocol):
     def pin(self, root: Any) -> None:
         """Called once before the first change to the tree under ``root``."""
 
+    def xml_file(self, source: str, where: Any) -> Any:
+        """The root element of the XML data file ``source`` (an XmlDataProvider's Source,
+        relative to the document of ``where``), read as safely as the scene; None, said, when
+        it cannot be."""
+
     def diag(
         self, code: str, message: str, el: Any = None, attr: str | None = None, once: object = None
     ) -> None:

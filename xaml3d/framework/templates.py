@@ -18,16 +18,20 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
   window's names and storyboard targets never see them) and serve the triggers' TargetName;
 - triggers whose condition is known at load (``Trigger`` and ``MultiTrigger`` on a property
   the control sets, its Style sets, or a state a picture shows: enabled, not checked, not
-  selected, no mouse, no focus) apply their Setters: a ControlTemplate trigger's to its
-  TargetName part (above the part's own values) or to the control, a Style trigger's to the
-  control (below its local values).
+  selected, no mouse, no focus; on a named part's property with ``SourceName``;
+  ``DataTrigger`` and ``MultiDataTrigger`` on a binding evaluated at load: data_triggers.py)
+  apply their Setters: a ControlTemplate trigger's to its TargetName part (above the part's
+  own values) or to the control, a Style trigger's to the control (below its local values), a
+  DataTemplate trigger's to its named part or the ContentPresenter holding the item;
+- ``ContentStringFormat`` / ``HeaderStringFormat`` / ``ItemStringFormat`` format content that
+  is not an element (string_formats.py).
 
 Controls whose template the reader's theme draws (no user template) are left as they are.
 """
 
 from __future__ import annotations
 
-from xaml3d.framework import items, markup
+from xaml3d.framework import data_triggers, items, markup, string_formats
 from xaml3d.framework.access_text import access_text
 from xaml3d.framework.styles import (
     X_NS,
@@ -76,10 +80,17 @@ TAGS = tuple(f"{{*}}{t}" for t in sorted(SUPPORTED | UNSUPPORTED))
 
 
 def instantiate(root, services) -> None:
-    """Instantiate every user control template that applies under ``root`` (in place)."""
-    if next(root.iter(*TAGS), None) is None:
+    """Instantiate every user control template that applies under ``root`` (in place); then
+    apply the Style triggers of the other elements when the document writes any."""
+    controls = next(root.iter(*TAGS), None) is not None
+    styled = next(root.iter("{*}Style.Triggers"), None) is not None
+    if not controls and not styled:
         return
-    _Instantiation(root, services, TAGS).run()
+    run = _Instantiation(root, services, TAGS)
+    if controls:
+        run.run()
+    if styled:
+        run.styled()
 
 
 class _Instantiation:
@@ -89,10 +100,24 @@ class _Instantiation:
         self.keep: list = []  # the elements whose ids are in ``done``
         self.pinned = False
         self.count = 0  # the templates instantiated
+        self.conditions = data_triggers.Conditions(root, services)
 
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
             self.control(el, 0)
+
+    def styled(self) -> None:
+        """The elements that are not controls (a TextBlock, a Border, a panel) whose Style
+        has triggers: those that fire at load set the element's values where it has none of
+        its own, as a control's in the theme's look (instances of templates included)."""
+        for el in list(self.root.iter()):
+            if not isinstance(el.tag, str) or id(el) in self.done:
+                continue
+            t = self.sv.wpf_type(el)
+            if t is None or "." in t or t in SUPPORTED or t in UNSUPPORTED or t in _NOT_VISUAL:
+                continue
+            if _visual(el, self.sv):
+                self.themed_triggers(Control(el, t, self.sv))
 
     # ----------------------------------------------------------------- one control
     def control(self, el, depth: int) -> None:
@@ -107,6 +132,7 @@ class _Instantiation:
         found = self.template_of(c)
         if found is None:
             self.themed_triggers(c)
+            self.themed_format(c)
             if t == "ContentControl" and c.value("ContentTemplate") is not None:
                 if self.room(el, depth):
                     self.presented(c)
@@ -154,7 +180,8 @@ class _Instantiation:
         """The item containers of an items control (none, said, when its items are not known
         at load)."""
         self.selector(c, "ItemTemplateSelector")
-        out = items.containers(c, self.sv)
+        out = items.containers(c, self.sv, lambda box, item, shown: self.item_shown(
+            c, box, item, shown))  # fmt: skip
         style = items.container_style(c, self.sv)
         if style is not None:
             for box in out or ():
@@ -166,6 +193,61 @@ class _Instantiation:
                          else None)  # fmt: skip
             return []
         return out
+
+    def themed_format(self, c: Control) -> None:
+        """A content or headered control in the theme's look: its ContentStringFormat
+        (HeaderStringFormat) applied to text content, which the reader then draws."""
+        el = c.el
+        for source in ("Content", "Header"):
+            fmt = c.value(f"{source}StringFormat")
+            if fmt is None or fmt[0] != "text" or c.type not in CONTENT_CONTROLS | HEADERED:
+                continue
+            if source == "Header" and c.type not in HEADERED:
+                continue
+            if c.value(f"{source}Template") is not None:
+                continue  # a DataTemplate shows the content: no format (WPF's)
+            shown = _content(c, source)
+            if shown is None or shown[0] == "elements" and (
+                    len(shown[1]) != 1 or self.sv.wpf_type(shown[1][0]) is not None):  # fmt: skip
+                continue  # an element: its own visual, no format
+            kind, value = shown
+            if kind == "elements":
+                kind, value = "element", value[0]
+            number = False
+            if kind == "element":
+                found = string_formats.number_text(value)
+                if found is None:
+                    continue  # an object: shown by its DataTemplate or type name by the reader
+                value, number = found
+            where = f"{source}StringFormat" if el.get(f"{source}StringFormat") else None
+            text = string_formats.format_text(self.sv, fmt[1], value, number, el, where)
+            self.pin()
+            put(self.sv, el, source, ("text", _literal(text)))
+            if source == "Content":
+                for k in _content_elements(el):
+                    k.getparent().remove(k)
+                el.text = None
+                for k in el:
+                    k.tail = None
+            el.attrib.pop(f"{source}StringFormat", None)
+
+    def item_shown(self, c: Control, box, item, instance) -> None:
+        """An item's container: its DataContext the item (the triggers of its Style and of
+        the controls inside read it), its DataTemplate's triggers applied."""
+        self.conditions.item_context(box, item)
+        if instance is not None:
+            template = items.data_template(c, item, self.sv)
+            if template is not None:
+                self.data_template_triggers(template, instance, item, box)
+
+    def data_template_triggers(self, template, instance, item, holder) -> None:
+        found = data_triggers.data_template_setters(
+            self.conditions, template, instance, item, holder
+        )
+        if found:
+            self.pin()
+        for el, prop, value in found:
+            put(self.sv, el, prop, value)
 
     def themed_triggers(self, c: Control) -> None:
         """A control in the theme's look: its Style's triggers that fire at load set its
@@ -266,18 +348,18 @@ class _Instantiation:
     def apply(self, c: Control, template):
         sv = self.sv
         self.style_triggers(c)
-        self.template_triggers_on_control(c, template)
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
         instance = sv.copy(visual[0]) if visual else None
         names: dict[str, object] = {}
+        parts = _parts(instance) if instance is not None else []
+        for part in parts:
+            for attr in (f"{{{X_NS}}}Name", "Name"):
+                name = part.get(attr)
+                if name is not None:
+                    names.setdefault(name, part)
+                    del part.attrib[attr]
+        self.template_triggers_on_control(c, template, names)
         if instance is not None:
-            parts = _parts(instance)
-            for part in parts:
-                for attr in (f"{{{X_NS}}}Name", "Name"):
-                    name = part.get(attr)
-                    if name is not None:
-                        names.setdefault(name, part)
-                        del part.attrib[attr]
             for part in parts:
                 self.bind(c, part)
             for part in parts:
@@ -376,6 +458,7 @@ class _Instantiation:
         source = presenter.get("ContentSource", "Content").strip()
         own = presenter.get("Content")
         template = presenter.get("ContentTemplate")
+        own_format = presenter.get("ContentStringFormat")
         access = (presenter.get("RecognizesAccessKey") or "").strip().lower() == "true"
         for attr in _PRESENTER_PROPS:
             presenter.attrib.pop(attr, None)
@@ -421,13 +504,36 @@ class _Instantiation:
                 shown = sv.copy(visual[0])
                 items.fill_data(shown, item)
                 presenter.append(shown)
+                self.conditions.item_context(presenter, item)
+                self.data_template_triggers(data_template, shown, item, presenter)
                 return
-        if kind == "element":  # an object without a template: its type's name
-            value = local_name(value.tag)
+        number = False
+        if kind == "element":  # a number, or an object without a template: its type's name
+            found = string_formats.number_text(value)
+            value, number = found if found is not None else (local_name(value.tag), False)
+        fmt = self.content_format(c, own_format, own is None, source)
+        if fmt is not None:
+            value = string_formats.format_text(self.sv, fmt, value, number, presenter,
+                                               "ContentStringFormat")  # fmt: skip
         text = access_text(value) if access else value
         block = presenter.makeelement(_same_ns(presenter, "TextBlock"), {"Text": _literal(text)})
         sv.made(block, presenter)
         presenter.append(block)
+
+    def content_format(self, c: Control, own: str | None, from_control: bool, source: str):
+        """The format a presenter applies: its own ContentStringFormat (a TemplateBinding
+        read on the control), else the control's ``{source}StringFormat`` when it shows the
+        control's property."""
+        if own is not None:
+            ref = markup.templated_parent_property(own)
+            if ref is None:
+                return own
+            v = c.value(ref[0])
+        elif from_control and source in ("Content", "Header"):
+            v = c.value(f"{source}StringFormat")
+        else:
+            return None
+        return v[1] if v is not None and v[0] == "text" else None
 
     def resolve_template(self, value, where):
         if value is None:
@@ -439,11 +545,16 @@ class _Instantiation:
         return entry if entry is not None and local_name(entry.tag) == "DataTemplate" else None
 
     # ----------------------------------------------------------------- triggers
-    def _fired(self, c: Control, trigger) -> bool:
+    def _fired(self, c: Control, trigger, parts: dict | None = None) -> bool:
+        """Whether ``trigger`` fires on ``c`` at load (``parts``: its template's named parts,
+        which a SourceName reads)."""
         kind = local_name(trigger.tag)
         if kind == "EventTrigger":
             return False  # storyboards: the animation reader's
-        verdict = c.fires(trigger)
+        if data_triggers.reads_other(trigger):
+            verdict = self.conditions.fires(trigger, c.el, c, parts)
+        else:
+            verdict = c.fires(trigger)
         if verdict is None:
             msg = (f"this {kind}'s condition is not known at load (a binding, another "
                    "element's property or code): its Setters are not applied")  # fmt: skip
@@ -460,9 +571,9 @@ class _Instantiation:
                         if prop and value is not None:
                             c.triggered[property_name(prop)] = value
 
-    def template_triggers_on_control(self, c: Control, template) -> None:
+    def template_triggers_on_control(self, c: Control, template, names: dict) -> None:
         for trigger in triggers(template, "ControlTemplate"):
-            if self._fired(c, trigger):
+            if self._fired(c, trigger, names):
                 for s in setters(trigger):
                     prop, value = s.get("Property"), setter_value(s)
                     # below the Style's triggers: only what they leave unset
@@ -474,7 +585,7 @@ class _Instantiation:
 
     def template_triggers_on_parts(self, c: Control, template, names: dict) -> None:
         for trigger in triggers(template, "ControlTemplate"):
-            if not c.fires(trigger):
+            if not self._fired(c, trigger, names):
                 continue
             for s in setters(trigger):
                 prop, target, value = s.get("Property"), s.get("TargetName"), setter_value(s)

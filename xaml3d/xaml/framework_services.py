@@ -5,9 +5,12 @@ located diagnostics."""
 from __future__ import annotations
 
 import copy
+from pathlib import Path
 
-from xaml3d.xaml.context import is_presentation, qname
-from xaml3d.xaml.resources import data_template_key, type_key
+from xaml3d.errors import XamlError
+from xaml3d.xaml.context import as_written, is_presentation, qname
+from xaml3d.xaml.parser import parse_document
+from xaml3d.xaml.resources import data_template_key, reduce_uri, type_key
 from xaml3d.xaml.theme import theme_styles
 
 _TEMPLATES = {"ControlTemplate", "DataTemplate", "ItemsPanelTemplate", "HierarchicalDataTemplate"}
@@ -19,6 +22,7 @@ class ReaderServices:
     def __init__(self, ctx, resources) -> None:
         self.ctx = ctx
         self.resources = resources
+        self._xml: dict[Path, object] = {}  # XML data files read, by path (None: unreadable)
 
     def lookup(self, key: str, from_el, attr: str | None = None):
         return self.resources.lookup(key, from_el, attr=attr)
@@ -70,6 +74,36 @@ class ReaderServices:
 
     def pin(self, root) -> None:
         self.ctx.pin_positions(root)
+
+    def xml_file(self, source: str, where):
+        """The root element of the XML data file ``source`` (an XmlDataProvider's Source,
+        relative to the document of ``where``), read with the scene's parser and limits (no
+        DOCTYPE or entities, the size limit); None, said (BND004), when it cannot be."""
+        rel = reduce_uri(source)
+        if rel is None:
+            why = "network URIs are refused"
+            path = None
+        else:
+            doc = self.ctx.doc_of(where)
+            base = doc.directory if doc and doc.directory else Path.cwd()
+            path = (base / rel).resolve()
+            why = None if self.ctx.path_allowed(path) else "it leaves the scene's folder tree"
+        if path is not None and why is None:
+            if path in self._xml:
+                return self._xml[path]
+            try:
+                data = parse_document(path, limits=self.ctx.limits, file=str(path))
+            except XamlError as exc:
+                why = exc.message
+            else:
+                self.ctx.files_used.append(data.file)
+                self._xml[path] = data.root
+                return data.root
+            self._xml[path] = None
+        msg = (f"XmlDataProvider Source {as_written(source)} cannot be read ({why}): the "
+               "bindings to it take their FallbackValue")  # fmt: skip
+        self.ctx.diag("BND004", msg, where, attr="Source", once=("BND004", id(where)))
+        return None
 
     def diag(self, code: str, message: str, el=None, attr: str | None = None, once=None) -> None:
         self.ctx.diag(code, message, el, attr=attr, once=once)
