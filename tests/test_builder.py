@@ -216,8 +216,10 @@ def test_viewport2dvisual3d_draws_its_visual_on_the_host_material():
     b = s.viewports[0].models[0].material[0].brush
     assert isinstance(b, DrawingBrush) and b.kind == "Viewport2DVisual3D"
     assert b.viewport == (0.0, 0.0, 1.0, 1.0) and b.viewport_units == "Absolute"
-    # the Button draws its whole laid-out box: its text line and Aero2's border and padding
-    face, band, text = b.drawing.children[0].children
+    # the Button draws its whole laid-out box: its theme template's Border (Aero2's border and
+    # padding) around the ContentPresenter's text line
+    (border,) = b.drawing.children[0].children
+    face, band, presenter = border.children
     assert face.geometry.rect[3] == pytest.approx(2724 / 2048 * 12 + 2)  # inside the 1 px border
     assert b.content_bounds is None  # relative units refer to what the visual draws
     assert "SCN007" not in codes(s) and "DRW005" not in codes(s)

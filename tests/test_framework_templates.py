@@ -626,3 +626,49 @@ def test_a_template_copy_resolves_resources_in_the_template_scope(tmp_path):
     path.write_text(feature, encoding="utf-8")
     assert not [d for d in load(path).diagnostics if d.severity != "info"]
     _same(tmp_path, feature, twin)
+
+
+def test_theme_template_draws_the_button_family_with_its_states(tmp_path):
+    # no template of the document's: the theme's (a Border around a ContentPresenter at
+    # Padding 1, content centred), the user Style's Setter above the theme's Background; the
+    # theme's triggers: IsEnabled False inherited from the panel, IsChecked, IsDefaulted
+    style = '<Style TargetType="Button"><Setter Property="Background" Value="Yellow" /></Style>'
+    buttons = """
+      <Button Height="24">Go</Button>
+      <StackPanel IsEnabled="False"><RepeatButton Height="24">No</RepeatButton></StackPanel>
+      <ToggleButton Height="24" IsChecked="True">On</ToggleButton>
+      <Button Height="24" IsDefault="True">OK</Button>"""
+
+    def twin(text, face, band, foreground=""):
+        return f"""
+      <ContentControl Height="24"{foreground}>
+        <Border Background="{face}" BorderBrush="{band}" BorderThickness="1">
+          <ContentPresenter Margin="1" HorizontalAlignment="Center" VerticalAlignment="Center">
+            <TextBlock Text="{text}" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl>"""
+
+    twins = "".join((
+        twin("Go", "Yellow", "#FF707070"),
+        twin("No", "#FFF4F4F4", "#FFADB2B5", ' Foreground="#FF838383"'),
+        twin("On", "#FFBCDDEE", "#FF245A83"),
+        twin("OK", "Yellow", "#FF0078D7"),
+    ))  # fmt: skip
+    px = _same(tmp_path, window(style, buttons), window("", twins))
+    assert tuple(px[12, 3]) == (255, 255, 0, 255) and tuple(px[0, 40]) == (112, 112, 112, 255)
+    assert tuple(px[27, 3]) == (244, 244, 244, 255) and tuple(px[24, 40]) == (173, 178, 181, 255)
+    assert tuple(px[51, 3]) == (188, 221, 238, 255) and tuple(px[48, 40]) == (36, 90, 131, 255)
+    assert tuple(px[72, 40]) == (0, 120, 215, 255)
+    # the disabled text is grey (#FF838383 at its darkest), the enabled text black
+    assert 125 <= px[26:46, 2:78, :3].min() <= 140 and px[2:22, 2:78, :3].min() < 60
+
+
+def test_theme_template_not_for_a_tool_bar_nor_over_a_default_style(tmp_path):
+    doc = window("", '<ToolBar><Button Content="Open" /></ToolBar>'
+                     '<Button Height="24" OverridesDefaultStyle="True">Go</Button>')  # fmt: skip
+    scene = load(doc, text=True)
+    types = [b.type for b in scene.layout.boxes]
+    # the ToolBar's button keeps the ToolBar's Style (drawn by the reader's ToolBar); a Button
+    # over no default Style has no template: nothing of the theme's is built for either
+    assert "Border" not in types and "ContentPresenter" not in types

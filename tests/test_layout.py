@@ -662,11 +662,17 @@ def test_markup_rounding_and_fractions():
 def test_markup_viewport_in_a_custom_control_and_a_button():
     x = (
         f"<Grid {NS} xmlns:h='clr-namespace:H' Width='200' Height='100'>"
-        "<h:View Margin='10'><Button><Viewport3D/></Button></h:View></Grid>"
+        "<h:View Margin='10'><Button HorizontalContentAlignment='Stretch'"
+        " VerticalContentAlignment='Stretch'><Viewport3D/></Button></h:View></Grid>"
     )
     s = load(x, text=True)
-    assert (s.viewports[0].width, s.viewports[0].height) == (180, 80)
+    # the theme's Button template: a 1 px Border, the ContentPresenter at Padding 1
+    assert (s.viewports[0].width, s.viewports[0].height) == (176, 76)
     assert {"LAY004"} <= {d.code for d in s.diagnostics}
+    # Aero2 centres a Button's content: a Viewport3D (no size of its own) gets none
+    s = load(x.replace("Stretch", "Center"), text=True)
+    assert (s.viewports[0].width, s.viewports[0].height) == (0, 0)
+    assert {"LAY001", "LAY004"} <= {d.code for d in s.diagnostics}
 
 
 def test_rounding_rounds_margin_sums_not_offsets_and_border_not_padding():
@@ -795,3 +801,32 @@ def test_layout_transform_turns_sizes_and_boxes():
     r = xaml3d.render_arrays(s)
     assert r.rgba.shape == (64, 96, 4) and (r.width, r.height) == (96, 64)
     assert r.depth.shape == (64, 96) and r.distance.shape == (64, 96)
+
+
+def test_rounding_rounds_a_centred_child_offset_halves_to_even():
+    # a Button's template under UseLayoutRounding: a Border (1 px) holding a centred 16 px
+    # ContentPresenter in 29 px: WPF rounds the visual offset 1 + 5.5 = 6.5 to 6 (Math.Round)
+    text = Node(L.CONTROL, "TextBlock", estimate=(15.6, 15.96))
+    presenter = Node(L.CONTAINER, "ContentPresenter", h_align="Center", children=[text])
+    border = Node(L.BORDER, "Border", border=(1, 1, 1, 1), children=[presenter])
+    button = Node(L.CONTAINER, "Button", width=29, height=20, children=[border])
+    layout(Node(L.GRID, "Grid", width=29, height=20, rounding=True, children=[button]))
+    assert presenter.rect[2] == 16  # 15.6 rounded
+    assert presenter.rect[0] == 6 and text.rect[0] == 6
+    assert presenter.clip_box is None
+
+
+def test_layout_clip_cuts_a_child_wider_than_its_slot():
+    # a 30 px Button whose 96 px text is given 26 px: the TextBlock (Stretch, wider than its
+    # slot: placed at the left) is clipped to the slot; the Button and its parts are not
+    text = Node(L.CONTROL, "TextBlock", estimate=(96.0, 16.0))
+    presenter = Node(L.CONTAINER, "ContentPresenter", h_align="Center", children=[text])
+    border = Node(L.BORDER, "Border", border=(1, 1, 1, 1), padding=(1, 1, 1, 1),
+                  children=[presenter])  # fmt: skip
+    button = Node(L.CONTAINER, "Button", width=30, children=[border])
+    layout(Node(L.STACK, "StackPanel", width=100, height=50, children=[button]))
+    assert button.rect == (35, 0, 30, 20)
+    assert presenter.rect == (37, 2, 26, 16)
+    assert text.rect[0] == 37 and text.rect[2] == 96
+    assert text.clip_box == (0, 0, 26, 16)
+    assert button.clip_box is None and border.clip_box is None and presenter.clip_box is None

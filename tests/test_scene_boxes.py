@@ -40,15 +40,19 @@ def test_boxes_in_paint_order_with_exact_rectangles(scene):
         ("border", "Border", 1),
         ("viewport", "Viewport3D", 2),
         ("stack", "StackPanel", 1),
-        ("control", "Button", 4),
+        ("container", "Button", 4),  # drawn by the theme's ControlTemplate: its parts below
+        ("border", "Border", 5),
+        ("container", "ContentPresenter", 6),
+        ("control", "TextBlock", 7),
     ]
-    window, grid, border, vp, stack, button = lay.boxes
+    window, grid, border, vp, stack, button = lay.boxes[:6]
     assert window.rect == grid.rect == (0.0, 0.0, 100.0, 48.0)
     assert border.rect == (0.0, 0.0, 50.0, 48.0) and border.name == "frame"
     assert border.border == (2.0, 3.0, 4.0, 5.0) and border.inner == (2.0, 3.0, 44.0, 40.0)
     assert vp.rect == (2.0, 3.0, 44.0, 40.0) and vp.viewport == 0
     assert (window.shown, border.shown, vp.shown) == (True, True, True)
     assert (stack.shown, button.shown) == (False, False)  # Collapsed, and inside it
+    assert not any(b.shown for b in lay.boxes[6:])
     assert lay.root is window and lay.is_window_root
 
 

@@ -1,6 +1,6 @@
 """The package's theme dictionary (xaml3d/data/themes/aero2.xaml, read by xaml3d.xaml.theme):
-its Button family's Style and ControlTemplate are Aero2's, its values those the controls'
-drawing uses, it is read once per process and only when a control needs it, and the framework
+its Button family's Style and ControlTemplate are Aero2's (the only source of their look), it
+is read once per process and only when a control needs it, and the framework
 step reads a template-bound value from it below the document's Styles."""
 
 from __future__ import annotations
@@ -13,7 +13,6 @@ from lxml import etree
 
 from xaml3d.framework.styles import Control, property_name, setter_value, setters
 from xaml3d.xaml.context import qname, x_attr
-from xaml3d.xaml.controls_reader import AERO2
 from xaml3d.xaml.theme import theme_entries, theme_styles
 
 BUTTONS = ("Button", "ToggleButton", "RepeatButton")
@@ -85,19 +84,6 @@ def test_button_template_is_a_bound_border_around_a_content_presenter():
     }
     # the input states WPF's theme lists: never true in a picture at rest
     assert ("IsMouseOver", "True") in found and ("IsPressed", "True") in found
-
-
-@pytest.mark.parametrize("control", BUTTONS)
-def test_theme_values_are_those_the_controls_are_drawn_with(control):
-    values = _setters(theme_styles(control))
-    look = AERO2[control]
-
-    def argb(text):
-        return tuple(int(text[i : i + 2], 16) / 255 for i in (3, 5, 7, 1))
-
-    assert argb(values["Background"][1]) == look["background"].color
-    assert argb(values["BorderBrush"][1]) == look["border"].color
-    assert (float(values["Padding"][1]),) * 4 == tuple(look["padding"])
 
 
 def test_the_theme_keeps_its_brushes_by_aero2s_keys():

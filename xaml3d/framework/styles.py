@@ -167,6 +167,14 @@ class Control:
     def holds(self, prop: str, wanted: str) -> bool | None:
         """Whether ``prop``'s value at load (triggers aside) is ``wanted``; None when it is not
         known without running code (a binding, a resource)."""
+        if prop == "IsEnabled" and wanted.strip().lower() in ("true", "false"):
+            # WPF coerces IsEnabled to false below a disabled element: an ancestor's counts
+            disabled = self.disabled_above()
+            if disabled:
+                return wanted.strip().lower() == "false"
+        if prop == "IsDefaulted" and self.type == "Button":
+            # a default Button is defaulted at load (the window's focus is on no other button)
+            prop = "IsDefault"
         v = self.value(prop, triggered=False)
         if v is None or v[0] != "text":
             return None if v is not None else False
@@ -174,6 +182,16 @@ class Control:
         if markup.split(text) is not None:
             return None
         return text.lower() == wanted.strip().lower()
+
+    def disabled_above(self) -> bool:
+        """Whether an ancestor of the control (in the tree as instantiated so far: a template's
+        part sees its templated parent) is written disabled (``IsEnabled="False"``)."""
+        node = self.el.getparent()
+        while node is not None:
+            if (node.get("IsEnabled") or "").strip().lower() == "false":
+                return True
+            node = node.getparent()
+        return False
 
     def fires(self, trigger) -> bool | None:
         """Whether a Trigger or MultiTrigger's condition holds at load (None: not known)."""

@@ -26,7 +26,9 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
 - ``ContentStringFormat`` / ``HeaderStringFormat`` / ``ItemStringFormat`` format content that
   is not an element (string_formats.py).
 
-Controls whose template the reader's theme draws (no user template) are left as they are.
+Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
+take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
+user template are left to the reader's theme drawing.
 """
 
 from __future__ import annotations
@@ -50,6 +52,9 @@ CONTENT_CONTROLS = {
     "ContentControl", "UserControl", "ListBoxItem", "ComboBoxItem", "ListViewItem",
     "StatusBarItem", "ToolTip", "Frame",
 }  # fmt: skip
+# controls whose template, when neither they nor their Style set one, is the theme's
+# (``Services.theme_styles``: the package's theme dictionary)
+THEMED = {"Button", "ToggleButton", "RepeatButton"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
@@ -71,6 +76,7 @@ _NOT_VISUAL_PROPERTIES = ("Resources", "Style", "Template", "ContentTemplate", "
 # the presenter's own properties, consumed where its content is placed
 _PRESENTER_PROPS = ("Content", "ContentSource", "ContentTemplate", "ContentTemplateSelector",
                     "ContentStringFormat", "RecognizesAccessKey")  # fmt: skip
+THEME = "<theme>"  # template_of's answer for a template the theme gives (no attribute names it)
 MAX_DEPTH = 16  # templates inside templates deeper than this: a template that holds itself
 MAX_INSTANCES = 1000  # instances in one document: past this, a template that multiplies itself
 
@@ -150,7 +156,7 @@ class _Instantiation:
             self.sv.diag("TPL001", msg, el, attr=where)
             return
         if self.room(el, depth):
-            instance = self.apply(c, template)
+            instance = self.apply(c, template, themed=where is THEME)
             if instance is not None:
                 self.below(instance, depth)
 
@@ -321,7 +327,8 @@ class _Instantiation:
         return el
 
     def template_of(self, c: Control):
-        """(the ControlTemplate element, the attribute naming it or None) of a user template."""
+        """(the ControlTemplate element, the attribute naming it or None) of a user template,
+        else of the theme's (``THEME``) for the controls it draws."""
         el, sv = c.el, self.sv
         ref = el.get("Template")
         if ref is not None:
@@ -334,7 +341,12 @@ class _Instantiation:
                 return (entry, None) if _is_template(entry) else None
         value = c.setters.get("Template")
         if value is None:
-            return None
+            if c.type not in THEMED or _on_tool_bar(el, sv):
+                return None
+            value = c.theme_setters().get("Template")
+            if value is None or value[0] != "element" or not _is_template(value[1]):
+                return None  # OverridesDefaultStyle without a template of its own
+            return value[1], THEME
         if value[0] == "element":
             entry = value[1]
         else:
@@ -345,11 +357,15 @@ class _Instantiation:
         return entry, ("Style" if el.get("Style") is not None else None)
 
     # ----------------------------------------------------------------- instantiation
-    def apply(self, c: Control, template):
+    def apply(self, c: Control, template, themed: bool = False):
         sv = self.sv
         self.style_triggers(c)
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
         instance = sv.copy(visual[0]) if visual else None
+        if instance is not None and themed:
+            # the theme's parts are the control's own, in the document's text
+            for part in instance.iter():
+                sv.made(part, c.el)
         names: dict[str, object] = {}
         parts = _parts(instance) if instance is not None else []
         for part in parts:
@@ -633,6 +649,15 @@ def _same_ns(el, local: str) -> str:
 def _literal(text: str) -> str:
     """Text set as an attribute value: a leading brace escaped (not a markup extension)."""
     return "{}" + text if text.lstrip().startswith("{") else text
+
+
+def _on_tool_bar(el, sv) -> bool:
+    """Whether ``el`` is an item of a ToolBar, which gives its buttons a Style of its own
+    (ToolBar.ButtonStyleKey: drawn by the reader's ToolBar) instead of the theme's."""
+    node = el.getparent()
+    if node is not None and local_name(node.tag) == "ToolBar.Items":
+        node = node.getparent()
+    return node is not None and sv.wpf_type(node) == "ToolBar"
 
 
 def _is_template(el) -> bool:

@@ -110,6 +110,20 @@ def _align(align: str, client: float, ink: float, far: str) -> float:
     return 0.0
 
 
+def _layout_clip(slot_box, rw: float, rh: float, iw: float, ih: float):
+    """FrameworkElement.GetLayoutClip: the element's Max/explicit size (``ink``) when its
+    RenderSize is larger, its slot when that is smaller than the ink, both when both."""
+    local = iw < rw - 1e-9 or ih < rh - 1e-9
+    if slot_box is None:
+        return (0.0, 0.0, iw, ih) if local else None
+    if not local:
+        return slot_box
+    sx, sy, sw, sh = slot_box
+    x0, y0 = max(0.0, sx), max(0.0, sy)
+    x1, y1 = min(iw, sx + sw), min(ih, sy + sh)
+    return (x0, y0, max(0.0, x1 - x0), max(0.0, y1 - y0))
+
+
 def _thick(t, rounding: bool) -> tuple[float, float, float, float]:
     return tuple(_round(v) for v in t) if rounding else tuple(t)
 
@@ -244,6 +258,7 @@ class Engine:
             ox, oy = _round(ox), _round(oy)
         fits = lt is not None or (bw <= cw + 1e-9 and bh <= ch + 1e-9)
         n.slot_box = None if fits else (x + ml - ox, y + mt - oy, cw, ch)
+        n.clip_box = _layout_clip(n.slot_box, rw, rh, iw, ih)
         # the element's own box starts where its transformed bounds are aligned; the turn
         # (less the bounds' corner) is drawn about that point (scene Layer2D.layout_transform)
         n.offset = (ox, oy)

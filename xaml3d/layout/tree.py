@@ -145,6 +145,10 @@ class Node:
     # the room arrange gave it (its slot less the margin) in its own coordinates, when that is
     # smaller than its box: WPF's layout clip then cuts its drawing there (None: it fits)
     slot_box: tuple[float, float, float, float] | None = None
+    # WPF's layout clip of the element and its descendants (FrameworkElement.GetLayoutClip) in
+    # its own coordinates: its Max/explicit size when its render is larger, cut to its slot
+    # when that is smaller than it (None: nothing is clipped)
+    clip_box: tuple[float, float, float, float] | None = None
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange
     measured_with: object = field(default=None, repr=False)  # (engine, available w, h)
 

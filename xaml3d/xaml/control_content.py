@@ -3,7 +3,8 @@
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
 beside the viewports (``render --window``): text by the package font's advance widths and
 Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
-Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox
+TextBox, CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which its
+template restyles)
 (a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
 the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module

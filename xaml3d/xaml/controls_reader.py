@@ -1,6 +1,6 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
-Covers Button, ToggleButton, RepeatButton, TextBox, Label, CheckBox, RadioButton, ProgressBar,
+Covers TextBox, Label, CheckBox, RadioButton, ProgressBar,
 a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
 the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
@@ -37,9 +37,6 @@ from xaml3d.xaml.visual_text import (
 )
 
 AERO2 = {
-    "Button": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
-    "ToggleButton": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
-    "RepeatButton": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),
     "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),
     "Label": dict(background=None, border=None, padding=(5, 5, 5, 5)),
     "CheckBox": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
@@ -86,15 +83,10 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
     out.extend(_box_drawing(background, border, thick, 0.0, w, h))
     inset_x = thick[0] + pad[0] + (_TEXT_BOX_INSET if local == "TextBox" else 0.0)
     inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
-    centred = local in ("Button", "ToggleButton", "RepeatButton")
-    if centred:  # Aero2: HorizontalContentAlignment and VerticalContentAlignment Center
-        lh = line_height(font, _family(el, r))
-        ty = thick[1] + pad[1] + (h - thick[1] - thick[3] - pad[1] - pad[3] - lh) / 2
-    else:
-        ty = thick[1] + pad[1]
+    ty = thick[1] + pad[1]
     # a TextBox's text view is 2 px inside its padding each side: its lines wrap there
     text_w = inner_w - 2 * _TEXT_BOX_INSET if local == "TextBox" else inner_w
-    t = _text(r, el, v, font, inset_x, ty, text_w, align_center=centred)
+    t = _text(r, el, v, font, inset_x, ty, text_w)
     if t is not None:
         # the content presenter's layout clip: text never spills over the border
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]

@@ -19,7 +19,7 @@ from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
 from xaml3d.layout.transform import placed_by_layout
 from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, WRAP, Node
 from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout, own_unit
-from xaml3d.scene.drawing import Around, Layer2D
+from xaml3d.scene.drawing import Around, CombinedGeometry, Layer2D, RectangleGeometry
 from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
 DEFAULT_SIZE = (640.0, 480.0)
@@ -198,6 +198,13 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
             layer = replace(layer, opacity=1.0)
         if n.layout_transform is not None:
             layer = replace(layer or Layer2D(), layout_transform=placed_by_layout(n))
+        if n.clip_box is not None and n.kind != VIEWPORT:
+            # the layout clip cuts what the element and its children draw
+            layer = layer or Layer2D()
+            clip = RectangleGeometry(n.clip_box)
+            if layer.clip is not None:
+                clip = CombinedGeometry("Intersect", layer.clip, clip)
+            layer = replace(layer, clip=clip)
         if layer is None:
             continue
         note = None

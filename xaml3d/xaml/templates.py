@@ -5,9 +5,9 @@ content presenters around the control's content. xaml3d builds the same tree of 
 for the controls whose template places content, so their content is laid out and drawn inside
 their chrome, beside the viewports (``render --window``) and inside visuals alike:
 
-- Button, ToggleButton, RepeatButton, Label whose content is an element (a StackPanel holding an
+- Label whose content is an element (a StackPanel holding an
   Image and a TextBlock...): the chrome's Border, then a ContentPresenter at Padding, aligned by
-  HorizontalContentAlignment / VerticalContentAlignment (Button: centred; Label: top left);
+  HorizontalContentAlignment / VerticalContentAlignment (Label: top left);
   CheckBox, RadioButton: the 13 px mark, then the content at Padding 4,-1,0,0, centred on the row.
 - ListBox: a white Border (#FFABADB3, 1 px, Padding 1), the items stacked; each ListBoxItem a
   1 px transparent Border with Padding 4,1, the selected one (SelectedIndex or IsSelected) in
@@ -77,13 +77,14 @@ from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _rgb, warn
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
-_CONTENT_CONTROLS = {"Button", "ToggleButton", "RepeatButton", "Label"}
+_CONTENT_CONTROLS = {"Label"}
 _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
 TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
+TEMPLATED |= {"Button", "ToggleButton", "RepeatButton"}  # a ToolBar's: drawn as its parts
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
 
