@@ -61,10 +61,11 @@ def test_path_data_commas_as_in_real_files():
 
 
 def _tile(brush, size=(8, 8)):
+    from xaml3d.render.layer2d.paint import PLAYER
     from xaml3d.render.layer2d.shaders import content_bounds, tile_layout
     from xaml3d.render.layer2d.surface import rasterize_tile
 
-    viewport, m = tile_layout(brush, (np.zeros(2), np.ones(2)), content_bounds(brush))
+    viewport, m = tile_layout(brush, (np.zeros(2), np.ones(2)), content_bounds(brush, PLAYER))
     return rasterize_tile(brush, viewport, m, size)
 
 

@@ -109,6 +109,30 @@ class Reader:
             self.slots.world(obj, field, WorldChain(None, prefix, factors, slots))
         return obj
 
+    # The 2D readers recurse through each other (a brush holds a drawing, a drawing a visual,
+    # a visual's Background a brush): they reach the reader of a nested element through these
+    # methods, so that no reader module imports one above it. The 2D readers are imported
+    # when a document first has 2D content: a 3D scene does not load them.
+
+    def drawing(self, el):
+        """The scene Drawing of a Drawing element (``drawings_reader.drawing``)."""
+        from xaml3d.xaml.drawings_reader import drawing
+
+        return drawing(self, el)
+
+    def drawing_brush(self, p: Props, common: dict):
+        """A DrawingBrush or VisualBrush (``drawings_reader.drawing_brush``)."""
+        from xaml3d.xaml.drawings_reader import drawing_brush
+
+        return drawing_brush(self, p, common)
+
+    def visual_drawing(self, el):
+        """(Drawing, bounds) of a visual laid out at its desired size
+        (``visuals_reader.visual_drawing``)."""
+        from xaml3d.xaml.visuals_reader import visual_drawing
+
+        return visual_drawing(self, el)
+
     def props(self, el) -> Props:
         """The element's properties (read once: diagnostics are not repeated on reuse)."""
         hit = self._props.get(id(el))
