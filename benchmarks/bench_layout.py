@@ -15,7 +15,7 @@ import argparse
 import time
 
 from xaml3d.xaml import layout_step
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
 

@@ -27,8 +27,8 @@ Controls whose template the reader's theme draws (no user template) are left as 
 
 from __future__ import annotations
 
+from xaml3d.access_text import access_text
 from xaml3d.framework import items, markup
-from xaml3d.framework.access_text import access_text
 from xaml3d.framework.styles import (
     X_NS,
     Control,

@@ -20,7 +20,6 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.framework import expand
 from xaml3d.scene import transforms as T
 from xaml3d.scene.tracks import WorldChain, slots_in
 from xaml3d.scene.types import (
@@ -47,7 +46,6 @@ from xaml3d.xaml.context import (
 )
 from xaml3d.xaml.directives import check_directives
 from xaml3d.xaml.framework_check import check_framework
-from xaml3d.xaml.framework_services import ReaderServices
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
@@ -512,19 +510,23 @@ def _foreign_viewport(root) -> str | None:
     return None
 
 
-def build_scene(
-    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
-) -> Scene:
-    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size,
-    with its storyboards and their tracks (animation_tracks.py)."""
-    r = Reader(ctx, resources)
+def check_document(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> None:
+    """What WPF's loader refuses or warns of in the document as written (names, directives,
+    styles, content, the 2D framework types' members), before the framework step changes it."""
     check_names(ctx, doc.root)
     check_directives(ctx, doc.root)
     check_styles(ctx, resources, doc.root)
     check_content(ctx, doc.root)
     check_framework(ctx, doc.root)
-    # WPF's framework step (styles, templates, triggers, items, bindings), on the checked tree
-    expand(doc.root, ReaderServices(ctx, resources))
+
+
+def build_scene(
+    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
+) -> Scene:
+    """The Scene of the checked tree the framework step has instantiated (``xaml3d.pipeline``
+    runs them in that order), laid out at ``window_size`` (the root's client size) or the
+    markup's size, with its storyboards and their tracks (animation_tracks.py)."""
+    r = Reader(ctx, resources)
     walk = _Walk(r)
     walk.visit(doc.root)
     # the storyboards first: the viewports' build notes where what they animate lands

@@ -2,7 +2,7 @@
 
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
 beside the viewports (``render --window``): text by the package font's advance widths and
-Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
+Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock, Label,
 Button, ToggleButton, RepeatButton, TextBox, CheckBox, RadioButton and a closed ComboBox
 (a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from xaml3d.layout.text import line_height, text_width
+from xaml3d.text_metrics import line_height, text_width
 from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (

@@ -10,7 +10,7 @@ control is built: a document of viewports and panels alone never loads them.
 
 from __future__ import annotations
 
-from xaml3d.layout import tree as L
+from xaml3d.scene import element_tree as L
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.layout.text import baseline, line_height
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -21,6 +20,7 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
+from xaml3d.text_metrics import baseline, line_height
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import qname
 from xaml3d.xaml.geometry_reader import path_from_string

@@ -29,8 +29,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.layout import tree as L
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -40,6 +39,7 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
+from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.templates import TEXT_PART, _chrome, _presenter, part, text_part

@@ -17,7 +17,6 @@ import math
 
 import numpy as np
 
-from xaml3d.layout.engine import scale_factor
 from xaml3d.scene.drawing import DrawingGroup
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import drawing_image, drawing_image_element
@@ -33,8 +32,9 @@ class ImageLayout:
     def __init__(self, r, v, el) -> None:
         self.stretch = v.get("Stretch", lambda s: V.parse_enum(s, _STRETCHES), "Uniform")
         self.direction = v.get("StretchDirection", lambda s: V.parse_enum(s, _DIRECTIONS), "Both")
+        self.scale_factor = r.ctx.stages.scale_factor
         self.drawing = drawing_image(r, el)
-        self.bounds = _bounds(self.drawing)
+        self.bounds = _bounds(r, self.drawing)
 
     @property
     def natural(self) -> tuple[float, float]:
@@ -45,7 +45,7 @@ class ImageLayout:
 
     def measure(self, w: float, h: float) -> tuple[float, float]:
         nw, nh = self.natural
-        sx, sy = scale_factor((w, h), (nw, nh), self.stretch, self.direction)
+        sx, sy = self.scale_factor((w, h), (nw, nh), self.stretch, self.direction)
         return nw * sx, nh * sy
 
     arrange = measure
@@ -64,13 +64,8 @@ class ImageLayout:
         return DrawingGroup(children=(self.drawing,), transform=m)
 
 
-def _bounds(d):
-    if d is None:
-        return None
-    from xaml3d.render.layer2d.paint import drawing_bounds
-
-    b = drawing_bounds(d)
-    return None if b is None else (b.left(), b.top(), b.right(), b.bottom())
+def _bounds(r, d):
+    return None if d is None else r.ctx.stages.drawing_bounds(d)
 
 
 def attach_layout(r, v, n, el) -> tuple[float, float] | None:

@@ -1,4 +1,4 @@
-"""Reading the panels around the viewports into a layout tree (xaml3d.layout.tree.Node).
+"""Reading the panels around the viewports into a layout tree (xaml3d.scene.element_tree.Node).
 
 Covers, for every element from the document's root down to the Viewport3Ds: Window (and
 NavigationWindow), Page, UserControl, Grid (RowDefinitions/ColumnDefinitions: pixel, Auto,
@@ -21,9 +21,9 @@ import math
 
 import numpy as np
 
+from xaml3d.codes.layout import LAYOUT_CODES
 from xaml3d.errors import Diagnostic, ValueSyntaxError
-from xaml3d.layout import tree as L
-from xaml3d.layout.gotchas import LAYOUT_CODES
+from xaml3d.scene import element_tree as L
 from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text

@@ -7,8 +7,8 @@ arranges and draws them (layout's measure and arrange, then the shape's drawing)
   as Shape.GetPen), caps, join, miter limit, dashes.
 - The natural size (Stretch="None", Shape.GetNaturalSize): the right and bottom of the defining
   geometry's render bounds with the pen, dashes left out (curve extrema, arcs, joins and caps
-  counted: ``render.layer2d.paint.render_bounds``), never below 0. A Rectangle's and an
-  Ellipse's is StrokeThickness square.
+  counted: ``render.layer2d.paint.render_bounds``, through ``ReadContext.stages``), never
+  below 0. A Rectangle's and an Ellipse's is StrokeThickness square.
 - Stretch (Shape.GetStretchMetrics): Fill, Uniform and UniformToFill scale the geometry's
   bounds (without the pen) into the room less StrokeThickness, a horizontal or vertical line
   always as Fill, and shift it half a StrokeThickness in from the box's corner; with infinite
@@ -106,12 +106,6 @@ def defining_geometry(r, v, local: str):
     return PathGeometry(tuple(cmds), rule)
 
 
-def _bounds(geometry, pen=None):
-    from xaml3d.render.layer2d.paint import render_bounds
-
-    return render_bounds(geometry, pen)
-
-
 def stretch_metrics(mode: str, t: float, room: tuple[float, float], bounds):
     """Shape.GetStretchMetrics: (x scale, y scale, dx, dy, (width, height)) of a geometry whose
     bounds (left, top, right, bottom; None: empty) are stretched into ``room``."""
@@ -159,10 +153,11 @@ class ShapeLayout:
         if self.geometry is None:
             self.bounds = self.natural = None
             return
-        self.bounds = _bounds(self.geometry)  # Geometry.Bounds: no pen
+        render_bounds = r.ctx.stages.render_bounds
+        self.bounds = render_bounds(self.geometry, None)  # Geometry.Bounds: no pen
         # dashes are left out of the layout size, as Shape.GetNaturalSize does
         pen = replace(self.pen, dashes=(), dash_offset=0.0) if self.pen is not None else None
-        ink = _bounds(self.geometry, pen)
+        ink = render_bounds(self.geometry, pen)
         self.natural = (0.0, 0.0) if ink is None else (max(ink[2], 0.0), max(ink[3], 0.0))
 
     def measure(self, w: float, h: float) -> tuple[float, float]:

@@ -54,9 +54,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.framework.access_text import access_text
-from xaml3d.layout import tree as L
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.access_text import access_text
+from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     CombinedGeometry,
     DrawingGroup,
@@ -67,6 +66,7 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
+from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
@@ -200,7 +200,7 @@ def _content(reader, el, font) -> list:
 def _header(reader, el, font, access: bool = True) -> list:
     """A headered control's Header: its text (attribute or property element) or elements.
     ``access``: its template's ContentPresenter recognizes access keys (GroupBox, Expander,
-    TabItem, MenuItem): a text header is AccessText (``framework.access_text``)."""
+    TabItem, MenuItem): a text header is AccessText (``xaml3d.access_text``)."""
     shown = access_text if access else str
     raw = el.get("Header")
     if raw is not None:

@@ -5,7 +5,7 @@ property elements, white space as XAML reads it, access keys: ``text_content``; 
 inlines in their own formats and lines: ``inline_text``), the inherited
 Foreground, FontSize, FontWeight, FontStyle and FontFamily, TextAlignment, TextWrapping and
 TextTrimming (CharacterEllipsis, WordEllipsis) to the width the layout gives the TextBlock, and
-one TextDrawing per line at Segoe UI's line metrics (``xaml3d.layout.text``); and the Background
+one TextDrawing per line at Segoe UI's line metrics (``xaml3d.text_metrics``); and the Background
 / BorderBrush band of a Border-like box (BorderThickness, CornerRadius).
 """
 
@@ -13,10 +13,9 @@ from __future__ import annotations
 
 import math
 
+from xaml3d.access_text import access_text
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.fonts import WEIGHTS
-from xaml3d.framework.access_text import access_text
-from xaml3d.layout.text import UI, baseline, line_height, text_width, uncovered
 from xaml3d.scene.drawing import (
     CombinedGeometry,
     DrawingGroup,
@@ -25,6 +24,7 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import SolidColorBrush
+from xaml3d.text_metrics import UI, baseline, line_height, text_width, uncovered
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
@@ -307,7 +307,7 @@ def base_format(r, el, font: float) -> Format:
 def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool):
     """A TextBlock's inlines (``inline_text``): one TextDrawing per run of a line, on the
     line's shared baseline, an underlined run over a bar at the font's underline metrics."""
-    from xaml3d.layout.text import underline
+    from xaml3d.text_metrics import underline
 
     alignment = _alignment(v)
     width = w + _SLACK if wraps(v) else math.inf

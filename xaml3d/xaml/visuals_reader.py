@@ -27,9 +27,7 @@ import math
 
 import numpy as np
 
-from xaml3d.layout import layout
-from xaml3d.layout import tree as L
-from xaml3d.layout.transform import placed_by_layout
+from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     DrawingGroup,
     GeometryDrawing,
@@ -99,7 +97,7 @@ def _visual_drawing(r, el):
     # an element of the window keeps the size the window's layout gave it; a brush's own
     # visual is measured with infinite room and arranged at its desired size
     size = getattr(r, "laid_out_sizes", {}).get(id(el))
-    layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
+    r.ctx.stages.layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
     templates.after_layout(root)
     out = []
     _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
@@ -141,7 +139,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
-        m = m @ placed_by_layout(n)
+        m = m @ r.ctx.stages.placed_by_layout(n)
     if layer is not None and layer.render_transform is not None:
         with np.errstate(over="ignore", invalid="ignore"):  # a NaN angle: nothing is drawn
             m = m @ layer.render_transform
