@@ -29,8 +29,8 @@ from xaml3d.xaml.controls_reader import (
 from xaml3d.xaml.inline_text import has_inlines, size_of
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
+from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_text import (
-    _font_style,
     _lines,
     _text_of,
     base_format,

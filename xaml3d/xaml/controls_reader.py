@@ -25,13 +25,13 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml.context import qname
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
+from xaml3d.xaml.visual_style import box_drawing as _box_drawing
+from xaml3d.xaml.visual_style import element_brush as _brush
+from xaml3d.xaml.visual_style import font_family as _family
+from xaml3d.xaml.visual_style import font_style as _font_style
+from xaml3d.xaml.visual_style import foreground_brush as _foreground
+from xaml3d.xaml.visual_style import rgb as _rgb
 from xaml3d.xaml.visual_text import (
-    _box_drawing,
-    _brush,
-    _family,
-    _font_style,
-    _foreground,
-    _rgb,
     _text,
     _text_of,
 )

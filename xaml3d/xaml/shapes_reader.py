@@ -37,7 +37,7 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.geometry_reader import geometry_property
-from xaml3d.xaml.visual_text import _brush
+from xaml3d.xaml.visual_style import element_brush
 
 SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
 BOXED = {"Rectangle", "Ellipse"}  # their geometry is the box arrange gives them
@@ -61,7 +61,7 @@ def shape_pen(r, v) -> tuple[Pen | None, float]:
     StrokeThickness of 0 or NaN (Shape.GetPen, GetStrokeThickness)."""
     if v.p is None:
         return None, 0.0
-    stroke = _brush(r, v, "Stroke")
+    stroke = element_brush(r, v, "Stroke")
     t = abs(v.get("StrokeThickness", V.parse_double, 1.0))
     if stroke is None or not (t > 0) or not math.isfinite(t):
         return None, 0.0
@@ -193,7 +193,7 @@ def shape_drawing(r, v, n, local: str, w: float, h: float) -> GeometryDrawing | 
     if v.p is None:
         return None
     shape = n.state if isinstance(n.state, ShapeLayout) else ShapeLayout(r, v, local)
-    fill = _brush(r, v, "Fill")
+    fill = element_brush(r, v, "Fill")
     pen, t = shape.pen, shape.t
     if local in BOXED:
         # WPF's Rectangle and Ellipse keep their stroke inside the element's box

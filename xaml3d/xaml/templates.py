@@ -73,7 +73,11 @@ from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.text_content import holder_text, property_element
-from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _rgb, warn_uncovered
+from xaml3d.xaml.visual_style import element_brush as _brush
+from xaml3d.xaml.visual_style import font_style as _font_style
+from xaml3d.xaml.visual_style import foreground_brush as _foreground
+from xaml3d.xaml.visual_style import rgb as _rgb
+from xaml3d.xaml.visual_text import warn_uncovered
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
@@ -503,8 +507,6 @@ def _menu(reader, n, el, v, font) -> None:
 def _menu_ink(reader, el):
     """A menu item's Foreground: its own or its Menu's (up to the Menu), else the Menu Style's
     #FF212121, which a Foreground set around the Menu does not override."""
-    from xaml3d.xaml.visual_text import _foreground
-
     node = el
     while node is not None and isinstance(node.tag, str):
         p = reader.r.props(node)
