@@ -31,13 +31,13 @@ from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
 from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_text import (
-    _lines,
-    _text_of,
     base_format,
     trim,
     trimming,
     wraps,
 )
+from xaml3d.xaml.visual_text import text_of as _text_of
+from xaml3d.xaml.visual_text import wrapped_lines as _lines
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
                  "CheckBox", "RadioButton"}  # fmt: skip

@@ -31,10 +31,8 @@ from xaml3d.xaml.visual_style import font_family as _family
 from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_style import foreground_brush as _foreground
 from xaml3d.xaml.visual_style import rgb as _rgb
-from xaml3d.xaml.visual_text import (
-    _text,
-    _text_of,
-)
+from xaml3d.xaml.visual_text import text_drawing as _text
+from xaml3d.xaml.visual_text import text_of as _text_of
 
 AERO2 = {
     "Button": dict(background=_rgb("DDDDDD"), border=_rgb("707070"), padding=(1, 1, 1, 1)),

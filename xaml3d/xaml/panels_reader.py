@@ -462,8 +462,8 @@ class PanelsReader:
             n.h_align = "Right"
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
-        turned = _layout_transform(self.r, v)
-        if _turns(turned):  # laid out in its own space, its box turned (xaml3d.layout)
+        turned = layout_transform_of(self.r, v)
+        if turns(turned):  # laid out in its own space, its box turned (xaml3d.layout)
             (a, b), (c, d) = (tuple(float(x) for x in row) for row in turned[:2, :2])
             n.layout_transform = ((a, b), (c, d))
         size = v.get("FontSize", parse_length, None)
@@ -690,7 +690,7 @@ def _outer(k: L.Node) -> tuple[float, float]:
     return w + ml + mr, h + mt + mb
 
 
-def _layout_transform(r, v: ElementValues):
+def layout_transform_of(r, v: ElementValues):
     """An element's LayoutTransform as a 3x3 column-form matrix (the brushes' 2D Transform
     reader: Rotate, Scale, Skew, Translate, Matrix transforms and groups, a matrix string or a
     resource), or None when it has none (or it is unreadable: reported where it is read)."""
@@ -701,7 +701,7 @@ def _layout_transform(r, v: ElementValues):
     )
 
 
-def _turns(m) -> bool:
+def turns(m) -> bool:
     """Whether a LayoutTransform changes a box's size or shape (not the identity, not a move)."""
     return m is not None and not np.allclose(m[:2, :2], np.eye(2))
 

@@ -192,7 +192,7 @@ def _build_all(reader, items, font) -> list:
 
 def _content(reader, el, font) -> list:
     """The laid-out content of a content control: its elements, else its text as one line."""
-    from xaml3d.xaml.visual_text import _text_of
+    from xaml3d.xaml.visual_text import text_of as _text_of
 
     kids = rich_content(reader, el)
     if kids:

@@ -38,7 +38,7 @@ from xaml3d.xaml.visual_style import (
 # Aero2 (PresentationFramework.Aero2, themes/Aero2.NormalColor.xaml): the resting state.
 
 
-def _text_of(el) -> str:
+def text_of(el) -> str:
     """The text an element shows: its Text or Content, as an attribute or a property element
     (``text_content``), else its content's text; through AccessText for the controls whose
     template recognizes access keys (``_Name`` shows ``Name``)."""
@@ -105,14 +105,14 @@ def trim(
     return line[:lo].rstrip() + ELLIPSIS
 
 
-def _lines(
+def wrapped_lines(
     text: str, font: float, weight: int, italic: bool, width: float, family: str = UI
 ) -> list[str]:
     """``text`` broken into lines no wider than ``width`` at spaces (a word wider than the
     line keeps a line of its own). A line feed (kept by xml:space="preserve") starts a new
     line, as it does in WPF's text formatter."""
     if "\n" in text:
-        return [x for part in text.split("\n") for x in (_lines(part, font, weight, italic,
+        return [x for part in text.split("\n") for x in (wrapped_lines(part, font, weight, italic,
                                                                width, family) or [""])]  # fmt: skip
     if not text or not math.isfinite(width):
         return [text] if text else []
@@ -129,14 +129,14 @@ def _lines(
     return lines
 
 
-def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
+def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
     """The element's text as one TextDrawing per line (a DrawingGroup when it wraps). ``w``:
     the width laid out for it: a TextBlock wraps (TextWrapping) and trims (TextTrimming) its
     lines to it, as WPF formats the text again at the arranged width."""
     block = qname(el.tag)[1] == "TextBlock"
     if block and has_inlines(el):
         return _inline_text(r, el, v, font, x, y, w, align_center)
-    text = _text_of(el)
+    text = text_of(el)
     if not text:
         return None
     weight, italic, family = font_style(el, r)
@@ -147,7 +147,7 @@ def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: boo
                                                                  "Justify")), "Left")  # fmt: skip
     brush = foreground_brush(r, el)
     out = []
-    for i, line in enumerate(_lines(text, font, weight, italic, width, family)):
+    for i, line in enumerate(wrapped_lines(text, font, weight, italic, width, family)):
         line = trim(line, font, weight, italic, w, mode, family)
         if not line:
             continue  # an empty line (between two line feeds) takes its height only

@@ -60,7 +60,7 @@ from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.shapes_reader import SHAPES, shape_drawing
 from xaml3d.xaml.visual_style import box_drawing, element_brush, rgb
 from xaml3d.xaml.visual_text import (
-    _text,
+    text_drawing,
 )
 
 _TEXT_CONTROLS = TEXT_CONTROLS
@@ -229,7 +229,7 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "TextBlock":
         out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
         pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-        t = _text(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
+        t = text_drawing(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
         if t is not None:
             out.append(t)
         return
