@@ -76,7 +76,7 @@ def load(
     outside the scene's folder tree. ``window_size`` lays the root out at that client size
     (width, height) instead of the size its markup gives.
     """
-    ctx = ReadContext(STAGES, allow_outside=allow_outside, limits=limits)
+    ctx = ReadContext(stages=STAGES, allow_outside=allow_outside, limits=limits)
     doc = parse_document(source, text=text, limits=limits)
     ctx.add_document(doc, trusted=True)
     if doc.path is None:
