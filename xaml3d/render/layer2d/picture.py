@@ -9,9 +9,7 @@ element's own coordinates (DIPs; ``scale`` gives image pixels per DIP). The laye
 elements nest: each parent's applies to its child's composed layer. The picture keeps its
 box: what a transform or a shadow moves beyond the viewport's rectangle is cut off.
 
-BlurEffect's Radius and DropShadowEffect's BlurRadius are taken as a Gaussian of standard
-deviation Radius / 3 (WPF's kernel reaches about three deviations); a drop shadow is offset by
-ShadowDepth along Direction (degrees counter-clockwise from +x, y up on screen).
+BlurEffect and DropShadowEffect are applied as the image filters of ``effects``.
 """
 
 from __future__ import annotations
