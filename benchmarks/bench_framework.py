@@ -27,7 +27,7 @@ from pathlib import Path
 
 import xaml3d.framework
 from xaml3d.errors import XamlError
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from floor import read as floor_read  # noqa: E402

@@ -102,7 +102,7 @@ class Counting(frame.Framebuffer):
         made.append(self)
 from xaml3d.render import api, rendering
 rendering.Framebuffer = Counting
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 scene = load(sys.argv[1])
 opts = json.loads(sys.argv[2])
 api.render_arrays(scene, **opts)  # warm: imports, caches

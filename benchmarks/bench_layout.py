@@ -14,8 +14,8 @@ from __future__ import annotations
 import argparse
 import time
 
-from xaml3d.xaml import layout_step
-from xaml3d.xaml.loader import load
+from xaml3d import pipeline
+from xaml3d.pipeline import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
 
@@ -39,8 +39,10 @@ def main() -> None:
     text = markup(args.depth, args.siblings)
     # The scene holds the laid-out boxes, not the layout tree: keep the tree the reader hands
     # to the layout engine, to lay it out once more on its own.
-    engine, trees = layout_step.layout, []
-    layout_step.layout = lambda root, size=None: engine(trees.append((root, size)) or root, size)
+    engine, trees = pipeline.STAGES.layout, []
+    pipeline.STAGES = pipeline.STAGES._replace(
+        layout=lambda root, size=None: engine(trees.append((root, size)) or root, size)
+    )
     t0 = time.perf_counter()
     scene = load(text, text=True)
     t1 = time.perf_counter()

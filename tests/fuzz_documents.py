@@ -441,9 +441,9 @@ def run_document(text: str) -> None:
     from xaml3d.errors import XamlError
     from xaml3d.export import export_bytes
     from xaml3d.findings import scene_findings
+    from xaml3d.pipeline import load
     from xaml3d.render.frames import frame_count
     from xaml3d.render.window import compose_window
-    from xaml3d.xaml.loader import load
 
     try:
         scene = load(text.encode("utf-8"), text=True)

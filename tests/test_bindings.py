@@ -378,7 +378,7 @@ def test_an_object_without_a_key_in_scope_is_copied_as_the_property_element():
 
 
 def test_through_the_reader_a_missing_source_key_is_one_res001_at_its_attribute():
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     text = f"""<Grid {NS}>
   <TextBlock Text="{{Binding Source={{StaticResource nope}}}}" />
@@ -465,7 +465,7 @@ def test_an_element_form_visual_binding_becomes_the_attribute_the_reader_follows
 
 
 def test_diagnostics_after_a_replaced_property_element_keep_their_positions():
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     text = f"""<StackPanel {NS}>
   <Slider x:Name="s" Value="2"/>

@@ -12,8 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from xaml3d.pipeline import load
 from xaml3d.render.window import compose_window
-from xaml3d.xaml.loader import load
 
 LAYOUT = Path(__file__).resolve().parent / "reference" / "layout"
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from xaml3d.pipeline import load
 from xaml3d.scene.drawing import DrawingBrush
 from xaml3d.scene.types import (
     DiffuseMaterial,
@@ -13,7 +14,6 @@ from xaml3d.scene.types import (
     SolidColorBrush,
     SpecularMaterial,
 )
-from xaml3d.xaml.loader import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -363,8 +363,8 @@ def test_diagnostics_sorted_by_file_and_line():
 
 
 def test_indefinite_article_before_type_names():
+    from xaml3d.pipeline import load
     from xaml3d.xaml.context import a_an
-    from xaml3d.xaml.loader import load
 
     words = ["Application", "UserControl", "UniformGrid", "Int32", "Double", "object"]
     assert [a_an(w) for w in words] == [
@@ -383,9 +383,9 @@ def test_indefinite_article_before_type_names():
 def test_shared_resources_are_built_once_however_many_models_use_them(monkeypatch):
     # N models sharing a mesh and a material resource: the mesh and the material are built
     # once (the work per model stays constant: loading is linear in the number of models)
+    from xaml3d.pipeline import load
     from xaml3d.xaml import brushes_reader
     from xaml3d.xaml import models_reader as mesh_module  # where the reader calls build_mesh
-    from xaml3d.xaml.loader import load
 
     calls = {"mesh": 0, "material": 0}
     build_mesh, material = mesh_module.build_mesh, brushes_reader._material

@@ -301,7 +301,7 @@ def test_varying_brush_without_texture_coordinates_is_chk008(tmp_path):
 
 
 def test_chk008_only_where_the_brush_is_sampled_at_one_point():
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     def chk008(brush, texcoords=""):
         s = load(_mesh_with_brush(brush, texcoords), text=True)
@@ -368,7 +368,7 @@ def test_camera_inside_check_with_models_equal_in_value():
     # two models sharing one mesh and one material (equal dataclasses holding arrays): the
     # check finds the model by position, never by comparing models (found by fuzzing)
     from xaml3d.findings import scene_findings
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     ns = (
         'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

@@ -94,7 +94,7 @@ def test_size_limit_names_the_options_that_lower_it(tmp_path):
 
 
 def test_res006_says_where_app_xaml_was_found(tmp_path):
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     (tmp_path / "App.xaml").write_text(
         f'<Application {NS} {NSX}><Application.Resources><SolidColorBrush x:Key="Paint" '

@@ -8,7 +8,7 @@ import pytest
 from conftest import CORPUS
 
 from xaml3d.corpus import companions_for, is_window_root, window_check
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 FILES = sorted(CORPUS.glob("*.xaml")) if CORPUS.is_dir() else []
 WINDOW_ROOTS = ("Window", "Page", "UserControl")

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from conftest import CORPUS, needs_corpus
 
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 from xaml3d.xaml.vocabulary import READER_CODES
 
 # companion App.xaml-style resource files (corpus README)

@@ -17,7 +17,7 @@ from xaml3d.api import render_arrays
 from xaml3d.errors import XamlError
 from xaml3d.export import export_bytes
 from xaml3d.findings import scene_findings
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
 BASE = dict(POS="-1,-1,0 1,-1,0 0,1,0", TC="0,0 1,0 0,1", NRM="0,0,1 0,0,1 0,0,1", LP="0,0,3",

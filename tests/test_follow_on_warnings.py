@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from test_cli_subprocess import xaml3d
 
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

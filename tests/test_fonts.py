@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from xaml3d import fonts
-from xaml3d.layout.text import baseline, line_height, text_width, uncovered
+from xaml3d.text_metrics import baseline, line_height, text_width, uncovered
 
 HERE = Path(__file__).resolve().parent
 CJK_CASE = HERE / "fonts" / "cjk-line.xaml"

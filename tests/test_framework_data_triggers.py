@@ -10,7 +10,7 @@ from test_framework_templates import _line, _same, _window_pixels, window
 
 from xaml3d.framework.binding_values import Value
 from xaml3d.framework.data_triggers import matches
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 RED = (255, 0, 0)
 

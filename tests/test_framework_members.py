@@ -8,8 +8,8 @@ import pytest
 from conftest import CORPUS, needs_corpus
 from test_cli_subprocess import xaml3d
 
+from xaml3d.pipeline import load
 from xaml3d.xaml import framework_members as fm
-from xaml3d.xaml.loader import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from test_framework_templates import _line, _same, window
 
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns:sys="clr-namespace:System;assembly=mscorlib" '

@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import xaml3d
+from xaml3d.pipeline import load
 from xaml3d.render.window import compose_window
-from xaml3d.xaml.loader import load
 
 HEAD = (
     '<Window xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

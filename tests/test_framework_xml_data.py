@@ -10,7 +10,7 @@ from lxml import etree
 from test_framework_templates import _line, _same, window
 
 from xaml3d.framework import xml_data as X
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 DATA = """<XmlDataProvider xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
     xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml" x:Key="books">

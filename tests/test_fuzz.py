@@ -66,7 +66,7 @@ def mutate(text: str, data) -> str:
 
 
 def _load(text: str):
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     return load(text.encode("utf-8"), text=True)
 

@@ -46,7 +46,7 @@ def test_generated_documents_run_cleanly(data):
 def test_the_generator_writes_what_the_reader_knows():
     # the documents are mostly readable: the fuzzing reaches the stages after the reader
     from xaml3d.errors import XamlError
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     loaded = 0
     for seed in range(30):

@@ -18,8 +18,8 @@ from xaml3d.animation.easing import ease_in
 from xaml3d.api import render_arrays
 from xaml3d.export import export_bytes
 from xaml3d.findings import scene_findings
+from xaml3d.pipeline import load
 from xaml3d.render.window import compose_window
-from xaml3d.xaml.loader import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

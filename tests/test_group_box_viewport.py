@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
 LINE = 2724 / 2048 * 12  # one line of text at 12 px: Segoe UI's LineSpacing x FontSize

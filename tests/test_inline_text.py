@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import pytest
 
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.pipeline import load
 from xaml3d.scene.drawing import DrawingGroup, GeometryDrawing, TextDrawing
-from xaml3d.xaml.loader import load
+from xaml3d.text_metrics import baseline, line_height, text_width
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
 LINE = line_height(12.0)

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from xaml3d.api import render_arrays
+from xaml3d.pipeline import load
 from xaml3d.render import accel
-from xaml3d.xaml.loader import load
 
 REFERENCE = Path(__file__).resolve().parent / "reference"
 CASES = sorted(p for p in REFERENCE.glob("*/*.xaml") if not p.parent.name.startswith(("_", ".")))

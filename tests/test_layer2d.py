@@ -61,10 +61,11 @@ def test_path_data_commas_as_in_real_files():
 
 
 def _tile(brush, size=(8, 8)):
+    from xaml3d.render.layer2d.paint import PLAYER
     from xaml3d.render.layer2d.shaders import content_bounds, tile_layout
     from xaml3d.render.layer2d.surface import rasterize_tile
 
-    viewport, m = tile_layout(brush, (np.zeros(2), np.ones(2)), content_bounds(brush))
+    viewport, m = tile_layout(brush, (np.zeros(2), np.ones(2)), content_bounds(brush, PLAYER))
     return rasterize_tile(brush, viewport, m, size)
 
 
@@ -129,7 +130,7 @@ def test_corpus_014_shows_its_drawing_pattern():
 
 
 def test_text_is_measured_with_the_package_font_and_segoe_line_metrics():
-    from xaml3d.layout.text import baseline, line_height, text_width
+    from xaml3d.text_metrics import baseline, line_height, text_width
 
     assert text_width("Hello World", 12.0) == pytest.approx(65.666, abs=0.01)  # Segoe UI: 63.8
     assert line_height(12.0) == pytest.approx(12 * 2724 / 2048)  # WPF: 15.96 px per line
@@ -173,7 +174,7 @@ def test_textblock_in_a_visual_brush_sits_where_wpf_lays_it_out(tmp_path):
     scene = xaml3d.load(path)
     group = scene.viewports[0].models[0].material[0].brush.drawing.children[0]
     background, text = group.children
-    from xaml3d.layout.text import text_width
+    from xaml3d.text_metrics import text_width
 
     w = text_width("x", 24.0) + 4
     assert background.geometry.rect == pytest.approx((0.0, 0.0, w, 2 + 24 * 2724 / 2048))
@@ -284,7 +285,7 @@ def test_outer_glow_is_an_unmoved_shadow_and_bitmap_scaling_mode_is_said(tmp_pat
 
 
 def test_textblock_wraps_to_its_width(tmp_path):
-    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.text_metrics import line_height, text_width
 
     tb = '<TextBlock Width="60" TextWrapping="Wrap" Text="one two three four" Background="Blue"/>'
     path = tmp_path / "s.xaml"
@@ -302,7 +303,7 @@ def test_textblock_wraps_to_its_width(tmp_path):
 
 
 def test_closed_combo_box_shows_its_selected_item(tmp_path):
-    from xaml3d.layout.text import line_height
+    from xaml3d.text_metrics import line_height
 
     combo = ('<ComboBox SelectedIndex="1"><ComboBoxItem>Alpha</ComboBoxItem>'
              "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>")  # fmt: skip
@@ -392,7 +393,7 @@ def test_a_buttons_element_content_is_laid_out_inside_its_chrome(tmp_path):
                                   "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
     scene = xaml3d.load(path)
     assert not [d for d in scene.diagnostics if d.code == "DRW002"]
-    from xaml3d.layout.text import baseline, line_height, text_width
+    from xaml3d.text_metrics import baseline, line_height, text_width
 
     drawing = scene.viewports[0].models[0].material[0].brush.drawing
     [(text, x, y)] = _texts(drawing)
@@ -421,7 +422,7 @@ def _fills(drawing) -> list:
 
 
 def test_list_box_items_and_the_selected_items_highlight(tmp_path):
-    from xaml3d.layout.text import baseline, line_height
+    from xaml3d.text_metrics import baseline, line_height
 
     scene, drawing = _control_drawing(
         tmp_path,
@@ -450,7 +451,7 @@ def test_tab_control_shows_the_selected_tabs_content_only(tmp_path):
     assert not [d for d in scene.diagnostics if d.code == "DRW002"]
     texts = {t: (x, y) for t, x, y in _texts(drawing)}
     assert set(texts) == {"One", "Two", "second"}
-    from xaml3d.layout.text import baseline, line_height, text_width
+    from xaml3d.text_metrics import baseline, line_height, text_width
 
     # the headers from 2 px in, each its text plus Padding 6,2,6,2 and a 1 px border each
     # side; the selected one (Two) drawn last, its text 1 px up with its larger box
@@ -464,7 +465,7 @@ def test_tab_control_shows_the_selected_tabs_content_only(tmp_path):
 
 
 def test_group_box_and_expander(tmp_path):
-    from xaml3d.layout.text import baseline, line_height
+    from xaml3d.text_metrics import baseline, line_height
 
     scene, drawing = _control_drawing(
         tmp_path,
@@ -755,7 +756,7 @@ def test_a_layer_inside_a_viewbox_is_in_the_elements_own_units(tmp_path):
 
 
 def test_textblock_wraps_to_the_width_its_parent_gives(tmp_path):
-    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.text_metrics import line_height, text_width
 
     tb = '<TextBlock TextWrapping="Wrap" Text="one two three four" Background="Blue"/>'
     scene, drawing = _control_drawing(tmp_path, f'<StackPanel Width="60">{tb}</StackPanel>')
@@ -768,7 +769,7 @@ def test_textblock_wraps_to_the_width_its_parent_gives(tmp_path):
 
 
 def test_window_text_wraps_to_its_column_and_moves_the_viewport(tmp_path):
-    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.text_metrics import line_height, text_width
 
     path = tmp_path / "w.xaml"
     text = "one two three four five six"
@@ -799,7 +800,7 @@ def test_window_text_wraps_to_its_column_and_moves_the_viewport(tmp_path):
      ("None", "Hello World", "Hello World")],
 )  # fmt: skip
 def test_text_trimming_cuts_the_line_to_the_laid_out_width(tmp_path, mode, text, expected):
-    from xaml3d.layout.text import text_width
+    from xaml3d.text_metrics import text_width
 
     tb = f'<TextBlock TextTrimming="{mode}" Text="{text}"/>'
     scene, drawing = _control_drawing(tmp_path, f'<StackPanel Width="60">{tb}</StackPanel>')
@@ -846,7 +847,7 @@ def test_scroll_bar_thumb_placed_as_wpfs_track(tmp_path):
 
 
 def test_a_check_boxs_element_content_sits_beside_its_mark(tmp_path):
-    from xaml3d.layout.text import baseline, line_height
+    from xaml3d.text_metrics import baseline, line_height
 
     scene, drawing = _control_drawing(
         tmp_path,
@@ -959,7 +960,7 @@ def test_render_under_a_layout_transform_turns_the_buffers_with_the_picture():
 
 
 def test_menu_items_side_by_side_on_aero2s_bar(tmp_path):
-    from xaml3d.layout.text import baseline, line_height, text_width
+    from xaml3d.text_metrics import baseline, line_height, text_width
 
     scene, drawing = _control_drawing(
         tmp_path,
@@ -986,7 +987,7 @@ def test_menu_items_side_by_side_on_aero2s_bar(tmp_path):
 
 
 def test_tool_bar_items_grip_and_overflow_as_aero2s(tmp_path):
-    from xaml3d.layout.text import baseline, line_height, text_width
+    from xaml3d.text_metrics import baseline, line_height, text_width
 
     scene, drawing = _control_drawing(
         tmp_path,
@@ -1035,7 +1036,7 @@ def _rgb(hex6: str) -> tuple:
 
 
 def test_date_picker_shows_the_watermark_or_the_date(tmp_path):
-    from xaml3d.layout.text import baseline, text_width
+    from xaml3d.text_metrics import baseline, text_width
 
     scene, drawing = _control_drawing(
         tmp_path,
@@ -1069,7 +1070,7 @@ def _text_drawings(drawing) -> list:
 
 
 def test_calendar_month_view_texts_and_marks(tmp_path):
-    from xaml3d.layout.text import baseline, line_height
+    from xaml3d.text_metrics import baseline, line_height
 
     scene, drawing = _control_drawing(
         tmp_path, "<Calendar DisplayDate='2024-01-05' SelectedDate='2024-01-17'/>"

@@ -8,12 +8,13 @@ import math
 import pytest
 
 import xaml3d
-from xaml3d.layout import Definition, Node, layout
-from xaml3d.layout import tree as L
+from xaml3d.layout import layout
 from xaml3d.layout.engine import scale_factor
 from xaml3d.layout.gotchas import viewport_notes
 from xaml3d.layout.grid import distribute, round_sizes
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
+from xaml3d.scene import element_tree as L
+from xaml3d.scene.element_tree import Definition, Node
 
 NS = 'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"'
 LINE = 2724 / 2048 * 12  # one line of text at 12 px: Segoe UI's LineSpacing x FontSize
@@ -399,7 +400,7 @@ def test_markup_control_measured_and_estimate_is_info():
 
 
 def test_a_date_picker_beside_the_viewport_is_measured_as_aero2s():
-    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.text_metrics import line_height, text_width
 
     # its 1 px border and Padding 2, the watermark "Select a date" in a 1 px border at Padding
     # 2 (always measured), the 20 px calendar button at Margin 3,0,3,0: 27.96 px tall
@@ -416,7 +417,7 @@ def test_a_date_picker_beside_the_viewport_is_measured_as_aero2s():
 
 
 def test_a_menu_above_the_viewport_is_measured_as_aero2s():
-    from xaml3d.layout.text import line_height
+    from xaml3d.text_metrics import line_height
 
     # the bar is one line of menu text in the items' 1 px borders: 17.96 px, as WPF's
     s = load(f"<DockPanel {NS} Width='300' Height='200'><Menu DockPanel.Dock='Top'>"
@@ -434,7 +435,7 @@ def test_a_menu_above_the_viewport_is_measured_as_aero2s():
 
 
 def test_a_calendar_beside_the_viewport_is_measured_as_aero2s_month_view():
-    from xaml3d.layout.text import line_height, text_width
+    from xaml3d.text_metrics import line_height, text_width
     from xaml3d.xaml.date_templates import month_days
 
     s = load(f"<DockPanel {NS} Width='400' Height='300'><Calendar DockPanel.Dock='Left' "

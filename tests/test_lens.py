@@ -23,6 +23,7 @@ from test_reference import compare_images, regenerate_requested
 from xaml3d.api import render_arrays
 from xaml3d.errors import RenderError
 from xaml3d.output.buffers import DEPTH_EMPTY, DEPTH_MAX, depth_png, ids_png
+from xaml3d.pipeline import load
 from xaml3d.render.ids import model_ids
 from xaml3d.render.lens import (
     anaglyph,
@@ -42,7 +43,6 @@ from xaml3d.scene.lens import (
     lens_pattern,
 )
 from xaml3d.scene.types import OrthographicCamera, PerspectiveCamera
-from xaml3d.xaml.loader import load
 
 LENS = Path(__file__).resolve().parent / "lens"
 ROW = LENS / "row.xaml"
@@ -606,16 +606,16 @@ def test_lens_on_a_camera_that_cannot_draw_reports_like_the_pinhole(camera, code
 
 
 def test_lens_samples_reuse_the_loaded_scene(monkeypatch):
-    import xaml3d.xaml.loader as loader
+    import xaml3d.pipeline as pipeline
 
     calls = []
-    real = loader.load
+    real = pipeline.load
 
     def counting(*args, **kwargs):
         calls.append(args[0])
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(loader, "load", counting)
+    monkeypatch.setattr(pipeline, "load", counting)
     render_arrays(str(ROW), 80, 30, aperture=0.1, lens_samples=6, stereo="anaglyph", ids=True)
     assert calls == [str(ROW)]  # read once; 12 samples, the pinhole and the ids reuse it
 

@@ -209,7 +209,7 @@ def test_auto_loads_only_for_much_text(monkeypatch):
 
 def test_small_scenes_do_not_import_numba():
     code = (
-        "import sys; from xaml3d.xaml.loader import load; from xaml3d.xaml import values; "
+        "import sys; from xaml3d.pipeline import load; from xaml3d.xaml import values; "
         "load('samples/cube.xaml'); values.number_array(' '.join(['1.5'] * 200_000), 'X'); "
         "print('numba' in sys.modules)"
     )

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from xaml3d.api import render_arrays
+from xaml3d.pipeline import load
 from xaml3d.render import accel, draw
-from xaml3d.xaml.loader import load
 
 REFERENCE = Path(__file__).resolve().parent / "reference"
 OPTIONS = [{}, {"ssaa": 1}, {"ssaa": 2}, {"msaa": 3}, {"mode": "flat"}, {"mode": "flat", "ssaa": 1}]

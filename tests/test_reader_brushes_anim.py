@@ -5,13 +5,13 @@ from __future__ import annotations
 import numpy as np
 from PIL import Image
 
+from xaml3d.pipeline import load
 from xaml3d.scene.drawing import DrawingBrush, GeometryDrawing
 from xaml3d.scene.types import (
     ImageBrush,
     LinearGradientBrush,
     placeholder_image,
 )
-from xaml3d.xaml.loader import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

@@ -196,8 +196,8 @@ def _picture(path: Path, t: float) -> Image.Image:
     import xaml3d
 
     if path.parent.name == "layout" and path.stem.startswith("window-"):
+        from xaml3d.pipeline import load
         from xaml3d.render.window import compose_window
-        from xaml3d.xaml.loader import load
 
         rgba, _ = compose_window(load(path), time=t)
         return Image.fromarray(rgba, mode="RGBA")

@@ -8,7 +8,7 @@ import pytest
 
 from xaml3d.api import render_arrays
 from xaml3d.errors import RenderError
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 TEXTURED = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
   Width="64" Height="48">

@@ -289,7 +289,7 @@ def test_viewport_bounds_are_measured_once_and_shared_read_only():
 
     import pytest
 
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     vp = load(Path(__file__).resolve().parent.parent / "samples" / "cube.xaml").viewports[0]
     lo, hi = vp.bounds()

@@ -7,7 +7,7 @@ from conftest import CORPUS, needs_corpus
 from test_cli_subprocess import xaml3d as run_xaml3d
 
 from xaml3d.errors import ResourceError
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -207,7 +207,7 @@ def test_missing_static_resource_suggests_the_closest_key_in_scope(tmp_path):
 def test_missing_key_hint_names_the_sibling_dictionary_that_defines_it(tmp_path, monkeypatch):
     # RES001: a resource dictionary beside the scene defines the key -> "give it with -r ..."
     # (the path as typed from the current directory: here the scene's folder)
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     monkeypatch.chdir(tmp_path)
 

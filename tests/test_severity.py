@@ -15,7 +15,7 @@ from conftest import CORPUS, ROOT
 from xaml3d.api import render_arrays
 from xaml3d.codes import all_codes
 from xaml3d.findings import scene_findings
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 FILES = sorted(
     [

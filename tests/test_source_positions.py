@@ -11,8 +11,8 @@ import time
 import pytest
 
 from xaml3d.errors import XamlSyntaxError
+from xaml3d.pipeline import load
 from xaml3d.scene.camera_check import check_camera
-from xaml3d.xaml.loader import load
 from xaml3d.xaml.parser import Limits, parse_bytes, parse_document
 from xaml3d.xaml.source_map import SourceMap
 

@@ -48,7 +48,7 @@ READING = NEVER | {
 SMALL = {"numba", "xaml3d.render.kernels"}
 # a scene of viewports (and panels) without controls: nothing is measured or templated
 NO_CONTROLS = {
-    "xaml3d.layout.advances",
+    "xaml3d.text_advances",
     "ttf_opensans",
     "PIL.ImageFont",
     "xaml3d.xaml.control_content",
@@ -118,4 +118,4 @@ def test_commands_of_the_sample_import_only_their_path(args, forbidden, tmp_path
 def test_commands_of_a_window_with_text_import_only_their_path(args, forbidden, tmp_path):
     found = imported(args, tmp_path)
     assert offending(found, forbidden) == []
-    assert "xaml3d.layout.advances" in found  # the Button's text was measured, without skia
+    assert "xaml3d.text_advances" in found  # the Button's text was measured, without skia

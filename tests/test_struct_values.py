@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

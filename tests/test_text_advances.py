@@ -1,4 +1,4 @@
-"""Layout's text widths from the font's tables (xaml3d.layout.advances) are skia's, to the bit."""
+"""Layout's text widths from the font's tables (xaml3d.text_advances) are skia's, to the bit."""
 
 from __future__ import annotations
 
@@ -7,9 +7,9 @@ import random
 import pytest
 import skia
 
+from xaml3d import text_advances as advances
 from xaml3d.fonts import font_file, typeface
-from xaml3d.layout import advances
-from xaml3d.layout.text import text_width
+from xaml3d.text_metrics import text_width
 
 CHARS = [chr(c) for c in range(32, 127)] + list("éàüßñ€–—…“”\t\u00a0\u4e2d\U0001f600\ufffd")
 SIZES = [0.05, 0.5, 0.685, 1.0, 6.0, 9.0, 11.0, 12.0, 12.5, 13.333, 13.7, 14.6667, 24.66, 96.0,

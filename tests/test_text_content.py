@@ -17,10 +17,10 @@ import pytest
 from conftest import ROOT
 from PIL import Image
 
-from xaml3d.framework.access_text import access_text
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.access_text import access_text
+from xaml3d.pipeline import load
 from xaml3d.scene.drawing import DrawingGroup, TextDrawing
-from xaml3d.xaml.loader import load
+from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml.text_content import xaml_text
 
 NS = ('xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

@@ -95,7 +95,7 @@ def test_the_theme_keeps_its_brushes_by_aero2s_keys():
 
 READ_ONCE = """
 import sys
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 from xaml3d.xaml.theme import theme_entries
 load(sys.argv[1] + "/plain.xaml")
 print(theme_entries.cache_info().currsize)

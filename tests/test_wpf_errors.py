@@ -122,7 +122,7 @@ def test_validate_and_render_print_the_same_findings(tmp_path):
 
 
 def test_names_in_styles_templates_and_resources_are_scopes_of_their_own():
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     x = (
         '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -139,7 +139,7 @@ def test_system_resource_keys_are_not_load_errors():
     # {StaticResource {x:Static SystemColors.ControlBrushKey}} is found by WPF in the system
     # resources: no RES001, an info that the property keeps its default; a {x:Type} key finds
     # the implicit Style of that type
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     x = (
         '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -154,7 +154,7 @@ def test_system_resource_keys_are_not_load_errors():
 
 
 def _name_codes(body: str, extra_ns: str = "") -> list[str]:
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     x = (
         '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -215,7 +215,7 @@ def test_a_document_without_namespace_gets_one_error_in_a_real_process():
 
 
 def _style_codes(resources: str, viewport: str = "<Viewport3D/>") -> list[tuple[str, str]]:
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     x = (
         '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -285,7 +285,7 @@ def test_setter_naming_no_property_of_a_known_target_type():
 
 
 def test_name_and_x_name_on_one_wpf_element_is_set_twice():
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     x = (
         '<Grid xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -299,7 +299,7 @@ def test_name_and_x_name_on_one_wpf_element_is_set_twice():
 
 
 def test_a_style_targeting_another_type_is_refused_where_certain():
-    from xaml3d.xaml.loader import load
+    from xaml3d.pipeline import load
 
     def codes(style_target: str, element: str) -> list[str]:
         x = (

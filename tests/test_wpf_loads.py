@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from xaml3d.findings import scene_findings
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
@@ -298,8 +298,8 @@ def test_a_styles_font_weight_and_style_are_measured_and_drawn(tmp_path):
     # inside inherits): WPF measures and draws the text bold and italic; xaml3d used only local
     # values, so the text was drawn regular in a box measured for regular
     import xaml3d
-    from xaml3d.layout.text import text_width
     from xaml3d.scene.drawing import DrawingGroup, TextDrawing
+    from xaml3d.text_metrics import text_width
 
     path = tmp_path / "fonts.xaml"
     path.write_text(

@@ -3,7 +3,7 @@ error, what its loader refuses is (the CLI side is tests/test_wpf_errors.py)."""
 
 from __future__ import annotations
 
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '

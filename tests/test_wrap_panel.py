@@ -6,8 +6,9 @@ from __future__ import annotations
 import math
 
 import xaml3d
-from xaml3d.layout import Node, layout
-from xaml3d.layout import tree as L
+from xaml3d.layout import layout
+from xaml3d.scene import element_tree as L
+from xaml3d.scene.element_tree import Node
 
 
 def box(w: float, h: float, **kw) -> Node:

@@ -20,9 +20,9 @@ from PIL import Image, ImageDraw
 
 from xaml3d.api import render_arrays
 from xaml3d.output.buffers import depth_png
+from xaml3d.pipeline import load
 from xaml3d.scene.lens import lens_frame, lens_pattern
 from xaml3d.scene.types import PerspectiveCamera
-from xaml3d.xaml.loader import load
 
 NS = "http://schemas.microsoft.com/winfx/2006/xaml/presentation"
 WHITE = (1.0, 1.0, 1.0, 1.0)

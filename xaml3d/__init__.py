@@ -50,7 +50,7 @@ _PUBLIC = {
     "save_animation": "xaml3d.output.animation",
     "frame_times": "xaml3d.render.frames",
     "render_frames": "xaml3d.render.frames",
-    "load": "xaml3d.xaml.loader",
+    "load": "xaml3d.pipeline",
     "show": "xaml3d.notebook",
 }
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from xaml3d import pipeline
 from xaml3d.animation.moment import scene_at
 from xaml3d.errors import RenderError, XamlError
 from xaml3d.output import guard, images
@@ -30,7 +31,6 @@ from xaml3d.render.rendering import Rendering
 from xaml3d.render.settings import MODES, RenderSettings, settings_of
 from xaml3d.render.workers import ordered, worker_pool
 from xaml3d.scene.types import Scene
-from xaml3d.xaml import loader
 
 __all__ = [
     "MODES",
@@ -81,8 +81,8 @@ def render_arrays(
     SceneError."""
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
-    else:  # looked up at call time: the loader may be wrapped (a cache, a test's counter)
-        scene = loader.load(scene_or_path, resources=resources)
+    else:  # looked up at call time: the load may be wrapped (a cache, a test's counter)
+        scene = pipeline.load(scene_or_path, resources=resources)
     try:
         chosen = settings_of(settings, width=width, height=height, **options)
     except XamlError as exc:  # an argument refused for this scene: name its file

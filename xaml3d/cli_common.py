@@ -32,9 +32,9 @@ from xaml3d.errors import (
     XamlError,
 )
 from xaml3d.findings import with_file  # noqa: F401 (part of this module's interface)
+from xaml3d.pipeline import load
 from xaml3d.render.settings import FrameSize, RenderSettings, frame_size
 from xaml3d.scene.types import Scene, Viewport
-from xaml3d.xaml.loader import load
 from xaml3d.xaml.values import parse_color, parse_double, parse_timespan
 
 STDIN_NAME = "<stdin>"

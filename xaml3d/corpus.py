@@ -21,8 +21,8 @@ import numpy as np
 from xaml3d.api import render_arrays, scene_at
 from xaml3d.errors import ERROR, WARNING, Diagnostic, XamlError
 from xaml3d.findings import has_errors, scene_findings
+from xaml3d.pipeline import load
 from xaml3d.render.window import compose_window
-from xaml3d.xaml.loader import load
 
 MODES = ("shaded", "flat", "wireframe")
 

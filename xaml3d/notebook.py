@@ -93,7 +93,7 @@ def show(
     if isinstance(scene_or_path, Scene):
         scene = scene_or_path
     else:
-        from xaml3d.xaml.loader import load
+        from xaml3d.pipeline import load
 
         scene = load(scene_or_path)
     files, notes = export_bytes(scene, "html", viewport=viewport, storyboard=storyboard)

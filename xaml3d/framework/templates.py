@@ -33,8 +33,8 @@ user template are left to the reader's theme drawing.
 
 from __future__ import annotations
 
+from xaml3d.access_text import access_text
 from xaml3d.framework import data_triggers, items, markup, string_formats
-from xaml3d.framework.access_text import access_text
 from xaml3d.framework.styles import (
     X_NS,
     Control,

@@ -36,7 +36,8 @@ from dataclasses import dataclass, field
 
 from xaml3d.layout.grid import GridLayout
 from xaml3d.layout.transform import bounds, maximal_local_size
-from xaml3d.layout.tree import (
+from xaml3d.layout.wrap import wrap_arrange, wrap_measure
+from xaml3d.scene.element_tree import (
     BORDER,
     CANVAS,
     CONTAINER,
@@ -57,7 +58,6 @@ from xaml3d.layout.tree import (
     WRAP,
     Node,
 )
-from xaml3d.layout.wrap import wrap_arrange, wrap_measure
 
 
 def _is_set(v: float) -> bool:

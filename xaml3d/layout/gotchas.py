@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from xaml3d.codes.layout import LAYOUT_CODES  # noqa: F401 (the stage's table)
-from xaml3d.layout.tree import CANVAS, DOCK, GRID, STACK, VIEWBOX, Node
+from xaml3d.scene.element_tree import CANVAS, DOCK, GRID, STACK, VIEWBOX, Node
 
 
 @dataclass(frozen=True)

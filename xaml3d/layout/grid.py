@@ -21,7 +21,7 @@ definitions that lost the most, so the rounded sizes add up to the rounded total
 
 from __future__ import annotations
 
-from xaml3d.layout.tree import INF, Definition, Node
+from xaml3d.scene.element_tree import INF, Definition, Node
 
 _LOOP_MAX = 5  # WPF's c_layoutLoopMaxCount: rounds of the group 2 / group 3 cycle
 

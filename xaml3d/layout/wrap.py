@@ -11,7 +11,7 @@ panel's desired size is its longest line by the sum of the lines' thickness.
 
 from __future__ import annotations
 
-from xaml3d.layout.tree import Node
+from xaml3d.scene.element_tree import Node
 
 _EPS = 1.5e-8  # WPF's DoubleUtil.GreaterThan: a child fitting but for rounding stays on the line
 

@@ -182,9 +182,7 @@ def _brush(r, el, nodes: list):
     if t == "ImageBrush":
         return _image_brush(r, p, nodes)
     if t in ("DrawingBrush", "VisualBrush"):
-        from xaml3d.xaml.drawings_reader import drawing_brush
-
-        return drawing_brush(r, p, _common(r, p, nodes))
+        return r.drawing_brush(p, _common(r, p, nodes))  # a brush holding a drawing
     if t == "BitmapCacheBrush":
         r.ctx.diag("BRU001", f"{t} content cannot be drawn: a neutral placeholder is used", el)
         return PlaceholderBrush(
@@ -243,9 +241,7 @@ def _entry(r, at, key: str):
 
 def drawing_image(r, el):
     """The Drawing of a DrawingImage element (None: nothing drawn)."""
-    from xaml3d.xaml.drawings_reader import drawing
-
-    return r.build_node(el, lambda e: drawing(r, e), None)
+    return r.build_node(el, r.drawing, None)
 
 
 def _bitmap_uri(r, el) -> tuple[str | None, object, str | None]:

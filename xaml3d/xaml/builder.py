@@ -20,7 +20,6 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.framework import expand
 from xaml3d.scene import transforms as T
 from xaml3d.scene.tracks import WorldChain, slots_in
 from xaml3d.scene.types import (
@@ -47,7 +46,6 @@ from xaml3d.xaml.context import (
 )
 from xaml3d.xaml.directives import check_directives
 from xaml3d.xaml.framework_check import check_framework
-from xaml3d.xaml.framework_services import ReaderServices
 from xaml3d.xaml.layout_step import lay_out, unreached
 from xaml3d.xaml.models_reader import LIGHT_TYPES, camera, light, mesh, world_of
 from xaml3d.xaml.names import check_names
@@ -109,6 +107,30 @@ class Reader:
             slots = frozenset().union(*(slots_in(f) for f in factors))
             self.slots.world(obj, field, WorldChain(None, prefix, factors, slots))
         return obj
+
+    # The 2D readers recurse through each other (a brush holds a drawing, a drawing a visual,
+    # a visual's Background a brush): they reach the reader of a nested element through these
+    # methods, so that no reader module imports one above it. The 2D readers are imported
+    # when a document first has 2D content: a 3D scene does not load them.
+
+    def drawing(self, el):
+        """The scene Drawing of a Drawing element (``drawings_reader.drawing``)."""
+        from xaml3d.xaml.drawings_reader import drawing
+
+        return drawing(self, el)
+
+    def drawing_brush(self, p: Props, common: dict):
+        """A DrawingBrush or VisualBrush (``drawings_reader.drawing_brush``)."""
+        from xaml3d.xaml.drawings_reader import drawing_brush
+
+        return drawing_brush(self, p, common)
+
+    def visual_drawing(self, el):
+        """(Drawing, bounds) of a visual laid out at its desired size
+        (``visuals_reader.visual_drawing``)."""
+        from xaml3d.xaml.visuals_reader import visual_drawing
+
+        return visual_drawing(self, el)
 
     def props(self, el) -> Props:
         """The element's properties (read once: diagnostics are not repeated on reuse)."""
@@ -503,19 +525,23 @@ def _foreign_viewport(root) -> str | None:
     return None
 
 
-def build_scene(
-    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
-) -> Scene:
-    """The Scene, laid out at ``window_size`` (the root's client size) or the markup's size,
-    with its storyboards and their tracks (animation_tracks.py)."""
-    r = Reader(ctx, resources)
+def check_document(ctx: ReadContext, resources: Resources, doc: ParsedDocument) -> None:
+    """What WPF's loader refuses or warns of in the document as written (names, directives,
+    styles, content, the 2D framework types' members), before the framework step changes it."""
     check_names(ctx, doc.root)
     check_directives(ctx, doc.root)
     check_styles(ctx, resources, doc.root)
     check_content(ctx, doc.root)
     check_framework(ctx, doc.root)
-    # WPF's framework step (styles, templates, triggers, items, bindings), on the checked tree
-    expand(doc.root, ReaderServices(ctx, resources))
+
+
+def build_scene(
+    ctx: ReadContext, resources: Resources, doc: ParsedDocument, window_size=None
+) -> Scene:
+    """The Scene of the checked tree the framework step has instantiated (``xaml3d.pipeline``
+    runs them in that order), laid out at ``window_size`` (the root's client size) or the
+    markup's size, with its storyboards and their tracks (animation_tracks.py)."""
+    r = Reader(ctx, resources)
     walk = _Walk(r)
     walk.visit(doc.root)
     # the storyboards first: the viewports' build notes where what they animate lands

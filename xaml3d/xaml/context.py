@@ -79,7 +79,11 @@ def namespace_typo(ns: str | None) -> str | None:
 class ReadContext:
     """Diagnostics and documents of one load."""
 
-    def __init__(self, *, allow_outside: bool = False, limits=None) -> None:
+    def __init__(self, *, stages=None, allow_outside: bool = False, limits=None) -> None:
+        # the layout engine and the 2D layer's bounds (stage_services.StageServices), handed
+        # to the reader by the pipeline: the reader imports neither (None: a read that lays
+        # nothing out and measures no drawing, a value converter's)
+        self.stages = stages
         self.diagnostics: list[Diagnostic] = []
         # errors reported so far, repeats suppressed by ``once`` too: a property whose reading
         # raised it saw an error (Props.rejected)

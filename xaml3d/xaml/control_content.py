@@ -2,7 +2,7 @@
 
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
 beside the viewports (``render --window``): text by the package font's advance widths and
-Segoe UI's line height (``xaml3d.layout.text``) inside the Aero2 chrome of TextBlock, Label,
+Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock, Label,
 TextBox, CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which its
 template restyles)
 (a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from xaml3d.layout.text import line_height, text_width
+from xaml3d.text_metrics import line_height, text_width
 from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
@@ -30,15 +30,15 @@ from xaml3d.xaml.controls_reader import (
 from xaml3d.xaml.inline_text import has_inlines, size_of
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
+from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_text import (
-    _font_style,
-    _lines,
-    _text_of,
     base_format,
     trim,
     trimming,
     wraps,
 )
+from xaml3d.xaml.visual_text import text_of as _text_of
+from xaml3d.xaml.visual_text import wrapped_lines as _lines
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
                  "CheckBox", "RadioButton"}  # fmt: skip

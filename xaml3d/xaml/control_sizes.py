@@ -10,15 +10,15 @@ control is built: a document of viewports and panels alone never loads them.
 
 from __future__ import annotations
 
-from xaml3d.layout import tree as L
+from xaml3d.scene import element_tree as L
 from xaml3d.xaml.context import is_presentation, qname
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
     ElementValues,
     PanelsReader,
-    _layout_transform,
-    _turns,
+    layout_transform_of,
     parse_thickness,
+    turns,
 )
 
 # The controls that show only part of their content (the selected tab, an expanded Expander's)
@@ -43,7 +43,7 @@ class MeasuringPanels(PanelsReader):
         if (kind == L.CONTAINER and local in _SELECTING | _FRAMING and is_presentation(ns)
                 and not self.r.ctx.is_templated(el)):  # fmt: skip
             v = ElementValues(self.r, el, self.style_setters(el, local))
-            if not _turns(_layout_transform(self.r, v)):  # a turned one is not expanded
+            if not turns(layout_transform_of(self.r, v)):  # a turned one is not expanded
                 return L.CONTROL
         return kind
 
@@ -60,7 +60,7 @@ class MeasuringPanels(PanelsReader):
 
         if templates.expands(self, el, n.type):
             v = ElementValues(self.r, el, self.style_setters(el, n.type))
-            if not _turns(_layout_transform(self.r, v)):
+            if not turns(layout_transform_of(self.r, v)):
                 font = self.elements[id(n)][1]
                 if n.type in date_templates.DATES:
                     date_templates.expand(self, n, el, v, font)

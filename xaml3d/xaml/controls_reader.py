@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from xaml3d.layout.text import baseline, line_height
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -21,20 +20,19 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
+from xaml3d.text_metrics import baseline, line_height
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import qname
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
-from xaml3d.xaml.visual_text import (
-    _box_drawing,
-    _brush,
-    _family,
-    _font_style,
-    _foreground,
-    _rgb,
-    _text,
-    _text_of,
-)
+from xaml3d.xaml.visual_style import box_drawing as _box_drawing
+from xaml3d.xaml.visual_style import element_brush as _brush
+from xaml3d.xaml.visual_style import font_family as _family
+from xaml3d.xaml.visual_style import font_style as _font_style
+from xaml3d.xaml.visual_style import foreground_brush as _foreground
+from xaml3d.xaml.visual_style import rgb as _rgb
+from xaml3d.xaml.visual_text import text_drawing as _text
+from xaml3d.xaml.visual_text import text_of as _text_of
 
 AERO2 = {
     "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),

@@ -29,8 +29,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.layout import tree as L
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     DrawingGroup,
     EllipseGeometry,
@@ -40,15 +39,16 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
+from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.templates import TEXT_PART, _chrome, _presenter, part, text_part
-from xaml3d.xaml.visual_text import _box_drawing, _brush, _rgb
+from xaml3d.xaml.visual_style import box_drawing, element_brush, rgb
 
 DATES = {"DatePicker", "Calendar"}
 WATERMARK = "Select a date"  # DatePicker_WatermarkText (en-US)
-_TEXT = _rgb("333333")  # the DatePicker Style's Foreground
-_WHITE = _rgb("FFFFFF")
+_TEXT = rgb("333333")  # the DatePicker Style's Foreground
+_WHITE = rgb("FFFFFF")
 _MONTHS = ("January February March April May June July August September October November "
            "December").split()  # fmt: skip
 _DAYS = "Monday Tuesday Wednesday Thursday Friday Saturday Sunday".split()
@@ -56,7 +56,7 @@ _BUTTON_W, _ICON_W, _ICON_H = 20.0, 19.0, 18.0
 
 
 def _stops(*pairs) -> tuple:
-    return tuple(GradientStop(_rgb(c[-6:], int(c[:2], 16) / 255 if len(c) == 8 else 1.0).color,
+    return tuple(GradientStop(rgb(c[-6:], int(c[:2], 16) / 255 if len(c) == 8 else 1.0).color,
                               o) for c, o in pairs)  # fmt: skip
 
 
@@ -174,13 +174,13 @@ def calendar_icon() -> tuple:
     row 1), the blue header bar in row 0 with its white 3 px ring hole, the "15"."""
     row0 = _ICON_H * 23 / 80
     page = (0.0, row0 - 1.0, _ICON_W, _ICON_H - row0 + 1.0)
-    out = list(_box_drawing(_rgb("1F3B53"), _WHITE, (1.0,) * 4, 0.5, page[2], page[3]))
+    out = list(box_drawing(rgb("1F3B53"), _WHITE, (1.0,) * 4, 0.5, page[2], page[3]))
     gloss = LinearGradientBrush(
         stops=_stops(("FFFFFFFF", 0.0), ("F9FFFFFF", 0.375), ("E5FFFFFF", 0.625),
                      ("C6FFFFFF", 1.0)),
         start_point=(0.7, 0.0), end_point=(0.7, 1.0),
     )  # fmt: skip
-    out += _box_drawing(gloss, _rgb("000000", 0xBF / 255), (1.0,) * 4, 0.5, page[2], page[3])
+    out += box_drawing(gloss, rgb("000000", 0xBF / 255), (1.0,) * 4, 0.5, page[2], page[3])
     drawn = [DrawingGroup(children=tuple(out), transform=_shift(page[0], page[1]))]
     header_fill = LinearGradientBrush(stops=_stops(("4084BD", 0.0), ("AFCFEA", 1.0)),
                                       start_point=(0.46, 1.6), end_point=(0.3, -1.1))  # fmt: skip
@@ -198,7 +198,7 @@ def calendar_icon() -> tuple:
     ax, ay, aw, ah = 4.0, row0 + 3.0, _ICON_W - 8.0, _ICON_H - row0 - 6.0
     sx, sy = aw / (x1 - x0), ah / (y1 - y0)
     m = np.array([[sx, 0.0, ax - x0 * sx], [0.0, sy, ay - y0 * sy], [0.0, 0.0, 1.0]])
-    glyph = GeometryDrawing(path_from_string(_FIFTEEN), brush=_rgb("2F2F2F"))
+    glyph = GeometryDrawing(path_from_string(_FIFTEEN), brush=rgb("2F2F2F"))
     drawn.append(DrawingGroup(children=(glyph,), transform=m))
     drawn.append(GeometryDrawing(EllipseGeometry((_ICON_W / 2, row0 / 2), 1.5, 1.5),
                                  brush=_WHITE))  # fmt: skip
@@ -218,10 +218,10 @@ _CAL_BACKGROUND = LinearGradientBrush(
     end_point=(0.5, 1.0),
 )
 _SHORTEST_DAYS = ("Su", "Mo", "Tu", "We", "Th", "Fr", "Sa")  # en-US, from Sunday
-_OTHER_MONTH = _rgb("777777")
-_SELECTED = _rgb("BADDE9", 0.75)
-_TODAY = _rgb("AAAAAA")
-_NAV = _rgb("E5EBF1", 0x11 / 255)
+_OTHER_MONTH = rgb("777777")
+_SELECTED = rgb("BADDE9", 0.75)
+_TODAY = rgb("AAAAAA")
+_NAV = rgb("E5EBF1", 0x11 / 255)
 # the previous and next buttons' triangles, their Paths stretched into 6 x 10 at (14, 2) and
 # (8, 2) of the 28 x 20 buttons (Margin 14,-6,0,0 / 0,-6,14,0, centred upright)
 _PREVIOUS = (((6.0, 0.0), (6.0, 10.0), (0.0, 10 * (236.625 - 232.25) / 8.375)), 14.0)
@@ -258,7 +258,7 @@ def calendar(reader, n, el, v, font) -> None:
     selected = _date_of(el, "SelectedDate")
     shown = _date_of(el, "DisplayDate") or selected or datetime.date.today()
     today = datetime.date.today() if el.get("IsTodayHighlighted") != "False" else None
-    ink = _brush(reader.r, v, "Foreground", _TEXT)
+    ink = element_brush(reader.r, v, "Foreground", _TEXT)
     nav = []
     for (points, x), col, h in ((_PREVIOUS, 0, "Left"), (_NEXT, 2, "Right")):
         k = part(reader, L.CONTROL, font, estimate=(28.0, 20.0), width=28.0, height=20.0,
@@ -310,8 +310,8 @@ def calendar(reader, n, el, v, font) -> None:
         L.BORDER,
         font,
         [inner],
-        background=_brush(reader.r, v, "Background", _CAL_BACKGROUND),
-        border_brush=_brush(reader.r, v, "BorderBrush", _CAL_BORDER),
+        background=element_brush(reader.r, v, "Background", _CAL_BACKGROUND),
+        border_brush=element_brush(reader.r, v, "BorderBrush", _CAL_BORDER),
         border=v.get("BorderThickness", parse_thickness, (1.0,) * 4),
         corner_radius=(1.0,) * 4,
         margin=(0.0, 3.0, 0.0, 3.0),

@@ -122,17 +122,15 @@ def drawing_brush(r, p, common: dict) -> DrawingBrush:
         content = p.obj("Drawing", lambda e: drawing(r, e), None)
         bounds = None
     else:
-        from xaml3d.xaml.visuals_reader import visual_drawing
-
         target = _bound_element(p)
         if target is not None:  # Visual="{Binding ElementName=panel}": that element, laid out
-            found = visual_drawing(r, target)
+            found = r.visual_drawing(target)
             content = found[0] if found is not None else None
         elif not p.has("Visual"):
             r.ctx.diag("DRW004", "VisualBrush without a Visual draws nothing", p.el)
             content, bounds = None, None
         else:
-            found = p.obj("Visual", lambda e: visual_drawing(r, e), None)
+            found = p.obj("Visual", r.visual_drawing, None)
             content, bounds = found if found is not None else (None, None)
         bounds = None  # a VisualBrush's relative Viewbox refers to the visual's ink
     return DrawingBrush(
@@ -163,9 +161,7 @@ def visual_host_brush(r, p) -> DrawingBrush | None:
     (laid out at its desired size) with ViewportUnits Absolute and TileMode None, so texture
     coordinates (0,0)-(1,1) span the visual's bounds, the box of what it draws (for a control
     with a background, its laid-out box). None: no Visual."""
-    from xaml3d.xaml.visuals_reader import visual_drawing
-
-    found = p.obj("Visual", lambda e: visual_drawing(r, e), None)
+    found = p.obj("Visual", r.visual_drawing, None)
     if found is None:
         return None
     return DrawingBrush(

@@ -22,7 +22,6 @@ import math
 
 import numpy as np
 
-from xaml3d.layout.engine import scale_factor
 from xaml3d.scene.drawing import DrawingGroup, ImageDrawing
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import (
@@ -42,13 +41,14 @@ class ImageLayout:
 
     natural: tuple[float, float] = (0.0, 0.0)
 
-    def __init__(self, v) -> None:
+    def __init__(self, r, v) -> None:
+        self.scale_factor = r.ctx.stages.scale_factor
         self.stretch = v.get("Stretch", lambda s: V.parse_enum(s, _STRETCHES), "Uniform")
         self.direction = v.get("StretchDirection", lambda s: V.parse_enum(s, _DIRECTIONS), "Both")
 
     def measure(self, w: float, h: float) -> tuple[float, float]:
         nw, nh = self.natural
-        sx, sy = scale_factor((w, h), (nw, nh), self.stretch, self.direction)
+        sx, sy = self.scale_factor((w, h), (nw, nh), self.stretch, self.direction)
         return nw * sx, nh * sy
 
     arrange = measure
@@ -62,9 +62,9 @@ class DrawingImageLayout(ImageLayout):
     """An Image holding a DrawingImage: its Drawing and that Drawing's bounds."""
 
     def __init__(self, r, v, el) -> None:
-        super().__init__(v)
+        super().__init__(r, v)
         self.drawing = drawing_image(r, el)
-        self.bounds = _bounds(self.drawing)
+        self.bounds = _bounds(r, self.drawing)
         if self.bounds is not None:
             left, top, right, bottom = self.bounds
             self.natural = (right - left, bottom - top)
@@ -86,8 +86,8 @@ class DrawingImageLayout(ImageLayout):
 class BitmapLayout(ImageLayout):
     """An Image holding a bitmap: its decoded pixels and their size in DIPs."""
 
-    def __init__(self, v, image: np.ndarray, dpi: tuple[float, float]) -> None:
-        super().__init__(v)
+    def __init__(self, r, v, image: np.ndarray, dpi: tuple[float, float]) -> None:
+        super().__init__(r, v)
         self.image = image
         ph, pw = image.shape[:2]
         self.natural = (pixels_to_dips(dpi[0], pw), pixels_to_dips(dpi[1], ph))
@@ -131,13 +131,8 @@ def bitmap_dpi(r, path: str) -> tuple[float, float]:
     return dpi
 
 
-def _bounds(d):
-    if d is None:
-        return None
-    from xaml3d.render.layer2d.paint import drawing_bounds
-
-    b = drawing_bounds(d)
-    return None if b is None else (b.left(), b.top(), b.right(), b.bottom())
+def _bounds(r, d):
+    return None if d is None else r.ctx.stages.drawing_bounds(d)
 
 
 def attach_layout(r, v, n, el) -> tuple[float, float] | None:
@@ -156,7 +151,7 @@ def attach_layout(r, v, n, el) -> tuple[float, float] | None:
         path, pixels = load_image(r, uri, where, attr)
         if pixels is None or path is None:
             return None
-        image = BitmapLayout(v, pixels, bitmap_dpi(r, path))
+        image = BitmapLayout(r, v, pixels, bitmap_dpi(r, path))
     n.measure = image.measure
     n.arrange_size = image.arrange
     n.state = image

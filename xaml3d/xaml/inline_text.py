@@ -21,8 +21,8 @@ import math
 from dataclasses import dataclass, replace
 
 from xaml3d.fonts import WEIGHTS
-from xaml3d.layout.text import UI, baseline, line_height, text_width
 from xaml3d.scene.types import SolidColorBrush
+from xaml3d.text_metrics import UI, baseline, line_height, text_width
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.text_content import (

@@ -1,5 +1,6 @@
 """The layout step of reading: the panel tree read (panels_reader.py), laid out
-(xaml3d.layout) and turned into each viewport's size, its derivation, the gotcha warnings and
+(the layout engine, ``ReadContext.stages.layout``: the pipeline hands it to the reader) and
+turned into each viewport's size, its derivation, the gotcha warnings and
 the Scene's record of the laid-out boxes (``xaml3d.scene.boxes``).
 
 A viewport that the panel walk does not reach (inside a header, a tooltip, a TabItem not
@@ -11,16 +12,27 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
+from xaml3d.codes.layout import LAYOUT_CODES
 from xaml3d.errors import Diagnostic
-from xaml3d.layout import layout
-from xaml3d.layout.engine import LayoutResult
-from xaml3d.layout.gotchas import LAYOUT_CODES, viewport_notes
-from xaml3d.layout.transform import placed_by_layout
-from xaml3d.layout.tree import CANVAS, DOCK, GRID, SCROLL, STACK, UNIFORM, VIEWBOX, WRAP, Node
 from xaml3d.scene.boxes import CONTROL, VIEWPORT, Box, WindowLayout, own_unit
 from xaml3d.scene.drawing import Around, CombinedGeometry, Layer2D, RectangleGeometry
+from xaml3d.scene.element_tree import (
+    CANVAS,
+    DOCK,
+    GRID,
+    SCROLL,
+    STACK,
+    UNIFORM,
+    VIEWBOX,
+    WRAP,
+    Node,
+)
 from xaml3d.xaml.panels_reader import ElementValues, parse_length
+
+if TYPE_CHECKING:
+    from xaml3d.layout.engine import LayoutResult
 
 DEFAULT_SIZE = (640.0, 480.0)
 _PLACING = (GRID, DOCK, STACK, CANVAS, VIEWBOX, SCROLL, UNIFORM, WRAP)
@@ -117,7 +129,7 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
     reader = MeasuringPanels(r, viewport_elements) if viewport_elements else None
     root = reader.build(root_el) if reader is not None else None
     nodes, elements = (reader.viewports, reader.elements) if reader is not None else ({}, {})
-    result = layout(root, window_size) if root is not None else None
+    result = r.ctx.stages.layout(root, window_size) if root is not None else None
     if result is not None and reader.built_controls:
         # only controls get drawings (and only their templates make the parts drawn after
         # layout): viewports and panels alone need none of the 2D visual readers
@@ -134,7 +146,7 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
     layers, notes = _layers(r, root, elements) if result is not None else ({}, {})
     out: dict[int, ViewportLayout] = {}
     if result is not None:
-        for note in viewport_notes(result.viewports):
+        for note in r.ctx.stages.viewport_notes(result.viewports):
             el = viewport_elements[note.node.viewport]
             r.ctx.add(Diagnostic(note.code, LAYOUT_CODES[note.code][0], note.message), el)
     for i, el in enumerate(viewport_elements):
@@ -197,7 +209,7 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
         if layer is not None and not opacity:
             layer = replace(layer, opacity=1.0)
         if n.layout_transform is not None:
-            layer = replace(layer or Layer2D(), layout_transform=placed_by_layout(n))
+            layer = replace(layer or Layer2D(), layout_transform=r.ctx.stages.placed_by_layout(n))
         if n.clip_box is not None and n.kind != VIEWPORT:
             # the layout clip cuts what the element and its children draw
             layer = layer or Layer2D()

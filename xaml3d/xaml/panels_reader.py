@@ -1,4 +1,4 @@
-"""Reading the panels around the viewports into a layout tree (xaml3d.layout.tree.Node).
+"""Reading the panels around the viewports into a layout tree (xaml3d.scene.element_tree.Node).
 
 Covers, for every element from the document's root down to the Viewport3Ds: Window (and
 NavigationWindow), Page, UserControl, Grid (RowDefinitions/ColumnDefinitions: pixel, Auto,
@@ -21,9 +21,9 @@ import math
 
 import numpy as np
 
+from xaml3d.codes.layout import LAYOUT_CODES
 from xaml3d.errors import Diagnostic, ValueSyntaxError
-from xaml3d.layout import tree as L
-from xaml3d.layout.gotchas import LAYOUT_CODES
+from xaml3d.scene import element_tree as L
 from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
@@ -482,8 +482,8 @@ class PanelsReader:
             n.h_align = "Right"
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
-        turned = _layout_transform(self.r, v)
-        if _turns(turned):  # laid out in its own space, its box turned (xaml3d.layout)
+        turned = layout_transform_of(self.r, v)
+        if turns(turned):  # laid out in its own space, its box turned (xaml3d.layout)
             (a, b), (c, d) = (tuple(float(x) for x in row) for row in turned[:2, :2])
             n.layout_transform = ((a, b), (c, d))
         size = v.get("FontSize", parse_length, None)
@@ -710,7 +710,7 @@ def _outer(k: L.Node) -> tuple[float, float]:
     return w + ml + mr, h + mt + mb
 
 
-def _layout_transform(r, v: ElementValues):
+def layout_transform_of(r, v: ElementValues):
     """An element's LayoutTransform as a 3x3 column-form matrix (the brushes' 2D Transform
     reader: Rotate, Scale, Skew, Translate, Matrix transforms and groups, a matrix string or a
     resource), or None when it has none (or it is unreadable: reported where it is read)."""
@@ -721,7 +721,7 @@ def _layout_transform(r, v: ElementValues):
     )
 
 
-def _turns(m) -> bool:
+def turns(m) -> bool:
     """Whether a LayoutTransform changes a box's size or shape (not the identity, not a move)."""
     return m is not None and not np.allclose(m[:2, :2], np.eye(2))
 

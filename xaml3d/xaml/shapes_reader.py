@@ -7,8 +7,8 @@ arranges and draws them (layout's measure and arrange, then the shape's drawing)
   as Shape.GetPen), caps, join, miter limit, dashes.
 - The natural size (Stretch="None", Shape.GetNaturalSize): the right and bottom of the defining
   geometry's render bounds with the pen, dashes left out (curve extrema, arcs, joins and caps
-  counted: ``render.layer2d.paint.render_bounds``), never below 0. A Rectangle's and an
-  Ellipse's is StrokeThickness square.
+  counted: ``render.layer2d.paint.render_bounds``, through ``ReadContext.stages``), never
+  below 0. A Rectangle's and an Ellipse's is StrokeThickness square.
 - Stretch (Shape.GetStretchMetrics): Fill, Uniform and UniformToFill scale the geometry's
   bounds (without the pen) into the room less StrokeThickness, a horizontal or vertical line
   always as Fill, and shift it half a StrokeThickness in from the box's corner; with infinite
@@ -37,7 +37,7 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.geometry_reader import geometry_property
-from xaml3d.xaml.visual_text import _brush
+from xaml3d.xaml.visual_style import element_brush
 
 SHAPES = {"Rectangle", "Ellipse", "Line", "Polyline", "Polygon", "Path"}
 BOXED = {"Rectangle", "Ellipse"}  # their geometry is the box arrange gives them
@@ -61,7 +61,7 @@ def shape_pen(r, v) -> tuple[Pen | None, float]:
     StrokeThickness of 0 or NaN (Shape.GetPen, GetStrokeThickness)."""
     if v.p is None:
         return None, 0.0
-    stroke = _brush(r, v, "Stroke")
+    stroke = element_brush(r, v, "Stroke")
     t = abs(v.get("StrokeThickness", V.parse_double, 1.0))
     if stroke is None or not (t > 0) or not math.isfinite(t):
         return None, 0.0
@@ -104,12 +104,6 @@ def defining_geometry(r, v, local: str):
         cmds.append(("Z",))
     rule = v.get("FillRule", lambda s: V.parse_enum(s, ("EvenOdd", "Nonzero")), "EvenOdd")
     return PathGeometry(tuple(cmds), rule)
-
-
-def _bounds(geometry, pen=None):
-    from xaml3d.render.layer2d.paint import render_bounds
-
-    return render_bounds(geometry, pen)
 
 
 def stretch_metrics(mode: str, t: float, room: tuple[float, float], bounds):
@@ -159,10 +153,11 @@ class ShapeLayout:
         if self.geometry is None:
             self.bounds = self.natural = None
             return
-        self.bounds = _bounds(self.geometry)  # Geometry.Bounds: no pen
+        render_bounds = r.ctx.stages.render_bounds
+        self.bounds = render_bounds(self.geometry, None)  # Geometry.Bounds: no pen
         # dashes are left out of the layout size, as Shape.GetNaturalSize does
         pen = replace(self.pen, dashes=(), dash_offset=0.0) if self.pen is not None else None
-        ink = _bounds(self.geometry, pen)
+        ink = render_bounds(self.geometry, pen)
         self.natural = (0.0, 0.0) if ink is None else (max(ink[2], 0.0), max(ink[3], 0.0))
 
     def measure(self, w: float, h: float) -> tuple[float, float]:
@@ -198,7 +193,7 @@ def shape_drawing(r, v, n, local: str, w: float, h: float) -> GeometryDrawing | 
     if v.p is None:
         return None
     shape = n.state if isinstance(n.state, ShapeLayout) else ShapeLayout(r, v, local)
-    fill = _brush(r, v, "Fill")
+    fill = element_brush(r, v, "Fill")
     pen, t = shape.pen, shape.t
     if local in BOXED:
         # WPF's Rectangle and Ellipse keep their stroke inside the element's box

@@ -54,9 +54,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.framework.access_text import access_text
-from xaml3d.layout import tree as L
-from xaml3d.layout.text import baseline, line_height, text_width
+from xaml3d.access_text import access_text
+from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     CombinedGeometry,
     DrawingGroup,
@@ -67,13 +66,18 @@ from xaml3d.scene.drawing import (
     TextDrawing,
 )
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
+from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.text_content import holder_text, property_element
-from xaml3d.xaml.visual_text import _brush, _font_style, _foreground, _rgb, warn_uncovered
+from xaml3d.xaml.visual_style import element_brush as _brush
+from xaml3d.xaml.visual_style import font_style as _font_style
+from xaml3d.xaml.visual_style import foreground_brush as _foreground
+from xaml3d.xaml.visual_style import rgb as _rgb
+from xaml3d.xaml.visual_text import warn_uncovered
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
@@ -189,7 +193,7 @@ def _build_all(reader, items, font) -> list:
 
 def _content(reader, el, font) -> list:
     """The laid-out content of a content control: its elements, else its text as one line."""
-    from xaml3d.xaml.visual_text import _text_of
+    from xaml3d.xaml.visual_text import text_of as _text_of
 
     kids = rich_content(reader, el)
     if kids:
@@ -201,7 +205,7 @@ def _content(reader, el, font) -> list:
 def _header(reader, el, font, access: bool = True) -> list:
     """A headered control's Header: its text (attribute or property element) or elements.
     ``access``: its template's ContentPresenter recognizes access keys (GroupBox, Expander,
-    TabItem, MenuItem): a text header is AccessText (``framework.access_text``)."""
+    TabItem, MenuItem): a text header is AccessText (``xaml3d.access_text``)."""
     shown = access_text if access else str
     raw = el.get("Header")
     if raw is not None:
@@ -504,8 +508,6 @@ def _menu(reader, n, el, v, font) -> None:
 def _menu_ink(reader, el):
     """A menu item's Foreground: its own or its Menu's (up to the Menu), else the Menu Style's
     #FF212121, which a Foreground set around the Menu does not override."""
-    from xaml3d.xaml.visual_text import _foreground
-
     node = el
     while node is not None and isinstance(node.tag, str):
         p = reader.r.props(node)

@@ -8,7 +8,7 @@ inline_text, templates: the text of TextBlock, TextBox, the content controls and
   space, none is kept at the start and the end (``xaml_text``); only those four characters are
   white space (a no-break space stays). ``xml:space="preserve"`` on the element or an ancestor
   keeps the text as written, line feeds included (``preserves_space``).
-- AccessText (``xaml3d.framework.access_text``, shared with the framework step): the text of a
+- AccessText (``xaml3d.access_text``, shared with the framework step): the text of a
   control whose template's ContentPresenter has RecognizesAccessKey="True" (Aero2: Label,
   Button, ToggleButton, RepeatButton, CheckBox, RadioButton; the headers of GroupBox, Expander,
   TabItem and MenuItem) loses its first lone underscore, the access-key marker; ``__`` shows

@@ -5,48 +5,40 @@ property elements, white space as XAML reads it, access keys: ``text_content``; 
 inlines in their own formats and lines: ``inline_text``), the inherited
 Foreground, FontSize, FontWeight, FontStyle and FontFamily, TextAlignment, TextWrapping and
 TextTrimming (CharacterEllipsis, WordEllipsis) to the width the layout gives the TextBlock, and
-one TextDrawing per line at Segoe UI's line metrics (``xaml3d.layout.text``); and the Background
-/ BorderBrush band of a Border-like box (BorderThickness, CornerRadius).
+one TextDrawing per line at Segoe UI's line metrics (``xaml3d.text_metrics``). The brushes,
+the inherited font and a Border-like box's Background / BorderBrush band are ``visual_style``'s.
 """
 
 from __future__ import annotations
 
 import math
 
-from xaml3d.errors import ValueSyntaxError
-from xaml3d.fonts import WEIGHTS
-from xaml3d.framework.access_text import access_text
-from xaml3d.layout.text import UI, baseline, line_height, text_width, uncovered
+from xaml3d.access_text import access_text
 from xaml3d.scene.drawing import (
-    CombinedGeometry,
     DrawingGroup,
     GeometryDrawing,
     RectangleGeometry,
     TextDrawing,
 )
-from xaml3d.scene.types import SolidColorBrush
+from xaml3d.text_metrics import UI, baseline, line_height, text_width, uncovered
 from xaml3d.xaml import values as V
-from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
-from xaml3d.xaml.panels_reader import element_style
 from xaml3d.xaml.text_content import (
     ACCESS_KEY_CONTROLS,
     content_text,
     holder_text,
     property_element,
 )
+from xaml3d.xaml.visual_style import (
+    font_style,
+    foreground_brush,
+)
 
-
-def _rgb(hex6: str, a: float = 1.0) -> SolidColorBrush:
-    return SolidColorBrush(color=(*(int(hex6[i : i + 2], 16) / 255 for i in (0, 2, 4)), a))
-
-
-BLACK = _rgb("000000")
 # Aero2 (PresentationFramework.Aero2, themes/Aero2.NormalColor.xaml): the resting state.
 
 
-def _text_of(el) -> str:
+def text_of(el) -> str:
     """The text an element shows: its Text or Content, as an attribute or a property element
     (``text_content``), else its content's text; through AccessText for the controls whose
     template recognizes access keys (``_Name`` shows ``Name``)."""
@@ -67,103 +59,6 @@ def _plain_text(el) -> str:
         if holder is not None:
             return holder_text(holder) or ""
     return content_text(el)
-
-
-def _inherited(el, names: tuple[str, ...], r=None) -> str | None:
-    """An inherited text property as written on ``el`` or its nearest ancestor, or (with the
-    reader ``r``) set there by that element's Style: WPF's precedence, local value first."""
-    node = el
-    while node is not None:
-        for name in names:
-            raw = node.get(name)
-            if raw is not None and split_markup(raw) is None:
-                return raw
-        if r is not None and isinstance(node.tag, str):
-            setters = element_style(r, node)
-            for name in names:
-                raw = setters.get(name.rpartition(".")[2])
-                if raw is not None and split_markup(raw) is None:
-                    return raw
-        node = node.getparent()
-    return None
-
-
-def _font_style(el, r=None) -> tuple[int, bool, str]:
-    """(weight, italic, FontFamily) in effect at ``el`` (``_inherited``; its Styles too when
-    ``r``): the arguments after the size of ``text_width``."""
-    w = _inherited(el, ("FontWeight", "TextElement.FontWeight"), r) or "Normal"
-    s = _inherited(el, ("FontStyle", "TextElement.FontStyle"), r) or "Normal"
-    weight = WEIGHTS.get(w.strip(), int(w) if w.strip().isdigit() else 400)
-    return weight, s.strip() in ("Italic", "Oblique"), _family(el, r)
-
-
-def _family(el, r=None) -> str:
-    """The FontFamily in effect at ``el`` (WPF's default Segoe UI)."""
-    return _inherited(el, ("FontFamily", "TextElement.FontFamily"), r) or UI
-
-
-def _brush(r, v, prop: str, default=None):
-    """The element's brush ``prop``: its own, else its Style's Setter (a colour), else
-    ``default``."""
-    if v.p is not None and v.p.has(prop):
-        return brush_property(r, v.p, prop)
-    raw = v.style.get(prop) if v.p is not None else None
-    if raw is not None and split_markup(raw) is None:
-        try:
-            return SolidColorBrush(color=V.parse_color(raw))
-        except ValueSyntaxError:
-            pass  # not a colour (a brush resource, a bad value): not drawn from here
-    return default
-
-
-def _box_drawing(background, border, thickness, radius, w: float, h: float) -> list:
-    """A Border's background and border: the border is a band inside the box. ``radius``
-    (CornerRadius) is that of the band's centre line, as WPF's Border draws it: the outer
-    edge's is half a thickness more (none stays square), the inner edge's half a thickness
-    less."""
-    out = []
-    left, top, right, bottom = thickness
-    inner = (left, top, max(0.0, w - left - right), max(0.0, h - top - bottom))
-    rx_in, ry_in = max(0.0, radius - left / 2), max(0.0, radius - top / 2)
-    if background is not None:
-        if border is not None:
-            geometry = RectangleGeometry(inner, rx_in, ry_in)
-        else:
-            geometry = RectangleGeometry((0.0, 0.0, w, h), radius, radius)
-        out.append(GeometryDrawing(geometry, brush=background))
-    if border is not None and any(t > 0 for t in thickness):
-        rx, ry = (radius + left / 2, radius + top / 2) if radius > 0 else (0.0, 0.0)
-        band = CombinedGeometry(
-            "Exclude",
-            RectangleGeometry((0.0, 0.0, w, h), rx, ry),
-            RectangleGeometry(inner, rx_in, ry_in),
-        )
-        out.append(GeometryDrawing(band, brush=border))
-    return out
-
-
-def _foreground(r, el):
-    """The Foreground in effect at ``el``: its own, else its Style's, else inherited from the
-    nearest ancestor that sets one (locally or by its Style), as WPF's value precedence has it."""
-    node = el
-    while node is not None:
-        if isinstance(node.tag, str):
-            p = r.props(node)
-            for prop in ("Foreground", "TextElement.Foreground"):
-                if prop in p.attrs or prop in p.elems:
-                    return brush_property(r, p, prop)
-                if prop in p.attached:
-                    raw = p.attached[prop]
-                    if split_markup(raw) is None:
-                        return SolidColorBrush(color=V.parse_color(raw))
-            raw = element_style(r, node).get("Foreground")
-            if raw is not None and split_markup(raw) is None:
-                try:
-                    return SolidColorBrush(color=V.parse_color(raw))
-                except ValueSyntaxError:
-                    pass  # not a colour (a brush resource, a bad value): not drawn from here
-        node = node.getparent()
-    return BLACK
 
 
 _WRAPS = ("NoWrap", "Wrap", "WrapWithOverflow")
@@ -210,14 +105,14 @@ def trim(
     return line[:lo].rstrip() + ELLIPSIS
 
 
-def _lines(
+def wrapped_lines(
     text: str, font: float, weight: int, italic: bool, width: float, family: str = UI
 ) -> list[str]:
     """``text`` broken into lines no wider than ``width`` at spaces (a word wider than the
     line keeps a line of its own). A line feed (kept by xml:space="preserve") starts a new
     line, as it does in WPF's text formatter."""
     if "\n" in text:
-        return [x for part in text.split("\n") for x in (_lines(part, font, weight, italic,
+        return [x for part in text.split("\n") for x in (wrapped_lines(part, font, weight, italic,
                                                                width, family) or [""])]  # fmt: skip
     if not text or not math.isfinite(width):
         return [text] if text else []
@@ -234,25 +129,25 @@ def _lines(
     return lines
 
 
-def _text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
+def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
     """The element's text as one TextDrawing per line (a DrawingGroup when it wraps). ``w``:
     the width laid out for it: a TextBlock wraps (TextWrapping) and trims (TextTrimming) its
     lines to it, as WPF formats the text again at the arranged width."""
     block = qname(el.tag)[1] == "TextBlock"
     if block and has_inlines(el):
         return _inline_text(r, el, v, font, x, y, w, align_center)
-    text = _text_of(el)
+    text = text_of(el)
     if not text:
         return None
-    weight, italic, family = _font_style(el, r)
+    weight, italic, family = font_style(el, r)
     wrapping = (block or qname(el.tag)[1] == "TextBox") and wraps(v)  # TextBox wraps too
     width = w + _SLACK if wrapping else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
                                                                  "Justify")), "Left")  # fmt: skip
-    brush = _foreground(r, el)
+    brush = foreground_brush(r, el)
     out = []
-    for i, line in enumerate(_lines(text, font, weight, italic, width, family)):
+    for i, line in enumerate(wrapped_lines(text, font, weight, italic, width, family)):
         line = trim(line, font, weight, italic, w, mode, family)
         if not line:
             continue  # an empty line (between two line feeds) takes its height only
@@ -300,14 +195,16 @@ def _alignment(v) -> str:
 
 def base_format(r, el, font: float) -> Format:
     """The TextBlock's own text format, that its inlines start from."""
-    weight, italic, family = _font_style(el, r)
-    return Format(size=font, weight=weight, italic=italic, brush=_foreground(r, el), family=family)
+    weight, italic, family = font_style(el, r)
+    return Format(
+        size=font, weight=weight, italic=italic, brush=foreground_brush(r, el), family=family
+    )
 
 
 def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool):
     """A TextBlock's inlines (``inline_text``): one TextDrawing per run of a line, on the
     line's shared baseline, an underlined run over a bar at the font's underline metrics."""
-    from xaml3d.layout.text import underline
+    from xaml3d.text_metrics import underline
 
     alignment = _alignment(v)
     width = w + _SLACK if wraps(v) else math.inf

@@ -28,9 +28,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from xaml3d.layout import layout
-from xaml3d.layout import tree as L
-from xaml3d.layout.transform import placed_by_layout
+from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     DrawingGroup,
     GeometryDrawing,
@@ -61,11 +59,9 @@ from xaml3d.xaml.panels_reader import (
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.shapes_reader import SHAPES, shape_drawing
+from xaml3d.xaml.visual_style import box_drawing, element_brush, rgb
 from xaml3d.xaml.visual_text import (
-    _box_drawing,
-    _brush,
-    _rgb,
-    _text,
+    text_drawing,
 )
 
 _TEXT_CONTROLS = TEXT_CONTROLS
@@ -100,7 +96,7 @@ def _visual_drawing(r, el):
     # an element of the window keeps the size the window's layout gave it; a brush's own
     # visual is measured with infinite room and arranged at its desired size
     size = getattr(r, "laid_out_sizes", {}).get(id(el))
-    layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
+    r.ctx.stages.layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
     templates.after_layout(root)
     out = []
     _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
@@ -142,7 +138,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
-        m = m @ placed_by_layout(n)
+        m = m @ r.ctx.stages.placed_by_layout(n)
     if layer is not None and layer.render_transform is not None:
         with np.errstate(over="ignore", invalid="ignore"):  # a NaN angle: nothing is drawn
             m = m @ layer.render_transform
@@ -195,7 +191,7 @@ def _shape_clip(n, v):
 
 def _part(n, w: float, h: float) -> list:
     """A template part's look: its own drawing, or its Border's Background and BorderBrush."""
-    out = _box_drawing(n.background, n.border_brush, n.border, n.corner_radius[0], w, h)
+    out = box_drawing(n.background, n.border_brush, n.border, n.corner_radius[0], w, h)
     if n.drawing is not None:
         out.append(n.drawing)
     return out
@@ -211,30 +207,30 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
             out.extend(templates.group_box_chrome(r, el, n))
         return
     if local == "Separator":
-        fill = _brush(r, v, "Background", _rgb("A0A0A0"))  # SystemColors.ControlDark
+        fill = element_brush(r, v, "Background", rgb("A0A0A0"))  # SystemColors.ControlDark
         out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)), brush=fill))
         return
     if local == "GridSplitter":  # Aero2: a Border of Background (SystemColors.Control)
         border = v.get("BorderThickness", parse_thickness, (0.0,) * 4)
-        fill = _brush(r, v, "Background", _rgb("F0F0F0"))
-        out.extend(_box_drawing(fill, _brush(r, v, "BorderBrush"), border, 0.0, w, h))
+        fill = element_brush(r, v, "Background", rgb("F0F0F0"))
+        out.extend(box_drawing(fill, element_brush(r, v, "BorderBrush"), border, 0.0, w, h))
         return
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.WRAP, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
-        out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
         return
     if n.kind == L.BORDER:
         radius = v.get("CornerRadius", V.parse_double, 0.0) if v.p is not None else 0.0
-        out.extend(_box_drawing(_brush(r, v, "Background"), _brush(r, v, "BorderBrush"),
-                                n.border, radius, w, h))  # fmt: skip
+        fill, stroke = element_brush(r, v, "Background"), element_brush(r, v, "BorderBrush")
+        out.extend(box_drawing(fill, stroke, n.border, radius, w, h))
         return
     if local in _SHAPES:
         _shape(r, v, n, local, w, h, out)
         return
     if local == "TextBlock":
-        out.extend(_box_drawing(_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
         pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-        t = _text(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
+        t = text_drawing(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
         if t is not None:
             out.append(t)
         return

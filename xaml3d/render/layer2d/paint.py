@@ -19,10 +19,10 @@ import numpy as np
 import skia
 
 from xaml3d.fonts import face_of, typeface
+from xaml3d.render.layer2d.effects import effect_filter
 from xaml3d.render.layer2d.paths import matrix, path_of
 from xaml3d.render.layer2d.pens import caps_path, stroke_paint
-from xaml3d.render.layer2d.picture import effect_filter
-from xaml3d.render.layer2d.shaders import image_of, paint_of
+from xaml3d.render.layer2d.shaders import DrawingPlayer, image_of, paint_of
 from xaml3d.scene import trig
 from xaml3d.scene.drawing import (
     DrawingGroup,
@@ -76,10 +76,10 @@ def draw(canvas: skia.Canvas, d) -> None:
         if path is None:
             return
         box = path.computeTightBounds()
-        fill = paint_of(d.brush, box)
+        fill = paint_of(d.brush, box, player=PLAYER)
         if fill is not None:
             canvas.drawPath(path_of(d.geometry, filled=True), fill)
-        stroke = stroke_paint(d.pen, box)
+        stroke = stroke_paint(d.pen, box, player=PLAYER)
         if stroke is not None:
             pen = d.pen
             own_caps = not pen.dashes and (
@@ -95,7 +95,7 @@ def draw(canvas: skia.Canvas, d) -> None:
         if not d.text:
             return
         runs = _text_runs(d)
-        paint = paint_of(d.brush, _text_box(d, runs))
+        paint = paint_of(d.brush, _text_box(d, runs), player=PLAYER)
         if paint is not None:
             x = float(d.origin[0])
             for text, font in runs:
@@ -141,7 +141,7 @@ def _draw_group(canvas: skia.Canvas, g: DrawingGroup) -> None:
     if g.opacity_mask is not None:
         # the mask's relative units refer to the group's content, in the group's coordinates
         box = drawing_bounds(DrawingGroup(children=g.children))
-        mask = paint_of(g.opacity_mask, box) if box is not None else None
+        mask = paint_of(g.opacity_mask, box, player=PLAYER) if box is not None else None
         if mask is not None:
             mask.setBlendMode(skia.BlendMode.kDstIn)
             # over the whole layer, as WPF multiplies the content by the mask brush wherever it
@@ -188,6 +188,11 @@ def drawing_bounds(d) -> skia.Rect | None:
     return None
 
 
+# how the brushes (``shaders``, ``pens``) play and measure a DrawingBrush's drawing: with the
+# functions above, which call them in turn
+PLAYER = DrawingPlayer(draw=draw, bounds=drawing_bounds)
+
+
 def render_bounds(geometry, pen=None) -> tuple[float, float, float, float] | None:
     """WPF's Geometry.GetRenderBounds(pen): (left, top, right, bottom) of what the geometry
     covers drawn with ``pen`` (its dashes ignored: the whole line), curves and arcs at their
@@ -198,7 +203,7 @@ def render_bounds(geometry, pen=None) -> tuple[float, float, float, float] | Non
         return None
     r = path.computeTightBounds()
     out = [r.left(), r.top(), r.right(), r.bottom()]
-    stroke = stroke_paint(pen, r, dashed=False)
+    stroke = stroke_paint(pen, r, dashed=False, player=PLAYER)
     if stroke is not None:
         own_caps = pen.start_cap != pen.end_cap or "Triangle" in (pen.start_cap, pen.end_cap)
         if own_caps:  # as drawn: flat ends, then each end's own cap

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import skia
 
-from xaml3d.render.layer2d.shaders import paint_of
+from xaml3d.render.layer2d.shaders import DrawingPlayer, paint_of
 
 _CAPS = {
     "Flat": skia.Paint.Cap.kButt_Cap,
@@ -25,10 +25,12 @@ _JOINS = {
 }
 
 
-def stroke_paint(pen, box: skia.Rect, dashed: bool = True) -> skia.Paint | None:
+def stroke_paint(
+    pen, box: skia.Rect, dashed: bool = True, *, player: DrawingPlayer
+) -> skia.Paint | None:
     if pen is None or pen.brush is None or not (pen.thickness > 0):
         return None
-    paint = paint_of(pen.brush, box)
+    paint = paint_of(pen.brush, box, player=player)
     if paint is None:
         return None
     paint.setStyle(skia.Paint.kStroke_Style)

@@ -9,9 +9,7 @@ element's own coordinates (DIPs; ``scale`` gives image pixels per DIP). The laye
 elements nest: each parent's applies to its child's composed layer. The picture keeps its
 box: what a transform or a shadow moves beyond the viewport's rectangle is cut off.
 
-BlurEffect's Radius and DropShadowEffect's BlurRadius are taken as a Gaussian of standard
-deviation Radius / 3 (WPF's kernel reaches about three deviations); a drop shadow is offset by
-ShadowDepth along Direction (degrees counter-clockwise from +x, y up on screen).
+BlurEffect and DropShadowEffect are applied as the image filters of ``effects``.
 """
 
 from __future__ import annotations
@@ -22,25 +20,11 @@ from dataclasses import replace
 import numpy as np
 import skia
 
+from xaml3d.render.layer2d.effects import effect_filter
+from xaml3d.render.layer2d.paint import PLAYER
 from xaml3d.render.layer2d.paths import matrix, path_of
 from xaml3d.render.layer2d.shaders import image_of, paint_of
-from xaml3d.scene import trig
 from xaml3d.scene.drawing import Viewport2D
-
-
-def effect_filter(effect):
-    """The skia image filter of a scene Effect (None: nothing to do)."""
-    if effect is None:
-        return None
-    sigma = max(0.0, float(effect.radius)) / 3.0
-    if effect.kind == "Blur":
-        return skia.ImageFilters.Blur(sigma, sigma) if sigma > 0 else None
-    a = math.radians(float(effect.direction))
-    dx = float(effect.shadow_depth) * trig.cos(a)
-    dy = -float(effect.shadow_depth) * trig.sin(a)
-    r, g, b, alpha = (float(c) for c in effect.color)
-    color = skia.Color4f(r, g, b, alpha * float(effect.opacity)).toColor()
-    return skia.ImageFilters.DropShadow(dx, dy, sigma, sigma, color)
 
 
 def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=None) -> np.ndarray:
@@ -99,7 +83,7 @@ def compose_layers(rgba: np.ndarray, levels, scale: tuple[float, float], place=N
     for layer, (_, _, bw, bh), (ux, uy) in reversed(levels):
         if layer.opacity_mask is not None:
             box = skia.Rect.MakeWH(bw / ux, bh / uy)  # the element's own box, in its units
-            mask = paint_of(layer.opacity_mask, box)
+            mask = paint_of(layer.opacity_mask, box, player=PLAYER)
             if mask is None:  # a mask that paints nothing hides everything
                 mask = skia.Paint()
                 mask.setColor(skia.ColorTRANSPARENT)

@@ -11,6 +11,9 @@ units refer to the box of what is filled.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import NamedTuple
+
 import numpy as np
 import skia
 
@@ -32,6 +35,16 @@ _SPREAD = {
     "Reflect": skia.TileMode.kMirror,
     "Repeat": skia.TileMode.kRepeat,
 }
+
+
+class DrawingPlayer(NamedTuple):
+    """How a DrawingBrush's content is played onto a canvas and measured: ``paint.draw`` and
+    ``paint.drawing_bounds``, handed down by the module that draws drawings. A drawing holds
+    brushes and a DrawingBrush holds a drawing; the brushes take the drawing functions as an
+    argument instead of importing the module above them."""
+
+    draw: Callable  # (canvas, drawing) -> None
+    bounds: Callable  # drawing -> skia.Rect | None
 
 
 def _color4f(rgba, opacity: float = 1.0) -> skia.Color4f:
@@ -64,7 +77,7 @@ def _bounds(rect: skia.Rect) -> tuple[np.ndarray, np.ndarray]:
     return lo, np.where(hi - lo > 0.0, hi, lo + 1.0)
 
 
-def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
+def shader_of(brush, box: skia.Rect, player: DrawingPlayer) -> skia.Shader | None:
     """The brush as a skia shader over the element box ``box`` (relative units refer to it);
     None: a flat colour (or nothing) is enough, see ``paint_of``."""
     bounds = _bounds(box)
@@ -97,12 +110,15 @@ def shader_of(brush, box: skia.Rect) -> skia.Shader | None:
             _SPREAD[brush.spread_method], 0, matrix(placed),
         )  # fmt: skip
     if isinstance(brush, (ImageBrush, DrawingBrush)):
-        return _tile_shader(brush, bounds)
+        return _tile_shader(brush, bounds, player)
     return None
 
 
-def paint_of(brush, box: skia.Rect, opacity: float = 1.0) -> skia.Paint | None:
-    """A fill Paint for ``brush`` over ``box``; None when the brush draws nothing."""
+def paint_of(
+    brush, box: skia.Rect, opacity: float = 1.0, *, player: DrawingPlayer
+) -> skia.Paint | None:
+    """A fill Paint for ``brush`` over ``box``; None when the brush draws nothing
+    (``player``: how a DrawingBrush's drawing is played, ``paint.PLAYER``)."""
     if brush is None:
         return None
     paint = skia.Paint(AntiAlias=True)
@@ -112,7 +128,7 @@ def paint_of(brush, box: skia.Rect, opacity: float = 1.0) -> skia.Paint | None:
         return paint
     if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)) and not brush.stops:
         return None  # no stops: transparent
-    shader = shader_of(brush, box)
+    shader = shader_of(brush, box, player)
     if shader is None:
         if isinstance(brush, (LinearGradientBrush, RadialGradientBrush)):
             # a degenerate gradient paints its last stop's colour, as the 3D brushes do
@@ -135,14 +151,14 @@ def tile_layout(brush, bounds, content: tuple[float, float, float, float]):
     return None if tile is None else (tile.viewport, tile.matrix())
 
 
-def brush_tile(brush, bounds):
+def brush_tile(brush, bounds, player: DrawingPlayer):
     """``tile_layout`` of a tile brush over its own content (``content_bounds``); None when
     there is no content or the tile is empty."""
-    content = content_bounds(brush)
+    content = content_bounds(brush, player)
     return None if content is None else tile_layout(brush, bounds, content)
 
 
-def content_bounds(brush) -> tuple[float, float, float, float] | None:
+def content_bounds(brush, player: DrawingPlayer) -> tuple[float, float, float, float] | None:
     """The box relative Viewbox units refer to: an ImageBrush's picture (one pixel per DIP),
     a drawing's bounds, or the bounds the reader gave (a Viewport2DVisual3D's visual)."""
     if isinstance(brush, ImageBrush):
@@ -152,28 +168,24 @@ def content_bounds(brush) -> tuple[float, float, float, float] | None:
         return (0.0, 0.0, float(w), float(h))
     if brush.content_bounds is not None:
         return brush.content_bounds
-    from xaml3d.render.layer2d.paint import drawing_bounds  # a drawing holds brushes
-
-    r = drawing_bounds(brush.drawing)
+    r = player.bounds(brush.drawing)
     if r is None or r.isEmpty():
         return None
     return (r.left(), r.top(), r.width(), r.height())
 
 
-def draw_content(canvas: skia.Canvas, brush) -> None:
+def draw_content(canvas: skia.Canvas, brush, player: DrawingPlayer) -> None:
     """A tile brush's content in its own coordinates."""
     if isinstance(brush, ImageBrush):
         img = image_of(brush.image)
         if img is not None:
             canvas.drawImage(img, 0, 0, skia.SamplingOptions(skia.FilterMode.kLinear))
     else:
-        from xaml3d.render.layer2d.paint import draw  # a drawing holds brushes
-
-        draw(canvas, brush.drawing)
+        player.draw(canvas, brush.drawing)
 
 
-def _tile_shader(brush, bounds) -> skia.Shader | None:
-    found = brush_tile(brush, bounds)
+def _tile_shader(brush, bounds, player: DrawingPlayer) -> skia.Shader | None:
+    found = brush_tile(brush, bounds, player)
     if found is None:
         return None
     (vpx, vpy, vpw, vph), m = found
@@ -181,7 +193,7 @@ def _tile_shader(brush, bounds) -> skia.Shader | None:
     canvas = rec.beginRecording(skia.Rect.MakeXYWH(vpx, vpy, vpw, vph))
     canvas.clipRect(skia.Rect.MakeXYWH(vpx, vpy, vpw, vph))
     canvas.concat(matrix(m))
-    draw_content(canvas, brush)
+    draw_content(canvas, brush, player)
     picture = rec.finishRecordingAsPicture()
     mode = brush.tile_mode
     tx, ty = (_tile_mode(mode, flip) for flip in (("FlipX", "FlipXY"), ("FlipY", "FlipXY")))

@@ -18,6 +18,7 @@ import math
 import numpy as np
 import skia
 
+from xaml3d.render.layer2d.paint import PLAYER
 from xaml3d.render.layer2d.paths import matrix
 from xaml3d.render.layer2d.shaders import brush_tile, draw_content
 from xaml3d.render.tiles import (
@@ -52,7 +53,7 @@ def rasterize_tile(brush: DrawingBrush, viewport, content_matrix, size: tuple[in
     canvas.scale(float(sx), float(sy))
     canvas.translate(-vpx, -vpy)
     canvas.concat(matrix(content_matrix))
-    draw_content(canvas, brush)
+    draw_content(canvas, brush, PLAYER)
     arr = surface.makeImageSnapshot().toarray(
         colorType=skia.ColorType.kRGBA_8888_ColorType, alphaType=skia.AlphaType.kPremul_AlphaType
     )
@@ -73,7 +74,7 @@ def _tile(brush: DrawingBrush, bounds, density: float | None):
 
 
 def _make_tile(brush: DrawingBrush, bounds, density: float | None):
-    found = brush_tile(brush, bounds)
+    found = brush_tile(brush, bounds, PLAYER)
     if found is None:
         return None
     viewport, m = found

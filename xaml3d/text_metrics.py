@@ -1,10 +1,11 @@
-"""Measuring text for layout: a TextBlock's (and a control's text's) width and line height.
+"""Text metrics of the faces text is set in (font facts, for layout and the 2D drawings): a
+TextBlock's (and a control's text's) width and line height.
 
 Widths are the advance widths of the face the FontFamily is set in (``xaml3d.fonts``: Open Sans
 for Segoe UI, within a few percent of its widths; the metric-compatible Liberation faces for
 Arial, Times New Roman, Courier New); the line height and baseline are that family's, as WPF lays
 a line out (FontFamily.LineSpacing x FontSize). Widths come from the face's own tables
-(``xaml3d.layout.advances``: skia's numbers without importing skia); skia is imported only for
+(``xaml3d.text_advances``: skia's numbers without importing skia); skia is imported only for
 an underline's metrics, for a size those tables do not cover (not above 0, or not finite) and
 for characters the face lacks, measured in the system's font that has them
 (``xaml3d.font_fallback``), as they are drawn.
@@ -22,7 +23,7 @@ UI = "Segoe UI"  # WPF's default FontFamily
 def _missing(text: str, weight: int, italic: bool, family: str) -> list[bool] | None:
     """One bool per character of ``text``, whether the face lacks it; None when it has all."""
     from xaml3d.fonts import font_file
-    from xaml3d.layout.advances import font_tables
+    from xaml3d.text_advances import font_tables
 
     glyphs = font_tables(font_file(weight, italic, family)).glyphs
     missing = [ord(c) not in glyphs for c in text]
@@ -49,7 +50,7 @@ def text_width(
 
     if not 0 < size < 3e38:  # not finite in float32, as skia holds a size
         return _skia_width(text, size, typeface(weight, italic, family))
-    from xaml3d.layout.advances import measure
+    from xaml3d.text_advances import measure
 
     path = font_file(weight, italic, family)
     missing = _missing(text, weight, italic, family)

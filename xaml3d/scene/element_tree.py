@@ -1,11 +1,12 @@
-"""The layout tree: the panels and elements around the viewports, as plain numbers and enums.
+"""The element tree before layout: the panels and elements around the viewports, as plain
+numbers and enums. The reader builds it and the layout engine (``xaml3d.layout``) consumes it.
 
 The reader (xaml3d/xaml/panels_reader.py) builds one ``Node`` per framework element that takes
 part in layout (Window, Page, UserControl, Grid, DockPanel, StackPanel, WrapPanel, Border,
 Canvas, Viewbox, ScrollViewer, Viewport3D, controls), with WPF's layout properties already
 converted: Width and Height (NaN when not set, as WPF's ``double.NaN`` "Auto"), Min/Max sizes,
 Margin, alignments, Visibility, the attached Grid/DockPanel/Canvas properties and each panel's
-own properties. The layout engine (engine.py) fills in the results: desired size, arranged
+own properties. The layout engine (layout/engine.py) fills in the results: desired size, arranged
 rectangle and how it was derived. Nothing here knows of 3D or XML.
 """
 

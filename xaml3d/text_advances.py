@@ -3,7 +3,7 @@
 Layout needs a TextBlock's (or a control's text's) width, not its glyphs: importing skia for
 that alone cost a whole process about 25-35 ms, more than reading a small scene. The widths
 here are the numbers skia's ``Font.measureText`` gives for the same font at the same size with
-subpixel positioning and no hinting (``xaml3d.layout.text``), bit for bit: each glyph's linear
+subpixel positioning and no hinting (``xaml3d.text_metrics``), bit for bit: each glyph's linear
 advance as FreeType computes it in 16.16 fixed point (``FT_Set_Char_Size`` at the size cut to
 26.6, ``x_scale = FT_DivFix(size, units_per_em)``, ``FT_MulDiv(advance, x_scale, 64)``),
 converted to float32 and summed in float32 in text order. Like skia, sizes above 256 px are
