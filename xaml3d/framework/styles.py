@@ -175,13 +175,34 @@ class Control:
         if prop == "IsDefaulted" and self.type == "Button":
             # a default Button is defaulted at load (the window's focus is on no other button)
             prop = "IsDefault"
+        if prop == "HasContent":
+            return self.has_content() == (wanted.strip().lower() == "true")
+        null = _is_null(wanted)  # Value="{x:Null}": IsChecked's third state, an unset value
         v = self.value(prop, triggered=False)
         if v is None or v[0] != "text":
-            return None if v is not None else False
+            return None if v is not None else null
         text = v[1].strip()
+        if _is_null(text):
+            return null
+        if null:
+            return False if markup.split(text) is None else None
         if markup.split(text) is not None:
             return None
         return text.lower() == wanted.strip().lower()
+
+    def has_content(self) -> bool:
+        """ContentControl.HasContent: whether the control's Content (an attribute, element
+        or text content, ``<X.Content>``, a Style's Setter) is set and not null."""
+        el = self.el
+        if (el.text or "").strip() or any((k.tail or "").strip() for k in el):
+            return True
+        for child in elements(el):
+            local = local_name(child.tag)
+            if "." not in local or (local.rpartition(".")[2] == "Content" and (
+                    elements(child) or (child.text or "").strip())):  # fmt: skip
+                return True
+        v = self.local("Content") or self.setters.get("Content")
+        return v is not None and not (v[0] == "text" and _is_null(v[1]))
 
     def disabled_above(self) -> bool:
         """Whether an ancestor of the control (in the tree as instantiated so far: a template's
@@ -215,3 +236,8 @@ class Control:
             if held is None:
                 verdict = None
         return verdict
+
+
+def _is_null(text: str) -> bool:
+    m = markup.split(text)
+    return m is not None and m[0] == "Null"

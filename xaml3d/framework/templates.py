@@ -55,6 +55,7 @@ CONTENT_CONTROLS = {
 # controls whose template, when neither they nor their Style set one, is the theme's
 # (``Services.theme_styles``: the package's theme dictionary)
 THEMED = {"Button", "ToggleButton", "RepeatButton"}
+THEMED |= {"CheckBox", "RadioButton"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
