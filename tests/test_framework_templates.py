@@ -672,3 +672,93 @@ def test_theme_template_not_for_a_tool_bar_nor_over_a_default_style(tmp_path):
     # the ToolBar's button keeps the ToolBar's Style (drawn by the reader's ToolBar); a Button
     # over no default Style has no template: nothing of the theme's is built for either
     assert "Border" not in types and "ContentPresenter" not in types
+
+
+CHECK_GLYPH = (
+    "F1 M 9.97498,1.22334L 4.6983,9.09834L 4.52164,9.09834L 0,5.19331L 1.27664,3.52165"
+    "L 4.255,6.08833L 8.33331,1.52588e-005L 9.97498,1.22334 Z"
+)
+
+
+def _option_twin(mark: str, text: str | None, margin: str = "1") -> str:
+    """What WPF builds from a CheckBox or RadioButton in the theme's look: the two-column Grid,
+    the mark's Border in column 0, the ContentPresenter (Padding 4,-1,0,0 when it has content)
+    in column 1."""
+    presenter = (
+        '<ContentPresenter Grid.Column="1" Margin="4,-1,0,0" HorizontalAlignment="Left" '
+        f'VerticalAlignment="Top"><TextBlock Text="{text}" /></ContentPresenter>'
+        if text is not None
+        else '<ContentPresenter Grid.Column="1" HorizontalAlignment="Left" '
+        'VerticalAlignment="Top" />'
+    )
+    return f"""
+      <ContentControl>
+        <Grid Background="Transparent">
+          <Grid.ColumnDefinitions>
+            <ColumnDefinition Width="Auto" /><ColumnDefinition Width="*" />
+          </Grid.ColumnDefinitions>
+          {mark}
+          {presenter}
+        </Grid>
+      </ContentControl>"""
+
+
+def _check_mark(face, band, glyph, check, square) -> str:
+    return f"""<Border Margin="1" HorizontalAlignment="Left" VerticalAlignment="Top"
+                  BorderThickness="1" Background="{face}" BorderBrush="{band}">
+            <Grid>
+              <Path Opacity="{check}" Stretch="None" Margin="1" Fill="{glyph}"
+                    Data="{CHECK_GLYPH}" />
+              <Rectangle Margin="2" Opacity="{square}" Fill="{glyph}" />
+            </Grid>
+          </Border>"""
+
+
+def _radio_mark(face, band, glyph, dot) -> str:
+    return f"""<Border Margin="1,1,2,1" CornerRadius="100" HorizontalAlignment="Left"
+                  VerticalAlignment="Top" BorderThickness="1" Background="{face}"
+                  BorderBrush="{band}">
+            <Grid Margin="2">
+              <Ellipse Opacity="{dot}" MinWidth="6" MinHeight="6" Fill="{glyph}" />
+            </Grid>
+          </Border>"""
+
+
+def test_theme_template_draws_check_boxes_and_radio_buttons_with_their_states(tmp_path):
+    # the theme's templates: the mark's Border at Margin 1 (the check Path's natural size, its
+    # geometry's extent from the origin), the content at the HasContent trigger's Padding; the
+    # triggers IsChecked True and {x:Null}, IsEnabled False (from a disabled panel too), and a
+    # local Background above the theme Style's
+    controls = """
+      <CheckBox IsChecked="True" Background="Yellow">On</CheckBox>
+      <CheckBox IsThreeState="True" IsChecked="{x:Null}" IsEnabled="False">Mid</CheckBox>
+      <CheckBox />
+      <StackPanel IsEnabled="False"><RadioButton IsChecked="True">No</RadioButton></StackPanel>
+      <RadioButton IsChecked="{x:Null}" Content="Any" />"""
+    twins = "".join((
+        _option_twin(_check_mark("Yellow", "#FF707070", "#FF212121", 1, 0), "On"),
+        _option_twin(_check_mark("#FFE6E6E6", "#FFBCBCBC", "#FF707070", 0, 1), "Mid"),
+        _option_twin(_check_mark("#FFFFFFFF", "#FF707070", "#FF212121", 0, 0), None),
+        '<StackPanel IsEnabled="False">'
+        + _option_twin(_radio_mark("#FFE6E6E6", "#FFBCBCBC", "#FF707070", 1), "No")
+        + "</StackPanel>",
+        _option_twin(_radio_mark("#FFFFFFFF", "#FF707070", "#FF212121", 0.56), "Any"),
+    ))  # fmt: skip
+    px = _same(tmp_path, window("", controls), window("", twins))
+    # the first box: its border at (1,1), yellow inside, the dark check mark
+    assert tuple(px[1, 1]) == (112, 112, 112, 255) and tuple(px[2, 2]) == (255, 255, 0, 255)
+    assert px[3:12, 3:13, 0].min() == 33
+    # the second (disabled, indeterminate): the grey square of the indeterminate mark
+    top = 15  # the first CheckBox is as tall as its box, 13.1 px, and its margins
+    assert tuple(px[top + 6, 6]) == (112, 112, 112, 255) and tuple(px[top + 2, 2]) == (
+        230, 230, 230, 255)  # fmt: skip
+    # text 20 px in (the mark's column is 15.97 px, the Padding 4)
+    assert px[0:15, 15:19, :3].min() > 200 and px[0:15, 19:30, :3].min() < 80
+
+
+def test_theme_template_not_for_the_option_controls_of_a_tool_bar(tmp_path):
+    doc = window("", '<ToolBar><CheckBox Content="Bold" IsChecked="True" /></ToolBar>')
+    scene = load(doc, text=True)
+    types = [b.type for b in scene.layout.boxes]
+    # the ToolBar's CheckBox keeps the ToolBar's own Style (drawn by the reader's ToolBar)
+    assert "Path" not in types and "ContentPresenter" not in types
