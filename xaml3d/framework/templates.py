@@ -27,8 +27,9 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
   is not an element (string_formats.py).
 
 Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
-take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
-user template are left to the reader's theme drawing.
+take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox and RadioButton
+(their triggers on HasContent and on IsChecked's ``{x:Null}`` included); the other controls
+without a user template are left to the reader's theme drawing.
 """
 
 from __future__ import annotations
