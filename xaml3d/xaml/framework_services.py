@@ -33,7 +33,7 @@ class ReaderServices:
     def implicit_style(self, type_name: str, from_el):
         key = type_key(type_name)
         # every dictionary in scope is read by the look-up itself (dictionary_of)
-        entry = self.resources.find(key, from_el)
+        entry = self.resources.find_implicit(key, from_el)
         return entry if entry is not None and qname(entry.tag)[1] == "Style" else None
 
     def implicit_data_template(self, type_name: str, from_el):

@@ -342,7 +342,7 @@ def _style_chain(r, el, local: str, report: bool = True) -> list:
         # (every dictionary of the document is read by now: the walk before layout reads
         # each element's resources, so a type no implicit Style names needs no search)
         key = type_key(local)
-        entry = res.find(key, el) if key in res.type_keys else None
+        entry = res.find_implicit(key, el) if key in res.type_keys else None
     chain = []
     while entry is not None and qname(entry.tag)[1] == "Style" and len(chain) < _STYLE_DEPTH:
         chain.append(entry)

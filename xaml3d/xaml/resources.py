@@ -394,6 +394,22 @@ class Resources:
                 return hit[0]
         return None
 
+    def find_implicit(self, key: str, el: etree._Element) -> etree._Element | None:
+        """The implicit Style ``key`` (a type's) that applies to ``el``: ``find``, except for the
+        TextBlock a template's ContentPresenter makes for string content, whose look-up WPF
+        stops at its templated parent (FrameworkElement.FindImplicitStyleResource: an element
+        that is not a Control, inside a template): only the application's Styles reach it."""
+        source = self.ctx.original(el)
+        parent = el.getparent()
+        made = source is not el and etree.QName(source).localname != etree.QName(el).localname
+        if made and parent is not None and etree.QName(parent).localname == "ContentPresenter":
+            for _, d in reversed(self.app):
+                hit = d.find(key)
+                if hit is not None:
+                    return hit[0]
+            return None
+        return self.find(key, el)
+
     def _order(self, el: etree._Element) -> int:
         """The element's place in its document's order: one walk of each document, kept (a
         lookup is then O(1), not a walk up the tree counting siblings: thousands of
