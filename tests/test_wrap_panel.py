@@ -81,8 +81,9 @@ def test_wrap_panel_gridsplitter_and_wrapping_textbox_from_markup(tmp_path):
     boxes = {b.type: b for b in scene.layout.boxes}
     # the GridSplitter's default HorizontalAlignment is Right: at the column's right edge
     assert boxes["GridSplitter"].rect == (95, 0, 5, 100)
-    # the WrapPanel's three RadioButtons in two lines of 18.96 px (14.96 + the margins)
-    assert boxes["WrapPanel"].rect[3] == 2 * (12 * 2724 / 2048 - 1 + 4)
+    # the WrapPanel's three RadioButtons in three lines of 18.96 px (14.96 + the margins): each
+    # is its 15 px mark column, Padding 4 and its text, so no two of them fit in 100 px
+    assert boxes["WrapPanel"].rect[3] == 3 * (12 * 2724 / 2048 - 1 + 4)
     # the TextBox wraps in its text view, 72 px (80 less Padding 1, the 1 px border and the
     # 2 px insets, each side): "aaaa bbbb" is 59.2 px, "aaaa bbbb cccc" 85.2 px: three lines
     assert boxes["TextBox"].rect[3] == 3 * (12 * 2724 / 2048) + 4
