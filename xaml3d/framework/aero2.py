@@ -1,8 +1,9 @@
 """The theme's values for the controls' properties: what a ``{TemplateBinding P}`` reads when
 neither the control, its Style nor the theme dictionary's Style (``xaml3d/data/themes/aero2.xaml``:
-Button, ToggleButton, RepeatButton) sets P (WPF's default Style of the Aero2 theme, from the
-[[Aero2.NormalColor]] values of dotnet/wpf's theme files, for the controls whose Style is not
-yet written in the theme dictionary; then the properties' own defaults).
+Button, ToggleButton, RepeatButton, CheckBox, RadioButton) sets P (WPF's default Style of the
+Aero2 theme, from the [[Aero2.NormalColor]] values of dotnet/wpf's theme files, for the
+controls whose Style is not yet written in the theme dictionary; then the properties' own
+defaults).
 
 A user's Style does not replace the theme's: WPF applies both (the theme Style sits below the
 user's Style in value precedence), unless ``OverridesDefaultStyle`` is set.
@@ -10,16 +11,7 @@ user's Style in value precedence), unless ``OverridesDefaultStyle`` is set.
 
 from __future__ import annotations
 
-_OPTION = {
-    "Background": "#FFFFFFFF",  # OptionMark.Static.Background
-    "BorderBrush": "#FF707070",  # OptionMark.Static.Border
-    "Foreground": "#FF000000",
-    "BorderThickness": "1",
-}
-
 THEME: dict[str, dict[str, str]] = {
-    "CheckBox": _OPTION,
-    "RadioButton": _OPTION,
     "Label": {
         "Foreground": "#FF000000",
         "Background": "Transparent",

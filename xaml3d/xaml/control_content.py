@@ -3,8 +3,8 @@
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
 beside the viewports (``render --window``): text by the package font's advance widths and
 Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock, Label,
-TextBox, CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which its
-template restyles)
+TextBox and a closed ComboBox (and of a ToolBar's buttons, check boxes and radio buttons,
+which its template restyles)
 (a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
 the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module
@@ -21,7 +21,6 @@ from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
-    _OPTION_MARK,
     _TEXT_BOX_INSET,
     AERO2,
     _combo_items,
@@ -108,9 +107,6 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
     w = max((text_width(t, font, weight, italic, family) for t in lines), default=0.0)
     h = line_height(font, family) * max(1, len(lines))
     border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
-    if local in ("CheckBox", "RadioButton"):
-        # the mark, then the content with Aero2's Padding 4,-1,0,0
-        return _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
     w += pad[0] + pad[2] + 2 * border
     h += pad[1] + pad[3] + 2 * border
     if local == "TextBox":

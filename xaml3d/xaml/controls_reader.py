@@ -1,6 +1,6 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
-Covers TextBox, Label, CheckBox, RadioButton, ProgressBar,
+Covers TextBox, Label, ProgressBar,
 a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
 the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
@@ -14,7 +14,6 @@ import numpy as np
 
 from xaml3d.scene.drawing import (
     DrawingGroup,
-    EllipseGeometry,
     GeometryDrawing,
     Pen,
     RectangleGeometry,
@@ -27,7 +26,6 @@ from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.visual_style import box_drawing as _box_drawing
 from xaml3d.xaml.visual_style import element_brush as _brush
-from xaml3d.xaml.visual_style import font_family as _family
 from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_style import foreground_brush as _foreground
 from xaml3d.xaml.visual_style import rgb as _rgb
@@ -37,16 +35,7 @@ from xaml3d.xaml.visual_text import text_of as _text_of
 AERO2 = {
     "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),
     "Label": dict(background=None, border=None, padding=(5, 5, 5, 5)),
-    "CheckBox": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
-    "RadioButton": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
 }
-_OPTION_MARK = 13.0  # the Aero2 check box / radio button mark's size (px)
-# Aero2's check mark (CheckBox optionMark Path, Stretch None) and its OptionMark.Static.Glyph
-_CHECK_GLYPH = (
-    "F1 M 9.97498,1.22334L 4.6983,9.09834L 4.52164,9.09834L 0,5.19331L 1.27664,3.52165"
-    "L 4.255,6.08833L 8.33331,1.52588e-005L 9.97498,1.22334 Z"
-)
-_GLYPH = _rgb("212121")
 _TEXT_BOX_INSET = 2.0  # TextBox text sits 2 px inside its padding (the text view's margin)
 
 
@@ -69,15 +58,6 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         "BorderThickness", parse_thickness, (1.0,) * 4 if border is not None else (0,) * 4
     )
     pad = v.get("Padding", parse_thickness, look["padding"])
-    if local in ("CheckBox", "RadioButton"):
-        top = (h - _OPTION_MARK) / 2
-        shift = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, top], [0.0, 0.0, 1.0]])
-        out.append(DrawingGroup(children=tuple(option_mark(r, v, local)), transform=shift))
-        lh = line_height(font, _family(el, r))
-        t = _text(r, el, v, font, _OPTION_MARK + 4.0, (h - lh) / 2 - 0.5, w)
-        if t is not None:
-            out.append(t)
-        return
     out.extend(_box_drawing(background, border, thick, 0.0, w, h))
     inset_x = thick[0] + pad[0] + (_TEXT_BOX_INSET if local == "TextBox" else 0.0)
     inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
@@ -90,34 +70,6 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
         box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
         out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
-
-
-def option_mark(r, v, local: str) -> list:
-    """A CheckBox's or RadioButton's 13 px mark at (0, 0), checked or not (IsChecked)."""
-    look = AERO2[local]
-    background = _brush(r, v, "Background", look["background"])
-    border = _brush(r, v, "BorderBrush", look["border"])
-    checked = v.get("IsChecked", _checked, False)
-    if local == "CheckBox":
-        box = _box_drawing(background, border, (1.0,) * 4, 0.0, _OPTION_MARK, _OPTION_MARK)
-        if checked:  # Aero2's optionMark Path, Margin 1 inside the 1 px border
-            glyph = path_from_string(_CHECK_GLYPH)
-            at = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])
-            mark = GeometryDrawing(glyph, brush=_GLYPH)
-            box = [*box, DrawingGroup(children=(mark,), transform=at)]
-        return list(box)
-    out = [GeometryDrawing(EllipseGeometry((6.5, 6.5), 6.0, 6.0), brush=background,
-                           pen=Pen(brush=border, thickness=1.0))]  # fmt: skip
-    if checked:  # Aero2's optionMark Ellipse fills the mark grid (Margin 2) inside
-        out.append(GeometryDrawing(EllipseGeometry((6.5, 6.5), 3.5, 3.5), brush=_GLYPH))
-    return out
-
-
-def _checked(text: str) -> bool:
-    """IsChecked: True, False, or {x:Null} (indeterminate: drawn unchecked, as its mark is the
-    small square only when IsThreeState)."""
-    t = text.strip()
-    return False if t == "{x:Null}" else V.parse_bool(t)
 
 
 def _progress_bar(r, v, w: float, h: float, out: list) -> None:

@@ -7,8 +7,7 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
 
 - Label whose content is an element (a StackPanel holding an
   Image and a TextBlock...): the chrome's Border, then a ContentPresenter at Padding, aligned by
-  HorizontalContentAlignment / VerticalContentAlignment (Label: top left);
-  CheckBox, RadioButton: the 13 px mark, then the content at Padding 4,-1,0,0, centred on the row.
+  HorizontalContentAlignment / VerticalContentAlignment (Label: top left).
 - ListBox: a white Border (#FFABADB3, 1 px, Padding 1), the items stacked; each ListBoxItem a
   1 px transparent Border with Padding 4,1, the selected one (SelectedIndex or IsSelected) in
   Aero2's inactive selection look (#3DDADADA inside #FFDADADA: a picture has no keyboard focus).
@@ -69,7 +68,7 @@ from xaml3d.scene.types import GradientStop, LinearGradientBrush
 from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
-from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
+from xaml3d.xaml.controls_reader import AERO2
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.text_content import holder_text, property_element
@@ -82,7 +81,7 @@ from xaml3d.xaml.visual_text import warn_uncovered
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _CONTENT_CONTROLS = {"Label"}
-_OPTIONS = {"CheckBox", "RadioButton"}
+_OPTIONS = {"CheckBox", "RadioButton"}  # a ToolBar's: drawn as its parts
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
@@ -138,7 +137,7 @@ def expands(reader, el, local: str) -> bool:
     """Whether ``el`` is laid out through its template's parts (not as one measured box)."""
     if not is_presentation(qname(el.tag)[0]):
         return False
-    if local in _CONTENT_CONTROLS or local in _OPTIONS:
+    if local in _CONTENT_CONTROLS:
         return bool(rich_content(reader, el))
     return local in _HEADERED or local in _MENUS or local in _BARS or local in _DATES
 
@@ -149,8 +148,6 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
     n.estimate = None
     if local in _CONTENT_CONTROLS:
         _content_control(reader, n, el, v, font)
-    elif local in _OPTIONS:
-        _option(reader, n, el, v, font)
     elif local in _TEMPLATES:
         _TEMPLATES[local](reader, n, el, v, font)
     else:  # a TabItem outside a TabControl: its header alone
@@ -248,21 +245,6 @@ def _content_control(reader, n, el, v, font) -> None:
     h, vv = _align(v, *(("Left", "Top") if n.type == "Label" else ("Center", "Center")))
     n.children = [_presenter(reader, font, _build_all(reader, rich_content(reader, el), font),
                              pad, h, vv)]  # fmt: skip
-
-
-def _option(reader, n, el, v, font) -> None:
-    """A CheckBox's or RadioButton's mark, then its element content at Aero2's Padding 4,-1,0,0
-    (both centred on the row, as the text is)."""
-    n.kind = L.GRID
-    n.columns = (L.Definition("auto"), L.Definition("star"))
-    n.rows = ()
-    mark = part(reader, L.CONTROL, font, estimate=(_OPTION_MARK, _OPTION_MARK), v_align="Center")
-    mark.drawing = DrawingGroup(children=tuple(option_mark(reader.r, v, n.type)))
-    pad = v.get("Padding", parse_thickness, (4.0, -1.0, 0.0, 0.0))
-    h, vv = _align(v, "Left", "Center")
-    body = _presenter(reader, font, _build_all(reader, rich_content(reader, el), font), pad, h,
-                      vv, col=1)  # fmt: skip
-    n.children = [mark, body]
 
 
 def _selected_index(v, items, el) -> int:
