@@ -762,3 +762,25 @@ def test_theme_template_not_for_the_option_controls_of_a_tool_bar(tmp_path):
     types = [b.type for b in scene.layout.boxes]
     # the ToolBar's CheckBox keeps the ToolBar's own Style (drawn by the reader's ToolBar)
     assert "Path" not in types and "ContentPresenter" not in types
+
+
+def test_a_presenters_text_takes_the_applications_implicit_text_style_not_the_windows(tmp_path):
+    # WPF stops the implicit Style look-up of the TextBlock a ContentPresenter makes at its
+    # templated parent: the window's TextBlock Style paints the plain TextBlock only; the
+    # application's (a resource file given as App.xaml's) reaches the CheckBox's text too
+    style = '<Style TargetType="TextBlock"><Setter Property="Background" Value="Red" /></Style>'
+    body = '<CheckBox Content="c" /><TextBlock Text="x" />'
+    twin = '<CheckBox Content="c" /><TextBlock Text="x" Background="Red" />'
+    _same(tmp_path, window(style, body), window("", twin))
+    app = tmp_path / "app.xaml"
+    app.write_text(
+        '<ResourceDictionary xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation">'
+        f"{style}</ResourceDictionary>",
+        encoding="utf-8",
+    )
+    doc = tmp_path / "w.xaml"
+    doc.write_text(window("", body), encoding="utf-8")
+    rgba, _ = compose_window(load(doc, [app]))
+    px = np.asarray(rgba)
+    # the CheckBox's text (from x = 20, 1 px above its row) and the TextBlock below: red
+    assert tuple(px[13, 22][:3]) == (255, 0, 0) and tuple(px[20, 40][:3]) == (255, 0, 0)
