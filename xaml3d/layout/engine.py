@@ -34,6 +34,7 @@ import math
 import sys
 from dataclasses import dataclass, field
 
+from xaml3d.layout import text
 from xaml3d.layout.grid import GridLayout
 from xaml3d.layout.transform import bounds, maximal_local_size
 from xaml3d.layout.wrap import wrap_arrange, wrap_measure
@@ -499,6 +500,8 @@ def _uniform_arrange(e: Engine, n: Node, w: float, h: float):
 
 
 def _leaf_measure(e: Engine, n: Node, w: float, h: float):
+    if n.text is not None:  # a TextBlock: its lines broken at the width offered (text.py)
+        return text.measure(n.text, w)
     if n.measure is not None:  # wrapping text: its lines depend on the width offered
         return n.measure(w, h)
     return n.estimate if n.estimate is not None else (0.0, 0.0)
@@ -599,8 +602,21 @@ def _run(e: Engine, root: Node, w: float, h: float, how: str) -> None:
 def _result(e: Engine, root: Node, how: str) -> LayoutResult:
     result = LayoutResult(root, e.client, how, e.measure_calls, e.arrange_calls)
     _absolute(root)
+    _text_lines(root)
     result.viewports = [n for n in root.walk() if n.kind == VIEWPORT]
     return result
+
+
+def _text_lines(root: Node) -> None:
+    """Each arranged TextBlock's lines at its arranged width (WPF formats the text again in
+    ArrangeOverride), which its drawing sets as they are, and whether they overflow its box."""
+    for n in root.walk():
+        if n.text is None or not n.arranged:
+            continue
+        w, h = n.ink
+        pad = n.text.padding
+        n.text_lines = text.lines(n.text, w - pad[0] - pad[2])
+        n.text_overflow = text.overflows(n.text, w, h)
 
 
 def _absolute(root: Node) -> None:
