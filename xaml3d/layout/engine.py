@@ -611,7 +611,7 @@ def _text_lines(root: Node) -> None:
     """Each arranged TextBlock's lines at its arranged width (WPF formats the text again in
     ArrangeOverride), which its drawing sets as they are, and whether they overflow its box."""
     for n in root.walk():
-        if n.text is None or not n.arranged:
+        if n.text is None or n.kind != CONTROL or not n.arranged:
             continue
         w, h = n.ink
         pad = n.text.padding

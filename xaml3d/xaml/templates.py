@@ -65,8 +65,9 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
+from xaml3d.scene.text_runs import Run, TextContent
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
-from xaml3d.text_metrics import baseline, line_height, text_width
+from xaml3d.text_metrics import baseline
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
@@ -168,10 +169,11 @@ def part(reader, kind: str, font: float, children=(), type: str = PART, **fields
 
 
 def text_part(reader, owner, text: str, font: float) -> L.Node:
-    """One line of ``text`` in the owner's font and Foreground, sized by the font's metrics."""
+    """One line of ``text`` in the owner's font and Foreground, measured by layout in that
+    font (``Node.text``)."""
     weight, italic, family = _font_style(owner, reader.r)
     n = part(reader, L.CONTROL, font, type=TEXT_PART)
-    n.estimate = (text_width(text, font, weight, italic, family), line_height(font, family))
+    n.text = TextContent(Run(text, font, weight, italic, family))
     if text:
         warn_uncovered(reader.r, owner, text, weight, italic, family)
         n.drawing = TextDrawing(

@@ -162,7 +162,7 @@ def _layout_clip(n, v=None):
     whatever its geometry and pen cover, inside its box or not."""
     if n.type in _SHAPES or n.type == "Image":
         return _shape_clip(n, v)
-    if n.text is not None:  # a TextBlock: layout says whether its lines overflow its box
+    if n.text is not None and n.kind == L.CONTROL:  # layout says whether its lines overflow
         return RectangleGeometry((0.0, 0.0, *n.ink)) if n.text_overflow else None
     if n.type not in _TEXT_CONTROLS or n.estimate is None:
         return None
