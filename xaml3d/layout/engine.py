@@ -16,7 +16,8 @@ infinite room in each scrolling direction, arranged at least as large as the vie
 scroll bar takes 17 px, an Auto one when the content overflows), UniformGrid (equal cells),
 WrapPanel (wrap.py: children in lines, a new line where the next would not fit),
 Viewport3D (no content size of its own: 0 x 0 unless sized), controls
-(their measured or estimated content size; wrapping text measured at the width offered).
+(their measured or estimated content size; a TextBlock's text measured by text.py in the
+fonts that draw it, its lines broken at the width offered, and again at the width arranged).
 UseLayoutRounding (inherited) rounds margins, desired sizes, arranged sizes and offsets to whole
 pixels as WPF does at 96 dpi.
 

@@ -1,11 +1,11 @@
 """The content size of the 2D controls, as their templates measure it (layout's measure pass).
 
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
-beside the viewports (``render --window``): text by the package font's advance widths and
-Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock, Label,
-TextBox, CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which its
-template restyles)
-(a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
+beside the viewports (``render --window``): a TextBlock's text recorded for layout to measure
+(``text_block``: layout breaks its lines at the width offered); text by the package font's
+advance widths and Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of
+Label, TextBox, CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which
+its template restyles); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
 the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module
 when it measures its first control: a document without controls never loads it, nor the

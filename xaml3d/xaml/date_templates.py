@@ -40,7 +40,6 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.scene.text_runs import Run, TextContent
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
-from xaml3d.text_metrics import baseline
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.templates import TEXT_PART, _chrome, _presenter, part, text_part
@@ -234,7 +233,8 @@ def _line(reader, owner, text: str, size: float, weight: int, brush, **fields) -
 
     k = part(reader, L.CONTROL, size, type=TEXT_PART, **fields)
     k.text = TextContent(Run(text, size, weight))  # measured by layout in that font
-    k.drawing = TextDrawing(text=text, origin=(0.0, baseline(size)), font_size=size,
+    # set on its line's baseline as layout measured it (``templates.after_layout``)
+    k.drawing = TextDrawing(text=text, origin=(0.0, 0.0), font_size=size,
                             weight=weight, brush=brush, **reader.r.ctx.position(owner))  # fmt: skip
     return k
 

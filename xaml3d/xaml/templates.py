@@ -67,7 +67,6 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.scene.text_runs import Run, TextContent
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
-from xaml3d.text_metrics import baseline
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
@@ -177,7 +176,8 @@ def text_part(reader, owner, text: str, font: float) -> L.Node:
     if text:
         warn_uncovered(reader.r, owner, text, weight, italic, family)
         n.drawing = TextDrawing(
-            text=text, origin=(0.0, baseline(font, family)), font_size=font, weight=weight,
+            # set on its line's baseline as layout measured it (``after_layout``)
+            text=text, origin=(0.0, 0.0), font_size=font, weight=weight,
             italic=italic, family=family, brush=_foreground(reader.r, owner),
             **reader.r.ctx.position(owner),
         )  # fmt: skip
@@ -681,11 +681,13 @@ def _grip_dots(w: float, h: float) -> DrawingGroup:
 
 def after_layout(root: L.Node) -> None:
     """The template parts drawn from their laid-out size: the selected tabs raised, the grips'
-    dots."""
+    dots, a text part's line on the baseline layout measured (``Node.text_lines``)."""
     raise_selected_tabs(root)
     for n in root.walk():
         if n.type == GRIP_PART and n.arranged:
             n.drawing = _grip_dots(*n.ink)
+        elif n.type == TEXT_PART and isinstance(n.drawing, TextDrawing) and n.text_lines:
+            n.drawing = replace(n.drawing, origin=(0.0, n.text_lines[0].baseline))
 
 
 def raise_selected_tabs(root: L.Node) -> None:
