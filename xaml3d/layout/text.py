@@ -82,34 +82,42 @@ def trim(line: str, fmt: Run, width: float, mode: str) -> str:
 # ------------------------------------------------------------------ inline runs
 
 
-def _line_width(line: list[Run]) -> float:
-    return sum(_width(r) for r in line)
+# A line being wrapped is a list of (text, run) pieces: the run gives the piece's format (its
+# own text is ignored), so that words are split and joined without copying runs.
 
 
-def _line_metrics(line: list[Run], base: Run) -> tuple[float, float]:
+def _piece_width(piece: tuple[str, Run]) -> float:
+    return _width(piece[1], piece[0])
+
+
+def _line_width(line: list) -> float:
+    return sum(_piece_width(p) for p in line)
+
+
+def _line_metrics(line: tuple[Run, ...], base: Run) -> tuple[float, float]:
     """(height, baseline from the top) of a line: its tallest run's (the base font's when
     empty)."""
     fonts = [(r.size, r.family) for r in line] or [(base.size, base.family)]
     return max(line_height(*f) for f in fonts), max(baseline(*f) for f in fonts)
 
 
-def _wrap(line: list[Run], width: float) -> list[list[Run]]:
-    """A line of runs broken at spaces into lines no wider than ``width`` (a word wider than
+def _wrap(line: list, width: float) -> list[list]:
+    """A line of pieces broken at spaces into lines no wider than ``width`` (a word wider than
     the line keeps a line of its own)."""
     if not math.isfinite(width) or _line_width(line) <= width:
         return [line]
-    words: list[list[Run]] = [[]]  # each word: its runs; words are separated by one space
-    for run in line:
-        for i, piece in enumerate(run.text.split(" ")):
+    words: list[list] = [[]]  # each word: its pieces; words are separated by one space
+    for text, fmt in line:
+        for i, piece in enumerate(text.split(" ")):
             if i > 0:
                 words.append([])
             if piece:
-                words[-1].append(replace(run, text=piece))
+                words[-1].append((piece, fmt))
     words = [w for w in words if w]
-    out: list[list[Run]] = []
-    cur: list[Run] = []
+    out: list[list] = []
+    cur: list = []
     for word in words:
-        trial = cur + [replace(cur[-1], text=" ")] + word if cur else word
+        trial = cur + [(" ", cur[-1][1])] + word if cur else word
         if cur and _line_width(trial) > width:
             out.append(cur)
             cur = list(word)
@@ -119,24 +127,25 @@ def _wrap(line: list[Run], width: float) -> list[list[Run]]:
     return [_merged(x) for x in out]
 
 
-def _merged(line: list[Run]) -> list[Run]:
-    """Adjacent runs of one format joined (one TextDrawing each)."""
-    out: list[Run] = []
-    for run in line:
-        if out and out[-1].same_format(run):
-            out[-1] = replace(out[-1], text=out[-1].text + run.text)
+def _merged(line: list) -> list:
+    """Adjacent pieces of one format joined (one TextDrawing each)."""
+    out: list = []
+    for text, fmt in line:
+        if out and (out[-1][1] is fmt or out[-1][1].same_format(fmt)):
+            out[-1] = (out[-1][0] + text, out[-1][1])
         else:
-            out.append(run)
+            out.append((text, fmt))
     return out
 
 
 def _inline_lines(t: TextContent, width: float) -> list[TextLine]:
     out = []
     for line in t.inlines or ():
-        for part in _wrap(list(line), width):
-            h, b = _line_metrics(part, t.base)
-            advances = tuple(_width(r) for r in part)
-            out.append(TextLine(tuple(part), advances, sum(advances), h, b))
+        for part in _wrap([(r.text, r) for r in line], width):
+            runs = tuple(r if r.text == text else replace(r, text=text) for text, r in part)
+            h, b = _line_metrics(runs, t.base)
+            advances = tuple(_piece_width(p) for p in part)
+            out.append(TextLine(runs, advances, sum(advances), h, b))
     return out
 
 
