@@ -35,7 +35,6 @@ import math
 import sys
 from dataclasses import dataclass, field
 
-from xaml3d.layout import text
 from xaml3d.layout.grid import GridLayout
 from xaml3d.layout.transform import bounds, maximal_local_size
 from xaml3d.layout.wrap import wrap_arrange, wrap_measure
@@ -502,6 +501,8 @@ def _uniform_arrange(e: Engine, n: Node, w: float, h: float):
 
 def _leaf_measure(e: Engine, n: Node, w: float, h: float):
     if n.text is not None:  # a TextBlock: its lines broken at the width offered (text.py)
+        from xaml3d.layout import text  # the fonts load with the first text, not before
+
         return text.measure(n.text, w)
     if n.measure is not None:  # wrapping text: its lines depend on the width offered
         return n.measure(w, h)
@@ -611,9 +612,12 @@ def _result(e: Engine, root: Node, how: str) -> LayoutResult:
 def _text_lines(root: Node) -> None:
     """Each arranged TextBlock's lines at its arranged width (WPF formats the text again in
     ArrangeOverride), which its drawing sets as they are, and whether they overflow its box."""
-    for n in root.walk():
-        if n.text is None or n.kind != CONTROL or not n.arranged:
-            continue
+    texts = [n for n in root.walk() if n.text is not None and n.kind == CONTROL and n.arranged]
+    if not texts:
+        return
+    from xaml3d.layout import text
+
+    for n in texts:
         w, h = n.ink
         pad = n.text.padding
         n.text_lines = text.lines(n.text, w - pad[0] - pad[2])
