@@ -112,3 +112,23 @@ def test_the_reader_records_the_runs_and_layout_measures_them():
     w = text_width("a ", 12.0) + text_width("b", 20.0, 700)
     assert b.rect[2] == pytest.approx(w)
     assert b.rect[3] == pytest.approx(line_height(20.0) + LINE)
+
+
+def test_a_box_narrower_than_its_text_is_said_to_overflow():
+    wide = _block(TextContent(Run("a line too long for its box", 12.0)), width=40.0)
+    fits = _block(TextContent(Run("short", 12.0)), h_align="Left")
+    layout(_stack(wide, fits))
+    assert wide.ink == (40.0, pytest.approx(LINE)) and wide.text_overflow
+    assert not fits.text_overflow
+    # the line is kept whole (not wrapping, not trimmed): the layout clip cuts it at the box
+    assert wide.text_lines[0].runs[0].text == "a line too long for its box"
+
+
+def test_the_window_cuts_an_overflowing_text_at_its_box():
+    s = load(f"<StackPanel {NS} Width='300' Height='200'>"
+             "<TextBlock Width='40' HorizontalAlignment='Left' Text='a line too long'/>"
+             "<Viewport3D Height='10'/></StackPanel>", text=True)  # fmt: skip
+    [b] = [b for b in s.layout.boxes if b.type == "TextBlock"]
+    assert isinstance(b.drawing, DrawingGroup)
+    clip = b.drawing.clip
+    assert clip is not None and clip.rect == (0.0, 0.0, 40.0, pytest.approx(LINE))
