@@ -55,6 +55,7 @@ NO_CONTROLS = {
     "xaml3d.xaml.templates",
     "xaml3d.xaml.date_templates",
     "xaml3d.xaml.visuals_reader",
+    "xaml3d.layout.text",  # layout measures text only when there is some
 }
 
 

@@ -16,7 +16,8 @@ infinite room in each scrolling direction, arranged at least as large as the vie
 scroll bar takes 17 px, an Auto one when the content overflows), UniformGrid (equal cells),
 WrapPanel (wrap.py: children in lines, a new line where the next would not fit),
 Viewport3D (no content size of its own: 0 x 0 unless sized), controls
-(their measured or estimated content size; wrapping text measured at the width offered).
+(their measured or estimated content size; a TextBlock's text measured by text.py in the
+fonts that draw it, its lines broken at the width offered, and again at the width arranged).
 UseLayoutRounding (inherited) rounds margins, desired sizes, arranged sizes and offsets to whole
 pixels as WPF does at 96 dpi.
 
@@ -499,6 +500,10 @@ def _uniform_arrange(e: Engine, n: Node, w: float, h: float):
 
 
 def _leaf_measure(e: Engine, n: Node, w: float, h: float):
+    if n.text is not None:  # a TextBlock: its lines broken at the width offered (text.py)
+        from xaml3d.layout import text  # the fonts load with the first text, not before
+
+        return text.measure(n.text, w)
     if n.measure is not None:  # wrapping text: its lines depend on the width offered
         return n.measure(w, h)
     return n.estimate if n.estimate is not None else (0.0, 0.0)
@@ -599,8 +604,24 @@ def _run(e: Engine, root: Node, w: float, h: float, how: str) -> None:
 def _result(e: Engine, root: Node, how: str) -> LayoutResult:
     result = LayoutResult(root, e.client, how, e.measure_calls, e.arrange_calls)
     _absolute(root)
+    _text_lines(root)
     result.viewports = [n for n in root.walk() if n.kind == VIEWPORT]
     return result
+
+
+def _text_lines(root: Node) -> None:
+    """Each arranged TextBlock's lines at its arranged width (WPF formats the text again in
+    ArrangeOverride), which its drawing sets as they are, and whether they overflow its box."""
+    texts = [n for n in root.walk() if n.text is not None and n.kind == CONTROL and n.arranged]
+    if not texts:
+        return
+    from xaml3d.layout import text
+
+    for n in texts:
+        w, h = n.ink
+        pad = n.text.padding
+        n.text_lines = text.lines(n.text, w - pad[0] - pad[2])
+        n.text_overflow = text.overflows(n.text, w, h)
 
 
 def _absolute(root: Node) -> None:

@@ -118,6 +118,9 @@ class Node:
     # a control whose size depends on the room offered (text wrapped to the width): a function
     # of the available (width, height) giving its content size; None: ``estimate`` stands
     measure: object = field(default=None, repr=False)
+    # a TextBlock's text (scene.text_runs.TextContent): layout measures it with the fonts that
+    # draw it, breaking its lines at the width offered (None: ``measure``/``estimate`` stand)
+    text: object = field(default=None, repr=False)
     # a control whose RenderSize is not the box it is given (a stretched shape: the stretched
     # geometry's size): a function of the final (width, height); None: the box given
     arrange_size: object = field(default=None, repr=False)
@@ -150,6 +153,10 @@ class Node:
     # its own coordinates: its Max/explicit size when its render is larger, cut to its slot
     # when that is smaller than it (None: nothing is clipped)
     clip_box: tuple[float, float, float, float] | None = None
+    # a TextBlock's lines broken at its arranged width (scene.text_runs.TextLine), as drawn,
+    # and whether its text needs more room than its box (WPF's layout clip then cuts it)
+    text_lines: tuple = field(default=(), repr=False)
+    text_overflow: bool = False
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange
     measured_with: object = field(default=None, repr=False)  # (engine, available w, h)
 

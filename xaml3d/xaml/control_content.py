@@ -1,11 +1,11 @@
 """The content size of the 2D controls, as their templates measure it (layout's measure pass).
 
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
-beside the viewports (``render --window``): text by the package font's advance widths and
-Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock, Label,
-TextBox and a closed ComboBox (and of a ToolBar's buttons, check boxes and radio buttons,
-which its template restyles)
-(a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
+beside the viewports (``render --window``): a TextBlock's text recorded for layout to measure
+(``text_block``: layout breaks its lines at the width offered); text by the package font's
+advance widths and Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of
+Label, TextBox and a closed ComboBox (and of a ToolBar's buttons, check boxes and radio buttons,
+which its template restyles); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
 the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module
 when it measures its first control: a document without controls never loads it, nor the
@@ -26,18 +26,13 @@ from xaml3d.xaml.controls_reader import (
     _combo_items,
     scroll_bar_upright,
 )
-from xaml3d.xaml.inline_text import has_inlines, size_of
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
+from xaml3d.xaml.text_block import text_content
 from xaml3d.xaml.visual_style import font_style as _font_style
-from xaml3d.xaml.visual_text import (
-    base_format,
-    trim,
-    trimming,
-    wraps,
-)
 from xaml3d.xaml.visual_text import text_of as _text_of
 from xaml3d.xaml.visual_text import wrapped_lines as _lines
+from xaml3d.xaml.visual_text import wraps
 
 TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
                  "CheckBox", "RadioButton"}  # fmt: skip
@@ -69,12 +64,13 @@ def content_size(reader, n, v, el, font: float):
         widest = max(text_width(t, font, *style) for t in items)
         # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
         return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font, style[2]) + 6 + 2)
+    if local == "TextBlock":  # measured by layout, its lines broken at the width offered
+        n.text = text_content(v, el, font)
+        return (0.0, 0.0)
     if local in TEXT_CONTROLS:
-        if (local == "TextBlock" and (wraps(v) or trimming(v) != "None")) or (
-            local == "TextBox" and wraps(v)
-        ):
-            # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
-            # own Width or MaxWidth, else its parent's room), less its Padding
+        if local == "TextBox" and wraps(v):
+            # WPF breaks the lines at the width the TextBox is offered (its own Width or
+            # MaxWidth, else its parent's room), less its Padding
             n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
         return _text_control_size(v, el, local, font)
     return None
@@ -86,24 +82,16 @@ def vertical(v) -> bool:
 
 
 def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
-    """(width, height) of a text control's content and chrome; a wrapping TextBlock's lines
-    broken to ``room`` less its Padding."""
+    """(width, height) of a text control's content and chrome (a TextBlock is measured by
+    layout: ``text_block``); a wrapping TextBox's lines broken to ``room`` less its Padding."""
     pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
     inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
-    block = local == "TextBlock"
     if local == "TextBox":  # its text view is 2 px inside the padding each side
         inner = max(0.0, inner - 2 * _TEXT_BOX_INSET - 2.0)  # and inside its 1 px border
-    if block and has_inlines(el):  # runs in their own fonts, LineBreaks (inline_text)
-        base = base_format(v.r, el, font)
-        w, h = size_of(v.r, el, base, inner if wraps(v) else math.inf)
-        return w + pad[0] + pad[2], max(h, line_height(font, base.family)) + pad[1] + pad[3]
     text = _text_of(el)
     weight, italic, family = _font_style(el, v.r)
-    wrapping = (block or local == "TextBox") and wraps(v)
+    wrapping = local == "TextBox" and wraps(v)
     lines = _lines(text, font, weight, italic, inner if wrapping else math.inf, family)
-    if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
-        mode = trimming(v)
-        lines = [trim(t, font, weight, italic, inner, mode, family) for t in lines]
     w = max((text_width(t, font, weight, italic, family) for t in lines), default=0.0)
     h = line_height(font, family) * max(1, len(lines))
     border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0

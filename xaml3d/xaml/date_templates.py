@@ -38,8 +38,8 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
+from xaml3d.scene.text_runs import Run, TextContent
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
-from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.templates import TEXT_PART, _chrome, _presenter, part, text_part
@@ -232,8 +232,9 @@ def _line(reader, owner, text: str, size: float, weight: int, brush, **fields) -
     """One line of text in its own size and weight (the template's, not the element's)."""
 
     k = part(reader, L.CONTROL, size, type=TEXT_PART, **fields)
-    k.estimate = (text_width(text, size, weight), line_height(size))
-    k.drawing = TextDrawing(text=text, origin=(0.0, baseline(size)), font_size=size,
+    k.text = TextContent(Run(text, size, weight))  # measured by layout in that font
+    # set on its line's baseline as layout measured it (``templates.after_layout``)
+    k.drawing = TextDrawing(text=text, origin=(0.0, 0.0), font_size=size,
                             weight=weight, brush=brush, **reader.r.ctx.position(owner))  # fmt: skip
     return k
 

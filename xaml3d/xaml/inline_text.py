@@ -1,5 +1,5 @@
-"""A TextBlock's inlines as WPF lays them out: Run, Span, Bold, Italic, Underline, Hyperlink and
-LineBreak (visuals_reader, control_content; the TextBlock step of the 2D layer), written in the
+"""A TextBlock's inlines as WPF reads them: Run, Span, Bold, Italic, Underline, Hyperlink and
+LineBreak (visuals_reader, text_block; the TextBlock step of the 2D layer), written in the
 TextBlock or in a ``<TextBlock.Inlines>`` property element.
 
 Each inline takes its own FontFamily, FontWeight, FontStyle, FontSize, Foreground and
@@ -8,11 +8,8 @@ Hyperlink draws in WPF's #FF0066CC, underlined. A Run's text is its Text attribu
 ``<Run.Text>`` or its content. The text is collapsed as XAML collapses it (runs of white space
 become one space, across the inlines; none at the start and the end of the TextBlock, nor
 around a LineBreak), unless xml:space="preserve" keeps it as written (a line feed then breaks
-the line). The runs flow on one line, each measured with its own font; a LineBreak starts a new
-line; a line is as tall as its tallest run's line (its family's line spacing) and its runs
-share the baseline of the lowest one.
-Wrapping breaks at spaces, as a plain TextBlock's text; TextTrimming is not applied to lines of
-several runs.
+the line). The result is the runs of each line a LineBreak starts, in their formats: layout
+measures and wraps them (``xaml3d.layout.text``), each in its own font.
 """
 
 from __future__ import annotations
@@ -21,8 +18,8 @@ import math
 from dataclasses import dataclass, replace
 
 from xaml3d.fonts import WEIGHTS
+from xaml3d.scene.text_runs import UI
 from xaml3d.scene.types import SolidColorBrush
-from xaml3d.text_metrics import UI, baseline, line_height, text_width
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.text_content import (
@@ -49,9 +46,6 @@ class Format:
     brush: object
     underline: bool = False
     family: str = UI
-
-    def width(self, text: str) -> float:
-        return text_width(text, self.size, self.weight, self.italic, self.family)
 
 
 Line = list  # of (text, Format) runs, left to right
@@ -182,69 +176,3 @@ def _preserved(tokens: list) -> list[Line]:
             if part:
                 lines[-1].append((part, fmt))
     return lines
-
-
-def line_width(line: Line) -> float:
-    return sum(f.width(t) for t, f in line)
-
-
-def line_metrics(line: Line, base: Format) -> tuple[float, float]:
-    """(height, baseline from the top) of a line: its tallest run's (the base font's when
-    empty)."""
-    fonts = [(f.size, f.family) for _, f in line] or [(base.size, base.family)]
-    return max(line_height(*f) for f in fonts), max(baseline(*f) for f in fonts)
-
-
-def wrap(line: Line, width: float) -> list[Line]:
-    """A line of runs broken at spaces into lines no wider than ``width`` (a word wider than
-    the line keeps a line of its own)."""
-    if not math.isfinite(width) or line_width(line) <= width:
-        return [line]
-    words: list[Line] = [[]]  # each word: its runs; words are separated by one space
-    for text, fmt in line:
-        pieces = text.split(" ")
-        for i, piece in enumerate(pieces):
-            if i > 0:
-                words.append([])
-            if piece:
-                words[-1].append((piece, fmt))
-    words = [w for w in words if w]
-    out: list[Line] = []
-    cur: Line = []
-    for word in words:
-        trial = cur + [(" ", cur[-1][1])] + word if cur else word
-        if cur and line_width(trial) > width:
-            out.append(cur)
-            cur = list(word)
-        else:
-            cur = trial
-    out.append(cur)
-    return [_merged(x) for x in out]
-
-
-def _merged(line: Line) -> Line:
-    """Adjacent runs of one format joined (one TextDrawing each)."""
-    out: Line = []
-    for text, fmt in line:
-        if out and out[-1][1] == fmt:
-            out[-1] = (out[-1][0] + text, fmt)
-        else:
-            out.append((text, fmt))
-    return out
-
-
-def laid_out(r, el, base: Format, width: float) -> list[tuple[Line, float, float]]:
-    """The TextBlock's lines, wrapped to ``width`` (infinite: no wrapping), each with its
-    height and baseline."""
-    out = []
-    for line in inline_lines(r, el, base):
-        for part in wrap(line, width):
-            h, b = line_metrics(part, base)
-            out.append((part, h, b))
-    return out
-
-
-def size_of(r, el, base: Format, width: float = math.inf) -> tuple[float, float]:
-    """(width, height) of the TextBlock's inlines."""
-    lines = laid_out(r, el, base, width)
-    return max((line_width(x) for x, _, _ in lines), default=0.0), sum(h for _, h, _ in lines)

@@ -64,8 +64,8 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
+from xaml3d.scene.text_runs import Run, TextContent
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
-from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
 from xaml3d.xaml.controls_reader import AERO2
@@ -165,14 +165,16 @@ def part(reader, kind: str, font: float, children=(), type: str = PART, **fields
 
 
 def text_part(reader, owner, text: str, font: float) -> L.Node:
-    """One line of ``text`` in the owner's font and Foreground, sized by the font's metrics."""
+    """One line of ``text`` in the owner's font and Foreground, measured by layout in that
+    font (``Node.text``)."""
     weight, italic, family = _font_style(owner, reader.r)
     n = part(reader, L.CONTROL, font, type=TEXT_PART)
-    n.estimate = (text_width(text, font, weight, italic, family), line_height(font, family))
+    n.text = TextContent(Run(text, font, weight, italic, family))
     if text:
         warn_uncovered(reader.r, owner, text, weight, italic, family)
         n.drawing = TextDrawing(
-            text=text, origin=(0.0, baseline(font, family)), font_size=font, weight=weight,
+            # set on its line's baseline as layout measured it (``after_layout``)
+            text=text, origin=(0.0, 0.0), font_size=font, weight=weight,
             italic=italic, family=family, brush=_foreground(reader.r, owner),
             **reader.r.ctx.position(owner),
         )  # fmt: skip
@@ -661,11 +663,13 @@ def _grip_dots(w: float, h: float) -> DrawingGroup:
 
 def after_layout(root: L.Node) -> None:
     """The template parts drawn from their laid-out size: the selected tabs raised, the grips'
-    dots."""
+    dots, a text part's line on the baseline layout measured (``Node.text_lines``)."""
     raise_selected_tabs(root)
     for n in root.walk():
         if n.type == GRIP_PART and n.arranged:
             n.drawing = _grip_dots(*n.ink)
+        elif n.type == TEXT_PART and isinstance(n.drawing, TextDrawing) and n.text_lines:
+            n.drawing = replace(n.drawing, origin=(0.0, n.text_lines[0].baseline))
 
 
 def raise_selected_tabs(root: L.Node) -> None:

@@ -9,8 +9,8 @@ from __future__ import annotations
 from xaml3d.errors import ValueSyntaxError
 from xaml3d.fonts import WEIGHTS
 from xaml3d.scene.drawing import CombinedGeometry, GeometryDrawing, RectangleGeometry
+from xaml3d.scene.text_runs import UI
 from xaml3d.scene.types import SolidColorBrush
-from xaml3d.text_metrics import UI
 from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import split_markup

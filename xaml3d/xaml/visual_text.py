@@ -2,11 +2,13 @@
 
 Covers a TextBlock's (and a control's) text: its content (Text, Content, as attributes or
 property elements, white space as XAML reads it, access keys: ``text_content``; a TextBlock's
-inlines in their own formats and lines: ``inline_text``), the inherited
-Foreground, FontSize, FontWeight, FontStyle and FontFamily, TextAlignment, TextWrapping and
-TextTrimming (CharacterEllipsis, WordEllipsis) to the width the layout gives the TextBlock, and
-one TextDrawing per line at Segoe UI's line metrics (``xaml3d.text_metrics``). The brushes,
-the inherited font and a Border-like box's Background / BorderBrush band are ``visual_style``'s.
+inlines in their own formats: ``inline_text``), the inherited Foreground, FontSize,
+FontWeight, FontStyle and FontFamily, TextAlignment, TextWrapping and TextTrimming. A
+TextBlock's lines are the ones layout broke (and trimmed) at its arranged width
+(``Node.text_lines``, ``xaml3d.layout.text``): ``block_drawing`` sets them as they are, one
+TextDrawing per run of a line. A control's text (``text_drawing``) is set here, one TextDrawing
+per line at its font's line metrics (``xaml3d.text_metrics``). The brushes, the inherited font
+and a Border-like box's Background / BorderBrush band are ``visual_style``'s.
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ from xaml3d.scene.drawing import (
 from xaml3d.text_metrics import UI, baseline, line_height, text_width, uncovered
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import qname, split_markup
-from xaml3d.xaml.inline_text import Format, has_inlines, laid_out, line_width
+from xaml3d.xaml.inline_text import Format
 from xaml3d.xaml.text_content import (
     ACCESS_KEY_CONTROLS,
     content_text,
@@ -63,9 +65,8 @@ def _plain_text(el) -> str:
 
 _WRAPS = ("NoWrap", "Wrap", "WrapWithOverflow")
 _TRIMS = ("None", "CharacterEllipsis", "WordEllipsis")
-ELLIPSIS = "\u2026"
 # a line laid out again at its arranged width may meet a width rounded to whole pixels below
-# the measured one (UseLayoutRounding): so much is let through rather than wrapped or trimmed
+# the measured one (UseLayoutRounding): so much is let through rather than wrapped
 _SLACK = 0.5
 
 
@@ -76,33 +77,6 @@ def wraps(v) -> bool:
 
 def trimming(v) -> str:
     return v.get("TextTrimming", lambda s: V.parse_enum(s, _TRIMS), "None")
-
-
-def trim(
-    line: str, font: float, weight: int, italic: bool, width: float, mode: str, family: str = UI
-) -> str:
-    """A line cut to ``width`` as TextTrimming does: the longest start of it (whole words for
-    WordEllipsis, when one fits) followed by an ellipsis; the line itself when it fits."""
-    if mode == "None" or text_width(line, font, weight, italic, family) <= width + _SLACK:
-        return line
-
-    def fits(k: int) -> bool:
-        ellipsized = line[:k].rstrip() + ELLIPSIS
-        return text_width(ellipsized, font, weight, italic, family) <= width + _SLACK
-
-    if mode == "WordEllipsis":
-        ends = [i for i in range(1, len(line)) if line[i] == " " and line[i - 1] != " "]
-        best = max((k for k in ends if fits(k)), default=None)
-        if best is not None:
-            return line[:best].rstrip() + ELLIPSIS
-    lo, hi = 0, len(line)  # the longest start that fits with the ellipsis (bisection)
-    while lo < hi:
-        mid = (lo + hi + 1) // 2
-        if fits(mid):
-            lo = mid
-        else:
-            hi = mid - 1
-    return line[:lo].rstrip() + ELLIPSIS
 
 
 def wrapped_lines(
@@ -130,25 +104,18 @@ def wrapped_lines(
 
 
 def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
-    """The element's text as one TextDrawing per line (a DrawingGroup when it wraps). ``w``:
-    the width laid out for it: a TextBlock wraps (TextWrapping) and trims (TextTrimming) its
-    lines to it, as WPF formats the text again at the arranged width."""
-    block = qname(el.tag)[1] == "TextBlock"
-    if block and has_inlines(el):
-        return _inline_text(r, el, v, font, x, y, w, align_center)
+    """A control's text (Label, Button, TextBox, CheckBox...) as one TextDrawing per line (a
+    DrawingGroup when a TextBox wraps it to ``w``, the width laid out for it)."""
     text = text_of(el)
     if not text:
         return None
     weight, italic, family = font_style(el, r)
-    wrapping = (block or qname(el.tag)[1] == "TextBox") and wraps(v)  # TextBox wraps too
+    wrapping = qname(el.tag)[1] == "TextBox" and wraps(v)
     width = w + _SLACK if wrapping else math.inf
-    mode = trimming(v) if block else "None"
-    alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
-                                                                 "Justify")), "Left")  # fmt: skip
+    alignment = _alignment(v)
     brush = foreground_brush(r, el)
     out = []
     for i, line in enumerate(wrapped_lines(text, font, weight, italic, width, family)):
-        line = trim(line, font, weight, italic, w, mode, family)
         if not line:
             continue  # an empty line (between two line feeds) takes its height only
         tw = text_width(line, font, weight, italic, family)
@@ -163,6 +130,46 @@ def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_cent
             text=line, origin=(lx, ly), font_size=font, weight=weight, italic=italic,
             family=family, brush=brush, **r.ctx.position(el),
         ))  # fmt: skip
+    if not out:
+        return None
+    return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
+
+
+def block_drawing(r, el, v, n, x: float, y: float, w: float):
+    """A TextBlock's text in ``w`` (its arranged width less its Padding) as the lines layout
+    broke it (``Node.text_lines``, ``xaml3d.layout.text``): one TextDrawing per run of a
+    line, on the line's baseline, aligned by TextAlignment; an underlined run over a bar at
+    its font's underline metrics."""
+    from xaml3d.text_metrics import underline
+
+    alignment = _alignment(v)
+    plain = n.text is not None and n.text.inlines is None
+    brush = foreground_brush(r, el) if plain else None  # a plain text's: the TextBlock's
+    out = []
+    top = y
+    for i, line in enumerate(n.text_lines):
+        lx = x
+        if alignment == "Center":
+            lx += (w - line.width) / 2
+        elif alignment == "Right":
+            lx += w - line.width
+        # plain text: its i-th line at i line heights; inlines: under the lines above
+        ly = y + i * line.height if plain else top
+        for run, tw in zip(line.runs, line.advances, strict=True):
+            if plain and not run.text:
+                continue  # an empty line (between two line feeds) takes its height only
+            out.append(TextDrawing(
+                text=run.text, origin=(lx, ly + line.baseline), font_size=run.size,
+                weight=run.weight, italic=run.italic, family=run.family,
+                brush=brush if plain else run.brush, **r.ctx.position(el),
+            ))  # fmt: skip
+            warn_uncovered(r, el, run.text, run.weight, run.italic, run.family)
+            if run.underline and tw > 0:
+                at, thick = underline(run.size, run.weight, run.italic, run.family)
+                bar = RectangleGeometry((lx, ly + line.baseline + at, tw, thick))
+                out.append(GeometryDrawing(bar, brush=run.brush))
+            lx += tw
+        top += line.height
     if not out:
         return None
     return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
@@ -199,36 +206,3 @@ def base_format(r, el, font: float) -> Format:
     return Format(
         size=font, weight=weight, italic=italic, brush=foreground_brush(r, el), family=family
     )
-
-
-def _inline_text(r, el, v, font: float, x: float, y: float, w: float, align_center: bool):
-    """A TextBlock's inlines (``inline_text``): one TextDrawing per run of a line, on the
-    line's shared baseline, an underlined run over a bar at the font's underline metrics."""
-    from xaml3d.text_metrics import underline
-
-    alignment = _alignment(v)
-    width = w + _SLACK if wraps(v) else math.inf
-    out = []
-    top = y
-    for line, height, base in laid_out(r, el, base_format(r, el, font), width):
-        lx = x
-        if align_center or alignment == "Center":
-            lx += (w - line_width(line)) / 2
-        elif alignment == "Right":
-            lx += w - line_width(line)
-        for text, fmt in line:
-            tw = fmt.width(text)
-            out.append(TextDrawing(
-                text=text, origin=(lx, top + base), font_size=fmt.size, weight=fmt.weight,
-                italic=fmt.italic, family=fmt.family, brush=fmt.brush, **r.ctx.position(el),
-            ))  # fmt: skip
-            warn_uncovered(r, el, text, fmt.weight, fmt.italic, fmt.family)
-            if fmt.underline and tw > 0:
-                at, thick = underline(fmt.size, fmt.weight, fmt.italic, fmt.family)
-                bar = RectangleGeometry((lx, top + base + at, tw, thick))
-                out.append(GeometryDrawing(bar, brush=fmt.brush))
-            lx += tw
-        top += height
-    if not out:
-        return None
-    return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))

@@ -60,9 +60,7 @@ from xaml3d.xaml.panels_reader import (
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.shapes_reader import SHAPES, shape_drawing
 from xaml3d.xaml.visual_style import box_drawing, element_brush, rgb
-from xaml3d.xaml.visual_text import (
-    text_drawing,
-)
+from xaml3d.xaml.visual_text import block_drawing
 
 _TEXT_CONTROLS = TEXT_CONTROLS
 _SHAPES = SHAPES
@@ -164,6 +162,8 @@ def _layout_clip(n, v=None):
     whatever its geometry and pen cover, inside its box or not."""
     if n.type in _SHAPES or n.type == "Image":
         return _shape_clip(n, v)
+    if n.text is not None and n.kind == L.CONTROL:  # layout says whether its lines overflow
+        return RectangleGeometry((0.0, 0.0, *n.ink)) if n.text_overflow else None
     if n.type not in _TEXT_CONTROLS or n.estimate is None:
         return None
     w, h = n.ink
@@ -230,7 +230,8 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local == "TextBlock":
         out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
         pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-        t = text_drawing(r, el, v, font, pad[0], pad[1], w - pad[0] - pad[2])
+        # the lines layout broke at its arranged width (Node.text_lines)
+        t = block_drawing(r, el, v, n, pad[0], pad[1], w - pad[0] - pad[2])
         if t is not None:
             out.append(t)
         return
