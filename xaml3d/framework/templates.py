@@ -34,7 +34,7 @@ user template are left to the reader's theme drawing.
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import data_triggers, items, markup, string_formats
+from xaml3d.framework import data_triggers, items, markup, string_formats, text_host
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -55,14 +55,17 @@ CONTENT_CONTROLS = {
 # controls whose template, when neither they nor their Style set one, is the theme's
 # (``Services.theme_styles``: the package's theme dictionary)
 THEMED = {"Button", "ToggleButton", "RepeatButton"}
+THEMED |= {"Label", "TextBox", "PasswordBox"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
-SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS
+# controls whose template's PART_ContentHost shows their text (text_host.py)
+TEXT_HOSTS = set(text_host.HOSTS)
+SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS | TEXT_HOSTS
 # controls whose templates place parts xaml3d does not generate (items, text hosts, tracks)
 UNSUPPORTED = {
     "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
-    "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid", "TextBox", "PasswordBox",
+    "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid",
     "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
 }  # fmt: skip
@@ -383,6 +386,8 @@ class _Instantiation:
                     self.present(c, part)
             if c.type in ITEMS_CONTROLS:
                 self.host_items(c, parts)
+            if c.type in TEXT_HOSTS:
+                text_host.fill(sv, c, names.get(text_host.PART), _literal)
             self.template_triggers_on_parts(c, template, names)
         self.finish(c, instance, template)
         return instance
@@ -532,7 +537,10 @@ class _Instantiation:
             value = string_formats.format_text(self.sv, fmt, value, number, presenter,
                                                "ContentStringFormat")  # fmt: skip
         text = access_text(value) if access else value
-        block = presenter.makeelement(_same_ns(presenter, "TextBlock"), {"Text": _literal(text)})
+        # the presenter's own TextBlock is in its template: the document's implicit TextBlock
+        # Style does not reach it (WPF's implicit Style lookup stops at the templated parent)
+        block = presenter.makeelement(_same_ns(presenter, "TextBlock"),
+                                      {"Text": _literal(text), "Style": "{x:Null}"})  # fmt: skip
         sv.made(block, presenter)
         presenter.append(block)
 
