@@ -29,6 +29,8 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
 Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
 take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
 user template are left to the reader's theme drawing.
+Label, TextBox and PasswordBox are in ``THEMED`` too; a TextBox's or PasswordBox's
+``PART_ContentHost`` holds its text view (text_host.py), in the theme's template or a user's.
 """
 
 from __future__ import annotations
@@ -56,6 +58,9 @@ CONTENT_CONTROLS = {
 # (``Services.theme_styles``: the package's theme dictionary)
 THEMED = {"Button", "ToggleButton", "RepeatButton"}
 THEMED |= {"Label", "TextBox", "PasswordBox"}
+# themed controls a ToolBar draws in the theme's template (its TextBox Style, ToolBar.
+# TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
+_OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
@@ -344,7 +349,7 @@ class _Instantiation:
                 return (entry, None) if _is_template(entry) else None
         value = c.setters.get("Template")
         if value is None:
-            if c.type not in THEMED or _on_tool_bar(el, sv):
+            if c.type not in THEMED or (c.type not in _OWN_ON_TOOL_BAR and _on_tool_bar(el, sv)):
                 return None
             value = c.theme_setters().get("Template")
             if value is None or value[0] != "element" or not _is_template(value[1]):
