@@ -2,8 +2,8 @@
 
 One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3D) and those
 beside the viewports (``render --window``): text by the package font's advance widths and
-Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock, Label,
-TextBox, CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which its
+Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of TextBlock,
+CheckBox, RadioButton and a closed ComboBox (and of a ToolBar's buttons, which its
 template restyles)
 (a TextBlock's wrapped or trimmed lines at the width offered); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
@@ -22,7 +22,6 @@ from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
     _OPTION_MARK,
-    _TEXT_BOX_INSET,
     AERO2,
     _combo_items,
     scroll_bar_upright,
@@ -40,7 +39,7 @@ from xaml3d.xaml.visual_text import (
 from xaml3d.xaml.visual_text import text_of as _text_of
 from xaml3d.xaml.visual_text import wrapped_lines as _lines
 
-TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
+TEXT_CONTROLS = {"TextBlock", "Button", "ToggleButton", "RepeatButton",
                  "CheckBox", "RadioButton"}  # fmt: skip
 
 
@@ -71,9 +70,7 @@ def content_size(reader, n, v, el, font: float):
         # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
         return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font, style[2]) + 6 + 2)
     if local in TEXT_CONTROLS:
-        if (local == "TextBlock" and (wraps(v) or trimming(v) != "None")) or (
-            local == "TextBox" and wraps(v)
-        ):
+        if local == "TextBlock" and (wraps(v) or trimming(v) != "None"):
             # WPF breaks (or trims) the lines at the width the TextBlock is offered (its
             # own Width or MaxWidth, else its parent's room), less its Padding
             n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
@@ -92,15 +89,13 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
     pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
     inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
     block = local == "TextBlock"
-    if local == "TextBox":  # its text view is 2 px inside the padding each side
-        inner = max(0.0, inner - 2 * _TEXT_BOX_INSET - 2.0)  # and inside its 1 px border
     if block and has_inlines(el):  # runs in their own fonts, LineBreaks (inline_text)
         base = base_format(v.r, el, font)
         w, h = size_of(v.r, el, base, inner if wraps(v) else math.inf)
         return w + pad[0] + pad[2], max(h, line_height(font, base.family)) + pad[1] + pad[3]
     text = _text_of(el)
     weight, italic, family = _font_style(el, v.r)
-    wrapping = (block or local == "TextBox") and wraps(v)
+    wrapping = block and wraps(v)
     lines = _lines(text, font, weight, italic, inner if wrapping else math.inf, family)
     if block and math.isfinite(inner):  # a trimmed line is as wide as what is shown of it
         mode = trimming(v)
@@ -113,6 +108,4 @@ def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
         return _OPTION_MARK + 4.0 + w, max(_OPTION_MARK, h - 1.0)
     w += pad[0] + pad[2] + 2 * border
     h += pad[1] + pad[3] + 2 * border
-    if local == "TextBox":
-        w += 2 * _TEXT_BOX_INSET
     return w, h

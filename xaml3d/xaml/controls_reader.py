@@ -1,6 +1,6 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
-Covers TextBox, Label, CheckBox, RadioButton, ProgressBar,
+Covers CheckBox, RadioButton, ProgressBar,
 a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
 the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
@@ -35,8 +35,6 @@ from xaml3d.xaml.visual_text import text_drawing as _text
 from xaml3d.xaml.visual_text import text_of as _text_of
 
 AERO2 = {
-    "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),
-    "Label": dict(background=None, border=None, padding=(5, 5, 5, 5)),
     "CheckBox": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
     "RadioButton": dict(background=_rgb("FFFFFF"), border=_rgb("707070"), padding=(0, 0, 0, 0)),
 }
@@ -47,7 +45,6 @@ _CHECK_GLYPH = (
     "L 4.255,6.08833L 8.33331,1.52588e-005L 9.97498,1.22334 Z"
 )
 _GLYPH = _rgb("212121")
-_TEXT_BOX_INSET = 2.0  # TextBox text sits 2 px inside its padding (the text view's margin)
 
 
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
@@ -79,12 +76,10 @@ def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -
             out.append(t)
         return
     out.extend(_box_drawing(background, border, thick, 0.0, w, h))
-    inset_x = thick[0] + pad[0] + (_TEXT_BOX_INSET if local == "TextBox" else 0.0)
+    inset_x = thick[0] + pad[0]
     inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
     ty = thick[1] + pad[1]
-    # a TextBox's text view is 2 px inside its padding each side: its lines wrap there
-    text_w = inner_w - 2 * _TEXT_BOX_INSET if local == "TextBox" else inner_w
-    t = _text(r, el, v, font, inset_x, ty, text_w)
+    t = _text(r, el, v, font, inset_x, ty, inner_w)
     if t is not None:
         # the content presenter's layout clip: text never spills over the border
         inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]

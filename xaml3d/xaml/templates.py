@@ -5,10 +5,7 @@ content presenters around the control's content. xaml3d builds the same tree of 
 for the controls whose template places content, so their content is laid out and drawn inside
 their chrome, beside the viewports (``render --window``) and inside visuals alike:
 
-- Label whose content is an element (a StackPanel holding an
-  Image and a TextBlock...): the chrome's Border, then a ContentPresenter at Padding, aligned by
-  HorizontalContentAlignment / VerticalContentAlignment (Label: top left);
-  CheckBox, RadioButton: the 13 px mark, then the content at Padding 4,-1,0,0, centred on the row.
+- CheckBox, RadioButton: the 13 px mark, then the content at Padding 4,-1,0,0, centred on the row.
 - ListBox: a white Border (#FFABADB3, 1 px, Padding 1), the items stacked; each ListBoxItem a
   1 px transparent Border with Padding 4,1, the selected one (SelectedIndex or IsSelected) in
   Aero2's inactive selection look (#3DDADADA inside #FFDADADA: a picture has no keyboard focus).
@@ -69,7 +66,7 @@ from xaml3d.scene.types import GradientStop, LinearGradientBrush
 from xaml3d.text_metrics import baseline, line_height, text_width
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
-from xaml3d.xaml.controls_reader import _OPTION_MARK, AERO2, option_mark
+from xaml3d.xaml.controls_reader import _OPTION_MARK, option_mark
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.text_content import holder_text, property_element
@@ -81,13 +78,12 @@ from xaml3d.xaml.visual_text import warn_uncovered
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
-_CONTENT_CONTROLS = {"Label"}
 _OPTIONS = {"CheckBox", "RadioButton"}
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
-TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
+TEMPLATED = _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
 TEMPLATED |= {"Button", "ToggleButton", "RepeatButton"}  # a ToolBar's: drawn as its parts
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -138,7 +134,7 @@ def expands(reader, el, local: str) -> bool:
     """Whether ``el`` is laid out through its template's parts (not as one measured box)."""
     if not is_presentation(qname(el.tag)[0]):
         return False
-    if local in _CONTENT_CONTROLS or local in _OPTIONS:
+    if local in _OPTIONS:
         return bool(rich_content(reader, el))
     return local in _HEADERED or local in _MENUS or local in _BARS or local in _DATES
 
@@ -147,9 +143,7 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
     """Turn the control node ``n`` into its template's tree (its kind and children change)."""
     local = n.type
     n.estimate = None
-    if local in _CONTENT_CONTROLS:
-        _content_control(reader, n, el, v, font)
-    elif local in _OPTIONS:
+    if local in _OPTIONS:
         _option(reader, n, el, v, font)
     elif local in _TEMPLATES:
         _TEMPLATES[local](reader, n, el, v, font)
@@ -239,15 +233,6 @@ def _chrome(reader, n, v, background, border, thickness=(1.0,) * 4) -> None:
 
 
 # --------------------------------------------------------------------------- the templates
-
-
-def _content_control(reader, n, el, v, font) -> None:
-    look = AERO2[n.type]
-    _chrome(reader, n, v, look["background"], look["border"])
-    pad = v.get("Padding", parse_thickness, look["padding"])
-    h, vv = _align(v, *(("Left", "Top") if n.type == "Label" else ("Center", "Center")))
-    n.children = [_presenter(reader, font, _build_all(reader, rich_content(reader, el), font),
-                             pad, h, vv)]  # fmt: skip
 
 
 def _option(reader, n, el, v, font) -> None:

@@ -140,7 +140,7 @@ def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_cent
     if not text:
         return None
     weight, italic, family = font_style(el, r)
-    wrapping = (block or qname(el.tag)[1] == "TextBox") and wraps(v)  # TextBox wraps too
+    wrapping = block and wraps(v)
     width = w + _SLACK if wrapping else math.inf
     mode = trimming(v) if block else "None"
     alignment = v.get("TextAlignment", lambda s: V.parse_enum(s, ("Left", "Center", "Right",
