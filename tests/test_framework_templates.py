@@ -738,3 +738,58 @@ def test_theme_template_draws_label_text_box_and_password_box(tmp_path):
     # the password's marks are drawn (black), the empty part of the box white
     y = round(rects[3][1])
     assert px[y + 2 : y + 15, 3:30, :3].min() < 60 and (px[y + 2 : y + 15, 50:78] == 255).all()
+
+
+def test_text_host_in_a_users_template_and_inside_a_visual(tmp_path):
+    # a user's TextBox template: its PART_ContentHost (a ScrollViewer) holds the text view, as
+    # WPF's TextBoxBase fills it; no TPL001
+    feature = window(
+        "",
+        """
+      <TextBox Text="mine" Height="30">
+        <TextBox.Template>
+          <ControlTemplate TargetType="TextBox">
+            <Border Background="Yellow" BorderBrush="Blue" BorderThickness="2">
+              <ScrollViewer x:Name="PART_ContentHost" Margin="3" />
+            </Border>
+          </ControlTemplate>
+        </TextBox.Template>
+      </TextBox>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Height="30" Foreground="#FF000000">
+        <Border Background="Yellow" BorderBrush="Blue" BorderThickness="2">
+          <ContentPresenter Margin="3"><TextBlock Text="mine" Margin="2,0,2,0" /></ContentPresenter>
+        </Border>
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[0, 40]) == (0, 0, 255, 255) and tuple(px[4, 40]) == (255, 255, 0, 255)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code == "TPL001"]
+    # a PasswordBox, a TextBox and a Label inside a VisualBrush's visual: drawn from the theme
+    visual = """<StackPanel Width="64" Background="White">
+      <PasswordBox Password="ab" /><TextBox Text="x" /><Label Content="L" /></StackPanel>"""
+    twin = """<StackPanel Width="64" Background="White">
+      <ContentControl Foreground="#FF000000">
+        <Border Background="#FFFFFFFF" BorderBrush="#FFABADB3" BorderThickness="1">
+          <ContentPresenter><TextBlock Text="\u25cf\u25cf" Margin="2,0,2,0" /></ContentPresenter>
+        </Border>
+      </ContentControl>
+      <ContentControl Foreground="#FF000000">
+        <Border Background="#FFFFFFFF" BorderBrush="#FFABADB3" BorderThickness="1">
+          <ContentPresenter><TextBlock Text="x" Margin="2,0,2,0" /></ContentPresenter>
+        </Border>
+      </ContentControl>
+      <ContentControl Foreground="#FF000000">
+        <Border Background="Transparent" Padding="5">
+          <ContentPresenter HorizontalAlignment="Left" VerticalAlignment="Top">
+            <TextBlock Text="L" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl></StackPanel>"""
+    doc = in_brush("", visual)
+    px = _same(tmp_path, doc, in_brush("", twin), _viewport_pixels)
+    assert px[2:14, 3:20, :3].min() < 60  # the password's marks
+    assert not [d for d in load(doc, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
