@@ -687,7 +687,8 @@ def test_theme_template_draws_label_text_box_and_password_box(tmp_path):
       <TextBox Width="60" TextWrapping="Wrap" TextAlignment="Center">one two three</TextBox>
       <PasswordBox Password="abc" />
       <PasswordBox Password="xy" PasswordChar="*" />
-      <StackPanel IsEnabled="False"><TextBox Text="Off" /><Label>Off</Label></StackPanel>"""
+      <StackPanel IsEnabled="False"><TextBox Text="Off" /><Label>Off</Label></StackPanel>
+      <TextBox Padding="4,1" Text="pad" />"""
 
     def label(text, foreground="#FF000000"):
         return f"""
@@ -716,6 +717,7 @@ def test_theme_template_draws_label_text_box_and_password_box(tmp_path):
         box("**"),
         box("Off", opacity="0.56"),
         label("Off", "#FF6D6D6D"),
+        box("pad", view=' Margin="6,1,6,1"').replace(' Margin="2,0,2,0"', ""),
     ))  # fmt: skip
     feature = window("", controls).replace('Height="139"', 'Height="239"')
     px = _same(tmp_path, feature, window("", twins).replace('Height="139"', 'Height="239"'))
@@ -735,6 +737,8 @@ def test_theme_template_draws_label_text_box_and_password_box(tmp_path):
     # the text view starts 2 px inside the border: nothing inked at the first 2 columns in
     y = round(rects[1][1])
     assert (px[y + 2 : y + 15, 1:3, :3] == 255).all() and px[y + 2 : y + 15, 3:40, :3].min() < 80
+    # a Padding insets the text view inside the border, beside its own 2 px
+    assert rects[7][3] == line + 4
     # the password's marks are drawn (black), the empty part of the box white
     y = round(rects[3][1])
     assert px[y + 2 : y + 15, 3:30, :3].min() < 60 and (px[y + 2 : y + 15, 50:78] == 255).all()

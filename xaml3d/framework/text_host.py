@@ -5,9 +5,10 @@ WPF makes the host's content a TextBoxView that draws the text 2 px in from its 
 right edges and scrolls itself (the ScrollViewer offers it its own viewport: no infinite
 width to wrap against). Here the host becomes a plain holder (laid out and drawn as a
 ContentPresenter: the scroll bars a TextBox's template hides never show) of a TextBlock with
-Margin 2,0,2,0 showing the control's ``Text`` (a TextBox's, with its TextWrapping and
-TextAlignment) or its ``PasswordChar`` once per character of ``Password`` (a PasswordBox's:
-usually empty, an empty box a line high).
+Margin 2,0,2,0 (plus the control's Padding, where WPF's ScrollViewer places its content)
+showing the control's ``Text`` (a TextBox's, with its TextWrapping and TextAlignment) or its
+``PasswordChar`` once per character of ``Password`` (a PasswordBox's: usually empty, an empty
+box a line high).
 """
 
 from __future__ import annotations
@@ -42,7 +43,7 @@ def fill(sv, c, host, literal) -> None:
         host.remove(k)  # a ScrollViewer's content written in the template: replaced
     host.text = None
     # not a TextBlock in WPF: no TextBlock Style of the document's applies to it
-    attrs = {"Text": literal(shown_text(c)), "Margin": INSET, "Style": "{x:Null}"}
+    attrs = {"Text": literal(shown_text(c)), "Margin": _margin(c), "Style": "{x:Null}"}
     if c.type == "TextBox":
         for prop in _TEXT_PROPS:
             v = c.value(prop)
@@ -51,6 +52,27 @@ def fill(sv, c, host, literal) -> None:
     block = host.makeelement(f"{ns}}}TextBlock" if ns else "TextBlock", attrs)
     sv.made(block, host)
     host.append(block)
+
+
+def _margin(c) -> str:
+    """The text view's margin in the host: the control's Padding (WPF's ScrollViewer places
+    its content at it) and the view's 2 px each side. A Padding not known at load (markup)
+    leaves the 2 px alone; one that is no Thickness is passed on as written, for the reader to
+    report where it is written."""
+    v = c.value("Padding")
+    text = v[1] if v is not None and v[0] == "text" else ""
+    if not text.strip() or markup.split(text) is not None:
+        return INSET
+    try:
+        nums = [float(p) for p in text.replace(",", " ").split()]
+    except ValueError:
+        return text
+    if len(nums) in (1, 2):
+        nums *= 4 // len(nums)
+    if len(nums) != 4 or not all(abs(n) < 1e9 for n in nums):
+        return text
+    left, top, right, bottom = nums
+    return f"{left + 2:g},{top:g},{right + 2:g},{bottom:g}"
 
 
 def shown_text(c) -> str:
