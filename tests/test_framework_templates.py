@@ -388,11 +388,11 @@ def test_unsupported_template_is_said(tmp_path):
     feature = window(
         "",
         """
-      <TextBox Height="30">
-        <TextBox.Template>
-          <ControlTemplate TargetType="TextBox"><Border Background="Blue" /></ControlTemplate>
-        </TextBox.Template>
-      </TextBox>
+      <Slider Height="30">
+        <Slider.Template>
+          <ControlTemplate TargetType="Slider"><Border Background="Blue" /></ControlTemplate>
+        </Slider.Template>
+      </Slider>
       <ToggleButton Height="20" Content="x">
         <ToggleButton.Template>
           <ControlTemplate TargetType="ToggleButton">
@@ -412,7 +412,7 @@ def test_unsupported_template_is_said(tmp_path):
     path = tmp_path / "unsupported.xaml"
     path.write_text(feature, encoding="utf-8")
     codes = {(d.code, d.line) for d in load(path).diagnostics}
-    assert ("TPL001", _line(feature, "<TextBox ")) in codes
+    assert ("TPL001", _line(feature, "<Slider ")) in codes
     assert ("BND001", _line(feature, "<DataTrigger")) in codes  # its binding needs code
     assert ("TPL005", _line(feature, 'TargetName="nothere"')) in codes
     px = _window_pixels(path)
@@ -784,3 +784,128 @@ def test_a_presenters_text_takes_the_applications_implicit_text_style_not_the_wi
     px = np.asarray(rgba)
     # the CheckBox's text (from x = 20, 1 px above its row) and the TextBlock below: red
     assert tuple(px[13, 22][:3]) == (255, 0, 0) and tuple(px[20, 40][:3]) == (255, 0, 0)
+
+
+def test_theme_template_draws_label_text_box_and_password_box(tmp_path):
+    # no template of the document's: the theme's. A Label: a Border at Padding 5 around a
+    # presenter top left (its access key hidden). A TextBox and a PasswordBox: a white Border
+    # (#FFABADB3, 1 px) around PART_ContentHost, which holds the text view: a TextBlock 2 px in
+    # from each side showing Text (TextWrapping and TextAlignment passed on), or PasswordChar
+    # for each character of Password. IsEnabled False: Label's grey text, the box's Border at
+    # Opacity 0.56; IsReadOnly shows nothing
+    controls = """
+      <Label Content="_Name" />
+      <TextBox Text="Hello" IsReadOnly="True" />
+      <TextBox Width="60" TextWrapping="Wrap" TextAlignment="Center">one two three</TextBox>
+      <PasswordBox Password="abc" />
+      <PasswordBox Password="xy" PasswordChar="*" />
+      <StackPanel IsEnabled="False"><TextBox Text="Off" /><Label>Off</Label></StackPanel>
+      <TextBox Padding="4,1" Text="pad" />"""
+
+    def label(text, foreground="#FF000000"):
+        return f"""
+      <ContentControl Foreground="{foreground}">
+        <Border Background="Transparent" Padding="5">
+          <ContentPresenter HorizontalAlignment="Left" VerticalAlignment="Top">
+            <TextBlock Text="{text}" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl>"""
+
+    def box(text, own="", opacity="1", view=""):
+        return f"""
+      <ContentControl Foreground="#FF000000"{own}>
+        <Border Background="#FFFFFFFF" BorderBrush="#FFABADB3" BorderThickness="1"
+                Opacity="{opacity}">
+          <ContentPresenter><TextBlock Text="{text}" Margin="2,0,2,0"{view} /></ContentPresenter>
+        </Border>
+      </ContentControl>"""
+
+    twins = "".join((
+        label("Name"),
+        box("Hello"),
+        box("one two three", ' Width="60"', view=' TextWrapping="Wrap" TextAlignment="Center"'),
+        box("\u25cf\u25cf\u25cf"),
+        box("**"),
+        box("Off", opacity="0.56"),
+        label("Off", "#FF6D6D6D"),
+        box("pad", view=' Margin="6,1,6,1"').replace(' Margin="2,0,2,0"', ""),
+    ))  # fmt: skip
+    feature = window("", controls).replace('Height="139"', 'Height="239"')
+    px = _same(tmp_path, feature, window("", twins).replace('Height="139"', 'Height="239"'))
+    scene = load(feature, text=True)
+    boxes = [b for b in scene.layout.boxes if b.type in ("Label", "TextBox", "PasswordBox")]
+    rects = [b.rect for b in boxes]
+    line = 12 * 2724 / 2048  # Segoe UI's line at 12 px
+    # Label: a line and Padding 5 each side; TextBox, PasswordBox: a line and the 1 px border
+    assert rects[0][3] == line + 10 and rects[1][3] == line + 2
+    # wrapped in 60 - 2 - 4 px: "one two" | "three"
+    assert rects[2][2] == 60 and rects[2][3] == 2 * line + 2
+    # the box's white face and border; the disabled box's border at Opacity 0.56 on white
+    y = round(rects[1][1])
+    assert tuple(px[y, 40]) == (171, 173, 179, 255) and tuple(px[y + 8, 70]) == (255,) * 4
+    y = round(rects[5][1])
+    assert tuple(px[y, 40][:3]) == tuple(round(255 - 0.56 * (255 - c)) for c in (171, 173, 179))
+    # the text view starts 2 px inside the border: nothing inked at the first 2 columns in
+    y = round(rects[1][1])
+    assert (px[y + 2 : y + 15, 1:3, :3] == 255).all() and px[y + 2 : y + 15, 3:40, :3].min() < 80
+    # a Padding insets the text view inside the border, beside its own 2 px
+    assert rects[7][3] == line + 4
+    # the password's marks are drawn (black), the empty part of the box white
+    y = round(rects[3][1])
+    assert px[y + 2 : y + 15, 3:30, :3].min() < 60 and (px[y + 2 : y + 15, 50:78] == 255).all()
+
+
+def test_text_host_in_a_users_template_and_inside_a_visual(tmp_path):
+    # a user's TextBox template: its PART_ContentHost (a ScrollViewer) holds the text view, as
+    # WPF's TextBoxBase fills it; no TPL001
+    feature = window(
+        "",
+        """
+      <TextBox Text="mine" Height="30">
+        <TextBox.Template>
+          <ControlTemplate TargetType="TextBox">
+            <Border Background="Yellow" BorderBrush="Blue" BorderThickness="2">
+              <ScrollViewer x:Name="PART_ContentHost" Margin="3" />
+            </Border>
+          </ControlTemplate>
+        </TextBox.Template>
+      </TextBox>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Height="30" Foreground="#FF000000">
+        <Border Background="Yellow" BorderBrush="Blue" BorderThickness="2">
+          <ContentPresenter Margin="3"><TextBlock Text="mine" Margin="2,0,2,0" /></ContentPresenter>
+        </Border>
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[0, 40]) == (0, 0, 255, 255) and tuple(px[4, 40]) == (255, 255, 0, 255)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code == "TPL001"]
+    # a PasswordBox, a TextBox and a Label inside a VisualBrush's visual: drawn from the theme
+    visual = """<StackPanel Width="64" Background="White">
+      <PasswordBox Password="ab" /><TextBox Text="x" /><Label Content="L" /></StackPanel>"""
+    twin = """<StackPanel Width="64" Background="White">
+      <ContentControl Foreground="#FF000000">
+        <Border Background="#FFFFFFFF" BorderBrush="#FFABADB3" BorderThickness="1">
+          <ContentPresenter><TextBlock Text="\u25cf\u25cf" Margin="2,0,2,0" /></ContentPresenter>
+        </Border>
+      </ContentControl>
+      <ContentControl Foreground="#FF000000">
+        <Border Background="#FFFFFFFF" BorderBrush="#FFABADB3" BorderThickness="1">
+          <ContentPresenter><TextBlock Text="x" Margin="2,0,2,0" /></ContentPresenter>
+        </Border>
+      </ContentControl>
+      <ContentControl Foreground="#FF000000">
+        <Border Background="Transparent" Padding="5">
+          <ContentPresenter HorizontalAlignment="Left" VerticalAlignment="Top">
+            <TextBlock Text="L" />
+          </ContentPresenter>
+        </Border>
+      </ContentControl></StackPanel>"""
+    doc = in_brush("", visual)
+    px = _same(tmp_path, doc, in_brush("", twin), _viewport_pixels)
+    assert px[2:14, 3:20, :3].min() < 60  # the password's marks
+    assert not [d for d in load(doc, text=True).diagnostics if d.code in ("DRW002", "LAY003")]

@@ -90,7 +90,55 @@ def test_the_theme_keeps_its_brushes_by_aero2s_keys():
     entries = theme_entries()
     assert entries["Button.Static.Background"].get("Color") == "#FFDDDDDD"
     assert entries["Button.Disabled.Foreground"].get("Color") == "#FF838383"
-    assert theme_styles("Label") == []  # not yet written in the theme: no Style
+    assert theme_styles("DataGrid") == []  # not written in the theme: no Style
+
+
+def _template(chain):
+    kind, template = _setters(chain)["Template"]
+    assert kind == "element" and qname(template.tag)[1] == "ControlTemplate"
+    (visual,) = [k for k in _kids(template) if "." not in qname(k.tag)[1]]
+    (holder,) = [k for k in _kids(template) if qname(k.tag)[1] == "ControlTemplate.Triggers"]
+    found = {}
+    for trigger in _kids(holder):
+        found[(trigger.get("Property"), trigger.get("Value"))] = {
+            (s.get("TargetName"), s.get("Property")): s.get("Value") for s in setters(trigger)
+        }
+    return visual, found
+
+
+def test_label_is_aero2s_bordered_content_presenter():
+    chain = theme_styles("Label")
+    values = {p: v[1] for p, v in _setters(chain).items() if v[0] == "text"}
+    assert values == {
+        "Foreground": "#FF000000",
+        "Background": "Transparent",
+        "Padding": "5",
+        "HorizontalContentAlignment": "Left",
+        "VerticalContentAlignment": "Top",
+    }
+    border, found = _template(chain)
+    assert qname(border.tag)[1] == "Border" and border.get("Padding") == "{TemplateBinding Padding}"
+    (presenter,) = _kids(border)
+    assert qname(presenter.tag)[1] == "ContentPresenter"
+    assert presenter.get("RecognizesAccessKey") == "True"
+    assert found[("IsEnabled", "False")] == {(None, "Foreground"): "#FF6D6D6D"}
+
+
+@pytest.mark.parametrize("control", ["TextBox", "PasswordBox"])
+def test_text_boxes_are_aero2s_border_around_the_content_host(control):
+    chain = theme_styles(control)
+    values = {p: v[1] for p, v in _setters(chain).items() if v[0] == "text"}
+    assert values["Background"] == "#FFFFFFFF" and values["BorderBrush"] == "#FFABADB3"
+    assert values["BorderThickness"] == "1" and "Padding" not in values  # Aero2 sets none
+    if control == "PasswordBox":
+        assert values["PasswordChar"] == "\u25cf"
+    else:
+        assert x_attr(chain[0], "Key") == "TextBoxBaseStyle"
+    border, found = _template(chain)
+    assert qname(border.tag)[1] == "Border" and x_attr(border, "Name") == "border"
+    (host,) = _kids(border)
+    assert qname(host.tag)[1] == "ScrollViewer" and x_attr(host, "Name") == "PART_ContentHost"
+    assert found[("IsEnabled", "False")] == {("border", "Opacity"): "0.56"}
 
 
 READ_ONCE = """

@@ -84,9 +84,10 @@ def test_wrap_panel_gridsplitter_and_wrapping_textbox_from_markup(tmp_path):
     # the WrapPanel's three RadioButtons in three lines of 18.96 px (14.96 + the margins): each
     # is its 15 px mark column, Padding 4 and its text, so no two of them fit in 100 px
     assert boxes["WrapPanel"].rect[3] == 3 * (12 * 2724 / 2048 - 1 + 4)
-    # the TextBox wraps in its text view, 72 px (80 less Padding 1, the 1 px border and the
-    # 2 px insets, each side): "aaaa bbbb" is 59.2 px, "aaaa bbbb cccc" 85.2 px: three lines
-    assert boxes["TextBox"].rect[3] == 3 * (12 * 2724 / 2048) + 4
+    # the TextBox wraps in its text view, 74 px (80 less the 1 px border and the 2 px
+    # insets, each side: Aero2's TextBox Style sets no Padding): "aaaa bbbb" is 59.2 px,
+    # "aaaa bbbb cccc" 85.2 px: three lines, and the border
+    assert boxes["TextBox"].rect[3] == 3 * (12 * 2724 / 2048) + 2
 
 
 def test_wrap_panel_in_a_visual_brush_wraps_and_draws_its_background(tmp_path):

@@ -28,14 +28,16 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
 
 Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
 take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox and RadioButton
-(their triggers on HasContent and on IsChecked's ``{x:Null}`` included); the other controls
-without a user template are left to the reader's theme drawing.
+(their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
+PasswordBox (a TextBox's or PasswordBox's ``PART_ContentHost`` holds its text view,
+text_host.py, in the theme's template or a user's); the other controls without a user template
+are left to the reader's theme drawing.
 """
 
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import data_triggers, items, markup, string_formats
+from xaml3d.framework import data_triggers, items, markup, string_formats, text_host
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -57,14 +59,20 @@ CONTENT_CONTROLS = {
 # (``Services.theme_styles``: the package's theme dictionary)
 THEMED = {"Button", "ToggleButton", "RepeatButton"}
 THEMED |= {"CheckBox", "RadioButton"}
+THEMED |= {"Label", "TextBox", "PasswordBox"}
+# themed controls a ToolBar draws in the theme's template (its TextBox Style, ToolBar.
+# TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
+_OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
-SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS
+# controls whose template's PART_ContentHost shows their text (text_host.py)
+TEXT_HOSTS = set(text_host.HOSTS)
+SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS | TEXT_HOSTS
 # controls whose templates place parts xaml3d does not generate (items, text hosts, tracks)
 UNSUPPORTED = {
     "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
-    "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid", "TextBox", "PasswordBox",
+    "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid",
     "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
 }  # fmt: skip
@@ -343,7 +351,7 @@ class _Instantiation:
                 return (entry, None) if _is_template(entry) else None
         value = c.setters.get("Template")
         if value is None:
-            if c.type not in THEMED or _on_tool_bar(el, sv):
+            if c.type not in THEMED or (c.type not in _OWN_ON_TOOL_BAR and _on_tool_bar(el, sv)):
                 return None
             value = c.theme_setters().get("Template")
             if value is None or value[0] != "element" or not _is_template(value[1]):
@@ -385,6 +393,8 @@ class _Instantiation:
                     self.present(c, part)
             if c.type in ITEMS_CONTROLS:
                 self.host_items(c, parts)
+            if c.type in TEXT_HOSTS:
+                text_host.fill(sv, c, names.get(text_host.PART), _literal)
             self.template_triggers_on_parts(c, template, names)
         self.finish(c, instance, template)
         return instance
@@ -534,6 +544,8 @@ class _Instantiation:
             value = string_formats.format_text(self.sv, fmt, value, number, presenter,
                                                "ContentStringFormat")  # fmt: skip
         text = access_text(value) if access else value
+        # the presenter's own TextBlock: only the application's implicit TextBlock Style
+        # reaches it (WPF's look-up stops at the templated parent: resources.find_implicit)
         block = presenter.makeelement(_same_ns(presenter, "TextBlock"), {"Text": _literal(text)})
         sv.made(block, presenter)
         presenter.append(block)

@@ -4,8 +4,8 @@ One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3
 beside the viewports (``render --window``): a TextBlock's text recorded for layout to measure
 (``text_block``: layout breaks its lines at the width offered); text by the package font's
 advance widths and Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of
-Label, TextBox and a closed ComboBox (and of a ToolBar's buttons, check boxes and radio buttons,
-which its template restyles); a Slider's thumb; a ScrollBar's
+a closed ComboBox (and of a ToolBar's buttons, check boxes and radio buttons, which its template
+restyles); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
 the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module
 when it measures its first control: a document without controls never loads it, nor the
@@ -21,8 +21,6 @@ from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
     _COMBO_BUTTON,
-    _TEXT_BOX_INSET,
-    AERO2,
     _combo_items,
     scroll_bar_upright,
 )
@@ -32,9 +30,8 @@ from xaml3d.xaml.text_block import text_content
 from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_text import text_of as _text_of
 from xaml3d.xaml.visual_text import wrapped_lines as _lines
-from xaml3d.xaml.visual_text import wraps
 
-TEXT_CONTROLS = {"TextBlock", "Label", "Button", "ToggleButton", "RepeatButton", "TextBox",
+TEXT_CONTROLS = {"TextBlock", "Button", "ToggleButton", "RepeatButton",
                  "CheckBox", "RadioButton"}  # fmt: skip
 
 
@@ -68,10 +65,6 @@ def content_size(reader, n, v, el, font: float):
         n.text = text_content(v, el, font)
         return (0.0, 0.0)
     if local in TEXT_CONTROLS:
-        if local == "TextBox" and wraps(v):
-            # WPF breaks the lines at the width the TextBox is offered (its own Width or
-            # MaxWidth, else its parent's room), less its Padding
-            n.measure = lambda aw, ah: _text_control_size(v, el, local, font, aw)
         return _text_control_size(v, el, local, font)
     return None
 
@@ -81,22 +74,15 @@ def vertical(v) -> bool:
                  "Horizontal") == "Vertical"  # fmt: skip
 
 
-def _text_control_size(v, el, local: str, font: float, room: float = math.inf):
-    """(width, height) of a text control's content and chrome (a TextBlock is measured by
-    layout: ``text_block``); a wrapping TextBox's lines broken to ``room`` less its Padding."""
-    pad = v.get("Padding", parse_thickness, AERO2.get(local, {}).get("padding", (0,) * 4))
-    inner = max(0.0, room - pad[0] - pad[2]) if math.isfinite(room) else math.inf
-    if local == "TextBox":  # its text view is 2 px inside the padding each side
-        inner = max(0.0, inner - 2 * _TEXT_BOX_INSET - 2.0)  # and inside its 1 px border
+def _text_control_size(v, el, local: str, font: float):
+    """(width, height) of a text control's one line of content and chrome (a TextBlock is
+    measured by layout: ``text_block``)."""
+    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
     text = _text_of(el)
     weight, italic, family = _font_style(el, v.r)
-    wrapping = local == "TextBox" and wraps(v)
-    lines = _lines(text, font, weight, italic, inner if wrapping else math.inf, family)
+    lines = _lines(text, font, weight, italic, math.inf, family)
     w = max((text_width(t, font, weight, italic, family) for t in lines), default=0.0)
     h = line_height(font, family) * max(1, len(lines))
-    border = 1.0 if local in AERO2 and AERO2[local]["border"] is not None else 0.0
-    w += pad[0] + pad[2] + 2 * border
-    h += pad[1] + pad[3] + 2 * border
-    if local == "TextBox":
-        w += 2 * _TEXT_BOX_INSET
+    w += pad[0] + pad[2]
+    h += pad[1] + pad[3]
     return w, h

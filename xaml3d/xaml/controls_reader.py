@@ -1,6 +1,6 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
-Covers TextBox, Label, ProgressBar,
+Covers ProgressBar,
 a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
 the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
@@ -29,47 +29,9 @@ from xaml3d.xaml.visual_style import element_brush as _brush
 from xaml3d.xaml.visual_style import font_style as _font_style
 from xaml3d.xaml.visual_style import foreground_brush as _foreground
 from xaml3d.xaml.visual_style import rgb as _rgb
-from xaml3d.xaml.visual_text import text_drawing as _text
 from xaml3d.xaml.visual_text import text_of as _text_of
 
-AERO2 = {
-    "TextBox": dict(background=_rgb("FFFFFF"), border=_rgb("ABADB3"), padding=(1, 1, 1, 1)),
-    "Label": dict(background=None, border=None, padding=(5, 5, 5, 5)),
-}
-_TEXT_BOX_INSET = 2.0  # TextBox text sits 2 px inside its padding (the text view's margin)
-
-
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
-
-
-def _control(r, v, el, local: str, font: float, w: float, h: float, out: list) -> None:
-    look = AERO2[local]
-    rich = [k for k in el if isinstance(k.tag, str) and "." not in qname(k.tag)[1]
-            and qname(k.tag)[1] not in _INLINES]  # fmt: skip
-    if rich:
-        msg = (
-            f"the {qname(rich[0].tag)[1]} inside this {local} is not drawn: only the text of "
-            "its content is"
-        )
-        r.ctx.diag("DRW002", msg, rich[0])
-    background = _brush(r, v, "Background", look["background"])
-    border = _brush(r, v, "BorderBrush", look["border"])
-    thick = v.get(
-        "BorderThickness", parse_thickness, (1.0,) * 4 if border is not None else (0,) * 4
-    )
-    pad = v.get("Padding", parse_thickness, look["padding"])
-    out.extend(_box_drawing(background, border, thick, 0.0, w, h))
-    inset_x = thick[0] + pad[0] + (_TEXT_BOX_INSET if local == "TextBox" else 0.0)
-    inner_w = w - thick[0] - thick[2] - pad[0] - pad[2]
-    ty = thick[1] + pad[1]
-    # a TextBox's text view is 2 px inside its padding each side: its lines wrap there
-    text_w = inner_w - 2 * _TEXT_BOX_INSET if local == "TextBox" else inner_w
-    t = _text(r, el, v, font, inset_x, ty, text_w)
-    if t is not None:
-        # the content presenter's layout clip: text never spills over the border
-        inner_h = h - thick[1] - thick[3] - pad[1] - pad[3]
-        box = (thick[0] + pad[0], thick[1] + pad[1], max(0.0, inner_w), max(0.0, inner_h))
-        out.append(DrawingGroup(children=(t,), clip=RectangleGeometry(box)))
 
 
 def _progress_bar(r, v, w: float, h: float, out: list) -> None:

@@ -5,9 +5,6 @@ content presenters around the control's content. xaml3d builds the same tree of 
 for the controls whose template places content, so their content is laid out and drawn inside
 their chrome, beside the viewports (``render --window``) and inside visuals alike:
 
-- Label whose content is an element (a StackPanel holding an
-  Image and a TextBlock...): the chrome's Border, then a ContentPresenter at Padding, aligned by
-  HorizontalContentAlignment / VerticalContentAlignment (Label: top left).
 - ListBox: a white Border (#FFABADB3, 1 px, Padding 1), the items stacked; each ListBoxItem a
   1 px transparent Border with Padding 4,1, the selected one (SelectedIndex or IsSelected) in
   Aero2's inactive selection look (#3DDADADA inside #FFDADADA: a picture has no keyboard focus).
@@ -68,7 +65,6 @@ from xaml3d.scene.text_runs import Run, TextContent
 from xaml3d.scene.types import GradientStop, LinearGradientBrush
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import is_presentation, qname, split_markup
-from xaml3d.xaml.controls_reader import AERO2
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import ElementValues, parse_thickness
 from xaml3d.xaml.text_content import holder_text, property_element
@@ -80,13 +76,12 @@ from xaml3d.xaml.visual_text import warn_uncovered
 
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
-_CONTENT_CONTROLS = {"Label"}
 _OPTIONS = {"CheckBox", "RadioButton"}  # a ToolBar's: drawn as its parts
 _HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
-TEMPLATED = _CONTENT_CONTROLS | _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
+TEMPLATED = _OPTIONS | _HEADERED | _MENUS | _BARS | _DATES
 TEMPLATED |= {"Button", "ToggleButton", "RepeatButton"}  # a ToolBar's: drawn as its parts
 _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
@@ -137,8 +132,6 @@ def expands(reader, el, local: str) -> bool:
     """Whether ``el`` is laid out through its template's parts (not as one measured box)."""
     if not is_presentation(qname(el.tag)[0]):
         return False
-    if local in _CONTENT_CONTROLS:
-        return bool(rich_content(reader, el))
     return local in _HEADERED or local in _MENUS or local in _BARS or local in _DATES
 
 
@@ -146,9 +139,7 @@ def expand(reader, n: L.Node, el, v: ElementValues, font: float) -> None:
     """Turn the control node ``n`` into its template's tree (its kind and children change)."""
     local = n.type
     n.estimate = None
-    if local in _CONTENT_CONTROLS:
-        _content_control(reader, n, el, v, font)
-    elif local in _TEMPLATES:
+    if local in _TEMPLATES:
         _TEMPLATES[local](reader, n, el, v, font)
     else:  # a TabItem outside a TabControl: its header alone
         _tab_item(reader, n, el, v, font, False)
@@ -238,15 +229,6 @@ def _chrome(reader, n, v, background, border, thickness=(1.0,) * 4) -> None:
 
 
 # --------------------------------------------------------------------------- the templates
-
-
-def _content_control(reader, n, el, v, font) -> None:
-    look = AERO2[n.type]
-    _chrome(reader, n, v, look["background"], look["border"])
-    pad = v.get("Padding", parse_thickness, look["padding"])
-    h, vv = _align(v, *(("Left", "Top") if n.type == "Label" else ("Center", "Center")))
-    n.children = [_presenter(reader, font, _build_all(reader, rich_content(reader, el), font),
-                             pad, h, vv)]  # fmt: skip
 
 
 def _selected_index(v, items, el) -> int:

@@ -104,14 +104,13 @@ def wrapped_lines(
 
 
 def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
-    """A control's text (Label, Button, TextBox, CheckBox...) as one TextDrawing per line (a
-    DrawingGroup when a TextBox wraps it to ``w``, the width laid out for it)."""
+    """A control's text (a ToolBar's buttons, a ComboBox's selection...) as one TextDrawing
+    per line (a DrawingGroup of several lines)."""
     text = text_of(el)
     if not text:
         return None
     weight, italic, family = font_style(el, r)
-    wrapping = qname(el.tag)[1] == "TextBox" and wraps(v)
-    width = w + _SLACK if wrapping else math.inf
+    width = math.inf  # one line per line feed: wrapping text is a TextBlock's (text_block)
     alignment = _alignment(v)
     brush = foreground_brush(r, el)
     out = []

@@ -43,9 +43,7 @@ from xaml3d.xaml.context import qname
 from xaml3d.xaml.control_content import TEXT_CONTROLS
 from xaml3d.xaml.control_sizes import MeasuringPanels
 from xaml3d.xaml.controls_reader import (
-    AERO2,
     _combo_box,
-    _control,
     _progress_bar,
     _scroll_bar,
     _slider,
@@ -234,9 +232,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         t = block_drawing(r, el, v, n, pad[0], pad[1], w - pad[0] - pad[2])
         if t is not None:
             out.append(t)
-        return
-    if local in AERO2:
-        _control(r, v, el, local, font, w, h, out)
         return
     if local == "ProgressBar":
         _progress_bar(r, v, w, h, out)
