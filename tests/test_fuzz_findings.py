@@ -355,7 +355,11 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # documents the structured fuzzing wrote (tests/fuzz_cases): camera-pixel-overflow, a
     # 1.8e308 viewport whose camera's matrices are finite but whose pixel mapping is not
     # (CAM008); viewbox-zero-unit, a layer scaled to nothing around a viewport (draws nothing);
-    # gltf-tiny-normals, normals below single precision (0 in the glTF file)
+    # gltf-tiny-normals, normals below single precision (0 in the glTF file);
+    # image-brush-sampling-edges, image brushes whose sampling divides by a stretch of 0 or
+    # overflows (transparent there, as in the compiled kernel); tile-brush-over-box-past-range,
+    # a VisualBrush opacity mask over a box past single precision (its tile is not finite:
+    # nothing is drawn)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 
