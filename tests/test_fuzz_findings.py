@@ -360,7 +360,9 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # overflows (transparent there, as in the compiled kernel); tile-brush-over-box-past-range,
     # a VisualBrush opacity mask over a box past single precision (its tile is not finite:
     # nothing is drawn); window-reach-past-range, a turned panel holding a box whose right
-    # side overflows to infinity (the window reaches one client area beyond, as for any far box)
+    # side overflows to infinity (the window reaches one client area beyond, as for any far box);
+    # gltf-light-turned-near-range, a light at 1e308 turned by an animation (its translation
+    # channel is beyond single precision: EXP009)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 
