@@ -76,11 +76,17 @@ def scene(models: int, case: str, seconds: float) -> str:
         }[case]
         out.append(
             '<Viewport3D.Triggers><EventTrigger RoutedEvent="Viewport3D.Loaded">'
-            f'<BeginStoryboard><Storyboard>{animation} Duration="0:0:{seconds:g}"/>'
+            f'<BeginStoryboard><Storyboard>{animation} Duration="{_timespan(seconds)}"/>'
             "</Storyboard></BeginStoryboard></EventTrigger></Viewport3D.Triggers>"
         )
     out.append("</Viewport3D>")
     return "".join(out)
+
+
+def _timespan(seconds: float) -> str:
+    """``seconds`` as a XAML TimeSpan (hours:minutes:seconds)."""
+    minutes, rest = divmod(seconds, 60.0)
+    return f"{int(minutes // 60)}:{int(minutes % 60)}:{rest:g}"
 
 
 def _env(tree: str | None) -> dict:
