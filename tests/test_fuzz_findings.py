@@ -362,7 +362,8 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # nothing is drawn); window-reach-past-range, a turned panel holding a box whose right
     # side overflows to infinity (the window reaches one client area beyond, as for any far box);
     # gltf-light-turned-near-range, a light at 1e308 turned by an animation (its translation
-    # channel is beyond single precision: EXP009)
+    # channel is beyond single precision: EXP009); image-brush-viewport-past-range, a Viewport
+    # whose bottom edge overflows (its edge addressing sees it cover the box)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 

@@ -140,12 +140,13 @@ def edge_mode(mode: str, matrix: np.ndarray, bounds: Bounds, viewport) -> str:
         return mode
     vpx, vpy, vpw, vph = viewport
     tol = 1e-9 * max(abs(vpw), abs(vph), 1.0)
-    inside = (
-        (q[:, 0] >= vpx - tol)
-        & (q[:, 0] <= vpx + vpw + tol)
-        & (q[:, 1] >= vpy - tol)
-        & (q[:, 1] <= vpy + vph + tol)
-    )
+    with np.errstate(over="ignore"):  # a viewport reaching past the doubles' range: inf
+        inside = (
+            (q[:, 0] >= vpx - tol)
+            & (q[:, 0] <= vpx + vpw + tol)
+            & (q[:, 1] >= vpy - tol)
+            & (q[:, 1] <= vpy + vph + tol)
+        )
     return "FlipXY" if bool(inside.all()) else mode
 
 
