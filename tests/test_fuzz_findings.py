@@ -383,7 +383,8 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # channel is beyond single precision: EXP009); image-brush-viewport-past-range, a Viewport
     # whose bottom edge overflows (its edge addressing sees it cover the box);
     # image-mask-tile-magnified, an opacity mask whose tile is 2**31 times its box (recorded
-    # in the part that can be seen: it took minutes to draw)
+    # in the part that can be seen: it took minutes to draw); visual-brush-denormal-tile, a
+    # repeated tile 5e-324 high (its positions are NaN: undrawn, never a NaN texel index)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 
