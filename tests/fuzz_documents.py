@@ -3,7 +3,8 @@ are run through.
 
 ``document(pick)`` writes one document: a Viewport3D (alone, or in a Grid / Border / Viewbox /
 Canvas with 2D elements beside it) with a camera, lights, meshes, materials and brushes (solid,
-gradients with any number of stops, a VisualBrush, possibly of the element it paints),
+gradients with any number of stops, a VisualBrush, possibly of the element it paints, an
+ImageBrush of a missing file, which the reader's checker replaces),
 transforms (2D and 3D), a Viewport2DVisual3D with a small 2D visual, and a Loaded storyboard
 of nested timelines and animations (From/To/By, key frames, easing functions). Every property
 of those elements is taken from ``xaml3d.xaml.vocabulary`` and given a value of its kind, often
@@ -225,10 +226,15 @@ def gradient_stops(p: Pick) -> str:
 
 def brush(p: Pick, depth: int = 0) -> str:
     kind = p.choose(("SolidColorBrush", "LinearGradientBrush", "RadialGradientBrush",
-                     "VisualBrush", "SolidColorBrush"))  # fmt: skip
-    own = attributes(p, kind, skip=("Transform", "RelativeTransform", "Visual"))
+                     "VisualBrush", "SolidColorBrush", "ImageBrush"))  # fmt: skip
+    own = attributes(p, kind, skip=("Transform", "RelativeTransform", "Visual", "ImageSource"))
     if kind == "SolidColorBrush":
         return f'<SolidColorBrush{named(p)} Color="{color(p)}"{own.replace(" Color=", " X=")}/>'
+    if kind == "ImageBrush":  # a file that is not there: the reader's checker stands in
+        extra = (
+            f"<ImageBrush.Transform>{transform2d(p)}</ImageBrush.Transform>" if p.chance(30) else ""
+        )
+        return f'<ImageBrush ImageSource="absent.png"{own}>{extra}</ImageBrush>'
     if kind == "VisualBrush":
         if depth > 0 or p.chance(40):
             return f'<VisualBrush{own} Visual="{{Binding ElementName={p.choose(NAMES)}}}"/>'

@@ -233,6 +233,24 @@ def test_an_empty_grid_in_a_viewbox_on_a_3d_surface_runs_cleanly():
     clean_run(scene_text(model=MODEL + host))
 
 
+def test_a_tile_magnified_far_past_its_box_draws_the_texel_it_shows():
+    # a tile 10,000 times its box, seen in its first texel: that texel's colour everywhere
+    import skia
+
+    from xaml3d.render.layer2d.shaders import paint_of
+    from xaml3d.scene.types import ImageBrush
+
+    texels = np.array([[[200, 40, 10, 255], [0, 0, 255, 255]], [[0, 255, 0, 255], [9, 9, 9, 9]]],
+                      dtype=np.uint8)  # fmt: skip
+    brush = ImageBrush(image=texels, viewport=(-100, -100, 1e4, 1e4), tile_mode="Tile")
+    surface = skia.Surface(60, 45)
+    canvas = surface.getCanvas()
+    canvas.translate(3, 4)
+    canvas.drawPaint(paint_of(brush, skia.Rect.MakeWH(40, 30)))
+    rgba = surface.makeImageSnapshot().toarray(colorType=skia.ColorType.kRGBA_8888_ColorType)
+    assert (rgba[4:34, 3:43] == (200, 40, 10, 255)).all()
+
+
 @pytest.mark.parametrize(
     "attribute",
     ['MinWidth="Infinity"', 'MaxHeight="-1"', 'BorderThickness="-1"', 'Padding="0,Infinity"',
@@ -355,7 +373,18 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # documents the structured fuzzing wrote (tests/fuzz_cases): camera-pixel-overflow, a
     # 1.8e308 viewport whose camera's matrices are finite but whose pixel mapping is not
     # (CAM008); viewbox-zero-unit, a layer scaled to nothing around a viewport (draws nothing);
-    # gltf-tiny-normals, normals below single precision (0 in the glTF file)
+    # gltf-tiny-normals, normals below single precision (0 in the glTF file);
+    # image-brush-sampling-edges, image brushes whose sampling divides by a stretch of 0 or
+    # overflows (transparent there, as in the compiled kernel); tile-brush-over-box-past-range,
+    # a VisualBrush opacity mask over a box past single precision (its tile is not finite:
+    # nothing is drawn); window-reach-past-range, a turned panel holding a box whose right
+    # side overflows to infinity (the window reaches one client area beyond, as for any far box);
+    # gltf-light-turned-near-range, a light at 1e308 turned by an animation (its translation
+    # channel is beyond single precision: EXP009); image-brush-viewport-past-range, a Viewport
+    # whose bottom edge overflows (its edge addressing sees it cover the box);
+    # image-mask-tile-magnified, an opacity mask whose tile is 2**31 times its box (recorded
+    # in the part that can be seen: it took minutes to draw); visual-brush-denormal-tile, a
+    # repeated tile 5e-324 high (its positions are NaN: undrawn, never a NaN texel index)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 

@@ -3,6 +3,8 @@ pictures and depth on every reference case with every anti-aliasing, and when th
 
 from __future__ import annotations
 
+import itertools
+import math
 import os
 import subprocess
 import sys
@@ -180,6 +182,50 @@ def test_bilinear_texture_sampling_matches_numpy_exactly(monkeypatch):
     b = bilinear(img, px, py)
     assert np.array_equal(a, b)
     assert np.array_equal(a[-4], img[0, 0]) and np.array_equal(a[-2], img[4, 6])
+
+
+_EDGES = [math.inf, -math.inf, math.nan, 1e308, -1e308, 3.4e38, 5e-324, -0.0]
+
+
+def test_samples_at_coordinates_that_are_not_finite_match_numpy(monkeypatch):
+    """Texture coordinates (or brush maps) at the doubles' edge: the numpy sampling path
+    computes what the compiled kernels compute, without a floating-point error or a NaN cast to
+    an index. A bilinear sample at a coordinate that is not finite is NaN in both; the image
+    sampler leaves such a point transparent in both."""
+    from xaml3d.render import brushes, kernels
+    from xaml3d.render.tiles import bilinear
+    from xaml3d.scene.types import ImageBrush
+
+    img = np.random.default_rng(5).random((3, 4, 4))
+    pairs = np.array(list(itertools.product([*_EDGES, 1.5], repeat=2)))
+    px, py = pairs[:, 0].copy(), pairs[:, 1].copy()
+    monkeypatch.setenv(accel.ENV, "numpy")
+    a = bilinear(img, px, py)
+    monkeypatch.setenv(accel.ENV, "numba")
+    assert accel.for_work(0, 0) is not None
+    b = bilinear(img, px, py)
+    assert np.array_equal(a, b, equal_nan=True)
+    finite = np.isfinite(px) & np.isfinite(py)
+    assert np.isnan(a[~finite]).all() and np.isfinite(a[finite]).all()
+    assert np.array_equal(a[(px == 1e308) & (py == -1e308)], img[None, 0, 3])  # the edge texel
+
+    texture = (np.random.default_rng(6).random((2, 3, 4)) * 255).astype(np.uint8)
+    uv = np.array(list(itertools.product([*_EDGES, 0.25], repeat=2)))
+    box = (np.zeros(2), np.ones(2))
+    for tile_mode in ("None", "Tile", "FlipXY"):
+        # a brush transform that scales finite coordinates past the doubles' range, too
+        for transform in (None, np.diag([1e-290, 1.0, 1.0])):
+            brush = ImageBrush(image=texture, tile_mode=tile_mode, viewport=(0, 0, 0.5, 0.5),
+                               transform=transform)  # fmt: skip
+            monkeypatch.setenv(accel.ENV, "numpy")
+            numpy_path = brushes._sample_image(brush, uv, box)
+            lay = brushes.image_layout(brush, box)
+            pre = np.ascontiguousarray(brushes.premultiplied_image(texture), np.float64)
+            compiled = np.array([kernels._image_sample(u, v, lay, pre) for u, v in uv])
+            assert np.array_equal(numpy_path, compiled), (tile_mode, transform)
+            assert not numpy_path[~np.isfinite(uv).all(axis=1)].any()  # transparent
+            if transform is None:
+                assert numpy_path[-1].any()  # (0.25, 0.25): a texel
 
 
 _PASS_SCENE = """<Viewport3D xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"

@@ -83,7 +83,8 @@ def build_gltf(scene, vp, clip, diagnostics: list, progress=None):
     """(Document, ViewportExport) of one viewport, with its animation when ``clip``."""
 
     sampled = None if clip is None else sample(clip, vp.index, progress)
-    exporter = ViewportExport(scene, vp, diagnostics, None if sampled is None else sampled[1])
+    frames, moving = (None, None) if sampled is None else (sampled[1], clip.moving(vp.index)[0])
+    exporter = ViewportExport(scene, vp, diagnostics, frames, moving)
     doc = exporter.build()
     if sampled is not None:
         add_animation(exporter, clip, *sampled)

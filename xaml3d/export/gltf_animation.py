@@ -11,6 +11,8 @@ named in an EXP009 warning.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
+from functools import partial
 
 import numpy as np
 
@@ -44,9 +46,20 @@ def sample(clip: Clip, vp_index: int, progress=None) -> tuple[np.ndarray, list] 
     if times.shape[0] < 2:
         return None
     frames = []
+    # a moment whose animated values all equal an earlier one's is that moment's Scene (a
+    # hold, an AutoReverse coming back, a clock too slow to move): its very viewport, so
+    # that nothing of it is evaluated or compared again
+    seen: dict = {}
     for k, t in enumerate(times):
         try:
-            frames.append(clip.at(float(t)).viewport(vp_index))
+            if clip.at_values is None:
+                frames.append(clip.at(float(t)).viewport(vp_index))
+            else:
+                scene, values = clip.at_values(float(t))
+                vp = seen.get(values)
+                if vp is None:
+                    vp = seen[values] = scene.viewport(vp_index)
+                frames.append(vp)
         except SceneError:  # a viewport that vanishes: nothing to sample
             return None
         if progress is not None:
@@ -61,23 +74,21 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
     tracks: dict = {}  # node or (outer, inner) nodes -> world matrices per sample
     lost: set[str] = set()
     # A frame shares every object the storyboards leave alone with the first (scene_at replaces
-    # only what changes): what is the same object is not compared, so that sampling costs what
-    # the animated values cost, not the whole scene at each time.
-    moved = [f for f in frames[1:] if f.models is not base.models]
-    if all(len(f.models) == len(base.models) for f in moved):
-        changed = sorted({i for f in moved for i, m in enumerate(f.models)
-                          if m is not base.models[i]})  # fmt: skip
-        for i in changed:
-            node = export.model_nodes.get(i)
-            if node is None:
-                continue
-            worlds = [np.asarray(f.models[i].world) for f in frames]
-            if any(_differs(w, worlds[0]) for w in worlds):
-                tracks[node] = worlds
-        for i in changed:
+    # only what a track reaches): only the models and lights the tracks reach are looked at,
+    # so that sampling costs what the animated values cost, not the whole scene at each time.
+    moving_models, moving_lights = clip.moving(base.index)
+    if all(len(f.models) == len(base.models) for f in frames):
+        for i in sorted(i for i in moving_models if i < len(base.models)):
             m0 = base.models[i]
-            for f in moved:
-                m = f.models[i]
+            column = [f.models[i] for f in frames]
+            if all(m is m0 for m in column):
+                continue
+            node = export.model_nodes.get(i)
+            if node is not None:
+                worlds = [np.asarray(m.world) for m in column]
+                if any(_differs(w, worlds[0]) for w in worlds):
+                    tracks[node] = worlds
+            for m in column:
                 if m is m0:
                     continue
                 if m.mesh is not m0.mesh and _differs(m.mesh.positions, m0.mesh.positions):
@@ -88,10 +99,10 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
     else:
         lost.add("models appearing or disappearing")
     if export.camera_node is not None:
-        _camera_track(export, frames, tracks, lost)
+        _camera_track(export, frames, tracks, lost, moving_models)
     if all(len(f.lights) == len(base.lights) for f in frames):
         for i, node in export.light_nodes.items():
-            if all(f.lights[i] is base.lights[i] for f in frames):
+            if i not in moving_lights or all(f.lights[i] is base.lights[i] for f in frames):
                 continue  # not animated
             got = [light_node(f.lights[i]) for f in frames]
             if any(g is None for g in got):
@@ -115,13 +126,37 @@ def add_animation(export, clip: Clip, times: np.ndarray, frames: list) -> None:
                     " s are exported")  # fmt: skip
 
 
-def _camera_track(export, frames, tracks, lost) -> None:
+def _bounds_of(frames, moving_models):
+    """A function giving a frame's ``bounds()``: the models no track reaches are measured once
+    (every frame shares them), the others in each frame asked about; the same numbers (the
+    union of the two boxes, min and max being exact)."""
+    base = frames[0]
+    moving = [i for i in sorted(moving_models) if i < len(base.models)]
+    still = None
+
+    def bounds(f):
+        nonlocal still
+        if len(f.models) != len(base.models):
+            return f.bounds()
+        if still is None:
+            kept = tuple(m for i, m in enumerate(base.models) if i not in moving_models)
+            still = (replace(base, models=kept).bounds(),)
+        box = replace(f, models=tuple(f.models[i] for i in moving)).bounds()
+        if still[0] is None or box is None:
+            return box if still[0] is None else still[0]
+        return np.minimum(still[0][0], box[0]), np.maximum(still[0][1], box[1])
+
+    return bounds
+
+
+def _camera_track(export, frames, tracks, lost, moving_models=frozenset()) -> None:
     worlds, cams = [], []
     got, before = None, None
+    bounds = _bounds_of(frames, moving_models)
     for f in frames:
         if got is None or f.camera is not before:  # an unchanged camera: the same matrices
             try:
-                got = gltf_camera(f)
+                got = gltf_camera(f, bounds=partial(bounds, f))
             except CameraError:
                 lost.add("the camera into a state WPF cannot draw")
                 return
@@ -167,7 +202,11 @@ def _write(export, times, tracks) -> None:
         if nested:
             paths.append((node[1], "rotation", _continuous(inner)))
         for target, path, values in paths:
-            if np.allclose(values, values[0], rtol=0, atol=1e-12):
+            # values near the doubles' range (a light placed at 1e308, turned) differ by more
+            # than the range: not close, and refused as beyond single precision just below
+            with np.errstate(over="ignore", invalid="ignore"):
+                still = np.allclose(values, values[0], rtol=0, atol=1e-12)
+            if still:
                 continue
             if not np.all(np.abs(values) <= np.finfo(np.float32).max):
                 msg = (f"an animated {path} goes beyond single precision (3.4e38), which "

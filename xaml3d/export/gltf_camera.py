@@ -34,13 +34,15 @@ def camera_world(vp, bounds=None) -> np.ndarray:
     return np.linalg.inv(pipe.view_matrix)
 
 
-def gltf_camera(vp, file=None) -> tuple[dict, np.ndarray, list] | None:
+def gltf_camera(vp, file=None, bounds=None) -> tuple[dict, np.ndarray, list] | None:
     """(glTF camera, node world matrix, diagnostics) for the viewport's camera, or None when it
-    has none WPF can draw with (EXP015 in the diagnostics of the caller)."""
+    has none WPF can draw with (EXP015 in the diagnostics of the caller). ``bounds``: a
+    function giving ``vp.bounds()`` (an animation's sampler measures the still models once)."""
     cam = vp.camera
     notes: list = []
     aspect = float(vp.width) / float(vp.height)
-    pipe = camera_pipeline(cam, vp.width, vp.height, vp.bounds())  # CameraError: caller
+    box = vp.bounds() if bounds is None else bounds()
+    pipe = camera_pipeline(cam, vp.width, vp.height, box)  # CameraError: caller
     try:
         world = np.linalg.inv(pipe.view_matrix)
     except np.linalg.LinAlgError:  # a view that collapses (a MatrixCamera's): no camera node

@@ -49,11 +49,15 @@ class Bake:
     def uv_grid(self) -> np.ndarray:
         h, w = self.shape
         size = self.hi - self.lo
-        # a flat axis (every coordinate equal) is one texel sampled at that coordinate
-        xs, ys = (
-            self.lo[k] + (np.arange(n) + 0.5) / n * size[k] if size[k] > 0 else self.lo[k : k + 1]
-            for k, n in ((0, w), (1, h))
-        )
+        # a flat axis (every coordinate equal) is one texel sampled at that coordinate; a
+        # denormal one's steps round to 0 (every texel at its low end)
+        with np.errstate(under="ignore"):
+            xs, ys = (
+                self.lo[k] + (np.arange(n) + 0.5) / n * size[k]
+                if size[k] > 0
+                else self.lo[k : k + 1]
+                for k, n in ((0, w), (1, h))
+            )
         gx, gy = np.meshgrid(xs, ys)
         return np.stack([gx.ravel(), gy.ravel()], axis=1)
 

@@ -65,9 +65,11 @@ def frame_looking(position, direction, up_hint=(0.0, 1.0, 0.0)) -> np.ndarray:
 class ViewportExport:
     """Builds the glTF of one viewport; ``node_of_model`` etc. let the animation find nodes."""
 
-    def __init__(self, scene, vp, diagnostics: list, frames=None) -> None:
+    def __init__(self, scene, vp, diagnostics: list, frames=None, moving=None) -> None:
         self.scene, self.vp, self.file = scene, vp, scene.file
         self.frames = frames  # the viewport at each animation sample, or None
+        # the indices of the models a track can replace (``timeline.moving``; None: any)
+        self.moving = moving
         self.diags = diagnostics
         self.doc = Document(GENERATOR)
         self.materials = Materials(self.doc)
@@ -136,6 +138,8 @@ class ViewportExport:
     def _worlds(self, i: int, model) -> list[np.ndarray]:
         """The model's world matrices over the animation samples (just its own when static)."""
         frames = self.frames
+        if self.moving is not None and i not in self.moving:
+            return [np.asarray(model.world)]  # no track reaches it: the same at every sample
         if frames and all(len(f.models) == len(self.vp.models) for f in frames):
             # once per distinct model object: a sample shares what the storyboards leave alone
             # (scene_at replaces only what changes), so a still model is checked once, not at

@@ -257,14 +257,18 @@ def _sample_image(brush: ImageBrush, uv: np.ndarray, bounds: Bounds) -> np.ndarr
     if lay is None:
         return out
     a, b, c, d, e, f, vpx, vpy, vpw, vph, vbx, vby, sx, sy, ox, oy, w, h = lay[:18].tolist()
-    # inverse_map's arithmetic, with the matrix already inverted
-    qx = uv[:, 0] * a + uv[:, 1] * b + c
-    qy = uv[:, 0] * d + uv[:, 1] * e + f
     mode = _TILE_NAMES[int(lay[19])]
-    fx, in_x = tile_fraction((qx - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
-    fy, in_y = tile_fraction((qy - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
-    px = vbx + (vpx + fx * vpw - ox) / sx
-    py = vby + (vpy + fy * vph - oy) / sy
+    # inverse_map's arithmetic, with the matrix already inverted. What overflows or is not
+    # finite on the way (a stretch scale of 0) is inf or NaN, as in the compiled kernel
+    # (``kernels._image_sample``), and fails the comparisons of ``keep``: such points are
+    # transparent in both paths.
+    with np.errstate(over="ignore", invalid="ignore", under="ignore", divide="ignore"):
+        qx = uv[:, 0] * a + uv[:, 1] * b + c
+        qy = uv[:, 0] * d + uv[:, 1] * e + f
+        fx, in_x = tile_fraction((qx - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
+        fy, in_y = tile_fraction((qy - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
+        px = vbx + (vpx + fx * vpw - ox) / sx
+        py = vby + (vpy + fy * vph - oy) / sy
     keep = (
         in_x
         & in_y

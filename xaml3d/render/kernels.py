@@ -148,17 +148,26 @@ def interpolate(planes, indices, tri, w, out):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
+def _clamped(v, hi):
+    """The index ``v`` clamped to 0..hi; NaN is 0 (``int`` of NaN would index far outside)."""
+    if v >= 0.0:
+        return int(min(v, hi))
+    return 0
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
 def _corners(px, py, w, h):
     """The four texels of a bilinear sample at pixel coordinates (px, py) of a (h, w) image,
-    clamped to its edge, and the weights (fx, fy) towards the second of each pair."""
+    clamped to its edge, and the weights (fx, fy) towards the second of each pair. A coordinate
+    that is not finite gives a NaN weight (the sample is NaN) and texels inside the image."""
     x = px - 0.5
     y = py - 0.5
     x0 = np.floor(x)
     y0 = np.floor(y)
-    xi0 = int(min(max(x0, 0.0), w - 1.0))
-    xi1 = int(min(max(x0 + 1.0, 0.0), w - 1.0))
-    yi0 = int(min(max(y0, 0.0), h - 1.0))
-    yi1 = int(min(max(y0 + 1.0, 0.0), h - 1.0))
+    xi0 = _clamped(x0, w - 1.0)
+    xi1 = _clamped(x0 + 1.0, w - 1.0)
+    yi0 = _clamped(y0, h - 1.0)
+    yi1 = _clamped(y0 + 1.0, h - 1.0)
     return xi0, xi1, yi0, yi1, x - x0, y - y0
 
 

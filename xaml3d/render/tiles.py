@@ -54,12 +54,18 @@ def place_tile(brush, bounds, content: tuple[float, float, float, float]) -> Til
     vpx, vpy, vpw, vph = (float(v) for v in brush.viewport)
     if brush.viewport_units != "Absolute":
         lo, hi = (np.asarray(b, dtype=np.float64) for b in bounds)
-        size = hi - lo
-        vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
-        vpy, vph = lo[1] + vpy * size[1], vph * size[1]
-    if min(vbw, vbh, vpw, vph) <= 0.0 or not all(map(math.isfinite, (vbw, vbh, vpw, vph))):
+        # a box past the doubles' range (or one of single precision's infinities) gives a
+        # viewport that is not finite: refused just below
+        with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+            size = hi - lo
+            vpx, vpw = lo[0] + vpx * size[0], vpw * size[0]
+            vpy, vph = lo[1] + vpy * size[1], vph * size[1]
+    if min(vbw, vbh, vpw, vph) <= 0.0 or not all(
+        map(math.isfinite, (vbx, vby, vbw, vbh, vpx, vpy, vpw, vph))
+    ):
         return None
-    with np.errstate(over="ignore"):  # a ratio past the range: inf, refused just below
+    # a ratio past the range: inf, refused just below; one below it: 0
+    with np.errstate(over="ignore", under="ignore"):
         sx, sy = float(vpw / vbw), float(vph / vbh)
     if not (math.isfinite(sx) and math.isfinite(sy)):
         return None  # a Viewbox too small for the Viewport: a scale WPF cannot draw either
@@ -69,8 +75,11 @@ def place_tile(brush, bounds, content: tuple[float, float, float, float]) -> Til
         sx = sy = max(sx, sy)
     elif brush.stretch == "None":
         sx = sy = 1.0
-    ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
-    oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
+    if sx == 0.0 or sy == 0.0:
+        return None  # content scaled to nothing (a denormal Viewport): nothing is drawn
+    with np.errstate(under="ignore"):
+        ox = vpx + (vpw - vbw * sx) * _ALIGN.get(brush.alignment_x, 0.5)
+        oy = vpy + (vph - vbh * sy) * _ALIGN.get(brush.alignment_y, 0.5)
     return TilePlacement((vpx, vpy, vpw, vph), (vbx, vby), (sx, sy), (ox, oy))
 
 
@@ -105,10 +114,13 @@ def inverse_map(matrix: np.ndarray, uv: np.ndarray) -> np.ndarray | None:
         return None
     inv = np.linalg.inv(matrix)
     # Written out rather than a matrix product (which BLAS may compute with fused multiply-adds):
-    # the compiled shading kernel computes the very same roundings.
+    # the compiled shading kernel computes the very same roundings. Coordinates that are not
+    # finite, or that overflow on the way, give infinities and NaNs as in the kernel (IEEE
+    # arithmetic, no error): every caller leaves such points undrawn.
     q = np.empty_like(uv)
-    q[:, 0] = uv[:, 0] * inv[0, 0] + uv[:, 1] * inv[0, 1] + inv[0, 2]
-    q[:, 1] = uv[:, 0] * inv[1, 0] + uv[:, 1] * inv[1, 1] + inv[1, 2]
+    with np.errstate(over="ignore", invalid="ignore"):
+        q[:, 0] = uv[:, 0] * inv[0, 0] + uv[:, 1] * inv[0, 1] + inv[0, 2]
+        q[:, 1] = uv[:, 0] * inv[1, 0] + uv[:, 1] * inv[1, 1] + inv[1, 2]
     return q
 
 
@@ -128,29 +140,35 @@ def edge_mode(mode: str, matrix: np.ndarray, bounds: Bounds, viewport) -> str:
         return mode
     vpx, vpy, vpw, vph = viewport
     tol = 1e-9 * max(abs(vpw), abs(vph), 1.0)
-    inside = (
-        (q[:, 0] >= vpx - tol)
-        & (q[:, 0] <= vpx + vpw + tol)
-        & (q[:, 1] >= vpy - tol)
-        & (q[:, 1] <= vpy + vph + tol)
-    )
+    with np.errstate(over="ignore"):  # a viewport reaching past the doubles' range: inf
+        inside = (
+            (q[:, 0] >= vpx - tol)
+            & (q[:, 0] <= vpx + vpw + tol)
+            & (q[:, 1] >= vpy - tol)
+            & (q[:, 1] <= vpy + vph + tol)
+        )
     return "FlipXY" if bool(inside.all()) else mode
 
 
 def tile_fraction(local: np.ndarray, mode: str, flip: bool) -> tuple[np.ndarray, np.ndarray]:
-    """Position inside the tile (0..1) and whether the point is drawn at all."""
+    """Position inside the tile (0..1) and whether the point is drawn at all. A position that is
+    not finite is NaN, as in the compiled kernel (``kernels._tile``); the caller leaves it
+    undrawn."""
     if mode == "None":
         return local, (local >= -EDGE_EPS) & (local <= 1.0 + EDGE_EPS)
     index = np.floor(local)
-    frac = local - index
-    if flip:
-        frac = np.where(np.mod(index, 2.0) == 1.0, 1.0 - frac, frac)
+    with np.errstate(invalid="ignore"):  # inf - inf: NaN
+        frac = local - index
+        if flip:
+            frac = np.where(np.mod(index, 2.0) == 1.0, 1.0 - frac, frac)
     return frac, np.ones(local.shape, dtype=bool)
 
 
 def bilinear(img: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
     """Bilinear sample of a premultiplied (H, W, 4) image at pixel coordinates (texel centres at
-    half-integers); neighbours beyond the edge are clamped to the edge texel."""
+    half-integers); neighbours beyond the edge are clamped to the edge texel. A coordinate that
+    is not finite samples NaN, in both paths (its weight is NaN), without reading outside the
+    image."""
     kernels = accel.active()
     if kernels is not None:
         out = np.empty((px.shape[0], img.shape[2]))
@@ -166,12 +184,15 @@ def bilinear(img: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
     y = py - 0.5
     x0 = np.floor(x)
     y0 = np.floor(y)
-    fx = (x - x0)[:, None]
-    fy = (y - y0)[:, None]
-    xi0 = np.clip(x0, 0, w - 1).astype(np.intp)
-    xi1 = np.clip(x0 + 1, 0, w - 1).astype(np.intp)
-    yi0 = np.clip(y0, 0, h - 1).astype(np.intp)
-    yi1 = np.clip(y0 + 1, 0, h - 1).astype(np.intp)
+    with np.errstate(invalid="ignore"):  # inf - inf: a NaN weight, as in ``kernels._corners``
+        fx = (x - x0)[:, None]
+        fy = (y - y0)[:, None]
+    # fmax/fmin rather than clip: a NaN corner becomes texel 0 (the kernel's choice too), never
+    # a NaN cast to an index
+    xi0 = np.fmin(np.fmax(x0, 0.0), w - 1.0).astype(np.intp)
+    xi1 = np.fmin(np.fmax(x0 + 1.0, 0.0), w - 1.0).astype(np.intp)
+    yi0 = np.fmin(np.fmax(y0, 0.0), h - 1.0).astype(np.intp)
+    yi1 = np.fmin(np.fmax(y0 + 1.0, 0.0), h - 1.0).astype(np.intp)
     flat = img.reshape(-1, img.shape[-1])
 
     def texel(yi, xi):

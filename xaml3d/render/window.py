@@ -328,11 +328,17 @@ def _reach(boxes, W: int, H: int) -> tuple[int, int, int, int]:
                 x1, y1 = max(x1, x + w), max(y1, y + h)
         pad = _spread(layer.effect)
         x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
-    left, top = min(W, math.ceil(-x0)), min(H, math.ceil(-y0))
-    right, bottom = min(W, math.ceil(x1 - W)), min(H, math.ceil(y1 - H))
+    left, top = _whole(-x0, W), _whole(-y0, H)
+    right, bottom = _whole(x1 - W, W), _whole(y1 - H, H)
     if (W + left + right) * (H + top + bottom) > MAX_SUPERSAMPLED_PIXELS:
         return 0, 0, 0, 0
     return left, top, right, bottom
+
+
+def _whole(v: float, cap: int) -> int:
+    """``v`` rounded up to whole pixels, at most ``cap``: a box at the doubles' edge (its right
+    side overflows to infinity) reaches ``cap``."""
+    return cap if v >= cap else math.ceil(v)
 
 
 def _drawn_rect(b: Box) -> tuple[float, float, float, float]:

@@ -184,20 +184,64 @@ def draw_content(canvas: skia.Canvas, brush, player: DrawingPlayer) -> None:
         player.draw(canvas, brush.drawing)
 
 
+# A tile more than this many times the part of brush space that can be seen (the box grown by
+# ``_AROUND`` of its sizes each way) is recorded in that part only: skia rasterizes a picture
+# shader's whole tile, and an image magnified a billion times takes minutes to draw into it.
+_HUGE = 100.0
+_AROUND = 10.0
+
+
+def _seen_part(tile, local, bounds, mode: str):
+    """The part (x, y, w, h) of a huge ``tile`` (brush space) that the box ``bounds`` can show,
+    given ``local`` (brush space -> the box's coordinates); an empty tuple when the tile cannot
+    be seen there at all; None for an ordinary tile (or when this cannot be told), which is
+    recorded whole."""
+    lo, hi = bounds
+    grow = (hi - lo) * _AROUND
+    x0, y0 = lo - grow
+    x1, y1 = hi + grow
+    corners = np.array([[x0, x1, x0, x1], [y0, y0, y1, y1], [1.0, 1.0, 1.0, 1.0]])
+    with np.errstate(all="ignore"):
+        try:
+            back = np.linalg.inv(local) @ corners
+        except np.linalg.LinAlgError:
+            return None
+        rx0, ry0 = back[0].min(), back[1].min()
+        rx1, ry1 = back[0].max(), back[1].max()
+    if not all(np.isfinite(v) for v in (rx0, ry0, rx1, ry1)):
+        return None
+    vpx, vpy, vpw, vph = tile
+    if vpw <= _HUGE * (rx1 - rx0) and vph <= _HUGE * (ry1 - ry0):
+        return None
+    inside = rx0 >= vpx and ry0 >= vpy and rx1 <= vpx + vpw and ry1 <= vpy + vph
+    if mode != "None" and not inside:
+        return None  # the seen part straddles the edge of a repeated tile: recorded whole
+    sx0, sy0 = max(rx0, vpx), max(ry0, vpy)
+    sx1, sy1 = min(rx1, vpx + vpw), min(ry1, vpy + vph)
+    if not (sx1 > sx0 and sy1 > sy0):
+        return ()
+    return float(sx0), float(sy0), float(sx1 - sx0), float(sy1 - sy0)
+
+
 def _tile_shader(brush, bounds, player: DrawingPlayer) -> skia.Shader | None:
     found = brush_tile(brush, bounds, player)
     if found is None:
         return None
     (vpx, vpy, vpw, vph), m = found
+    local = brush_to_texture_matrix(brush, bounds, False)
+    mode = brush.tile_mode
+    seen = _seen_part((vpx, vpy, vpw, vph), local, bounds, mode)
+    if seen == ():
+        return None  # the tile lies outside all that can be seen: nothing is drawn
+    if seen is not None:  # one tile, seen in part: that part alone, nothing beyond it
+        (vpx, vpy, vpw, vph), mode = seen, "None"
     rec = skia.PictureRecorder()
     canvas = rec.beginRecording(skia.Rect.MakeXYWH(vpx, vpy, vpw, vph))
     canvas.clipRect(skia.Rect.MakeXYWH(vpx, vpy, vpw, vph))
     canvas.concat(matrix(m))
     draw_content(canvas, brush, player)
     picture = rec.finishRecordingAsPicture()
-    mode = brush.tile_mode
     tx, ty = (_tile_mode(mode, flip) for flip in (("FlipX", "FlipXY"), ("FlipY", "FlipXY")))
-    local = brush_to_texture_matrix(brush, bounds, False)
     return picture.makeShader(
         tx, ty, skia.FilterMode.kLinear, matrix(local), skia.Rect.MakeXYWH(vpx, vpy, vpw, vph)
     )

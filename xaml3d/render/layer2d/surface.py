@@ -108,7 +108,9 @@ def sample_drawing_brush(brush: DrawingBrush, uv: np.ndarray, bounds, density=No
     with np.errstate(over="ignore", invalid="ignore"):  # a tile far below a texel: inf, outside
         fx, in_x = tile_fraction((q[:, 0] - vpx) / vpw, mode, mode in ("FlipX", "FlipXY"))
         fy, in_y = tile_fraction((q[:, 1] - vpy) / vph, mode, mode in ("FlipY", "FlipXY"))
-    keep = in_x & in_y
+    # a position that is not finite (NaN from tile_fraction) is left undrawn, as the compiled
+    # image sampler leaves it (``kernels._image_sample``)
+    keep = in_x & in_y & np.isfinite(fx) & np.isfinite(fy)
     if keep.any():
         h, w = tile.shape[:2]
         out[keep] = bilinear(tile, fx[keep] * w, fy[keep] * h)
