@@ -11,7 +11,7 @@ import pytest
 import xaml3d.scene.types as scene_types
 from xaml3d.export import export_bytes, gltf_animation
 from xaml3d.export import timeline as export_timeline
-from xaml3d.xaml.loader import load
+from xaml3d.pipeline import load
 
 NS = (
     'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
