@@ -4,6 +4,7 @@ out) must give the same pixels, through ``render --window`` and inside a VisualB
 
 from __future__ import annotations
 
+import numpy as np
 from test_framework_templates import _line, _same, _viewport_pixels, in_brush, window
 
 from xaml3d.pipeline import load
@@ -69,6 +70,20 @@ def test_list_box_with_implicit_data_template_and_selection(tmp_path):
     twin = window("", f'<ListBox Height="60" SelectedIndex="1">{rows}</ListBox>')
     px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
     assert ((px[..., 0] == 255) & (px[..., 1] == 165) & (px[..., 2] == 0)).any()
+
+
+def test_an_empty_item_container_style_leaves_the_items_where_they_are(tmp_path):
+    # the Style written in <ListBox.ItemContainerStyle> is the property's value, not an item:
+    # WPF draws the rows as without it (no empty row above them)
+    rows = "<ListBoxItem>One</ListBoxItem><TextBlock>Two</TextBlock>"
+    style = '<Style TargetType="ListBoxItem" />'
+    empty = f"<ListBox.ItemContainerStyle>{style}</ListBox.ItemContainerStyle>"
+    feature = window("", f'<ListBox Height="60">{empty}{rows}</ListBox>')
+    twin = window("", f'<ListBox Height="60">{rows}</ListBox>')
+    px = _same(tmp_path, feature, twin)
+    ink = np.flatnonzero((px[:60, :80, :3].sum(axis=-1) < 300).any(axis=1))
+    # "One" inside the ListBox's 1 px border and Padding 1, the row's border and Padding 4,1
+    assert ink[0] < 12
 
 
 def test_combo_box_items_source_panel_and_display_member(tmp_path):
