@@ -53,6 +53,7 @@ DEFAULTS: dict[str, str] = {
     "IsFocused": "False",
     "IsKeyboardFocused": "False",
     "IsKeyboardFocusWithin": "False",
+    "IsSelectionActive": "False",  # Selector.IsSelectionActive: no keyboard focus either
     "IsDefaulted": "False",
     "IsDefault": "False",
     "IsCancel": "False",

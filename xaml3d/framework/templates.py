@@ -34,7 +34,7 @@ user template are left to the reader's theme drawing.
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import data_triggers, items, markup, string_formats
+from xaml3d.framework import binding_tree, data_triggers, items, markup, string_formats
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -55,6 +55,7 @@ CONTENT_CONTROLS = {
 # controls whose template, when neither they nor their Style set one, is the theme's
 # (``Services.theme_styles``: the package's theme dictionary)
 THEMED = {"Button", "ToggleButton", "RepeatButton"}
+THEMED |= {"ListBox", "ListBoxItem"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
@@ -451,7 +452,25 @@ class _Instantiation:
                 self.sv.diag("TPL002", msg, part, attr=attr, once=("TPL002", id(part), attr))
                 del part.attrib[attr]
                 continue
-            put(self.sv, part, attr, self.in_control_scope(c, part, c.value(prop)))
+            value = self.from_ancestor(c, c.value(prop))
+            put(self.sv, part, attr, self.in_control_scope(c, part, value))
+
+    def from_ancestor(self, c: Control, value):
+        """A Setter's binding to an ancestor's property (the theme's ListBoxItem takes its
+        content alignments from ``{Binding P, RelativeSource={RelativeSource AncestorType=
+        {x:Type ItemsControl}}}``): the nearest such ancestor's value of P, else None (the
+        property's default, as a binding that finds no source gives)."""
+        found = _ancestor_binding(value)
+        if found is None:
+            return value
+        prop, type_name = found
+        node = c.el.getparent()
+        while node is not None:
+            t = self.sv.wpf_type(node)
+            if t is not None and binding_tree.type_matches(node, type_name):
+                return Control(node, t, self.sv).value(prop)
+            node = node.getparent()
+        return None
 
     def in_control_scope(self, c: Control, part, value):
         """A resource reference in the control's value resolved where the control is: the
@@ -639,6 +658,29 @@ def put(sv, el, prop: str, value) -> None:
     made.attrib.pop(f"{{{X_NS}}}Key", None)  # a resource entry's copy, now a property value
     holder.append(made)
     el.insert(0, holder)
+
+
+def _ancestor_binding(value) -> tuple[str, str] | None:
+    """(property, ancestor type) of ``{Binding P, RelativeSource={RelativeSource
+    AncestorType={x:Type T}}}`` (FindAncestor, the first such ancestor), else None."""
+    if value is None or value[0] != "text":
+        return None
+    m = markup.split(value[1])
+    if m is None or m[0] != "Binding":
+        return None
+    positional, named = markup.arguments(m[1])
+    rs = markup.split(named.get("RelativeSource"))
+    if rs is None or rs[0] != "RelativeSource" or named.keys() - {"Path", "RelativeSource"}:
+        return None
+    rpos, rnamed = markup.arguments(rs[1])
+    mode = rnamed.get("Mode", rpos[0] if rpos else "FindAncestor")
+    kind = markup.split(rnamed.get("AncestorType"))
+    if mode != "FindAncestor" or kind is None or kind[0] != "Type" or "AncestorLevel" in rnamed:
+        return None
+    prop = named.get("Path", positional[0] if positional else "").strip()
+    if not prop or "." in prop or "[" in prop:
+        return None
+    return prop, kind[1].split(":")[-1].strip()
 
 
 def _same_ns(el, local: str) -> str:
