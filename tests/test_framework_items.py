@@ -193,7 +193,9 @@ def test_item_container_style_template_and_is_selected_trigger(tmp_path):
     twin = window("", f'<ListBox Height="60" SelectedIndex="1">{rows}</ListBox>')
     px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
     assert ((px[..., 0] == 255) & (px[..., 1] == 165) & (px[..., 2] == 0)).any()
-    assert tuple(px[4, 70][:3]) == (255, 255, 0)  # the rows stretch across the ListBox
+    # the rows stretch across the ListBox, left of the 17 px its vertical scroll bar takes
+    # (three 20 px rows overflow its 56 px view)
+    assert tuple(px[4, 60][:3]) == (255, 255, 0)
 
 
 def test_alternation_count_and_its_index_trigger(tmp_path):
@@ -254,19 +256,85 @@ def test_an_item_template_holding_its_items_control_stops(tmp_path, monkeypatch)
     assert codes.count("TPL004") == 1
 
 
-def test_the_items_panel_of_a_themed_list_box_is_said(tmp_path):
+def test_the_items_panel_of_a_themed_combo_box_is_said(tmp_path):
     feature = _with_ns(
         window(
             ARRAYS,
             """
-      <ListBox Height="40" ItemsSource="{StaticResource names}">
-        <ListBox.ItemsPanel>
+      <ComboBox ItemsSource="{StaticResource names}">
+        <ComboBox.ItemsPanel>
           <ItemsPanelTemplate><WrapPanel /></ItemsPanelTemplate>
-        </ListBox.ItemsPanel>
-      </ListBox>""",
+        </ComboBox.ItemsPanel>
+      </ComboBox>""",
         )
     )
     path = tmp_path / "panel.xaml"
     path.write_text(feature, encoding="utf-8")
     found = [(d.code, d.line) for d in load(path).diagnostics if d.code == "TPL008"]
-    assert found == [("TPL008", _line(feature, "<ListBox "))]
+    assert found == [("TPL008", _line(feature, "<ComboBox "))]
+
+
+def _theme_item(text: str, selected: bool = False, gray: bool = False) -> str:
+    """A ListBoxItem as the theme's template builds it: the Border "Bd" (transparent, 1 px,
+    Padding 4,1; the inactive selection's brushes when selected) around the ContentPresenter
+    (Left, and Center from the ListBox's VerticalContentAlignment) holding the text."""
+    look = ('Background="#3DDADADA" BorderBrush="#FFDADADA"' if selected
+            else 'Background="Transparent" BorderBrush="Transparent"')  # fmt: skip
+    ink = ' TextElement.Foreground="#FF6D6D6D"' if gray else ""
+    return (
+        f'<ContentControl><Border {look} BorderThickness="1" Padding="4,1"{ink}>'
+        f'<ContentPresenter HorizontalAlignment="Left" VerticalAlignment="Center">'
+        f'<TextBlock Text="{text}" /></ContentPresenter></Border></ContentControl>'
+    )
+
+
+def _theme_list(rows: str, panel: str = "StackPanel", enabled: bool = True, size="") -> str:
+    """A ListBox as the theme's template builds it: the Border "Bd" (white, #FFABADB3, 1 px,
+    Padding 1; #FFD9D9D9 when disabled) around the ScrollViewer (its bars Auto) around the
+    ItemsPresenter's panel."""
+    edge = "#FFABADB3" if enabled else "#FFD9D9D9"
+    return (
+        f'<ContentControl{size}><Border Background="#FFFFFFFF" BorderBrush="{edge}" '
+        'BorderThickness="1" Padding="1"><ScrollViewer HorizontalScrollBarVisibility="Auto" '
+        f'VerticalScrollBarVisibility="Auto"><ContentPresenter><{panel}>{rows}</{panel}>'
+        "</ContentPresenter></ScrollViewer></Border></ContentControl>"
+    )
+
+
+def test_the_items_panel_of_a_list_box_holds_its_items(tmp_path):
+    feature = window(
+        ARRAYS,
+        """
+      <ListBox Height="40" ItemsSource="{StaticResource names}">
+        <ListBox.ItemsPanel>
+          <ItemsPanelTemplate><WrapPanel /></ItemsPanelTemplate>
+        </ListBox.ItemsPanel>
+      </ListBox>""",
+    )
+    rows = "".join(_theme_item(t) for t in ("Red", "Green", "Blue"))
+    twin = window("", _theme_list(rows, "WrapPanel", size=' Height="40"'))
+    px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
+    # the three side by side on one row: the ScrollViewer scrolls across (its horizontal bar
+    # Auto), so the WrapPanel is measured with unbounded width and never wraps, as in WPF
+    ink = (px[:40, :80, :3].sum(axis=-1) < 300).any(axis=1)
+    assert ink[4:20].any() and not ink[22:38].any()
+
+
+def test_the_theme_list_box_and_its_items_are_their_templates(tmp_path):
+    feature = window(
+        "",
+        """
+      <ListBox SelectedIndex="1">
+        <ListBoxItem>One</ListBoxItem><TextBlock Text="Two" /><ListBoxItem>Three</ListBoxItem>
+      </ListBox>
+      <ListBox IsEnabled="False">
+        <ListBoxItem IsSelected="True">Off</ListBoxItem>
+      </ListBox>""",
+    )
+    rows = _theme_item("One") + _theme_item("Two", selected=True) + _theme_item("Three")
+    off = _theme_item("Off", selected=True, gray=True)
+    twin = window("", _theme_list(rows) + _theme_list(off, enabled=False))
+    px = _same(tmp_path, feature, twin)
+    # the selected row: #3DDADADA over white inside its #FFDADADA frame
+    assert tuple(px[24, 40][:3]) == (246, 246, 246)
+    assert tuple(px[22, 0][:3]) == (171, 173, 179)  # the ListBox's frame
