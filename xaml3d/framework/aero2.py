@@ -27,12 +27,6 @@ THEME: dict[str, dict[str, str]] = {
         "HorizontalContentAlignment": "Left",
         "VerticalContentAlignment": "Top",
     },
-    "ListBoxItem": {
-        "Padding": "4,1",
-        "Background": "Transparent",
-        "BorderBrush": "Transparent",
-        "BorderThickness": "1",
-    },
     "GroupBox": {"BorderBrush": "#FFD5DFE5", "BorderThickness": "1"},
 }
 
