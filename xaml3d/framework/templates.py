@@ -26,8 +26,8 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
 - ``ContentStringFormat`` / ``HeaderStringFormat`` / ``ItemStringFormat`` format content that
   is not an element (string_formats.py).
 
-Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
-take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
+Button, ToggleButton, RepeatButton, ListBox and ListBoxItem without a template of their own
+(nor their Style's) take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
 user template are left to the reader's theme drawing.
 """
 
@@ -294,8 +294,8 @@ class _Instantiation:
             self.sv.diag("TPL007", msg, c.el, attr=where, once=("TPL007", id(c.el)))
 
     def themed_items(self, c: Control) -> list:
-        """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
-        containers as its children; an ItemsControl's panel in the Border of its default
+        """The items of a control drawn in the theme's look: a ComboBox's containers as its
+        children (a ListBox's go to its theme template's ItemsPresenter); an ItemsControl's panel in the Border of its default
         template (WPF's: Background, BorderBrush, BorderThickness and Padding bound)."""
         sv, el = self.sv, c.el
         boxes = self.boxes(c)
