@@ -338,3 +338,22 @@ def test_the_theme_list_box_and_its_items_are_their_templates(tmp_path):
     # the selected row: #3DDADADA over white inside its #FFDADADA frame
     assert tuple(px[24, 40][:3]) == (246, 246, 246)
     assert tuple(px[22, 0][:3]) == (171, 173, 179)  # the ListBox's frame
+
+
+def test_a_viewport_in_a_theme_list_box_item_is_rendered(tmp_path):
+    from test_framework_templates import HEAD, VIEWPORT, _window_pixels
+
+    viewport = VIEWPORT.replace(' Grid.Column="1"', ' Width="60" Height="60"')
+    path = tmp_path / "item.xaml"
+    path.write_text(
+        f"""{HEAD}<Grid Background="White"><StackPanel>
+  <ListBox><ListBoxItem>{viewport}</ListBoxItem><ListBoxItem>Text</ListBoxItem></ListBox>
+</StackPanel></Grid></Window>""",
+        encoding="utf-8",
+    )
+    px = _window_pixels(path)
+    # the viewport at 7,4: the ListBox's 1 px border and Padding 1, the item's 1 px border and
+    # Padding 4,1; its lime square (32 of its 80 wide camera's units: 24 px) at its centre
+    lime = np.argwhere((px[..., 0] == 0) & (px[..., 1] == 255) & (px[..., 2] == 0))
+    assert lime.min(axis=0).tolist() == [4 + 18, 7 + 18]
+    assert lime.max(axis=0).tolist() == [4 + 41, 7 + 41]
