@@ -27,8 +27,8 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
   is not an element (string_formats.py).
 
 Button, ToggleButton, RepeatButton, ListBox and ListBoxItem without a template of their own
-(nor their Style's) take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
-user template are left to the reader's theme drawing.
+(nor their Style's) take the theme Style's (``THEMED``), instantiated the same way; the other
+controls without a user template are left to the reader's theme drawing.
 """
 
 from __future__ import annotations
@@ -295,8 +295,9 @@ class _Instantiation:
 
     def themed_items(self, c: Control) -> list:
         """The items of a control drawn in the theme's look: a ComboBox's containers as its
-        children (a ListBox's go to its theme template's ItemsPresenter); an ItemsControl's panel in the Border of its default
-        template (WPF's: Background, BorderBrush, BorderThickness and Padding bound)."""
+        children (a ListBox's go to its theme template's ItemsPresenter); an ItemsControl's
+        panel in the Border of its default template (WPF's: Background, BorderBrush,
+        BorderThickness and Padding bound)."""
         sv, el = self.sv, c.el
         boxes = self.boxes(c)
         if c.type != "ItemsControl":
