@@ -318,6 +318,8 @@ def test_the_items_panel_of_a_list_box_holds_its_items(tmp_path):
     # Auto), so the WrapPanel is measured with unbounded width and never wraps, as in WPF
     ink = (px[:40, :80, :3].sum(axis=-1) < 300).any(axis=1)
     assert ink[4:20].any() and not ink[22:38].any()
+    # what runs past the view (Blue) is cut at it, as WPF's ScrollContentPresenter clips
+    assert (px[:30, 80:104, :3].sum(axis=-1) >= 600).all()
 
 
 def test_the_theme_list_box_and_its_items_are_their_templates(tmp_path):

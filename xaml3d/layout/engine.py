@@ -457,7 +457,19 @@ def _scroll_arrange(e: Engine, n: Node, w: float, h: float):
         cw = vw if n.scroll_h == "Disabled" else max(k.desired[0], vw)
         ch = vh if n.scroll_v == "Disabled" else max(k.desired[1], vh)
         e.arrange(k, 0.0, 0.0, cw, ch, "ScrollViewer content (at least the view's size)")
+        if k.size[0] > vw + 1e-9 or k.size[1] > vh + 1e-9:
+            # WPF's ScrollContentPresenter clips what does not fit to the view
+            ox, oy = k.offset
+            view = (-ox, -oy, vw, vh)
+            k.clip_box = view if k.clip_box is None else _overlap(k.clip_box, view)
     return w, h
+
+
+def _overlap(a, b) -> tuple[float, float, float, float]:
+    """The intersection of two (x, y, w, h) boxes (empty: zero size)."""
+    x0, y0 = max(a[0], b[0]), max(a[1], b[1])
+    x1, y1 = min(a[0] + a[2], b[0] + b[2]), min(a[1] + a[3], b[1] + b[3])
+    return (x0, y0, max(0.0, x1 - x0), max(0.0, y1 - y0))
 
 
 def _uniform_shape(n: Node) -> tuple[int, int, int]:
