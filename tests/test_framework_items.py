@@ -315,9 +315,12 @@ def test_the_items_panel_of_a_list_box_holds_its_items(tmp_path):
     twin = window("", _theme_list(rows, "WrapPanel", size=' Height="40"'))
     px = _same(tmp_path, _with_ns(feature), _with_ns(twin))
     # the three side by side on one row: the ScrollViewer scrolls across (its horizontal bar
-    # Auto), so the WrapPanel is measured with unbounded width and never wraps, as in WPF
-    ink = (px[:40, :80, :3].sum(axis=-1) < 300).any(axis=1)
-    assert ink[4:20].any() and not ink[22:38].any()
+    # Auto), so the WrapPanel is measured with unbounded width and never wraps, as in WPF;
+    # the bar it then shows (17 px at the bottom of the 36 px view) has its #FFCDCDCD thumb
+    text = (px[:40, 10:70, :3].sum(axis=-1) < 200).any(axis=1)
+    assert text[4:19].any() and not text[19:38].any()
+    thumb = (px[:40, :80, :3] == 205).all(axis=-1).sum(axis=1) >= 10
+    assert not thumb[:21].any() and thumb[21:38].any()
     # what runs past the view (Blue) is cut at it, as WPF's ScrollContentPresenter clips
     assert (px[:30, 80:104, :3].sum(axis=-1) >= 600).all()
 

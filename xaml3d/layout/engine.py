@@ -451,6 +451,9 @@ def _scroll_arrange(e: Engine, n: Node, w: float, h: float):
         for k in n.children:
             e.measure(k, vw if n.scroll_h == "Disabled" else INF,
                       vh if n.scroll_v == "Disabled" else INF)  # fmt: skip
+    dw = max((k.desired[0] for k in n.children), default=0.0)
+    dh = max((k.desired[1] for k in n.children), default=0.0)
+    n.scrolled = (vb, hb, dw, dh)
     for k in n.children:
         # a direction that does not scroll (Disabled) gives the content the view's size (WPF
         # measures it again when an Auto bar appears); one that scrolls, at least that size

@@ -150,6 +150,9 @@ class Node:
     # its own coordinates: its Max/explicit size when its render is larger, cut to its slot
     # when that is smaller than it (None: nothing is clipped)
     clip_box: tuple[float, float, float, float] | None = None
+    # a ScrollViewer after arrange: (vertical bar's width, horizontal bar's height, content
+    # width, content height), the bars it shows and what they scroll
+    scrolled: tuple[float, float, float, float] | None = None
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange
     measured_with: object = field(default=None, repr=False)  # (engine, available w, h)
 

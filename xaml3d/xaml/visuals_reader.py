@@ -49,6 +49,7 @@ from xaml3d.xaml.controls_reader import (
     _progress_bar,
     _scroll_bar,
     _slider,
+    scroll_viewer_bars,
 )
 from xaml3d.xaml.image_element import ImageLayout
 from xaml3d.xaml.panels_reader import (
@@ -201,6 +202,9 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     local = n.type
     if r.ctx.is_templated(el):
         return  # drawn by its template's instance, its child
+    if n.kind == L.SCROLL and n.scrolled is not None:  # the bars it shows
+        out.extend(scroll_viewer_bars(r, n.scrolled, w, h))
+        return
     if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
         out.extend(_part(n, w, h))
         if local == "GroupBox":
@@ -289,6 +293,10 @@ def attach_control_drawings(r, root, elements: dict) -> None:
             el = elements.get(id(n), (None,))[0]
             if el is not None:  # its border with the header's gap, over its Background
                 n.drawing = DrawingGroup(children=tuple(templates.group_box_chrome(r, el, n)))
+            continue
+        if n.kind == L.SCROLL and n.arranged and n.scrolled is not None:
+            bars = scroll_viewer_bars(r, n.scrolled, *n.ink)
+            n.drawing = DrawingGroup(children=tuple(bars)) if bars else None
             continue
         if n.kind != L.CONTROL or not n.arranged or n.type.startswith("#"):
             continue
