@@ -362,3 +362,16 @@ def test_a_viewport_in_a_theme_list_box_item_is_rendered(tmp_path):
     lime = np.argwhere((px[..., 0] == 0) & (px[..., 1] == 255) & (px[..., 2] == 0))
     assert lime.min(axis=0).tolist() == [4 + 18, 7 + 18]
     assert lime.max(axis=0).tolist() == [4 + 41, 7 + 41]
+
+
+def test_the_scroll_bar_of_a_list_box_inside_a_visual_brush(tmp_path):
+    rows = "".join(f"<ListBoxItem>{t}</ListBoxItem>" for t in ("One", "Two", "Three", "Four"))
+    box = f'<ListBox Height="40">{rows}</ListBox>'
+    visual = f'<StackPanel Width="64" Background="White">{box}</StackPanel>'
+    path = tmp_path / "brush.xaml"
+    path.write_text(in_brush("", visual), encoding="utf-8")
+    px = _viewport_pixels(path)
+    # the 64 x 40 visual fills the 64 px square: the vertical bar (17 px of #FFF0F0F0 inside
+    # the 2 px of the ListBox's border and padding) at its right, no thumb (no room for one)
+    assert tuple(px[32, 52][:3]) == (240, 240, 240)
+    assert tuple(px[32, 20][:3]) == (255, 255, 255)

@@ -124,8 +124,14 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     else:
         v = ElementValues(r, el, element_style(r, el))
         _element(r, v, n, el, font, ink_w, ink_h, own)
+    scrolls = n.kind == L.SCROLL and n.scrolled is not None
+    inner = [] if scrolls else own
     for k in n.children:
-        _compile(r, reader, k, own, (x, y, sx, sy))
+        _compile(r, reader, k, inner, (x, y, sx, sy))
+    if scrolls and inner:  # the content cut at the view (WPF's ScrollContentPresenter)
+        vb, hb = n.scrolled[:2]
+        view = RectangleGeometry((0.0, 0.0, max(0.0, ink_w - vb), max(0.0, ink_h - hb)))
+        own.append(DrawingGroup(children=tuple(inner), clip=view))
     if not own:
         return
     opacity = v.get("Opacity", V.parse_double, 1.0) if v is not None else 1.0
@@ -202,9 +208,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     local = n.type
     if r.ctx.is_templated(el):
         return  # drawn by its template's instance, its child
-    if n.kind == L.SCROLL and n.scrolled is not None:  # the bars it shows
-        out.extend(scroll_viewer_bars(r, n.scrolled, w, h))
-        return
     if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
         out.extend(_part(n, w, h))
         if local == "GroupBox":
@@ -222,6 +225,8 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.WRAP, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        if n.kind == L.SCROLL and n.scrolled is not None:  # the bars it shows
+            out.extend(scroll_viewer_bars(r, n.scrolled, w, h))
         return
     if n.kind == L.BORDER:
         radius = v.get("CornerRadius", V.parse_double, 0.0) if v.p is not None else 0.0
