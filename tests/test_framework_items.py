@@ -375,3 +375,13 @@ def test_the_scroll_bar_of_a_list_box_inside_a_visual_brush(tmp_path):
     # the 2 px of the ListBox's border and padding) at its right, no thumb (no room for one)
     assert tuple(px[32, 52][:3]) == (240, 240, 240)
     assert tuple(px[32, 20][:3]) == (255, 255, 255)
+
+
+def test_the_theme_list_box_inside_a_visual_brush_is_its_template(tmp_path):
+    rows = "<ListBoxItem>One</ListBoxItem><ListBoxItem>Two</ListBoxItem>"
+    box = f'<ListBox SelectedIndex="0">{rows}</ListBox>'
+    feature = f'<StackPanel Width="64" Background="White">{box}</StackPanel>'
+    tree = _theme_list(_theme_item("One", selected=True) + _theme_item("Two"))
+    twin = f'<StackPanel Width="64" Background="White">{tree}</StackPanel>'
+    px = _same(tmp_path, in_brush("", feature), in_brush("", twin), _viewport_pixels)
+    assert ((px[..., 0] == 171) & (px[..., 1] == 173) & (px[..., 2] == 179)).any()
