@@ -385,3 +385,27 @@ def test_the_theme_list_box_inside_a_visual_brush_is_its_template(tmp_path):
     twin = f'<StackPanel Width="64" Background="White">{tree}</StackPanel>'
     px = _same(tmp_path, in_brush("", feature), in_brush("", twin), _viewport_pixels)
     assert ((px[..., 0] == 171) & (px[..., 1] == 173) & (px[..., 2] == 179)).any()
+
+
+def test_item_setters_bound_to_the_list_box_above_them(tmp_path):
+    # the theme's ListBoxItem takes HorizontalContentAlignment from the ItemsControl above it;
+    # a user Style's Setter may bind to it the same way (AncestorType written plainly)
+    style = (
+        '<Style TargetType="ListBoxItem"><Setter Property="Padding" Value="{Binding Padding, '
+        'RelativeSource={RelativeSource AncestorType=ListBox}}" /></Style>'
+    )
+    feature = window(
+        style,
+        '<ListBox HorizontalContentAlignment="Right" Padding="3">'
+        "<ListBoxItem>One</ListBoxItem></ListBox>",
+    )
+    item = (
+        '<ContentControl><Border Background="Transparent" BorderBrush="Transparent" '
+        'BorderThickness="1" Padding="3"><ContentPresenter HorizontalAlignment="Right" '
+        'VerticalAlignment="Center"><TextBlock Text="One" /></ContentPresenter></Border>'
+        "</ContentControl>"
+    )
+    tree = _theme_list(item).replace("<ScrollViewer ", '<ScrollViewer Padding="3" ')
+    px = _same(tmp_path, feature, window("", tree))
+    ink = np.flatnonzero((px[:30, :80, :3].sum(axis=-1) < 300).any(axis=0))
+    assert ink.min() > 40  # the text at the right

@@ -675,13 +675,17 @@ def _ancestor_binding(value) -> tuple[str, str] | None:
         return None
     rpos, rnamed = markup.arguments(rs[1])
     mode = rnamed.get("Mode", rpos[0] if rpos else "FindAncestor")
-    kind = markup.split(rnamed.get("AncestorType"))
-    if mode != "FindAncestor" or kind is None or kind[0] != "Type" or "AncestorLevel" in rnamed:
+    raw = rnamed.get("AncestorType") or ""
+    kind = markup.split(raw)  # {x:Type T}, or T written plainly (its type converter)
+    type_name = kind[1] if kind is not None and kind[0] == "Type" else None
+    if kind is None and raw.strip() and "{" not in raw:
+        type_name = raw
+    if mode != "FindAncestor" or not type_name or "AncestorLevel" in rnamed:
         return None
     prop = named.get("Path", positional[0] if positional else "").strip()
     if not prop or "." in prop or "[" in prop:
         return None
-    return prop, kind[1].split(":")[-1].strip()
+    return prop, type_name.split(":")[-1].strip()
 
 
 def _same_ns(el, local: str) -> str:
