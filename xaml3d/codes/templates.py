@@ -26,7 +26,7 @@ TEMPLATE_CODES: dict[str, tuple[str, str]] = {
     "TPL005": (WARNING, "a trigger Setter's TargetName names no part of the template: skipped"),
     "TPL006": (INFO, "an ItemsSource not known at load (a binding, a missing resource): no items"),
     "TPL007": (INFO, "a template selector is code: the items and content are shown without it"),
-    "TPL008": (INFO, "the ItemsPanel of a ListBox or ComboBox in the theme's look is not used"),
+    "TPL008": (INFO, "the ItemsPanel of a ComboBox in the theme's look is not used"),
     "TPL009": (WARNING, "a trigger Condition's SourceName names no part of the template: skipped"),
     "TPL010": (WARNING, "a content, header or item string format .NET refuses: shown unformatted"),
     "BND004": (

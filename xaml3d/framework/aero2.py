@@ -1,7 +1,7 @@
 """The theme's values for the controls' properties: what a ``{TemplateBinding P}`` reads when
 neither the control, its Style nor the theme dictionary's Style (``xaml3d/data/themes/aero2.xaml``:
-Button, ToggleButton, RepeatButton, CheckBox, RadioButton) sets P (WPF's default Style of the
-Aero2 theme, from the [[Aero2.NormalColor]] values of dotnet/wpf's theme files, for the
+Button, ToggleButton, RepeatButton, CheckBox, RadioButton, Label, TextBox, PasswordBox, ListBox,
+ListBoxItem) sets P (WPF's default Style of the Aero2 theme, from the [[Aero2.NormalColor]] values of dotnet/wpf's theme files, for the
 controls whose Style is not yet written in the theme dictionary; then the properties' own
 defaults).
 
@@ -18,12 +18,6 @@ THEME: dict[str, dict[str, str]] = {
         "Padding": "5",
         "HorizontalContentAlignment": "Left",
         "VerticalContentAlignment": "Top",
-    },
-    "ListBoxItem": {
-        "Padding": "4,1",
-        "Background": "Transparent",
-        "BorderBrush": "Transparent",
-        "BorderThickness": "1",
     },
     "GroupBox": {"BorderBrush": "#FFD5DFE5", "BorderThickness": "1"},
 }
@@ -45,6 +39,7 @@ DEFAULTS: dict[str, str] = {
     "IsFocused": "False",
     "IsKeyboardFocused": "False",
     "IsKeyboardFocusWithin": "False",
+    "IsSelectionActive": "False",  # Selector.IsSelectionActive: no keyboard focus either
     "IsDefaulted": "False",
     "IsDefault": "False",
     "IsCancel": "False",

@@ -5,6 +5,10 @@ property), ``{Binding}`` / ``{Binding Path}`` (a DataTemplate's data) and
 
 from __future__ import annotations
 
+# attached properties keep their owner's name (Grid.Row); others are named without it
+ATTACHED_OWNERS = {"Grid", "DockPanel", "Canvas", "ScrollViewer", "TextElement", "Panel",
+                   "KeyboardNavigation", "ToolTipService", "RenderOptions"}  # fmt: skip
+
 
 def split(value: str | None) -> tuple[str, str] | None:
     """``{Name args}`` -> (Name without prefix, args); None when not a markup extension (a
@@ -82,7 +86,10 @@ def templated_parent_property(value: str | None) -> tuple[str, bool] | None:
     if not prop:
         return None
     prop = prop.strip().strip("()")
-    return prop.rpartition(".")[2], plain
+    owner, _, short = prop.rpartition(".")
+    # an attached property keeps its owner, as the Setters that set it name it
+    attached = owner.split(":")[-1] in ATTACHED_OWNERS
+    return (f"{owner.split(':')[-1]}.{short}" if attached else short), plain
 
 
 def data_binding(value: str | None) -> str | None:

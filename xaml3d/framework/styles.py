@@ -15,9 +15,9 @@ from xaml3d.framework.aero2 import theme_value
 
 STYLE_DEPTH = 16  # BasedOn chains longer than this are cut (a cycle, or hostile markup)
 X_NS = "http://schemas.microsoft.com/winfx/2006/xaml"
-# attached properties keep their owner; others are named without it (Button.Background)
-ATTACHED_OWNERS = {"Grid", "DockPanel", "Canvas", "ScrollViewer", "TextElement", "Panel",
-                   "KeyboardNavigation", "ToolTipService", "RenderOptions"}  # fmt: skip
+# attached properties keep their owner (markup.ATTACHED_OWNERS); others are named without it
+# (Button.Background)
+ATTACHED_OWNERS = markup.ATTACHED_OWNERS
 # attached properties whose owner also has properties of its own
 ATTACHED = {"ItemsControl.AlternationIndex"}
 

@@ -30,14 +30,14 @@ Button, ToggleButton and RepeatButton without a template of their own (nor their
 take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox and RadioButton
 (their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
 PasswordBox (a TextBox's or PasswordBox's ``PART_ContentHost`` holds its text view,
-text_host.py, in the theme's template or a user's); the other controls without a user template
-are left to the reader's theme drawing.
+text_host.py, in the theme's template or a user's), ListBox and ListBoxItem; the other controls
+without a user template are left to the reader's theme drawing.
 """
 
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import data_triggers, items, markup, string_formats, text_host
+from xaml3d.framework import binding_tree, data_triggers, items, markup, string_formats, text_host
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -63,6 +63,7 @@ THEMED |= {"Label", "TextBox", "PasswordBox"}
 # themed controls a ToolBar draws in the theme's template (its TextBox Style, ToolBar.
 # TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
 _OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
+THEMED |= {"ListBox", "ListBoxItem"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
@@ -303,9 +304,10 @@ class _Instantiation:
             self.sv.diag("TPL007", msg, c.el, attr=where, once=("TPL007", id(c.el)))
 
     def themed_items(self, c: Control) -> list:
-        """The items of a control drawn in the theme's look: a ListBox's or ComboBox's
-        containers as its children; an ItemsControl's panel in the Border of its default
-        template (WPF's: Background, BorderBrush, BorderThickness and Padding bound)."""
+        """The items of a control drawn in the theme's look: a ComboBox's containers as its
+        children (a ListBox's go to its theme template's ItemsPresenter); an ItemsControl's
+        panel in the Border of its default template (WPF's: Background, BorderBrush,
+        BorderThickness and Padding bound)."""
         sv, el = self.sv, c.el
         boxes = self.boxes(c)
         if c.type != "ItemsControl":
@@ -463,7 +465,25 @@ class _Instantiation:
                 self.sv.diag("TPL002", msg, part, attr=attr, once=("TPL002", id(part), attr))
                 del part.attrib[attr]
                 continue
-            put(self.sv, part, attr, self.in_control_scope(c, part, c.value(prop)))
+            value = self.from_ancestor(c, c.value(prop))
+            put(self.sv, part, attr, self.in_control_scope(c, part, value))
+
+    def from_ancestor(self, c: Control, value):
+        """A Setter's binding to an ancestor's property (the theme's ListBoxItem takes its
+        content alignments from ``{Binding P, RelativeSource={RelativeSource AncestorType=
+        {x:Type ItemsControl}}}``): the nearest such ancestor's value of P, else None (the
+        property's default, as a binding that finds no source gives)."""
+        found = _ancestor_binding(value)
+        if found is None:
+            return value
+        prop, type_name = found
+        node = c.el.getparent()
+        while node is not None:
+            t = self.sv.wpf_type(node)
+            if t is not None and binding_tree.type_matches(node, type_name):
+                return Control(node, t, self.sv).value(prop)
+            node = node.getparent()
+        return None
 
     def in_control_scope(self, c: Control, part, value):
         """A resource reference in the control's value resolved where the control is: the
@@ -653,6 +673,33 @@ def put(sv, el, prop: str, value) -> None:
     made.attrib.pop(f"{{{X_NS}}}Key", None)  # a resource entry's copy, now a property value
     holder.append(made)
     el.insert(0, holder)
+
+
+def _ancestor_binding(value) -> tuple[str, str] | None:
+    """(property, ancestor type) of ``{Binding P, RelativeSource={RelativeSource
+    AncestorType={x:Type T}}}`` (FindAncestor, the first such ancestor), else None."""
+    if value is None or value[0] != "text":
+        return None
+    m = markup.split(value[1])
+    if m is None or m[0] != "Binding":
+        return None
+    positional, named = markup.arguments(m[1])
+    rs = markup.split(named.get("RelativeSource"))
+    if rs is None or rs[0] != "RelativeSource" or named.keys() - {"Path", "RelativeSource"}:
+        return None
+    rpos, rnamed = markup.arguments(rs[1])
+    mode = rnamed.get("Mode", rpos[0] if rpos else "FindAncestor")
+    raw = rnamed.get("AncestorType") or ""
+    kind = markup.split(raw)  # {x:Type T}, or T written plainly (its type converter)
+    type_name = kind[1] if kind is not None and kind[0] == "Type" else None
+    if kind is None and raw.strip() and "{" not in raw:
+        type_name = raw
+    if mode != "FindAncestor" or not type_name or "AncestorLevel" in rnamed:
+        return None
+    prop = named.get("Path", positional[0] if positional else "").strip()
+    if not prop or "." in prop or "[" in prop:
+        return None
+    return prop, type_name.split(":")[-1].strip()
 
 
 def _same_ns(el, local: str) -> str:

@@ -452,13 +452,28 @@ def _scroll_arrange(e: Engine, n: Node, w: float, h: float):
         for k in n.children:
             e.measure(k, vw if n.scroll_h == "Disabled" else INF,
                       vh if n.scroll_v == "Disabled" else INF)  # fmt: skip
+    dw = max((k.desired[0] for k in n.children), default=0.0)
+    dh = max((k.desired[1] for k in n.children), default=0.0)
+    n.scrolled = (vb, hb, dw, dh)
     for k in n.children:
         # a direction that does not scroll (Disabled) gives the content the view's size (WPF
         # measures it again when an Auto bar appears); one that scrolls, at least that size
         cw = vw if n.scroll_h == "Disabled" else max(k.desired[0], vw)
         ch = vh if n.scroll_v == "Disabled" else max(k.desired[1], vh)
         e.arrange(k, 0.0, 0.0, cw, ch, "ScrollViewer content (at least the view's size)")
+        if k.size[0] > vw + 1e-9 or k.size[1] > vh + 1e-9:
+            # WPF's ScrollContentPresenter clips what does not fit to the view
+            ox, oy = k.offset
+            view = (-ox, -oy, vw, vh)
+            k.clip_box = view if k.clip_box is None else _overlap(k.clip_box, view)
     return w, h
+
+
+def _overlap(a, b) -> tuple[float, float, float, float]:
+    """The intersection of two (x, y, w, h) boxes (empty: zero size)."""
+    x0, y0 = max(a[0], b[0]), max(a[1], b[1])
+    x1, y1 = min(a[0] + a[2], b[0] + b[2]), min(a[1] + a[3], b[1] + b[3])
+    return (x0, y0, max(0.0, x1 - x0), max(0.0, y1 - y0))
 
 
 def _uniform_shape(n: Node) -> tuple[int, int, int]:

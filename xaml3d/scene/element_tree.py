@@ -157,6 +157,9 @@ class Node:
     # and whether its text needs more room than its box (WPF's layout clip then cuts it)
     text_lines: tuple = field(default=(), repr=False)
     text_overflow: bool = False
+    # a ScrollViewer after arrange: (vertical bar's width, horizontal bar's height, content
+    # width, content height), the bars it shows and what they scroll
+    scrolled: tuple[float, float, float, float] | None = None
     state: object = field(default=None, repr=False)  # a panel's measure results for arrange
     measured_with: object = field(default=None, repr=False)  # (engine, available w, h)
 

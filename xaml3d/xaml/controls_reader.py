@@ -147,6 +147,47 @@ def scroll_bar_upright(v) -> bool:
                   "Vertical") == "Vertical"  # fmt: skip
 
 
+class _BarValues:
+    """The values a ScrollViewer sets on the ScrollBar of its template: its Orientation, and
+    Maximum (the content's extent less the view), ViewportSize (the view) and Value (0: a
+    picture is not scrolled); the ScrollBar's own look otherwise (no element of its own)."""
+
+    p = None
+    style: dict = {}
+
+    def __init__(self, **values) -> None:
+        self.values = values
+
+    def get(self, name, parse, default):
+        return self.values.get(name, default)
+
+
+def scroll_viewer_bars(r, scrolled, w: float, h: float) -> list:
+    """The scroll bars a laid-out ScrollViewer of ``w`` x ``h`` shows (``Node.scrolled``: the
+    bars' room and the content's size, from layout), each in Aero2's resting look, and the
+    #FFF0F0F0 corner between them when both show."""
+    vb, hb, dw, dh = scrolled
+    out: list = []
+    view_w, view_h = max(0.0, w - vb), max(0.0, h - hb)
+    bars = []
+    if vb > 0:
+        values = _BarValues(Maximum=max(0.0, dh - view_h), ViewportSize=view_h)
+        bars.append((values, view_w, 0.0, vb, view_h))
+    if hb > 0:
+        values = _BarValues(Orientation="Horizontal", Maximum=max(0.0, dw - view_w),
+                            ViewportSize=view_w)  # fmt: skip
+        bars.append((values, 0.0, view_h, view_w, hb))
+    for values, x, y, bw, bh in bars:
+        part: list = []
+        _scroll_bar(r, values, bw, bh, part)
+        m = np.array([[1.0, 0.0, x], [0.0, 1.0, y], [0.0, 0.0, 1.0]])
+        out.append(DrawingGroup(children=tuple(part), transform=m))
+    if vb > 0 and hb > 0:
+        corner = RectangleGeometry((view_w, view_h, vb, hb))
+        out.append(GeometryDrawing(corner, brush=_rgb("F0F0F0")))
+    return out
+
+
 def _scroll_bar(r, v, w: float, h: float, out: list) -> None:
     """Aero2's ScrollBar at rest: a #FFF0F0F0 bar, a 17 px line button at each end with its
     #FF606060 arrow, and the #FFCDCDCD thumb placed and sized as WPF's Track does from Minimum,

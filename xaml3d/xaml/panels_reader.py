@@ -79,7 +79,10 @@ _NOT_CONTENT = ("Resources", "Triggers", "MergedDictionaries", "RowDefinitions",
                 "InputBindings", "CommandBindings", "Background", "BorderBrush", "Foreground",
                 "Effect", "RenderTransform", "LayoutTransform", "OpacityMask", "Clip",
                 "ItemTemplate", "ItemsPanel", "DataContext", "Camera", "Header",
-                "BitmapEffect", "BitmapEffectInput", "CacheMode", "Tag")  # fmt: skip
+                "BitmapEffect", "BitmapEffectInput", "CacheMode", "Tag",
+                # an items control's item properties: values the framework step reads
+                "ItemContainerStyle", "ItemContainerStyleSelector", "ItemTemplateSelector",
+                "ItemsSource")  # fmt: skip
 _PAINTED = (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.BORDER, L.CANVAS,
             L.CONTAINER, L.SCROLL, L.UNIFORM, L.WRAP)  # fmt: skip
 _UNITS = {"px": 1.0, "in": 96.0, "cm": 96.0 / 2.54, "pt": 96.0 / 72.0}

@@ -5,9 +5,6 @@ content presenters around the control's content. xaml3d builds the same tree of 
 for the controls whose template places content, so their content is laid out and drawn inside
 their chrome, beside the viewports (``render --window``) and inside visuals alike:
 
-- ListBox: a white Border (#FFABADB3, 1 px, Padding 1), the items stacked; each ListBoxItem a
-  1 px transparent Border with Padding 4,1, the selected one (SelectedIndex or IsSelected) in
-  Aero2's inactive selection look (#3DDADADA inside #FFDADADA: a picture has no keyboard focus).
 - TabControl: the row of TabItem headers (Padding 6,2,6,2; a #FFF0F0F0-#FFE5E5E5 face in a
   #FFACACAC border open at the bottom; the selected tab white, 2 px larger each side and above,
   drawn over its neighbours), then the selected tab's content in a white Border (#FFACACAC, 1 px)
@@ -77,7 +74,7 @@ from xaml3d.xaml.visual_text import warn_uncovered
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _OPTIONS = {"CheckBox", "RadioButton"}  # a ToolBar's: drawn as its parts
-_HEADERED = {"ListBox", "TabControl", "GroupBox", "Expander", "ListBoxItem", "TabItem"}
+_HEADERED = {"TabControl", "GroupBox", "Expander", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
@@ -87,9 +84,6 @@ _ALIGN_H = ("Left", "Center", "Right", "Stretch")
 _ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
 
 # Aero2's brushes for these templates ([[Aero2.NormalColor]])
-_LIST_BORDER = _rgb("ABADB3")
-_SELECTED_INACTIVE = _rgb("DADADA", 0x3D / 255)
-_SELECTED_INACTIVE_BORDER = _rgb("DADADA")
 _TAB_BORDER = _rgb("ACACAC")
 _TAB_FACE = LinearGradientBrush(
     stops=(GradientStop((0xF0 / 255,) * 3 + (1.0,), 0.0),
@@ -291,50 +285,6 @@ def _items(owner) -> list:
         elif "." not in qname(k.tag)[1]:
             out.append(k)
     return out
-
-
-def _list_box(reader, n, el, v, font) -> None:
-    _chrome(reader, n, v, _WHITE, _LIST_BORDER)
-    # the template's Border has Padding 1; the ScrollViewer inside it the ListBox's Padding
-    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-    n.padding = tuple(1.0 + p for p in pad)
-    h, vv = _align(v, "Left", "Center")
-    items = _elements(reader.content_of(el))
-    chosen = _selected_index(v, items, el)
-    rows = []
-    for i, item in enumerate(items):
-        templated = reader.r.ctx.is_templated(item)  # a ListBoxItem the user's template draws
-        if qname(item.tag)[1] == "ListBoxItem":
-            k = reader.build(item, font)
-            if k is not None and k.children and not templated:
-                k.children[0].h_align = _own_align(reader, item, "HorizontalContentAlignment", h)
-                k.children[0].v_align = _own_align(reader, item, "VerticalContentAlignment", vv)
-        else:  # WPF wraps any other item in a ListBoxItem container
-            if not is_presentation(qname(item.tag)[0]) and len(item) == 0:
-                inner = [text_part(reader, el, " ".join((item.text or "").split()), font)]
-            else:
-                inner = _build_all(reader, [item], font)
-            k = part(reader, L.BORDER, font, [_presenter(reader, font, inner, h=h, v=vv)],
-                     border=(1.0,) * 4, padding=(4.0, 1.0, 4.0, 1.0))  # fmt: skip
-        if k is None:
-            continue
-        if i == chosen and not templated:
-            k.background, k.border_brush = _SELECTED_INACTIVE, _SELECTED_INACTIVE_BORDER
-        rows.append(k)
-    n.children = [part(reader, L.STACK, font, rows)]
-
-
-def _own_align(reader, el, prop: str, default: str) -> str:
-    raw = el.get(prop)
-    allowed = _ALIGN_H if prop.startswith("Horizontal") else _ALIGN_V
-    return raw.strip() if raw is not None and raw.strip() in allowed else default
-
-
-def _list_item(reader, n, el, v, font) -> None:
-    _chrome(reader, n, v, None, None)
-    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
-    n.padding = v.get("Padding", parse_thickness, (4.0, 1.0, 4.0, 1.0))
-    n.children = [_presenter(reader, font, _content(reader, el, font))]
 
 
 def _tab_item(reader, n, el, v, font, selected: bool, h="Center", vv="Center") -> None:
@@ -676,8 +626,6 @@ def raise_selected_tabs(root: L.Node) -> None:
 # the controls whose template tree ``expand`` builds by name (a MenuItem here is a top-level
 # item: its sub-items are in a closed Popup)
 _TEMPLATES = {
-    "ListBox": _list_box,
-    "ListBoxItem": _list_item,
     "TabControl": _tab_control,
     "GroupBox": _group_box,
     "Expander": _expander,

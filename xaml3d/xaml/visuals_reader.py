@@ -47,6 +47,7 @@ from xaml3d.xaml.controls_reader import (
     _progress_bar,
     _scroll_bar,
     _slider,
+    scroll_viewer_bars,
 )
 from xaml3d.xaml.image_element import ImageLayout
 from xaml3d.xaml.panels_reader import (
@@ -119,8 +120,14 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     else:
         v = ElementValues(r, el, element_style(r, el))
         _element(r, v, n, el, font, ink_w, ink_h, own)
+    scrolls = n.kind == L.SCROLL and n.scrolled is not None
+    inner = [] if scrolls else own
     for k in n.children:
-        _compile(r, reader, k, own, (x, y, sx, sy))
+        _compile(r, reader, k, inner, (x, y, sx, sy))
+    if scrolls and inner:  # the content cut at the view (WPF's ScrollContentPresenter)
+        vb, hb = n.scrolled[:2]
+        view = RectangleGeometry((0.0, 0.0, max(0.0, ink_w - vb), max(0.0, ink_h - hb)))
+        own.append(DrawingGroup(children=tuple(inner), clip=view))
     if not own:
         return
     opacity = v.get("Opacity", V.parse_double, 1.0) if v is not None else 1.0
@@ -216,6 +223,8 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.WRAP, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
+        if n.kind == L.SCROLL and n.scrolled is not None:  # the bars it shows
+            out.extend(scroll_viewer_bars(r, n.scrolled, w, h))
         return
     if n.kind == L.BORDER:
         radius = v.get("CornerRadius", V.parse_double, 0.0) if v.p is not None else 0.0
@@ -285,6 +294,10 @@ def attach_control_drawings(r, root, elements: dict) -> None:
             el = elements.get(id(n), (None,))[0]
             if el is not None:  # its border with the header's gap, over its Background
                 n.drawing = DrawingGroup(children=tuple(templates.group_box_chrome(r, el, n)))
+            continue
+        if n.kind == L.SCROLL and n.arranged and n.scrolled is not None:
+            bars = scroll_viewer_bars(r, n.scrolled, *n.ink)
+            n.drawing = DrawingGroup(children=tuple(bars)) if bars else None
             continue
         if n.kind != L.CONTROL or not n.arranged or n.type.startswith("#"):
             continue
