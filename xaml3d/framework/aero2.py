@@ -1,9 +1,9 @@
 """The theme's values for the controls' properties: what a ``{TemplateBinding P}`` reads when
 neither the control, its Style nor the theme dictionary's Style (``xaml3d/data/themes/aero2.xaml``:
 Button, ToggleButton, RepeatButton, CheckBox, RadioButton, Label, TextBox, PasswordBox, ListBox,
-ListBoxItem) sets P (WPF's default Style of the Aero2 theme, from the [[Aero2.NormalColor]] values of dotnet/wpf's theme files, for the
-controls whose Style is not yet written in the theme dictionary; then the properties' own
-defaults).
+ListBoxItem) sets P (WPF's default Style of the Aero2 theme, from the [[Aero2.NormalColor]]
+values of dotnet/wpf's theme files, for the controls whose Style is not yet written in the theme
+dictionary; then the properties' own defaults).
 
 A user's Style does not replace the theme's: WPF applies both (the theme Style sits below the
 user's Style in value precedence), unless ``OverridesDefaultStyle`` is set.
