@@ -49,6 +49,15 @@ def _v3(v) -> np.ndarray:
     return np.asarray(v, dtype=np.float64).reshape(3)
 
 
+def cross3(a, b) -> np.ndarray:
+    """a x b of two 3-vectors: np.cross's products and differences written out (the same values),
+    without its axis handling, which costs more than the product for one pair (an animated
+    camera's frame is built once per sample of an export)."""
+    a0, a1, a2 = float(a[0]), float(a[1]), float(a[2])
+    b0, b1, b2 = float(b[0]), float(b[1]), float(b[2])
+    return np.array((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0))
+
+
 def camera_frame(look, up) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The orthonormal right-handed frame (u, v, w) of section 3, built in reverse order:
     w = -look/|look|, v = up with its w-component removed (normalized), u = v x w.
@@ -75,7 +84,7 @@ def camera_frame(look, up) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             code="CAM003",
         )
     v = up_perp / perp_len
-    u = np.cross(v, w)
+    u = cross3(v, w)
     return frozen_array(u), frozen_array(v), frozen_array(w)
 
 
@@ -210,9 +219,9 @@ def _wpf_look_at_row(position, look, up) -> np.ndarray:
     """WPF's CreateViewMatrix (LookAtRH), row-vector form, written as in wpf3d.md section 1."""
     look, up, P = _v3(look), _v3(up), _v3(position)
     zaxis = -look / np.linalg.norm(look)
-    x = np.cross(up, zaxis)
+    x = cross3(up, zaxis)
     xaxis = x / np.linalg.norm(x)
-    yaxis = np.cross(zaxis, xaxis)
+    yaxis = cross3(zaxis, xaxis)
     m = np.zeros((4, 4))
     m[:3, 0], m[:3, 1], m[:3, 2] = xaxis, yaxis, zaxis
     m[3, :3] = (-(xaxis @ P), -(yaxis @ P), -(zaxis @ P))

@@ -28,6 +28,7 @@ import numpy as np
 
 from xaml3d.codes.fit import FIT_CODES  # noqa: F401 (the stage's table)
 from xaml3d.errors import INFO, WARNING, CameraError, Diagnostic, GeometryError
+from xaml3d.scene.camera_math import cross3
 from xaml3d.scene.types import Camera, MatrixCamera, OrthographicCamera, PerspectiveCamera, Viewport
 
 # A box of zero size (one point) still needs a distance to stand back from.
@@ -53,7 +54,7 @@ def _frame_world(camera) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray
             "UpDirection is zero or parallel to LookDirection: cannot fit", code="CAM003"
         )
     v = up_perp / up_len
-    u = np.cross(v, w)
+    u = cross3(v, w)
     return pos, d, u, v
 
 
