@@ -384,7 +384,9 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # whose bottom edge overflows (its edge addressing sees it cover the box);
     # image-mask-tile-magnified, an opacity mask whose tile is 2**31 times its box (recorded
     # in the part that can be seen: it took minutes to draw); visual-brush-denormal-tile, a
-    # repeated tile 5e-324 high (its positions are NaN: undrawn, never a NaN texel index)
+    # repeated tile 5e-324 high (its positions are NaN: undrawn, never a NaN texel index);
+    # visual-brush-viewbox-zero-high, a Label in a Viewbox 0 high as a VisualBrush's Visual (its
+    # template's parts are scaled to nothing: not drawn, never a division by that scale)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 

@@ -106,6 +106,9 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     rectangles are absolute, the drawing groups nest."""
     if not n.arranged or n.visibility != "Visible":
         return
+    px, py, psx, psy = parent
+    if psx == 0.0 or psy == 0.0:  # inside a box scaled to nothing (a Viewbox 0 high): unseen
+        return
     el, font = reader.elements.get(id(n), (None, FONT_SIZE))
     if el is None and not n.type.startswith("#"):
         return
@@ -138,7 +141,6 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     # children as one layer, in its own coordinates, as the window's and a viewport's do (a
     # template's part has no element: no properties of its own)
     layer = element_layer(r, r.props(el), ink_w, ink_h, bounds=True) if el is not None else None
-    px, py, psx, psy = parent
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
         m = m @ r.ctx.stages.placed_by_layout(n)
