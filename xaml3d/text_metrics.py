@@ -14,6 +14,7 @@ for characters the face lacks, measured in the system's font that has them
 from __future__ import annotations
 
 import functools
+from typing import NamedTuple
 
 from xaml3d.fonts import face_of
 
@@ -97,3 +98,33 @@ def underline(
 
     m = skia.Font(typeface(weight, italic, family), float(size)).getMetrics()
     return float(m.fUnderlinePosition), float(m.fUnderlineThickness)
+
+
+class DecorationMetrics(NamedTuple):
+    """A face's text-decoration metrics at one size, in px: offsets from the baseline (down
+    positive), thicknesses, and its ascent (positive, above the baseline)."""
+
+    underline: float
+    underline_thickness: float
+    strikeout: float
+    strikeout_thickness: float
+    ascent: float
+
+
+def decoration_metrics(
+    size: float, weight: int = 400, italic: bool = False, family: str = UI
+) -> DecorationMetrics:
+    """The face's own underline and strikeout metrics at ``size`` px (skia's FontMetrics: the
+    font's post and OS/2 tables), and its ascent; a face without strikeout metrics takes the
+    usual place, 0.3 em above the baseline, in the underline's thickness."""
+    import skia
+
+    from xaml3d.fonts import typeface
+
+    m = skia.Font(typeface(weight, italic, family), float(size)).getMetrics()
+    thick = float(m.fUnderlineThickness)
+    strike, strike_thick = float(m.fStrikeoutPosition), float(m.fStrikeoutThickness)
+    if not strike_thick:
+        strike, strike_thick = -0.3 * float(size), thick
+    return DecorationMetrics(float(m.fUnderlinePosition), thick, strike, strike_thick,
+                             -float(m.fAscent))  # fmt: skip

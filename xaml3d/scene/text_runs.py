@@ -2,8 +2,8 @@
 Node (``Node.text``), and the lines layout breaks it into (``Node.text_lines``).
 
 The reader (xaml/visuals_reader, control_content) reads what the text is: its runs with their
-FontFamily, FontSize, FontWeight, FontStyle (and, opaque to layout, the brush and underline the
-drawing needs), its TextWrapping, TextTrimming and Padding. The layout engine
+FontFamily, FontSize, FontWeight, FontStyle (and, opaque to layout, the brush and text
+decorations the drawing needs), its TextWrapping, TextTrimming and Padding. The layout engine
 (``xaml3d.layout.text``) measures it with the font metrics of the faces that draw it, at the
 width each pass offers, and leaves the lines it broke at the arranged width here; the drawing
 sets those lines as they are, so text is broken in one place only. Nothing here measures.
@@ -19,7 +19,8 @@ UI = "Segoe UI"  # WPF's default FontFamily
 @dataclass(frozen=True)
 class Run:
     """A stretch of text in one format: its FontSize (px), FontWeight (OpenType number),
-    italic, FontFamily; ``brush`` and ``underline`` are the drawing's (layout ignores them)."""
+    italic, FontFamily; ``brush`` and ``decorations`` (the TextDecorations in effect: names of
+    OverLine, Baseline, Underline, Strikethrough) are the drawing's (layout ignores them)."""
 
     text: str
     size: float
@@ -27,11 +28,11 @@ class Run:
     italic: bool = False
     family: str = UI
     brush: object = None
-    underline: bool = False
+    decorations: frozenset = frozenset()
 
     def same_format(self, other: Run) -> bool:
-        return (self.size, self.weight, self.italic, self.family, self.underline) == (
-            other.size, other.weight, other.italic, other.family, other.underline
+        return (self.size, self.weight, self.italic, self.family, self.decorations) == (
+            other.size, other.weight, other.italic, other.family, other.decorations
         ) and self.brush == other.brush  # fmt: skip
 
 

@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 from xaml3d.fonts import WEIGHTS
 from xaml3d.scene.text_runs import UI
 from xaml3d.scene.types import SolidColorBrush
+from xaml3d.xaml import values as V
 from xaml3d.xaml.brushes_reader import brush_property
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.text_content import (
@@ -37,14 +38,14 @@ HYPERLINK = SolidColorBrush(color=(0.0, 0x66 / 255, 0xCC / 255, 1.0))  # WPF's H
 
 @dataclass(frozen=True)
 class Format:
-    """How a run is drawn: FontSize, FontWeight (OpenType number), italic, brush, underline,
-    FontFamily."""
+    """How a run is drawn: FontSize, FontWeight (OpenType number), italic, brush, the
+    TextDecorations in effect (its own and its enclosing inlines'), FontFamily."""
 
     size: float
     weight: int
     italic: bool
     brush: object
-    underline: bool = False
+    decorations: frozenset = frozenset()
     family: str = UI
 
 
@@ -69,7 +70,7 @@ def _own(r, el, fmt: Format) -> Format:
     elif local == "Italic":
         fmt = replace(fmt, italic=True)
     elif local in ("Underline", "Hyperlink"):
-        fmt = replace(fmt, underline=True)
+        fmt = replace(fmt, decorations=fmt.decorations | {"Underline"})
     if local == "Hyperlink":
         fmt = replace(fmt, brush=HYPERLINK)
     w = el.get("FontWeight")
@@ -91,10 +92,12 @@ def _own(r, el, fmt: Format) -> Format:
             value = math.nan
         if value == value and 0 < value < math.inf:
             fmt = replace(fmt, size=value)
-    deco = el.get("TextDecorations")
-    if deco is not None and "Underline" in deco:
-        fmt = replace(fmt, underline=True)
     p = r.props(el)
+    # an inline's TextDecorations draw over its text and its children's, with those of the
+    # inlines around it (WPF gathers every enclosing level's when it sets a run)
+    own = p.value("TextDecorations", V.parse_text_decorations, frozenset())
+    if own:
+        fmt = replace(fmt, decorations=fmt.decorations | own)
     if "Foreground" in p.attrs or "Foreground" in p.elems:
         brush = brush_property(r, p, "Foreground")
         if brush is not None:

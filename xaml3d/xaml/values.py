@@ -297,6 +297,29 @@ def parse_enum(s: str, allowed: tuple[str, ...]) -> str:
     raise _fail("VAL005", f"{_show(s)} is not one of {', '.join(allowed)}")
 
 
+DECORATIONS = ("OverLine", "Baseline", "Underline", "Strikethrough")
+
+
+def parse_text_decorations(s: str) -> frozenset[str]:
+    """TextDecorationCollectionConverter: "None" (or nothing) for no decoration, else names of
+    OverLine, Baseline, Underline, Strikethrough separated by commas (case-insensitive, blanks
+    around each, no name twice)."""
+    t = s.strip()
+    if not t or t.lower() == "none":
+        return frozenset()
+    found: list[str] = []
+    for part in t.split(","):
+        name = next((d for d in DECORATIONS if d.lower() == part.strip().lower()), None)
+        if name is None or name in found:
+            raise _fail(
+                "VAL005",
+                f"{_show(s)} is not None or a comma-separated list of {', '.join(DECORATIONS)}"
+                + (f" ({name} twice)" if name is not None else ""),
+            )
+        found.append(name)
+    return frozenset(found)
+
+
 # --------------------------------------------------------------------------- fixed-size values
 
 

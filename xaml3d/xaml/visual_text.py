@@ -137,9 +137,8 @@ def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_cent
 def block_drawing(r, el, v, n, x: float, y: float, w: float):
     """A TextBlock's text in ``w`` (its arranged width less its Padding) as the lines layout
     broke it (``Node.text_lines``, ``xaml3d.layout.text``): one TextDrawing per run of a
-    line, on the line's baseline, aligned by TextAlignment; an underlined run over a bar at
-    its font's underline metrics."""
-    from xaml3d.text_metrics import underline
+    line, on the line's baseline, aligned by TextAlignment; a run's TextDecorations as bars in
+    its brush (``decoration_bars``)."""
 
     alignment = _alignment(v)
     plain = n.text is not None and n.text.inlines is None
@@ -163,15 +162,34 @@ def block_drawing(r, el, v, n, x: float, y: float, w: float):
                 brush=brush if plain else run.brush, **r.ctx.position(el),
             ))  # fmt: skip
             warn_uncovered(r, el, run.text, run.weight, run.italic, run.family)
-            if run.underline and tw > 0:
-                at, thick = underline(run.size, run.weight, run.italic, run.family)
-                bar = RectangleGeometry((lx, ly + line.baseline + at, tw, thick))
-                out.append(GeometryDrawing(bar, brush=run.brush))
+            if run.decorations and tw > 0:
+                for at, thick in decoration_bars(run):
+                    bar = RectangleGeometry((lx, ly + line.baseline + at, tw, thick))
+                    out.append(GeometryDrawing(bar, brush=brush if plain else run.brush))
             lx += tw
         top += line.height
     if not out:
         return None
     return out[0] if len(out) == 1 else DrawingGroup(children=tuple(out))
+
+
+def decoration_bars(run) -> list[tuple[float, float]]:
+    """(offset from the baseline, thickness) of each of the run's TextDecorations at the font's
+    recommended place and thickness, as WPF draws them: Underline at the face's underline
+    position, Strikethrough at its strikeout position, OverLine at its ascent above the
+    baseline, Baseline on it; Strikethrough in its strikeout thickness, the others in the
+    underline thickness."""
+    from xaml3d.text_metrics import decoration_metrics
+
+    m = decoration_metrics(run.size, run.weight, run.italic, run.family)
+    places = {
+        "Underline": (m.underline, m.underline_thickness),
+        "Strikethrough": (m.strikeout, m.strikeout_thickness),
+        "OverLine": (-m.ascent, m.underline_thickness),
+        "Baseline": (0.0, m.underline_thickness),
+    }
+    return [places[d] for d in ("OverLine", "Strikethrough", "Baseline", "Underline")
+            if d in run.decorations]  # fmt: skip
 
 
 def warn_uncovered(r, el, text: str, weight: int, italic: bool, family: str) -> None:
