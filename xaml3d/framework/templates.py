@@ -107,10 +107,15 @@ class _Instantiation:
         self.pinned = False
         self.count = 0  # the templates instantiated
         self.conditions = data_triggers.Conditions(root, services)
+        self.cyclic: list = []  # the controls whose template holds itself (TPL004)
 
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
-            self.control(el, 0)
+            self.control(el, 0, ())
+        for owner in self.cyclic:  # WPF overflows its stack: nothing of it is drawn
+            for k in list(owner):
+                owner.remove(k)
+            owner.text = None
 
     def styled(self) -> None:
         """The elements that are not controls (a TextBlock, a Border, a panel) whose Style
@@ -126,7 +131,9 @@ class _Instantiation:
                 self.themed_triggers(Control(el, t, self.sv))
 
     # ----------------------------------------------------------------- one control
-    def control(self, el, depth: int) -> None:
+    def control(self, el, depth: int, chain: tuple) -> None:
+        """Instantiate ``el``'s template; ``chain`` holds the (template, control) pairs of
+        the instances it is inside."""
         if id(el) in self.done:
             return
         self.done.add(id(el))
@@ -140,13 +147,20 @@ class _Instantiation:
             self.themed_triggers(c)
             self.themed_format(c)
             if t == "ContentControl" and c.value("ContentTemplate") is not None:
+                shown = items.template_element(c.value("ContentTemplate"), el, self.sv,
+                                               "DataTemplate")  # fmt: skip
+                if self.holds_itself(c, shown, chain):
+                    return
                 if self.room(el, depth):
                     self.presented(c)
-                    self.below(el, depth)
+                    self.below(el, depth, (*chain, (shown, el)))
             elif t in items.CONTAINERS and items.generates(c):
+                shown = _item_template(c, self.sv)
+                if self.holds_itself(c, shown, chain):
+                    return
                 if self.room(el, depth):
                     for sub in self.themed_items(c):
-                        self.below(sub, depth)
+                        self.below(sub, depth, (*chain, (shown, el)))
             return
         template, where = found
         if t not in SUPPORTED:
@@ -155,27 +169,45 @@ class _Instantiation:
                    "look")  # fmt: skip
             self.sv.diag("TPL001", msg, el, attr=where)
             return
+        shown = _item_template(c, self.sv) if t in ITEMS_CONTROLS else None
+        if self.holds_itself(c, template, chain) or self.holds_itself(c, shown, chain):
+            return
         if self.room(el, depth):
             instance = self.apply(c, template, themed=where is THEME)
             if instance is not None:
-                self.below(instance, depth)
+                self.below(instance, depth, (*chain, (template, el), (shown, el)))
+
+    def holds_itself(self, c: Control, template, chain: tuple) -> bool:
+        """Whether ``template`` is being instantiated already around ``c`` (WPF recurses until
+        its stack overflows): TPL004 at the outermost control it draws, which draws nothing."""
+        outer = next((owner for t, owner in chain if t is template), None)
+        if template is None or outer is None:
+            return False
+        if all(k is not outer for k in self.cyclic):
+            self.cyclic.append(outer)
+            what = local_name(template.tag)
+            msg = (f"this {self.sv.wpf_type(outer)}'s {what} holds a {c.type} with the same "
+                   f"{what}: WPF instantiates it without end (its stack overflows): not "
+                   "drawn")  # fmt: skip
+            self.sv.diag("TPL004", msg, outer, once=("TPL004", id(template)))
+        return True
 
     def room(self, el, depth: int) -> bool:
         """Whether another instance may be made at ``depth`` (counted, and the tree pinned
-        before its first change), else TPL004."""
+        before its first change), else TPL011."""
         if depth >= MAX_DEPTH or (depth and self.count >= MAX_INSTANCES):
-            msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (a template "
-                   "holding itself): not instantiated")  # fmt: skip
-            self.sv.diag("TPL004", msg, el, once="depth")
+            msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (xaml3d's "
+                   "limit): not instantiated")  # fmt: skip
+            self.sv.diag("TPL011", msg, el, once="depth")
             return False
         self.count += depth > 0  # the document's own controls are as many as it writes
         self.pin()
         return True
 
-    def below(self, el, depth: int) -> None:
+    def below(self, el, depth: int, chain: tuple) -> None:
         """The controls in what was made under ``el``."""
         for k in list(el.iter(*self.tags)):
-            self.control(k, depth + 1)
+            self.control(k, depth + 1, chain)
 
     def pin(self) -> None:
         if not self.pinned:
@@ -601,21 +633,26 @@ class _Instantiation:
 
     def template_triggers_on_parts(self, c: Control, template, names: dict) -> None:
         for trigger in triggers(template, "ControlTemplate"):
-            if not self._fired(c, trigger, names):
-                continue
+            fired = self._fired(c, trigger, names)
             for s in setters(trigger):
                 prop, target, value = s.get("Property"), s.get("TargetName"), setter_value(s)
                 if not prop or not target or value is None:
                     continue
                 part = names.get(target)
-                if part is None:
-                    msg = f"TargetName {target!r} names no part of this template: skipped"
-                    self.sv.diag("TPL005", msg, s, attr="TargetName", once=("TPL005", id(s)))
+                if part is None:  # WPF checks every trigger's targets when it seals
+                    data_triggers.unknown_target(self.sv, s, target, names)
                     continue
-                put(self.sv, part, property_name(prop), value)
+                if fired:
+                    put(self.sv, part, property_name(prop), value)
 
 
 # --------------------------------------------------------------------------- helpers
+
+
+def _item_template(c: Control, sv):
+    """The DataTemplate element an items control's ItemTemplate names, or None."""
+    value = c.value("ItemTemplate")
+    return None if value is None else items.template_element(value, c.el, sv, "DataTemplate")
 
 
 def put(sv, el, prop: str, value) -> None:

@@ -1,0 +1,107 @@
+"""What WPF's loader refuses in styles, templates, triggers and resources is an error, in a real
+process: ``validate`` exits 1 with ``file:line:col: error CODE message``, ``render`` writes no
+picture, ``render --lenient`` prints it as a warning and renders."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+NS = (
+    'xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation" '
+    'xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml"'
+)
+VIEWPORT = """<Viewport3D Width="40" Height="40">
+    <Viewport3D.Camera><PerspectiveCamera Position="0,0,5"/></Viewport3D.Camera>
+    <ModelVisual3D><ModelVisual3D.Content><Model3DGroup>
+      <AmbientLight Color="White"/>
+      <GeometryModel3D>
+        <GeometryModel3D.Geometry>
+          <MeshGeometry3D Positions="0,0,0 1,0,0 0,1,0" TriangleIndices="0 1 2"/>
+        </GeometryModel3D.Geometry>
+        <GeometryModel3D.Material><DiffuseMaterial Brush="Red"/></GeometryModel3D.Material>
+      </GeometryModel3D>
+    </Model3DGroup></ModelVisual3D.Content></ModelVisual3D>
+  </Viewport3D>"""
+
+
+def page(resources: str, body: str) -> str:
+    return (
+        f"<StackPanel {NS}>\n<StackPanel.Resources>{resources}\n</StackPanel.Resources>\n"
+        f"{body}\n{VIEWPORT}\n</StackPanel>\n"
+    )
+
+
+# name -> (document, the text the finding points at, code, words of its message)
+CASES = {
+    "trigger-target-misspelt": (
+        page(
+            "",
+            """<ToggleButton Height="20" IsChecked="True">
+  <ToggleButton.Template>
+    <ControlTemplate TargetType="ToggleButton">
+      <Border x:Name="border" Background="Blue"><ContentPresenter/></Border>
+      <ControlTemplate.Triggers>
+        <Trigger Property="IsChecked" Value="True">
+          <Setter TargetName="boder" Property="Background" Value="Red"/>
+        </Trigger>
+      </ControlTemplate.Triggers>
+    </ControlTemplate>
+  </ToggleButton.Template>
+</ToggleButton>""",
+        ),
+        'TargetName="boder"',
+        "TPL005",
+        "'boder' names no part of this template (did you mean border?)",
+    ),
+    "template-holds-itself": (
+        page(
+            """
+<Style TargetType="Button">
+  <Setter Property="Template">
+    <Setter.Value>
+      <ControlTemplate TargetType="Button"><Border Padding="2"><Button/></Border></ControlTemplate>
+    </Setter.Value>
+  </Setter>
+</Style>""",
+            '<Button Height="20"/>',
+        ),
+        '<Button Height="20"/>',
+        "TPL004",
+        "this Button's ControlTemplate holds a Button with the same ControlTemplate",
+    ),
+}
+
+
+def _run(*args: str, cwd) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "xaml3d", *args], capture_output=True, text=True, cwd=cwd
+    )
+
+
+def _place(text: str, at: str) -> tuple[int, int]:
+    before = text[: text.index(at)]
+    return before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_validate_render_and_lenient(name, tmp_path):
+    text, at, code, words = CASES[name]
+    (tmp_path / "s.xaml").write_text(text, encoding="utf-8")
+    line, col = _place(text, at)
+    head = f"s.xaml:{line}:{col}: error {code} "
+    v = _run("validate", "s.xaml", cwd=tmp_path)
+    assert v.returncode == 1, v.stdout + v.stderr
+    errors = [ln for ln in v.stdout.splitlines() if " error " in ln]
+    assert len(errors) == 1 and errors[0].startswith(head) and words in errors[0], v.stdout
+    assert "Traceback" not in v.stderr
+    r = _run("render", "s.xaml", "-o", "out.png", cwd=tmp_path)
+    assert r.returncode == 1 and errors[0] in r.stderr, r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.xaml"]  # no picture written
+    lenient = _run("render", "s.xaml", "-o", "out.png", "--lenient", cwd=tmp_path)
+    assert lenient.returncode == 0, lenient.stderr
+    warned = head.replace(" error ", " warning ")
+    assert [ln for ln in lenient.stderr.splitlines() if ln.startswith(warned)], lenient.stderr
+    assert (tmp_path / "out.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
