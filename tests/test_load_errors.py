@@ -4,6 +4,7 @@ picture, ``render --lenient`` prints it as a warning and renders."""
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 
@@ -72,6 +73,12 @@ CASES = {
         "TPL004",
         "this Button's ControlTemplate holds a Button with the same ControlTemplate",
     ),
+    "element-misspelt": (
+        page("", '<DockPanel Height="60"><Buton DockPanel.Dock="Left" Content="OK"/></DockPanel>'),
+        "<Buton ",
+        "XAML017",
+        "unknown element 'Buton' (did you mean Button?)",
+    ),
 }
 
 
@@ -105,3 +112,23 @@ def test_validate_render_and_lenient(name, tmp_path):
     warned = head.replace(" error ", " warning ")
     assert [ln for ln in lenient.stderr.splitlines() if ln.startswith(warned)], lenient.stderr
     assert (tmp_path / "out.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+
+
+def test_an_unknown_element_has_no_follow_on_findings(tmp_path):
+    # beside a Viewport3D, whose place its estimated size would decide (LAY007)
+    text = f'<DockPanel {NS}><Buton DockPanel.Dock="Left" Content="OK"/>{VIEWPORT}</DockPanel>'
+    (tmp_path / "s.xaml").write_text(text, encoding="utf-8")
+    r = _run("render", "s.xaml", "--window", "-o", "w.png", "--lenient", "-v", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    codes = re.findall(r"^s\.xaml:\d+:\d+: \w+ (\w+) ", r.stderr, re.M)
+    assert codes.count("XAML017") == 1 and not {"LAY007", "LAY003", "DRW007"} & set(codes), codes
+
+
+def test_wpf_types_xaml3d_does_not_read_are_no_unknown_elements(tmp_path):
+    body = """<ListView Height="40">
+  <ListView.View><GridView><GridViewColumn Header="Name" Width="80"/></GridView></ListView.View>
+</ListView>
+<InkCanvas Height="10"/><UniformGrid Rows="1"><TickBar Height="4"/></UniformGrid>"""
+    (tmp_path / "s.xaml").write_text(page("", body), encoding="utf-8")
+    v = _run("validate", "s.xaml", cwd=tmp_path)
+    assert v.returncode == 0 and "XAML017" not in v.stdout, v.stdout

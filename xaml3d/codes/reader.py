@@ -37,7 +37,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML014": (ERROR, "several values for a single-valued property"),
     "XAML015": (INFO, "Viewport3D inside a template or style is not instantiated"),
     "XAML016": (ERROR, "malformed markup extension"),
-    "XAML017": (WARNING, "unknown element among the framework (2D) elements: walked through"),
+    "XAML017": (ERROR, "unknown element in WPF's presentation namespace (no WPF type)"),
     "XAML018": (ERROR, "namespace one edit away from WPF's presentation namespace (a typo)"),
     "XAML019": (ERROR, "x:Name or Name that is not a valid name (not an identifier)"),
     "XAML020": (ERROR, "the same name given to two elements of one namescope"),

@@ -676,8 +676,8 @@ class PanelsReader:
         # a LayoutTransform is applied by the layout engine (layout/transform.py) to the
         # measured or estimated size alike
         unsized = n.width != n.width or n.height != n.height
-        if measured is not None or not unsized:
-            return
+        if measured is not None or not unsized or self.r.ctx.refused(el):
+            return  # an unknown element is an error already: its estimate is no news
         what = (f"{local} is drawn but not measured by xaml3d" if local in _DRAWN_ESTIMATED
                 else f"{local} is not laid out by xaml3d")  # fmt: skip
         turned = ", then turned by its LayoutTransform" if n.layout_transform is not None else ""
