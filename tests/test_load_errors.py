@@ -73,6 +73,51 @@ CASES = {
         "TPL004",
         "this Button's ControlTemplate holds a Button with the same ControlTemplate",
     ),
+    "key-twice": (
+        page(
+            '<SolidColorBrush x:Key="accent" Color="Red"/>\n'
+            '<SolidColorBrush x:Key="accent" Color="Blue"/>',
+            '<Border Height="10" Background="{StaticResource accent}"/>',
+        ),
+        'x:Key="accent" Color="Blue"',
+        "RES014",
+        "the key 'accent' is already used in this resource dictionary (line 2)",
+    ),
+    "multi-trigger-without-conditions": (
+        page(
+            """
+<Style x:Key="dim" TargetType="Border">
+  <Style.Triggers>
+    <MultiTrigger><Setter Property="Opacity" Value="0.5"/></MultiTrigger>
+  </Style.Triggers>
+</Style>""",
+            '<Border Height="10" Background="Blue" Style="{StaticResource dim}"/>',
+        ),
+        "<MultiTrigger>",
+        "XAML025",
+        "this MultiTrigger has no Condition",
+    ),
+    "ancestor-level-zero": (
+        page(
+            "",
+            '<TextBlock Tag="a" Text="{Binding Tag, RelativeSource={RelativeSource '
+            'FindAncestor, AncestorType=StackPanel, AncestorLevel=0}}"/>',
+        ),
+        'Text="{Binding',
+        "VAL008",
+        "AncestorLevel=0",
+    ),
+    "based-on-a-later-style": (
+        page(
+            '<Style x:Key="big" TargetType="Button" BasedOn="{StaticResource base}"/>\n'
+            '<Style x:Key="base" TargetType="Button"><Setter Property="Height" Value="30"/>'
+            "</Style>",
+            '<Button Style="{StaticResource big}" Content="a"/>',
+        ),
+        'BasedOn="{StaticResource base}"',
+        "RES002",
+        "StaticResource 'base' is used before its definition",
+    ),
     "element-misspelt": (
         page("", '<DockPanel Height="60"><Buton DockPanel.Dock="Left" Content="OK"/></DockPanel>'),
         "<Buton ",

@@ -62,6 +62,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
         WARNING,
         "resource key not found while a dictionary of another assembly is in scope",
     ),
+    "RES014": (ERROR, "the same key twice in one resource dictionary"),
     "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
     "SCN013": (
         INFO,
@@ -103,6 +104,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "unknown property of a WPF 2D framework type (attribute, property element, Style "
         "Setter or Trigger Property; closest known name suggested)",
     ),
+    "XAML025": (ERROR, "a MultiTrigger or MultiDataTrigger without Conditions"),
     "BND001": (
         INFO,
         "binding that needs code or layout a load does not run: FallbackValue or the "

@@ -96,7 +96,10 @@ class Conditions:
         properties a plain condition reads; ``parts``: its template's parts by name; ``item``:
         the data of a DataTemplate. A binding that needs code or fails: False, said here."""
         verdict: bool | None = True
-        for c in conditions(trigger):
+        found = conditions(trigger)
+        if not found:
+            return False  # WPF refuses a MultiTrigger without conditions (XAML025)
+        for c in found:
             wanted = c.get("Value")
             if wanted is None:
                 wanted = _value_element_text(c)

@@ -204,6 +204,8 @@ class Control:
                           for c in elements(holder)]  # fmt: skip
         else:
             return None
+        if not conditions:
+            return False  # WPF refuses a MultiTrigger without conditions (XAML025)
         verdict: bool | None = True
         for c in conditions:
             prop, wanted = c.get("Property"), c.get("Value")
