@@ -118,6 +118,26 @@ CASES = {
         "RES002",
         "StaticResource 'base' is used before its definition",
     ),
+    "style-of-another-type": (
+        page(
+            '<Style x:Key="text" TargetType="TextBlock"><Setter Property="Height" Value="50"/>'
+            "</Style>",
+            '<Button Style="{StaticResource text}" Content="a"/>',
+        ),
+        'Style="{StaticResource text}"',
+        "XAML022",
+        "the Style's TargetType TextBlock does not match this Button",
+    ),
+    "template-of-another-type": (
+        page(
+            '<ControlTemplate x:Key="toggle" TargetType="ToggleButton"><Border Background="Red"/>'
+            "</ControlTemplate>",
+            '<Button Height="20" Template="{StaticResource toggle}" Content="a"/>',
+        ),
+        'Template="{StaticResource toggle}"',
+        "TPL012",
+        "the ControlTemplate's TargetType ToggleButton does not match this Button",
+    ),
     "element-misspelt": (
         page("", '<DockPanel Height="60"><Buton DockPanel.Dock="Left" Content="OK"/></DockPanel>'),
         "<Buton ",
@@ -177,3 +197,21 @@ def test_wpf_types_xaml3d_does_not_read_are_no_unknown_elements(tmp_path):
     (tmp_path / "s.xaml").write_text(page("", body), encoding="utf-8")
     v = _run("validate", "s.xaml", cwd=tmp_path)
     assert v.returncode == 0 and "XAML017" not in v.stdout, v.stdout
+
+
+def test_a_style_of_another_type_sets_nothing_and_a_base_type_is_fine():
+    from xaml3d.pipeline import load
+
+    def heights(resources: str, body: str) -> tuple[list, list]:
+        scene = load(page(resources, body), text=True)
+        found = [d.code for d in scene.diagnostics if d.severity == "error"]
+        return found, [b.rect[3] for b in scene.layout.boxes if b.type == "Button"]
+
+    text = '<Style x:Key="s" TargetType="TextBlock"><Setter Property="Height" Value="50"/></Style>'
+    found, hs = heights(text, '<Button Style="{StaticResource s}" Content="a"/>')
+    assert found == ["XAML022"] and hs and 50 not in hs
+    for base in ("Button", "ButtonBase", "Control", "FrameworkElement", "{x:Type ContentControl}"):
+        found, hs = heights(
+            text.replace("TextBlock", base), '<Button Style="{StaticResource s}" Content="a"/>'
+        )
+        assert found == [] and hs == [50], base

@@ -34,6 +34,7 @@ TEMPLATE_CODES: dict[str, tuple[str, str]] = {
         "templates nested deeper than xaml3d instantiates (16 deep, 1000 instances): the rest "
         "not instantiated",
     ),
+    "TPL012": (ERROR, "a ControlTemplate whose TargetType does not match the control"),
     "BND004": (
         INFO,
         "an XmlDataProvider's Source file cannot be read: the bindings to it take their "

@@ -101,6 +101,9 @@ class Control:
                     break
             else:
                 style = sv.implicit_style(self.type, el)
+        target = style.get("TargetType") if style is not None else None
+        if target and sv.derives(self.type, target) is False:
+            return []  # WPF refuses a Style of another type (the reader says it: XAML022)
         chain = []
         while style is not None and local_name(style.tag) == "Style" and len(chain) < STYLE_DEPTH:
             chain.append(style)

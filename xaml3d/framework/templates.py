@@ -163,6 +163,16 @@ class _Instantiation:
                         self.below(sub, depth, (*chain, (shown, el)))
             return
         template, where = found
+        target = template.get("TargetType") if where is not THEME else None
+        if target and self.sv.derives(t, target) is False:
+            shown = target.strip().strip("{}").split()[-1]  # {x:Type T}: T
+            msg = (f"the ControlTemplate's TargetType {shown} does not match this {t}: WPF "
+                   "refuses to apply it")  # fmt: skip
+            self.sv.diag("TPL012", msg, el, attr=where)
+            value = c.theme_setters().get("Template") if t in THEMED else None
+            if value is None or value[0] != "element" or not _is_template(value[1]):
+                return
+            template, where = value[1], THEME  # --lenient: the theme's look
         if t not in SUPPORTED:
             msg = (f"the ControlTemplate of this {t} is not instantiated (xaml3d instantiates "
                    "the templates of content controls): it is drawn in the theme's "
