@@ -138,6 +138,16 @@ CASES = {
         "TPL012",
         "the ControlTemplate's TargetType ToggleButton does not match this Button",
     ),
+    "setter-value-not-a-boolean": (
+        page(
+            '<Style x:Key="s" TargetType="CheckBox"><Setter Property="IsChecked" Value="Maybe"/>'
+            "</Style>",
+            '<CheckBox Style="{StaticResource s}" Content="a"/>',
+        ),
+        'Value="Maybe"',
+        "VAL005",
+        "Setter CheckBox.IsChecked: Boolean: 'Maybe' is neither True nor False",
+    ),
     "element-misspelt": (
         page("", '<DockPanel Height="60"><Buton DockPanel.Dock="Left" Content="OK"/></DockPanel>'),
         "<Buton ",

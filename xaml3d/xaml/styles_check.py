@@ -18,6 +18,9 @@ panels_reader.py).
 
 from __future__ import annotations
 
+from xaml3d.errors import ValueSyntaxError
+from xaml3d.xaml import framework_members as fm
+from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.context import ReadContext, is_presentation, markup_key, qname, split_markup
 from xaml3d.xaml.framework_check import check_style_property
@@ -48,6 +51,8 @@ def check_styles(ctx: ReadContext, resources: Resources, root) -> None:
         elif not _in_template(style):
             for node, what in _members_named(style):
                 check_style_property(ctx, style, node, what)
+                if what == "Setter" and target:
+                    _check_setter_value(ctx, type_name(target), node)
     for trigger in root.iter("{*}MultiTrigger", "{*}MultiDataTrigger"):
         if is_presentation(qname(trigger.tag)[0]) and not _in_template(trigger):
             _conditions_given(ctx, trigger)
@@ -71,6 +76,59 @@ def _conditions_given(ctx: ReadContext, trigger) -> None:
                 return
     msg = f"this {local} has no Condition: WPF requires at least one"
     ctx.diag("XAML025", msg, trigger)
+
+
+# the Boolean and enumeration properties of the 2D framework types whose Setter Value is checked
+# as an attribute of that name is: WPF converts a Setter's Value with the property's converter
+# while it reads the Style
+_BOOLEANS = frozenset("""
+IsEnabled IsChecked IsThreeState Focusable IsHitTestVisible ClipToBounds SnapsToDevicePixels
+IsTabStop IsDefault IsCancel IsReadOnly AcceptsReturn AcceptsTab ShowGridLines IsExpanded
+IsSelected IsEditable IsIndeterminate OverridesDefaultStyle UseLayoutRounding StaysOpen
+""".split())  # fmt: skip
+_ALIGN_H = ("Left", "Center", "Right", "Stretch")
+_ALIGN_V = ("Top", "Center", "Bottom", "Stretch")
+_ENUMS = {
+    "HorizontalAlignment": _ALIGN_H, "HorizontalContentAlignment": _ALIGN_H,
+    "VerticalAlignment": _ALIGN_V, "VerticalContentAlignment": _ALIGN_V,
+    "Visibility": ("Visible", "Hidden", "Collapsed"), "Orientation": ("Horizontal", "Vertical"),
+    "TextWrapping": ("NoWrap", "Wrap", "WrapWithOverflow"),
+    "TextAlignment": ("Left", "Right", "Center", "Justify"),
+    "TextTrimming": ("None", "CharacterEllipsis", "WordEllipsis"),
+    "FlowDirection": ("LeftToRight", "RightToLeft"),
+    "Stretch": ("None", "Fill", "Uniform", "UniformToFill"),
+    "FontStyle": ("Normal", "Italic", "Oblique"),
+    "DockPanel.Dock": ("Left", "Top", "Right", "Bottom"),
+}  # fmt: skip
+
+
+def _check_setter_value(ctx: ReadContext, target: str, setter) -> None:
+    """A Setter's Value (attribute) that the property's converter refuses: VAL005, as the same
+    value written as the attribute is."""
+    prop, value = (setter.get("Property") or "").strip(), setter.get("Value")
+    if value is None or not prop or setter.get("TargetName") is not None:
+        return
+    owner, _, name = prop.rpartition(".")
+    owner = owner.split(":")[-1]
+    if owner == "DockPanel":
+        name = prop.split(":")[-1]
+    elif owner and fm.derives(target, owner) is not True:
+        return  # another owner's property: not checked here
+    v = value.strip()
+    if split_markup(v) is not None or v.lstrip("-").isdigit():
+        return  # a markup extension, or an enumeration's number
+    members = fm.members(target)
+    if members is None or (name not in members and name != "DockPanel.Dock"):
+        return
+    try:
+        if name in _BOOLEANS:
+            if name == "IsChecked" and not v:
+                return  # Nullable<bool>: empty is null
+            V.parse_bool(v)
+        elif name in _ENUMS:
+            V.parse_enum(v, _ENUMS[name])
+    except ValueSyntaxError as exc:
+        ctx.diag(exc.code, f"Setter {target}.{name}: {exc.message}", setter, attr="Value")
 
 
 def _in_template(el) -> bool:
