@@ -384,7 +384,9 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     report_ancestors(r, el, lay.laid_out)
     return Viewport(
         index=index,
-        name=element_name(el),
+        # one in a template's instance: its name in the template (the framework step takes the
+        # parts' names out, as WPF keeps them in the template's own name scope)
+        name=element_name(el) or element_name(r.ctx.original(el)),
         picture=picture,
         width=w,
         height=h,
