@@ -26,6 +26,12 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
 - ``ContentStringFormat`` / ``HeaderStringFormat`` / ``ItemStringFormat`` format content that
   is not an element (string_formats.py).
 
+What WPF refuses at load is an error here: a template that holds itself, directly or through
+a Style, ContentTemplate or ItemTemplate (TPL004: the outermost control of the cycle draws
+nothing; WPF recurses until its stack overflows), a ControlTemplate whose TargetType is not the
+control's type or a base class (TPL012: the theme's look stands), a trigger Setter's TargetName
+that names no part (TPL005, for every trigger of the template, fired at load or not).
+
 Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
 take the theme Style's (``THEMED``), instantiated the same way; the other controls without a
 user template are left to the reader's theme drawing.
