@@ -225,3 +225,15 @@ def test_a_style_of_another_type_sets_nothing_and_a_base_type_is_fine():
             text.replace("TextBlock", base), '<Button Style="{StaticResource s}" Content="a"/>'
         )
         assert found == [] and hs == [50], base
+
+
+def test_a_content_template_that_holds_itself_is_an_error_with_nothing_drawn():
+    from xaml3d.pipeline import load
+
+    again = '<ContentControl Content="a" ContentTemplate="{StaticResource again}"/>'
+    resources = f'<DataTemplate x:Key="again"><Border Height="5">{again}</Border></DataTemplate>'
+    scene = load(page(resources, again.replace("<ContentControl ", '<ContentControl x:Name="c" ')),
+                 text=True)  # fmt: skip
+    found = [(d.code, d.severity) for d in scene.diagnostics if d.severity != "info"]
+    assert found == [("TPL004", "error")]
+    assert not [b for b in scene.layout.boxes if b.type == "Border"]  # none of it drawn
