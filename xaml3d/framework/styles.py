@@ -91,6 +91,7 @@ class Control:
         sv, el = self.services, self.el
         ref = el.get("Style")
         style = None
+        given = True  # a Style the element names (an implicit one is keyed by its very type)
         if ref is not None:
             key = markup.resource_key(ref)
             style = sv.find(key, el) if key is not None else None
@@ -100,8 +101,8 @@ class Control:
                     style = next(iter(elements(child)), None)
                     break
             else:
-                style = sv.implicit_style(self.type, el)
-        target = style.get("TargetType") if style is not None else None
+                style, given = sv.implicit_style(self.type, el), False
+        target = style.get("TargetType") if given and style is not None else None
         if target and sv.derives(self.type, target) is False:
             return []  # WPF refuses a Style of another type (the reader says it: XAML022)
         chain = []
