@@ -95,7 +95,7 @@ def check_framework(ctx: ReadContext, root: etree._Element) -> None:
 def _check_attributes(ctx: ReadContext, el, local: str) -> None:
     own = fm.members(local)
     for key, value in el.attrib.items():
-        if "AncestorLevel" in value:
+        if value[:1] == "{" and "AncestorLevel" in value:  # a {Binding ...}: never a mesh's
             _ancestor_level(ctx, el, key, value)
         if own is None and (key[0] == "{" or "." not in key):
             continue  # a type without a table: only Owner.Name attributes are checked
