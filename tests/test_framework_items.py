@@ -237,10 +237,7 @@ def test_a_template_selector_is_said(tmp_path):
     assert found == [("TPL007", _line(feature, "<ListBox "))]
 
 
-def test_an_item_template_holding_its_items_control_stops(tmp_path, monkeypatch):
-    from xaml3d.framework import templates
-
-    monkeypatch.setattr(templates, "MAX_INSTANCES", 40)
+def test_an_item_template_holding_its_items_control_is_an_error(tmp_path):
     again = (
         '<ItemsControl ItemsSource="{StaticResource two}" ItemTemplate="{StaticResource again}" />'
     )
@@ -252,8 +249,8 @@ def test_an_item_template_holding_its_items_control_stops(tmp_path, monkeypatch)
     feature = _with_ns(window(resources, again))
     path = tmp_path / "again.xaml"
     path.write_text(feature, encoding="utf-8")
-    codes = [d.code for d in load(path).diagnostics]
-    assert codes.count("TPL004") == 1
+    found = [(d.code, d.severity) for d in load(path).diagnostics if d.severity != "info"]
+    assert found == [("TPL004", "error")]
 
 
 def test_the_items_panel_of_a_themed_combo_box_is_said(tmp_path):

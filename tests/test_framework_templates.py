@@ -575,10 +575,7 @@ def test_style_trigger_on_a_control_in_the_theme_look(tmp_path):
     assert not np.array_equal(px, _window_pixels(tmp_path / "plain.xaml"))
 
 
-def test_a_template_that_holds_itself_twice_stops(tmp_path, monkeypatch):
-    from xaml3d.framework import templates
-
-    monkeypatch.setattr(templates, "MAX_INSTANCES", 40)
+def test_a_template_that_holds_itself_twice_is_an_error_and_draws_nothing(tmp_path):
     style = """
     <Style TargetType="Button">
       <Setter Property="Template">
@@ -590,12 +587,14 @@ def test_a_template_that_holds_itself_twice_stops(tmp_path, monkeypatch):
       </Setter>
     </Style>"""
     path = tmp_path / "self.xaml"
-    path.write_text(window(style, '<Button Height="20" />'), encoding="utf-8")
+    text = window(style, '<Button Height="20" />')
+    path.write_text(text, encoding="utf-8")
     scene = load(path)
-    codes = [d.code for d in scene.diagnostics]
-    assert codes.count("TPL004") == 1
-    # the window's StackPanel, the document's Button's instance and 40 nested instances
-    assert sum(b.type == "StackPanel" for b in scene.layout.boxes) == 1 + 1 + 40
+    at = _line(text, '<Button Height="20"')  # the document's Button, the cycle's outermost
+    found = [(d.code, d.severity, d.line) for d in scene.diagnostics if d.severity != "info"]
+    assert found == [("TPL004", "error", at)]  # no DRW002 follow-on
+    # WPF overflows its stack: the Button draws nothing, only the window's StackPanel is left
+    assert sum(b.type == "StackPanel" for b in scene.layout.boxes) == 1
 
 
 def test_a_template_copy_resolves_resources_in_the_template_scope(tmp_path):

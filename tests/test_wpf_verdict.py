@@ -54,9 +54,14 @@ def test_code_xaml3d_does_not_run_is_info_never_an_error():
     assert "error" not in got.values()
 
 
-def test_unknown_name_among_framework_elements_is_a_warning_a_3d_typo_an_error():
+def test_unknown_element_is_an_error_a_wpf_type_xaml3d_does_not_read_is_walked_through():
+    # ThemeShadowChrome lives in Microsoft.Windows.Themes: a clr-namespace, not WPF's
     got = found(window("<ThemeShadowChrome/>" + viewport()))
-    assert got.get("XAML017") == "warning" and "XAML003" not in got
+    assert got.get("XAML017") == "error" and "XAML003" not in got
+    grid_view = '<GridView><GridViewColumn Header="a"/></GridView>'
+    got = found(window(f"<ListView><ListView.View>{grid_view}</ListView.View></ListView>"
+                       "<InkCanvas/>" + viewport()))  # fmt: skip
+    assert "XAML017" not in got and "error" not in got.values()
     got = found(window("<Viewport3d/>" + viewport()))  # a misspelt 3D type
     assert got.get("XAML003") == "error"
 

@@ -231,6 +231,9 @@ def animate_command(scene, output, fps, start, end, duration, loop, max_frames, 
         if not quiet and (verbose or len(times) >= LONG_RUN):
             click.echo(_plan_line(name, sc, storyboard, len(times), fps, end - start), err=True)
 
+        # nothing animates at load (ANIM015): one picture, drawn once and repeated
+        still = sc.timeline is None or not sc.timeline.running(storyboard)
+
         def drawn(prepare, link=None):
             """The frames in time order, each ``prepare``d in the process that drew it (and
             each run of them ``link``ed there), with the progress shown and the render's
@@ -239,7 +242,7 @@ def animate_command(scene, output, fps, start, end, duration, loop, max_frames, 
             diags[:] = [d for d in diags if d.code != "RND002"]
             it = frames_module.render_frames(  # looked up at call time: it may be wrapped
                 sc, times, storyboard, jobs=jobs, settings=settings, folders=[folder],
-                prepare=prepare, link=link, depth=False, window=window,
+                prepare=prepare, link=link, depth=False, window=window, still=still,
             )  # fmt: skip
             for r in _progress(it, len(times), name, quiet):
                 yield _keep(r, diags, file)

@@ -205,7 +205,8 @@ Exit status: 0 rendered (warnings allowed), 1 a scene could not be rendered
 @click.option(
     "--outline-controls",
     is_flag=True,
-    help="--window: outline the layout box of each 2D control (they are not drawn).",
+    help="--window: outline the layout box of each 2D control (1 px, blue) over the drawn "
+    "controls, to check a layout.",
 )
 @window_size_option
 @resources_option

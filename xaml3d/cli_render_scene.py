@@ -278,8 +278,10 @@ class _Deferred:
         self.read: list[str] = []
 
 
-def _viewport_target(target: Path, vp) -> Path:
-    label = vp.name or str(vp.index)
+def _viewport_target(target: Path, vp, viewports) -> Path:
+    # a name several viewports share (a template's, instantiated more than once): the index
+    shared = sum(v.name == vp.name for v in viewports) > 1
+    label = str(vp.index) if not vp.name or shared else vp.name
     return target.with_name(f"{target.stem}-{label}{target.suffix}")
 
 
@@ -360,7 +362,7 @@ def _draw_scene(source: str, target, opts: RenderOptions, inputs: list[Path], na
         jobs = [(None, target)]
     elif opts.viewport == "all":
         scene.viewport()  # SCN001 when there is none
-        jobs = [(vp, _viewport_target(target, vp)) for vp in scene.viewports]
+        jobs = [(vp, _viewport_target(target, vp, scene.viewports)) for vp in scene.viewports]
         for _, t in jobs:
             _check_not_input(t, name, inputs)
         _check_distinct([(f"viewport {vp.index}'s image", t) for vp, t in jobs], name, opts, diags)

@@ -37,7 +37,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
     "XAML014": (ERROR, "several values for a single-valued property"),
     "XAML015": (INFO, "Viewport3D inside a template or style is not instantiated"),
     "XAML016": (ERROR, "malformed markup extension"),
-    "XAML017": (WARNING, "unknown element among the framework (2D) elements: walked through"),
+    "XAML017": (ERROR, "unknown element in WPF's presentation namespace (no WPF type)"),
     "XAML018": (ERROR, "namespace one edit away from WPF's presentation namespace (a typo)"),
     "XAML019": (ERROR, "x:Name or Name that is not a valid name (not an identifier)"),
     "XAML020": (ERROR, "the same name given to two elements of one namescope"),
@@ -62,6 +62,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
         WARNING,
         "resource key not found while a dictionary of another assembly is in scope",
     ),
+    "RES014": (ERROR, "the same key twice in one resource dictionary"),
     "SCN001": (ERROR, "the document holds no Viewport3D: nothing to render"),
     "SCN013": (
         INFO,
@@ -103,6 +104,7 @@ READER_CODES: dict[str, tuple[str, str]] = {
         "unknown property of a WPF 2D framework type (attribute, property element, Style "
         "Setter or Trigger Property; closest known name suggested)",
     ),
+    "XAML025": (ERROR, "a MultiTrigger or MultiDataTrigger without Conditions"),
     "BND001": (
         INFO,
         "binding that needs code or layout a load does not run: FallbackValue or the "

@@ -96,7 +96,10 @@ class Conditions:
         properties a plain condition reads; ``parts``: its template's parts by name; ``item``:
         the data of a DataTemplate. A binding that needs code or fails: False, said here."""
         verdict: bool | None = True
-        for c in conditions(trigger):
+        found = conditions(trigger)
+        if not found:
+            return False  # WPF refuses a MultiTrigger without conditions (XAML025)
+        for c in found:
             wanted = c.get("Value")
             if wanted is None:
                 wanted = _value_element_text(c)
@@ -335,11 +338,21 @@ def data_template_setters(conds: Conditions, template, instance, item, holder) -
                 continue
             part = names.get(target.strip())
             if part is None:
-                msg = f"TargetName {target!r} names no part of this template: skipped"
-                conds.sv.diag("TPL005", msg, s, attr="TargetName", once=("TPL005", id(s)))
+                unknown_target(conds.sv, s, target, names)
                 continue
             out.append((part, property_name(prop), value))
     return out
+
+
+def unknown_target(sv, setter, target: str, names) -> None:
+    """TPL005: a trigger Setter's TargetName that names no part of the template (WPF throws
+    at load: "Cannot find the Trigger target"), with the closest part name."""
+    import difflib  # only for a name that is wrong
+
+    near = difflib.get_close_matches(target.strip(), sorted(names), 1, 0.7)
+    hint = f" (did you mean {near[0]}?)" if near else ""
+    msg = f"TargetName {target!r} names no part of this template{hint}: WPF refuses the file"
+    sv.diag("TPL005", msg, setter, attr="TargetName", once=("TPL005", id(setter)))
 
 
 def _triggers(template) -> list:

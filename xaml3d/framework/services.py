@@ -32,6 +32,11 @@ class Services(Protocol):
         """The type name of a WPF (presentation namespace) element, else None (another
         namespace's, or not an element)."""
 
+    def derives(self, type_name: str, target: str) -> bool | None:
+        """Whether a ``type_name`` element is of the type a ``TargetType`` value ``target``
+        names (the type or a base class); None when it is not known (another namespace's
+        type, a class tree not known to its top)."""
+
     def copy(self, el: Any) -> Any:
         """A deep copy of ``el`` whose elements report the source positions of the originals."""
 

@@ -91,6 +91,7 @@ class Control:
         sv, el = self.services, self.el
         ref = el.get("Style")
         style = None
+        given = True  # a Style the element names (an implicit one is keyed by its very type)
         if ref is not None:
             key = markup.resource_key(ref)
             style = sv.find(key, el) if key is not None else None
@@ -100,7 +101,10 @@ class Control:
                     style = next(iter(elements(child)), None)
                     break
             else:
-                style = sv.implicit_style(self.type, el)
+                style, given = sv.implicit_style(self.type, el), False
+        target = style.get("TargetType") if given and style is not None else None
+        if target and sv.derives(self.type, target) is False:
+            return []  # WPF refuses a Style of another type (the reader says it: XAML022)
         chain = []
         while style is not None and local_name(style.tag) == "Style" and len(chain) < STYLE_DEPTH:
             chain.append(style)
@@ -225,6 +229,8 @@ class Control:
                           for c in elements(holder)]  # fmt: skip
         else:
             return None
+        if not conditions:
+            return False  # WPF refuses a MultiTrigger without conditions (XAML025)
         verdict: bool | None = True
         for c in conditions:
             prop, wanted = c.get("Property"), c.get("Value")

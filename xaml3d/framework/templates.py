@@ -26,6 +26,12 @@ tree, copied, as its only child (the reader lays it out and draws it as a plain 
 - ``ContentStringFormat`` / ``HeaderStringFormat`` / ``ItemStringFormat`` format content that
   is not an element (string_formats.py).
 
+What WPF refuses at load is an error here: a template that holds itself, directly or through
+a Style, ContentTemplate or ItemTemplate (TPL004: the outermost control of the cycle draws
+nothing; WPF recurses until its stack overflows), a ControlTemplate whose TargetType is not the
+control's type or a base class (TPL012: the theme's look stands), a trigger Setter's TargetName
+that names no part (TPL005, for every trigger of the template, fired at load or not).
+
 Button, ToggleButton and RepeatButton without a template of their own (nor their Style's)
 take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox and RadioButton
 (their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
@@ -118,10 +124,15 @@ class _Instantiation:
         self.pinned = False
         self.count = 0  # the templates instantiated
         self.conditions = data_triggers.Conditions(root, services)
+        self.cyclic: list = []  # the controls whose template holds itself (TPL004)
 
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
-            self.control(el, 0)
+            self.control(el, 0, ())
+        for owner in self.cyclic:  # WPF overflows its stack: nothing of it is drawn
+            for k in list(owner):
+                owner.remove(k)
+            owner.text = None
 
     def styled(self) -> None:
         """The elements that are not controls (a TextBlock, a Border, a panel) whose Style
@@ -137,7 +148,9 @@ class _Instantiation:
                 self.themed_triggers(Control(el, t, self.sv))
 
     # ----------------------------------------------------------------- one control
-    def control(self, el, depth: int) -> None:
+    def control(self, el, depth: int, chain: tuple) -> None:
+        """Instantiate ``el``'s template; ``chain`` holds the (template, control) pairs of
+        the instances it is inside."""
         if id(el) in self.done:
             return
         self.done.add(id(el))
@@ -151,42 +164,77 @@ class _Instantiation:
             self.themed_triggers(c)
             self.themed_format(c)
             if t == "ContentControl" and c.value("ContentTemplate") is not None:
+                shown = items.template_element(c.value("ContentTemplate"), el, self.sv,
+                                               "DataTemplate")  # fmt: skip
+                if self.holds_itself(c, shown, chain):
+                    return
                 if self.room(el, depth):
                     self.presented(c)
-                    self.below(el, depth)
+                    self.below(el, depth, (*chain, (shown, el)))
             elif t in items.CONTAINERS and items.generates(c):
+                shown = _item_template(c, self.sv)
+                if self.holds_itself(c, shown, chain):
+                    return
                 if self.room(el, depth):
                     for sub in self.themed_items(c):
-                        self.below(sub, depth)
+                        self.below(sub, depth, (*chain, (shown, el)))
             return
         template, where = found
+        target = template.get("TargetType") if where is not THEME else None
+        if target and self.sv.derives(t, target) is False:
+            shown = target.strip().strip("{}").split()[-1]  # {x:Type T}: T
+            msg = (f"the ControlTemplate's TargetType {shown} does not match this {t}: WPF "
+                   "refuses to apply it")  # fmt: skip
+            self.sv.diag("TPL012", msg, el, attr=where)
+            value = c.theme_setters().get("Template") if t in THEMED else None
+            if value is None or value[0] != "element" or not _is_template(value[1]):
+                return
+            template, where = value[1], THEME  # --lenient: the theme's look
         if t not in SUPPORTED:
             msg = (f"the ControlTemplate of this {t} is not instantiated (xaml3d instantiates "
                    "the templates of content controls): it is drawn in the theme's "
                    "look")  # fmt: skip
             self.sv.diag("TPL001", msg, el, attr=where)
             return
+        shown = _item_template(c, self.sv) if t in ITEMS_CONTROLS else None
+        if self.holds_itself(c, template, chain) or self.holds_itself(c, shown, chain):
+            return
         if self.room(el, depth):
             instance = self.apply(c, template, themed=where is THEME)
             if instance is not None:
-                self.below(instance, depth)
+                self.below(instance, depth, (*chain, (template, el), (shown, el)))
+
+    def holds_itself(self, c: Control, template, chain: tuple) -> bool:
+        """Whether ``template`` is being instantiated already around ``c`` (WPF recurses until
+        its stack overflows): TPL004 at the outermost control it draws, which draws nothing."""
+        outer = next((owner for t, owner in chain if t is template), None)
+        if template is None or outer is None:
+            return False
+        if all(k is not outer for k in self.cyclic):
+            self.cyclic.append(outer)
+            what = local_name(template.tag)
+            msg = (f"this {self.sv.wpf_type(outer)}'s {what} holds a {c.type} with the same "
+                   f"{what}: WPF instantiates it without end (its stack overflows): not "
+                   "drawn")  # fmt: skip
+            self.sv.diag("TPL004", msg, outer, once=("TPL004", id(template)))
+        return True
 
     def room(self, el, depth: int) -> bool:
         """Whether another instance may be made at ``depth`` (counted, and the tree pinned
-        before its first change), else TPL004."""
+        before its first change), else TPL011."""
         if depth >= MAX_DEPTH or (depth and self.count >= MAX_INSTANCES):
-            msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (a template "
-                   "holding itself): not instantiated")  # fmt: skip
-            self.sv.diag("TPL004", msg, el, once="depth")
+            msg = (f"templates nested {MAX_DEPTH} deep or {MAX_INSTANCES} instances (xaml3d's "
+                   "limit): not instantiated")  # fmt: skip
+            self.sv.diag("TPL011", msg, el, once="depth")
             return False
         self.count += depth > 0  # the document's own controls are as many as it writes
         self.pin()
         return True
 
-    def below(self, el, depth: int) -> None:
+    def below(self, el, depth: int, chain: tuple) -> None:
         """The controls in what was made under ``el``."""
         for k in list(el.iter(*self.tags)):
-            self.control(k, depth + 1)
+            self.control(k, depth + 1, chain)
 
     def pin(self) -> None:
         if not self.pinned:
@@ -635,21 +683,26 @@ class _Instantiation:
 
     def template_triggers_on_parts(self, c: Control, template, names: dict) -> None:
         for trigger in triggers(template, "ControlTemplate"):
-            if not self._fired(c, trigger, names):
-                continue
+            fired = self._fired(c, trigger, names)
             for s in setters(trigger):
                 prop, target, value = s.get("Property"), s.get("TargetName"), setter_value(s)
                 if not prop or not target or value is None:
                     continue
                 part = names.get(target)
-                if part is None:
-                    msg = f"TargetName {target!r} names no part of this template: skipped"
-                    self.sv.diag("TPL005", msg, s, attr="TargetName", once=("TPL005", id(s)))
+                if part is None:  # WPF checks every trigger's targets when it seals
+                    data_triggers.unknown_target(self.sv, s, target, names)
                     continue
-                put(self.sv, part, property_name(prop), value)
+                if fired:
+                    put(self.sv, part, property_name(prop), value)
 
 
 # --------------------------------------------------------------------------- helpers
+
+
+def _item_template(c: Control, sv):
+    """The DataTemplate element an items control's ItemTemplate names, or None."""
+    value = c.value("ItemTemplate")
+    return None if value is None else items.template_element(value, c.el, sv, "DataTemplate")
 
 
 def put(sv, el, prop: str, value) -> None:

@@ -51,6 +51,7 @@ def render_frames(
     link=None,
     depth: bool = True,
     window: bool = False,
+    still: bool = False,
     **options,
 ) -> Iterator:
     """(time, Rendering) for each time, in time order: the render of ``scene_at(scene, t)``
@@ -78,7 +79,11 @@ def render_frames(
 
     A process drawing many frames keeps a ``FrameSession``: one framebuffer for all its frames.
     The compiled kernels (``xaml3d.render.accel``) are chosen for the work of all the frames a
-    process draws, not for one frame's."""
+    process draws, not for one frame's.
+
+    ``still``: the caller knows that nothing animates (no storyboard runs): the first frame is
+    drawn once, here, and given again for every time (as a repeat the session would give),
+    without worker processes."""
     chosen = settings_of(settings, **options).replace(time=None, storyboard=None)
     if executor is not None:
         items = [(scene, t, storyboard, chosen, prepare, window, link) for t in times]
@@ -86,6 +91,10 @@ def render_frames(
         return
     times = list(times)
     session = FrameSession(scene, storyboard, chosen, prepare, depth, window)
+    if still and times:
+        _, drawn = session.frame(times[0])
+        yield from _linked(((t, copy.copy(drawn)) for t in times), link)
+        return
     if jobs > 1 and len(times) > 2:
         workers = min(int(jobs), len(times) - 1)
         share = -(-len(times) // workers)

@@ -766,8 +766,15 @@ class Scene:
                 code="SCN002",
                 file=self.file,
             )
-        for vp in self.viewports:
-            if vp.name == which:
-                return vp
+        named = [vp for vp in self.viewports if vp.name == which]
+        if len(named) == 1:
+            return named[0]
+        if named:  # a template's viewport in several instances
+            raise SceneError(
+                f"{len(named)} viewports are named {which!r} (one template instantiated "
+                f"{len(named)} times): give an index ({', '.join(str(v.index) for v in named)})",
+                code="SCN002",
+                file=self.file,
+            )
         names = ", ".join(repr(v.name) for v in self.viewports if v.name) or "none named"
         raise SceneError(f"no viewport named {which!r} ({names})", code="SCN002", file=self.file)

@@ -56,6 +56,7 @@ from xaml3d.xaml.resource_check import check_dictionary
 from xaml3d.xaml.resources import Resources
 from xaml3d.xaml.styles_check import check_styles
 from xaml3d.xaml.values import parse_bool
+from xaml3d.xaml.wpf_types import NAMES as WPF_TYPES
 
 _TEMPLATES = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
               "ItemContainerTemplate", "HierarchicalDataTemplate"}  # fmt: skip
@@ -383,7 +384,9 @@ def build_viewport(r: Reader, el, index: int, lay=None) -> Viewport:
     report_ancestors(r, el, lay.laid_out)
     return Viewport(
         index=index,
-        name=element_name(el),
+        # one in a template's instance: its name in the template (the framework step takes the
+        # parts' names out, as WPF keeps them in the template's own name scope)
+        name=element_name(el) or element_name(r.ctx.original(el)),
         picture=picture,
         width=w,
         height=h,
@@ -442,13 +445,20 @@ class _Walk:
             self._triggers(el)
             return
         et = voc.lookup(local)
-        if et is None:
-            # The framework (2D) vocabulary is not closed: an unknown name there is a WPF type
-            # xaml3d does not list as often as a typo, unless it misspells a 3D type.
+        if et is None and local not in WPF_TYPES:
+            # no WPF type: the loader refuses it (XAML003 when it misspells a 3D type, the
+            # vocabulary xaml3d reads); under --lenient it is walked through for what it
+            # holds, without the findings of its own estimated size or missing drawing
             near = voc.suggest(local, voc.closed_types())
-            hint = voc.did_you_mean(local, voc.known_types())
+            if near is not None:
+                hint = voc.did_you_mean(local, voc.known_types())
+            else:
+                hint = voc.did_you_mean(local, (*voc.known_types(), *WPF_TYPES))
+                r.ctx.refused_elements[id(el)] = el
             code = "XAML003" if near is not None else "XAML017"
             r.ctx.diag(code, f"unknown element {local!r}{hint}", el)
+        elif et is None:
+            pass  # a WPF type xaml3d does not read: walked through for what it holds
         elif et.kind not in ("framework", "resource"):
             return  # 3D/brush objects outside a Viewport3D (resources, effects...)
         p = r.props(el)

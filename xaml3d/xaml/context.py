@@ -105,6 +105,13 @@ class ReadContext:
         self.templated: dict[int, etree._Element] = {}
         # the ControlTemplates so instantiated: id -> element
         self.instantiated: dict[int, etree._Element] = {}
+        # the elements no WPF type names (XAML017), id -> element: no findings follow from
+        # their estimated size or their missing drawing
+        self.refused_elements: dict[int, etree._Element] = {}
+
+    def refused(self, el) -> bool:
+        """Whether ``el`` is an element no WPF type names (XAML017)."""
+        return self.refused_elements.get(id(el)) is el
 
     # ----------------------------------------------------------------- documents
     def add_document(self, doc: ParsedDocument, *, trusted: bool = False) -> None:

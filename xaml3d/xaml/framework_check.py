@@ -24,6 +24,8 @@ and elements of mc:Ignorable namespaces.
 
 from __future__ import annotations
 
+import re
+
 from lxml import etree
 
 from xaml3d.xaml import framework_members as fm
@@ -93,6 +95,8 @@ def check_framework(ctx: ReadContext, root: etree._Element) -> None:
 def _check_attributes(ctx: ReadContext, el, local: str) -> None:
     own = fm.members(local)
     for key, value in el.attrib.items():
+        if value[:1] == "{" and "AncestorLevel" in value:  # a {Binding ...}: never a mesh's
+            _ancestor_level(ctx, el, key, value)
         if own is None and (key[0] == "{" or "." not in key):
             continue  # a type without a table: only Owner.Name attributes are checked
         ans, name = qname(key)
@@ -101,6 +105,23 @@ def _check_attributes(ctx: ReadContext, el, local: str) -> None:
         msg = _member_problem(local, own, fm.bases(local), name, value)
         if msg is not None:
             ctx.diag(CODE, f"property {msg}{_REFUSED}", el, attr=key)
+
+
+_ANCESTOR_LEVEL = re.compile(r"\bAncestorLevel\s*=\s*([^,}\s]*)")
+
+
+def _ancestor_level(ctx: ReadContext, el, key: str, value: str) -> None:
+    """A ``{RelativeSource FindAncestor, AncestorLevel=N}`` below 1: RelativeSource's
+    AncestorLevel refuses it while the markup is read (VAL008)."""
+    for m in _ANCESTOR_LEVEL.finditer(value):
+        try:
+            level = int(m.group(1))
+        except ValueError:
+            continue  # not a number: the binding says it
+        if level < 1:
+            msg = (f"AncestorLevel={level} in {key!r}: WPF's RelativeSource accepts an "
+                   "AncestorLevel of 1 or more (the parent's level is 1)")  # fmt: skip
+            ctx.diag("VAL008", msg, el, attr=key)
 
 
 def _check_property_element(ctx: ReadContext, el, local: str, written: str) -> None:

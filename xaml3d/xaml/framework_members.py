@@ -553,6 +553,18 @@ def bases(name: str) -> tuple[str, ...]:
     return tuple(out)
 
 
+def derives(name: str, target: str) -> bool | None:
+    """Whether a ``name`` element is a ``target`` (the type itself or a base class): None when
+    WPF's class tree above ``name`` is not known here to its top, or ``target`` is no class
+    with a table (DependencyObject, Visual...: not decided)."""
+    chain = bases(name)
+    if not chain or CLASSES[chain[-1]][0] is not None:
+        return None
+    if target in chain:
+        return True
+    return False if target in CLASSES else None
+
+
 @functools.cache
 def members(name: str) -> frozenset[str] | None:
     """Every member name ``name`` accepts in markup (its own and its bases'), or None when

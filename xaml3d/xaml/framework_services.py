@@ -9,6 +9,7 @@ from pathlib import Path
 
 from xaml3d.errors import XamlError
 from xaml3d.xaml.context import as_written, is_presentation, qname
+from xaml3d.xaml.framework_members import derives
 from xaml3d.xaml.parser import parse_document
 from xaml3d.xaml.resources import data_template_key, reduce_uri, type_key
 from xaml3d.xaml.theme import theme_styles
@@ -48,6 +49,16 @@ class ReaderServices:
             return None
         ns, local = qname(el.tag)
         return local if is_presentation(ns) else None
+
+    def derives(self, type_name: str, target: str) -> bool | None:
+        t = target.strip()
+        if t.startswith("{") and t.endswith("}"):
+            body = t[1:-1].split(None, 1)
+            t = body[1].strip() if len(body) == 2 and body[0] in ("x:Type", "Type") else ""
+            t = t.removeprefix("TypeName=").strip()
+        if not t or ":" in t:
+            return None  # a prefixed type: an application's or another namespace's
+        return derives(type_name, t)
 
     def copy(self, el):
         parent = el.getparent()

@@ -24,6 +24,7 @@ import numpy as np
 from xaml3d.codes.layout import LAYOUT_CODES
 from xaml3d.errors import Diagnostic, ValueSyntaxError
 from xaml3d.scene import element_tree as L
+from xaml3d.xaml import framework_members as fm
 from xaml3d.xaml import values as V
 from xaml3d.xaml import vocabulary as voc
 from xaml3d.xaml.brushes_reader import brush_property, transform2d, transform2d_text
@@ -273,11 +274,12 @@ _VIEWPORT_BASES = {"Viewport3D", "FrameworkElement", "UIElement", "Visual", "Dep
 
 def _mismatched(target: str, local: str) -> bool:
     """Whether WPF refuses a Style of TargetType ``target`` on a ``local`` element; only the
-    cases that are certain without WPF's class tree: a Viewport3D's Style must target it or a
-    base class, and nothing but a Viewport3D derives from Viewport3D."""
+    cases that are certain: a Viewport3D's Style must target it or a base class, nothing but a
+    Viewport3D derives from Viewport3D, and the 2D types of known class trees."""
     if local == "Viewport3D":
         return target not in _VIEWPORT_BASES
-    return target == "Viewport3D"
+    # a 2D type whose class tree framework_members.py knows to its top: WPF's verdict
+    return target == "Viewport3D" or fm.derives(local, target) is False
 
 
 def _setter_value(setter) -> str | None:
@@ -679,8 +681,8 @@ class PanelsReader:
         # a LayoutTransform is applied by the layout engine (layout/transform.py) to the
         # measured or estimated size alike
         unsized = n.width != n.width or n.height != n.height
-        if measured is not None or not unsized:
-            return
+        if measured is not None or not unsized or self.r.ctx.refused(el):
+            return  # an unknown element is an error already: its estimate is no news
         what = (f"{local} is drawn but not measured by xaml3d" if local in _DRAWN_ESTIMATED
                 else f"{local} is not laid out by xaml3d")  # fmt: skip
         turned = ", then turned by its LayoutTransform" if n.layout_transform is not None else ""

@@ -32,7 +32,7 @@ from xaml3d.xaml.context import (
     qname,
     x_attr,
 )
-from xaml3d.xaml.parser import ParsedDocument, parse_document
+from xaml3d.xaml.parser import XAML_NS, ParsedDocument, parse_document
 
 APP_FILE_NAMES = ("app.xaml",)
 APP_DISCOVERY_LEVELS = 8
@@ -261,6 +261,14 @@ class Resources:
                     self.ctx.diag("RES007", f"{local} in a resource dictionary has no x:Key", child)
                 continue
             self.ctx.keep(child)
+            first = d.entries.get(key)
+            if first is not None:  # WPF: "Item has already been added" (the later one is kept)
+                written = x_attr(child, "Key")
+                shown = written if written is not None else key
+                msg = (f"the key {shown!r} is already used in this resource dictionary "
+                       f"(line {self.ctx.locate(first)[0]}): WPF refuses the file")  # fmt: skip
+                attr = f"{{{XAML_NS}}}Key" if written is not None else None
+                self.ctx.diag("RES014", msg, child, attr=attr)
             d.entries[key] = child
             if key.startswith("{x:Type "):
                 self.type_keys.add(key)

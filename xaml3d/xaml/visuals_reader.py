@@ -305,7 +305,7 @@ def attach_control_drawings(r, root, elements: dict) -> None:
             continue
         if n.type not in _WINDOW_DRAWN:
             el = elements.get(id(n), (None,))[0]
-            if el is not None and n.visibility == "Visible":
+            if el is not None and n.visibility == "Visible" and not r.ctx.refused(el):
                 msg = f"{n.type} is not drawn by --window: its laid-out box is left empty"
                 r.ctx.diag("DRW007", msg, el, once=("DRW007", id(el)))
             continue
