@@ -24,5 +24,6 @@ __all__ = ["Services", "expand"]
 
 def expand(root, services: Services) -> None:
     """Instantiate the framework's tree under ``root`` in place."""
-    bindings.evaluate(root, services)
+    contexts = bindings.evaluate(root, services)
     templates.instantiate(root, services)
+    bindings.spend(contexts)

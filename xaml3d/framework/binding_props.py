@@ -6,6 +6,7 @@ primitives (``sys:Double``...) among them; a binding set on the property evaluat
 
 from __future__ import annotations
 
+from xaml3d.framework.binding_sites import binding_element_extension
 from xaml3d.framework.binding_tree import (
     BINDINGS,
     children,
@@ -157,6 +158,8 @@ class PropertyValues:
             ext = parse(raw)
         except MarkupSyntaxError as exc:
             raise fails("syntax", str(exc)) from None
+        if ext.name in BINDINGS and prop:
+            return self.binding_value(el, prop, ext)  # for the property it sets (DataContext)
         return self._extension_value(el, ext, prop)
 
     def _prop_element(self, el, prop: str):
@@ -175,6 +178,12 @@ class PropertyValues:
         kids = children(pe)
         if not kids:
             return Value((pe.text or "").strip(), clr_of(prop))
+        if len(kids) == 1 and is_wpf(kids[0]) and local(kids[0]) in BINDINGS:
+            try:  # <X.DataContext><Binding .../></X.DataContext>
+                ext = binding_element_extension(kids[0])
+            except MarkupSyntaxError as exc:
+                raise fails("syntax", str(exc)) from None
+            return self.binding_value(el, prop, ext)
         if len(kids) == 1 and not local(kids[0]).endswith("Collection"):
             return self.element_value(kids[0])
         if len(kids) == 1:

@@ -274,6 +274,10 @@ def containers(c: Control, sv, on_item=None) -> list | None:
             chosen = -1
         if 0 <= chosen < len(out) and out[chosen].get("IsSelected") is None:
             out[chosen].set("IsSelected", "True")
+    # a bound ItemsSource is spent: its items are the containers now (the reader has
+    # nothing left to evaluate)
+    if (markup.split(c.el.get("ItemsSource")) or ("",))[0] == "Binding":
+        del c.el.attrib["ItemsSource"]
     # the inline items' property element, emptied
     for child in elements(c.el):
         if local_name(child.tag).rpartition(".")[2] == "Items" and not elements(child):
