@@ -1,0 +1,73 @@
+"""Bindings to the data context inside a DataTemplate's copy (an item's ItemTemplate, a
+ContentTemplate): ``{Binding}``, ``{Binding Path}``, ``{Binding XPath=...}`` read from the
+item, with the arguments WPF applies without code: ``StringFormat`` (to text targets: a
+``sys:Double`` item is a number, XML data and text are strings), ``FallbackValue`` (when the
+path finds nothing), ``Mode`` and ``TargetNullValue`` (an item is never null). A binding with
+any other argument (a Converter, a Source...) is not the item's: ``item_binding`` leaves it.
+
+A ``StringFormat`` .NET refuses throws in WPF when the value is shown: the binding fails,
+said (BND003), and the property keeps its default."""
+
+from __future__ import annotations
+
+from xaml3d.framework import binding_format as F
+from xaml3d.framework import markup, xml_data
+from xaml3d.framework.binding_values import as_number, clr_of, primitive
+from xaml3d.framework.markup_syntax import MarkupSyntaxError, parse
+
+_ARGUMENTS = frozenset({"Path", "XPath", "Mode", "StringFormat", "FallbackValue",
+                        "TargetNullValue"})  # fmt: skip
+NOT_THE_ITEMS = object()  # item_binding's answer for a binding that does not read the item
+
+
+def item_binding(value: str, item, item_property, sv=None, where=None, attr: str = ""):
+    """The text the binding ``value`` (an attribute's text) takes from ``item`` (see
+    items.py), None when it takes none (the property keeps its default), NOT_THE_ITEMS when
+    it is no binding to the data context. ``item_property(item, path)`` reads a path."""
+    m = markup.split(value)
+    if m is None or m[0] != "Binding":
+        return NOT_THE_ITEMS
+    try:
+        ext = parse(value)
+    except MarkupSyntaxError:
+        return NOT_THE_ITEMS  # the reader says what is malformed
+    if len(ext.positional) > 1 or set(ext.named) - _ARGUMENTS:
+        return NOT_THE_ITEMS
+    args = dict(ext.named)
+    if not all(isinstance(v, str) for v in args.values()) or (
+        ext.positional and not isinstance(ext.positional[0], str)
+    ):
+        return NOT_THE_ITEMS  # an argument that is an extension ({x:Static}...): not the item's
+    xpath = args.get("XPath")
+    path = args.get("Path", ext.positional[0] if ext.positional else "").strip()
+    number = False
+    if xpath is not None:
+        if path:
+            return NOT_THE_ITEMS  # a Path after an XPath reads a node's members: not evaluated
+        node = item[2]
+        data = node is not None and xml_data.is_data(node)
+        text = xml_data.item_text(node, xpath.strip()) if data else None
+    else:
+        text = item_property(item, path)
+        if path == "" and item[0] == "text" and item[2] is not None:
+            p = primitive(item[2])
+            number = p is not None and p.clr in ("Double", "Int32")
+    if text is None:
+        return args.get("FallbackValue")
+    fmt = args.get("StringFormat")
+    if not fmt or clr_of(attr) != "String":  # WPF formats for a text target only
+        return text
+    shown: object = text
+    if number:
+        x = as_number(primitive(item[2]))
+        shown, number = (x, True) if x is not None else (text, False)
+    try:
+        return F.composite(fmt, shown, number)
+    except F.FormatError as exc:
+        if sv is not None:
+            msg = (f"{attr}={value!r}: the binding fails in WPF too (StringFormat "
+                   f"{fmt!r} is refused by .NET: {exc}): the property keeps its "
+                   "default")  # fmt: skip
+            # one template, many items: said once
+            sv.diag("BND003", msg, where, attr=attr, once=("BND003", "StringFormat", value))
+        return None
