@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from xaml3d.framework import binding_format as F
 from xaml3d.framework import markup, xml_data
-from xaml3d.framework.binding_values import as_number, clr_of, primitive
+from xaml3d.framework.binding_values import Value, as_number, clr_of, primitive
 from xaml3d.framework.markup_syntax import MarkupSyntaxError, parse
 
 _ARGUMENTS = frozenset({"Path", "XPath", "Mode", "StringFormat", "FallbackValue",
@@ -71,3 +71,52 @@ def item_binding(value: str, item, item_property, sv=None, where=None, attr: str
             # one template, many items: said once
             sv.diag("BND003", msg, where, attr=attr, once=("BND003", "StringFormat", value))
         return None
+
+
+# --------------------------------------------------------------------------- templated parent
+UNEVALUATED = object()  # templated_value's answer for what needs code
+_TEMPLATED = frozenset({"Path", "Property", "RelativeSource", "Converter", "ConverterParameter",
+                        "StringFormat", "Mode", "FallbackValue", "TargetNullValue"})  # fmt: skip
+
+
+def templated_value(sv, value: str, prop: str, parent_value, scopes: tuple, attr: str):
+    """A template part's ``{Binding P, RelativeSource={RelativeSource TemplatedParent},
+    Converter=..., StringFormat=...}`` (``{TemplateBinding P, Converter=...}``) as WPF
+    evaluates it at load: the templated parent's value of ``P`` (``parent_value``: its
+    ("text", str), or None for its default) through the framework's own converter
+    (BooleanToVisibilityConverter, a resource found from the first of ``scopes``, the
+    elements it is looked up from, that has it) and the StringFormat (a text target only).
+    ("text", str), or UNEVALUATED when it needs code (an application's converter) or is not
+    text."""
+    try:
+        ext = parse(value)
+    except MarkupSyntaxError:
+        return UNEVALUATED
+    if set(ext.named) - _TEMPLATED or (parent_value is not None and parent_value[0] != "text"):
+        return UNEVALUATED
+    text = parent_value[1] if parent_value is not None else None
+    conv = ext.named.get("Converter")
+    if conv is not None:
+        key = conv.arg("ResourceKey") if not isinstance(conv, str) else None
+        if not isinstance(key, str) or conv.name not in ("StaticResource", "DynamicResource"):
+            return UNEVALUATED
+        entry = next((e for e in (sv.find(key.strip(), s) for s in scopes) if e is not None),
+                     None)  # fmt: skip
+        if entry is None or sv.wpf_type(entry) != "BooleanToVisibilityConverter":
+            return UNEVALUATED  # a converter class of the application: code
+        # WPF's converter: a bool True is Visible, anything else (False, null, not a bool)
+        # Collapsed; an unset bool property is its default, False
+        flag = clr_of(prop) == "Boolean" and (text or "").strip().lower() == "true"
+        return ("text", "Visible" if flag else "Collapsed")
+    fmt = ext.named.get("StringFormat")
+    if not isinstance(fmt, str) or text is None:
+        return UNEVALUATED
+    if not fmt or clr_of(attr) != "String":
+        return ("text", text)
+    number = clr_of(prop) in ("Double", "Int32")
+    x = as_number(Value(text, "Double")) if number else None
+    try:
+        out = F.composite(fmt, x if x is not None else text, x is not None)
+    except F.FormatError:
+        return UNEVALUATED
+    return ("text", "{}" + out if out.startswith("{") else out)

@@ -34,7 +34,7 @@ user template are left to the reader's theme drawing.
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import data_triggers, items, markup, string_formats
+from xaml3d.framework import binding_data, data_triggers, items, markup, string_formats
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -445,6 +445,14 @@ class _Instantiation:
                 "ContentPresenter"
             ):
                 continue  # placed by present()
+            found = binding_data.UNEVALUATED
+            if not plain:  # the framework's own converters, a StringFormat
+                found = binding_data.templated_value(
+                    self.sv, value, prop, c.value(prop), (part, c.el), attr
+                )
+            if found is not binding_data.UNEVALUATED:
+                put(self.sv, part, attr, found)
+                continue
             if not plain:
                 msg = (f"{attr} binds the templated parent's {prop} through a converter or "
                        "format, which is code: the property keeps its default")  # fmt: skip
