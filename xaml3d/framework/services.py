@@ -32,6 +32,11 @@ class Services(Protocol):
         """The type name of a WPF (presentation namespace) element, else None (another
         namespace's, or not an element)."""
 
+    def members(self, type_name: str) -> Any:
+        """Every member name the WPF type ``type_name`` has (its bases' too) as the reader's
+        vocabulary knows them, or None when it has no table (a binding's path is then not
+        checked)."""
+
     def copy(self, el: Any) -> Any:
         """A deep copy of ``el`` whose elements report the source positions of the originals."""
 
