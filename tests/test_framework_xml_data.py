@@ -248,3 +248,15 @@ def test_bound_items_drawn_are_not_said_to_be_unevaluated(tmp_path):
     (tmp_path / "feature.xaml").write_text(feature, encoding="utf-8")
     assert [d.code for d in load(tmp_path / "feature.xaml").diagnostics
             if d.code.startswith(("XAML", "TPL", "BND"))] == []  # fmt: skip
+
+
+def test_a_data_context_of_a_providers_nodes_gives_them_all_to_an_items_source(tmp_path):
+    provider = RESOURCES.replace('x:Key="books"', 'x:Key="books" XPath="//Book"')
+    feature = window(
+        provider,
+        """<StackPanel DataContext="{Binding Source={StaticResource books}}">
+        <ItemsControl ItemsSource="{Binding}" DisplayMemberPath="Title" />
+      </StackPanel>""",
+    )
+    twin = window("", f"<StackPanel>{BOOK_ROWS}</StackPanel>")
+    _same(tmp_path, feature, twin)

@@ -54,6 +54,11 @@ def _xml_source(v: Value) -> bool:
     return v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider"
 
 
+def _own_xpath(v: Value) -> bool:
+    """Whether ``v`` is an XmlDataProvider itself (not nodes of it) with an XPath of its own."""
+    return v.items is None and _xml_source(v) and bool((v.el.get("XPath") or "").strip())
+
+
 class Cycle(Exception):
     """A binding whose source is, through other bindings, its own target."""
 
@@ -116,8 +121,8 @@ class Evaluator(PropertyValues):
         v = self._source(el, prop, ext)
         xpath = ext.arg("XPath", None)
         path = ext.arg("Path")
-        if xpath is None and path is None and prop in _NODE_TARGETS and _xml_source(v):
-            xpath = ""  # the provider's own XPath (or its document) gives the nodes
+        if xpath is None and path is None and prop in _NODE_TARGETS and _own_xpath(v):
+            xpath = ""  # the provider's own XPath gives the nodes
         if xpath is not None:
             v = self._xpath(v, xpath, prop)
             if v.items is not None or path is not None:
