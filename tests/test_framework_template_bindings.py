@@ -69,3 +69,41 @@ def test_an_applications_converter_is_code(tmp_path):
             if d.code == "TPL002"]  # fmt: skip
     assert said == [("TPL002", _line(feature, 'Visibility="{Binding IsChecked')),
                     ("TPL002", _line(feature, 'Visibility="{TemplateBinding'))]  # fmt: skip
+
+
+def test_the_frameworks_converter_in_an_item_template(tmp_path):
+    feature = window(
+        """
+    <BooleanToVisibilityConverter x:Key="b2v" />
+    <x:Array x:Key="tasks" Type="local:Task" xmlns:local="clr-namespace:App">
+      <local:Task Done="True" /><local:Task Done="False" />
+    </x:Array>""",
+        """
+      <ItemsControl ItemsSource="{StaticResource tasks}">
+        <ItemsControl.ItemTemplate>
+          <DataTemplate>
+            <StackPanel>
+              <Border Height="6" Background="Yellow"
+                      Visibility="{Binding Done, Converter={StaticResource b2v}}" />
+              <Border Height="6" Background="Blue" />
+            </StackPanel>
+          </DataTemplate>
+        </ItemsControl.ItemTemplate>
+      </ItemsControl>""",
+    )
+
+    def row(done: bool) -> str:
+        shown = "" if done else ' Visibility="Collapsed"'
+        yellow = f'<Border Height="6" Background="Yellow"{shown} />'
+        blue = '<Border Height="6" Background="Blue" />'
+        return f"<ContentPresenter><StackPanel>{yellow}{blue}</StackPanel></ContentPresenter>"
+
+    twin = window(
+        "",
+        "<ContentControl><Border><StackPanel>"
+        + row(True) + row(False)
+        + "</StackPanel></Border></ContentControl>",
+    )  # fmt: skip
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[3, 10]) == (255, 255, 0, 255) and tuple(px[9, 10]) == (0, 0, 255, 255)
+    assert tuple(px[15, 10]) == (0, 0, 255, 255)  # the second item: its yellow part collapsed

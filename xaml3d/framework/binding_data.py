@@ -16,14 +16,17 @@ from xaml3d.framework.binding_values import Value, as_number, clr_of, primitive
 from xaml3d.framework.markup_syntax import MarkupSyntaxError, parse
 
 _ARGUMENTS = frozenset({"Path", "XPath", "Mode", "StringFormat", "FallbackValue",
-                        "TargetNullValue"})  # fmt: skip
+                        "TargetNullValue", "Converter", "ConverterParameter"})  # fmt: skip
 NOT_THE_ITEMS = object()  # item_binding's answer for a binding that does not read the item
 
 
-def item_binding(value: str, item, item_property, sv=None, where=None, attr: str = ""):
+def item_binding(value: str, item, item_property, sv=None, where=None, attr: str = "",
+                 scope=None):  # fmt: skip
     """The text the binding ``value`` (an attribute's text) takes from ``item`` (see
     items.py), None when it takes none (the property keeps its default), NOT_THE_ITEMS when
-    it is no binding to the data context. ``item_property(item, path)`` reads a path."""
+    it is no binding to the data context. ``item_property(item, path)`` reads a path; a
+    Converter resource is looked up from ``where`` then ``scope`` (the control showing the
+    item: the template's copy is not in the tree yet)."""
     m = markup.split(value)
     if m is None or m[0] != "Binding":
         return NOT_THE_ITEMS
@@ -34,6 +37,11 @@ def item_binding(value: str, item, item_property, sv=None, where=None, attr: str
     if len(ext.positional) > 1 or set(ext.named) - _ARGUMENTS:
         return NOT_THE_ITEMS
     args = dict(ext.named)
+    converter = args.pop("Converter", None)
+    if converter is not None:
+        args.pop("ConverterParameter", None)  # BooleanToVisibilityConverter reads none
+        if sv is None or _framework_converter(sv, converter, where, scope) is None:
+            return NOT_THE_ITEMS  # an application's converter: code
     if not all(isinstance(v, str) for v in args.values()) or (
         ext.positional and not isinstance(ext.positional[0], str)
     ):
@@ -54,6 +62,11 @@ def item_binding(value: str, item, item_property, sv=None, where=None, attr: str
             number = p is not None and p.clr in ("Double", "Int32")
     if text is None:
         return args.get("FallbackValue")
+    if converter is not None:
+        # WPF's converter: a bool True is Visible, anything else Collapsed; XML data is text
+        # (never a bool), an object's property written "True" is read as the bool it holds
+        flag = xpath is None and item[0] == "data" and text.strip().lower() == "true"
+        return "Visible" if flag else "Collapsed"
     fmt = args.get("StringFormat")
     if not fmt or clr_of(attr) != "String":  # WPF formats for a text target only
         return text
@@ -97,12 +110,7 @@ def templated_value(sv, value: str, prop: str, parent_value, scopes: tuple, attr
     text = parent_value[1] if parent_value is not None else None
     conv = ext.named.get("Converter")
     if conv is not None:
-        key = conv.arg("ResourceKey") if not isinstance(conv, str) else None
-        if not isinstance(key, str) or conv.name not in ("StaticResource", "DynamicResource"):
-            return UNEVALUATED
-        entry = next((e for e in (sv.find(key.strip(), s) for s in scopes) if e is not None),
-                     None)  # fmt: skip
-        if entry is None or sv.wpf_type(entry) != "BooleanToVisibilityConverter":
+        if _framework_converter(sv, conv, *scopes) is None:
             return UNEVALUATED  # a converter class of the application: code
         # WPF's converter: a bool True is Visible, anything else (False, null, not a bool)
         # Collapsed; an unset bool property is its default, False
@@ -120,3 +128,19 @@ def templated_value(sv, value: str, prop: str, parent_value, scopes: tuple, attr
     except F.FormatError:
         return UNEVALUATED
     return ("text", "{}" + out if out.startswith("{") else out)
+
+
+def _framework_converter(sv, conv, *scopes):
+    """The BooleanToVisibilityConverter resource ``conv`` (``{StaticResource k}``) names, found
+    from the first of ``scopes`` that has it; None for anything else (an application's)."""
+    if isinstance(conv, str) or getattr(conv, "name", None) not in (
+        "StaticResource", "DynamicResource"):  # fmt: skip
+        return None
+    key = conv.arg("ResourceKey")
+    if not isinstance(key, str):
+        return None
+    for scope in scopes:
+        entry = sv.find(key.strip(), scope) if scope is not None else None
+        if entry is not None:
+            return entry if sv.wpf_type(entry) == "BooleanToVisibilityConverter" else None
+    return None

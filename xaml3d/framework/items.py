@@ -167,7 +167,7 @@ def _shown(c: Control, item, sv):
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
         if visual:
             copy = sv.copy(visual[0])
-            fill_data(copy, item, sv)
+            fill_data(copy, item, sv, c.el)
             return ("visual", copy)
     path = c.value("DisplayMemberPath")
     if path is not None and path[0] == "text" and markup.split(path[1]) is None:
@@ -178,10 +178,11 @@ def _shown(c: Control, item, sv):
     return ("text", local_name(item[1].tag))  # an object without a template: its type's name
 
 
-def fill_data(root, item, sv=None) -> None:
+def fill_data(root, item, sv=None, scope=None) -> None:
     """A DataTemplate's copy with its bindings to the data context replaced by the item's
     values (binding_data.py; a binding to nothing the item has is cleared: the property's
-    default). ``sv``: where a refused StringFormat is said."""
+    default). ``sv``: where a refused StringFormat is said; ``scope``: the element showing the
+    item, from which a Converter resource is looked up."""
     stack = [root]
     while stack:
         el = stack.pop()
@@ -190,7 +191,7 @@ def fill_data(root, item, sv=None) -> None:
         for attr, value in list(el.attrib.items()):
             if "{" not in value:
                 continue
-            text = binding_data.item_binding(value, item, item_property, sv, el, attr)
+            text = binding_data.item_binding(value, item, item_property, sv, el, attr, scope)
             if text is binding_data.NOT_THE_ITEMS:
                 continue
             if text is None:

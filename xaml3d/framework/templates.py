@@ -526,7 +526,7 @@ class _Instantiation:
             visual = [k for k in elements(data_template) if "." not in local_name(k.tag)]
             if visual:
                 shown = sv.copy(visual[0])
-                items.fill_data(shown, item, sv)
+                items.fill_data(shown, item, sv, c.el)
                 presenter.append(shown)
                 self.conditions.item_context(presenter, item)
                 self.data_template_triggers(data_template, shown, item, presenter)
