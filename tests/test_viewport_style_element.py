@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 
 import xaml3d
-from xaml3d.render.window import compose_window
 from xaml3d.pipeline import load
+from xaml3d.render.window import compose_window
 
 _HEAD = """xmlns="http://schemas.microsoft.com/winfx/2006/xaml/presentation"
     xmlns:x="http://schemas.microsoft.com/winfx/2006/xaml\""""
