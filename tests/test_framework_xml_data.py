@@ -260,3 +260,19 @@ def test_a_data_context_of_a_providers_nodes_gives_them_all_to_an_items_source(t
     )
     twin = window("", f"<StackPanel>{BOOK_ROWS}</StackPanel>")
     _same(tmp_path, feature, twin)
+
+
+def test_a_providers_own_xpath_outside_the_subset_is_said_not_raised(tmp_path):
+    provider = RESOURCES.replace('x:Key="books"', 'x:Key="books" XPath="count(//Book)"')
+    feature = window(
+        provider,
+        """
+      <ItemsControl ItemsSource="{Binding Source={StaticResource books}}" />
+      <TextBlock Text="{Binding Source={StaticResource books}, XPath=Title,
+                                FallbackValue=no}" />""",
+    )
+    twin = window("", '<ItemsControl /><TextBlock Text="no" />')
+    _same(tmp_path, feature, twin)
+    said = [d for d in load(tmp_path / "feature.xaml").diagnostics if d.code == "BND001"]
+    assert [d.line for d in said] == [_line(feature, "<ItemsControl")]
+    assert "count(//Book)" in said[0].message

@@ -244,7 +244,12 @@ class Evaluator(PropertyValues):
             # nodes a DataContext holds: WPF reads the collection's current item, its first
             nodes = list(v.items[:1])
         elif v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider":
-            nodes = X.provider_nodes(v.el, self.s)
+            try:
+                nodes = X.provider_nodes(v.el, self.s)
+            except X.XPathError as exc:  # the provider's own XPath
+                own = v.el.get("XPath")
+                detail = f"the XmlDataProvider's XPath {own!r} is not evaluated ({exc})"
+                raise needs_code(f"XPath {own}", detail) from None
             if nodes is None and v.el.get("Source") is not None:
                 raise Unresolved(None, "XmlDataProvider")  # said where the file was read
             if nodes is None:
