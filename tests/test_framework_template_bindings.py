@@ -107,3 +107,15 @@ def test_the_frameworks_converter_in_an_item_template(tmp_path):
     px = _same(tmp_path, feature, twin)
     assert tuple(px[3, 10]) == (255, 255, 0, 255) and tuple(px[9, 10]) == (0, 0, 255, 255)
     assert tuple(px[15, 10]) == (0, 0, 255, 255)  # the second item: its yellow part collapsed
+
+
+def test_a_refused_format_in_a_template_fails_the_binding(tmp_path):
+    feature = window(
+        STYLE.replace("StringFormat={}{0:F1} px}", "StringFormat='x{0:F1'}"),
+        '<CheckBox Style="{StaticResource mark}" Width="60" />',
+    )
+    twin = window("", _part(False, "60").replace('<TextBlock Text="60.0 px" />', "<TextBlock />"))
+    _same(tmp_path, feature, twin)
+    said = [(d.code, d.line) for d in load(tmp_path / "feature.xaml").diagnostics
+            if d.code.startswith(("TPL", "BND"))]  # fmt: skip
+    assert said == [("BND003", _line(feature, "<TextBlock Text="))]

@@ -99,8 +99,8 @@ def templated_value(sv, value: str, prop: str, parent_value, scopes: tuple, attr
     ("text", str), or None for its default) through the framework's own converter
     (BooleanToVisibilityConverter, a resource found from the first of ``scopes``, the
     elements it is looked up from, that has it) and the StringFormat (a text target only).
-    ("text", str), or UNEVALUATED when it needs code (an application's converter) or is not
-    text."""
+    ("text", str); None (the default) when the format is refused (BND003); UNEVALUATED when
+    it needs code (an application's converter) or is not text."""
     try:
         ext = parse(value)
     except MarkupSyntaxError:
@@ -125,8 +125,11 @@ def templated_value(sv, value: str, prop: str, parent_value, scopes: tuple, attr
     x = as_number(Value(text, "Double")) if number else None
     try:
         out = F.composite(fmt, x if x is not None else text, x is not None)
-    except F.FormatError:
-        return UNEVALUATED
+    except F.FormatError as exc:  # thrown in WPF when shown: the binding fails
+        msg = (f"{attr}={value!r}: the binding fails in WPF too (StringFormat {fmt!r} is "
+               f"refused by .NET: {exc}): the property keeps its default")  # fmt: skip
+        sv.diag("BND003", msg, scopes[0], attr=attr, once=("BND003", "StringFormat", value))
+        return None
     return ("text", "{}" + out if out.startswith("{") else out)
 
 

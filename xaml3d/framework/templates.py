@@ -454,8 +454,8 @@ class _Instantiation:
                 put(self.sv, part, attr, found)
                 continue
             if not plain:
-                msg = (f"{attr} binds the templated parent's {prop} through a converter or "
-                       "format, which is code: the property keeps its default")  # fmt: skip
+                msg = (f"{attr} binds the templated parent's {prop} through a converter of "
+                       "the application (code): the property keeps its default")  # fmt: skip
                 self.sv.diag("TPL002", msg, part, attr=attr, once=("TPL002", id(part), attr))
                 del part.attrib[attr]
                 continue
