@@ -507,3 +507,41 @@ def test_a_binding_member_wpf_does_not_have_is_refused_with_a_suggestion():
         ),
         ("XAML024", "Binding has no property 'Pth' (did you mean Path?): WPF refuses the file"),
     ]
+
+
+def test_a_path_the_source_type_does_not_have_fails_as_in_wpf():
+    from xaml3d.xaml import framework_members
+
+    class Services(FakeServices):
+        def members(self, type_name):
+            return framework_members.members(type_name)
+
+    doc = etree.fromstring(f"""<Grid {NS}>
+    <CheckBox x:Name="cb" IsChecked="True"/>
+    <TextBlock x:Name="t" Text="{{Binding IsChekced, ElementName=cb}}"/>
+    <TextBlock x:Name="f" Text="{{Binding Zzz, ElementName=cb, FallbackValue=none}}"/>
+    <TextBlock x:Name="ok" Text="{{Binding IsChecked, ElementName=cb}}"/>
+    </Grid>""")
+    s = Services()
+    evaluate(doc, s)
+    assert attr(doc, "t", "Text") is None  # the property's default, as WPF shows it
+    assert attr(doc, "f", "Text") == "none"
+    assert attr(doc, "ok", "Text") == "True"
+    assert [(c, line) for c, _, line, _ in s.said] == [("BND003", 3), ("BND003", 4)]
+    assert "CheckBox has no property 'IsChekced'; did you mean IsChecked?" in s.said[0][1]
+    assert "did you mean" not in s.said[1][1]
+
+
+def test_the_readers_vocabulary_checks_a_bound_path(tmp_path):
+    from test_framework_templates import window
+
+    from xaml3d.pipeline import load
+
+    feature = window(
+        "",
+        '<CheckBox x:Name="cb" /><TextBlock Text="{Binding IsChekced, ElementName=cb}" />',
+    )
+    (tmp_path / "f.xaml").write_text(feature, encoding="utf-8")
+    said = [d for d in load(tmp_path / "f.xaml").diagnostics if d.code.startswith("BND")]
+    assert [d.code for d in said] == ["BND003"]
+    assert "did you mean IsChecked?" in said[0].message

@@ -111,3 +111,54 @@ def test_a_bound_number_takes_the_content_string_format(tmp_path):
       <Label Content="2.3 cm" />""",
     )
     _same(tmp_path, feature, twin)
+
+
+PRIORITIES = """
+    <XmlDataProvider x:Key="tasks">
+      <x:XData><Tasks xmlns=""><Task Name="a" Priority="High" /><Task Name="b" /></Tasks></x:XData>
+    </XmlDataProvider>"""
+
+
+def test_a_binding_string_format_in_an_item_template(tmp_path):
+    feature = window(
+        NUMBERS + PRIORITIES,
+        """
+      <ItemsControl ItemsSource="{StaticResource prices}">
+        <ItemsControl.ItemTemplate>
+          <DataTemplate><TextBlock Text="{Binding StringFormat={}{0:F2} kg}" /></DataTemplate>
+        </ItemsControl.ItemTemplate>
+      </ItemsControl>
+      <ItemsControl ItemsSource="{Binding Source={StaticResource tasks}, XPath=//Task}">
+        <ItemsControl.ItemTemplate>
+          <DataTemplate>
+            <TextBlock Text="{Binding XPath=@Priority, StringFormat='#{0}', FallbackValue=-}" />
+          </DataTemplate>
+        </ItemsControl.ItemTemplate>
+      </ItemsControl>
+      <ItemsControl ItemsSource="{StaticResource prices}">
+        <ItemsControl.ItemTemplate>
+          <DataTemplate><TextBlock Text="{Binding StringFormat='x{0:F2'}" /></DataTemplate>
+        </ItemsControl.ItemTemplate>
+      </ItemsControl>""",
+    )
+    rows = "".join(
+        f'<ContentPresenter><TextBlock Text="{t}" /></ContentPresenter>'
+        for t in ("2.50 kg", "10.00 kg")
+    )
+    tasks = "".join(
+        f'<ContentPresenter><TextBlock Text="{t}" /></ContentPresenter>' for t in ("#High", "-")
+    )
+    twin = window(
+        "",
+        f"""
+      <ContentControl><Border><StackPanel>{rows}</StackPanel></Border></ContentControl>
+      <ContentControl><Border><StackPanel>{tasks}</StackPanel></Border></ContentControl>
+      <ContentControl><Border><StackPanel>
+        <ContentPresenter><TextBlock /></ContentPresenter>
+        <ContentPresenter><TextBlock /></ContentPresenter>
+      </StackPanel></Border></ContentControl>""",
+    )
+    _same(tmp_path, _with_ns(feature), _with_ns(twin))
+    said = [(d.code, d.line) for d in load(tmp_path / "feature.xaml").diagnostics
+            if d.code.startswith(("XAML", "BND", "TPL"))]  # fmt: skip
+    assert said == [("BND003", _line(feature, "x{0:F2"))]

@@ -183,3 +183,96 @@ def test_predicates_written_in_the_binding_markup(tmp_path):
       <TextBlock Text="2" />""",
     )
     _same(tmp_path, feature, twin)
+
+
+BOOK_ROWS = """<ContentControl><Border><StackPanel>
+        <ContentPresenter><TextBlock Text="XML in Action" /></ContentPresenter>
+        <ContentPresenter><TextBlock Text="Inside C#" /></ContentPresenter>
+        <ContentPresenter><TextBlock Text="Writing Secure Code" /></ContentPresenter>
+      </StackPanel></Border></ContentControl>"""
+
+
+def test_the_providers_own_xpath_gives_the_items_of_a_binding_without_one(tmp_path):
+    provider = RESOURCES.replace('x:Key="books"', 'x:Key="books" XPath="/Inventory/Books/Book"')
+    feature = window(
+        provider + '<XmlDataProvider x:Key="gone" Source="missing.xml" XPath="/a/b" />',
+        """
+      <ItemsControl ItemsSource="{Binding Source={StaticResource books}}"
+                    DisplayMemberPath="Title" />
+      <ItemsControl ItemsSource="{Binding Source={StaticResource gone}}" />""",
+    )
+    twin = window("", BOOK_ROWS + "<ItemsControl />")
+    _same(tmp_path, feature, twin)
+    said = [(d.code, d.line) for d in load(tmp_path / "feature.xaml").diagnostics
+            if d.code.startswith(("BND", "XAML009"))]  # fmt: skip
+    assert said == [("BND004", _line(feature, "missing.xml"))]
+
+
+@pytest.mark.parametrize(
+    "context",
+    [
+        """<StackPanel.DataContext>
+          <Binding Source="{StaticResource books}" XPath="/Inventory/Books" />
+        </StackPanel.DataContext>""",
+        None,
+    ],
+)
+def test_a_data_context_bound_by_xpath_gives_the_items_below_it(tmp_path, context):
+    if context is None:
+        head = '<StackPanel DataContext="{Binding Source={StaticResource books}, ' \
+               'XPath=/Inventory/Books}">'  # fmt: skip
+        context = ""
+    else:
+        head = "<StackPanel>"
+    feature = window(
+        RESOURCES,
+        f"""{head}{context}
+        <ItemsControl ItemsSource="{{Binding XPath=Book}}" DisplayMemberPath="Title" />
+        <TextBlock Text="{{Binding XPath=Book[2]/@ISBN}}" />
+      </StackPanel>""",
+    )
+    twin = window("", f'<StackPanel>{BOOK_ROWS}<TextBlock Text="2" /></StackPanel>')
+    _same(tmp_path, feature, twin)
+    said = [d.code for d in load(tmp_path / "feature.xaml").diagnostics
+            if d.code.startswith(("BND", "TPL", "XAML"))]  # fmt: skip
+    assert said == []
+
+
+def test_bound_items_drawn_are_not_said_to_be_unevaluated(tmp_path):
+    feature = window(
+        RESOURCES,
+        """
+      <ListBox ItemsSource="{Binding Source={StaticResource books}, XPath=//Book/@ISBN}" />
+      <ListBox DataContext="{StaticResource books}" ItemsSource="{Binding XPath=//Price}" />""",
+    )
+    (tmp_path / "feature.xaml").write_text(feature, encoding="utf-8")
+    assert [d.code for d in load(tmp_path / "feature.xaml").diagnostics
+            if d.code.startswith(("XAML", "TPL", "BND"))] == []  # fmt: skip
+
+
+def test_a_data_context_of_a_providers_nodes_gives_them_all_to_an_items_source(tmp_path):
+    provider = RESOURCES.replace('x:Key="books"', 'x:Key="books" XPath="//Book"')
+    feature = window(
+        provider,
+        """<StackPanel DataContext="{Binding Source={StaticResource books}}">
+        <ItemsControl ItemsSource="{Binding}" DisplayMemberPath="Title" />
+      </StackPanel>""",
+    )
+    twin = window("", f"<StackPanel>{BOOK_ROWS}</StackPanel>")
+    _same(tmp_path, feature, twin)
+
+
+def test_a_providers_own_xpath_outside_the_subset_is_said_not_raised(tmp_path):
+    provider = RESOURCES.replace('x:Key="books"', 'x:Key="books" XPath="count(//Book)"')
+    feature = window(
+        provider,
+        """
+      <ItemsControl ItemsSource="{Binding Source={StaticResource books}}" />
+      <TextBlock Text="{Binding Source={StaticResource books}, XPath=Title,
+                                FallbackValue=no}" />""",
+    )
+    twin = window("", '<ItemsControl /><TextBlock Text="no" />')
+    _same(tmp_path, feature, twin)
+    said = [d for d in load(tmp_path / "feature.xaml").diagnostics if d.code == "BND001"]
+    assert [d.line for d in said] == [_line(feature, "<ItemsControl")]
+    assert "count(//Book)" in said[0].message

@@ -16,7 +16,7 @@ TEMPLATE_CODES: dict[str, tuple[str, str]] = {
     ),
     "TPL002": (
         INFO,
-        "a TemplateBinding with a converter or format (code): the property keeps its default",
+        "a TemplateBinding with an application's converter (code): the property keeps its default",
     ),
     "TPL003": (
         INFO,

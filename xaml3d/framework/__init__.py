@@ -8,6 +8,7 @@ reader's services (``services.Services``: resource look-up, diagnostics); it imp
 the reader nor lxml, nor layout, nor the renderer (import contracts in pyproject.toml). Its
 passes, in WPF's order of evaluation at load:
 
+0. ``null_content``: an ``<x:Null/>`` content or header written as ``{x:Null}``;
 1. ``bindings``: load-time bindings that need no code, replaced by their values;
 2. ``templates``: styles, control and data templates, triggers and items instantiated.
 
@@ -16,7 +17,7 @@ A document without any of them is left untouched (each pass looks before it work
 
 from __future__ import annotations
 
-from xaml3d.framework import bindings, templates
+from xaml3d.framework import bindings, null_content, templates
 from xaml3d.framework.services import Services
 
 __all__ = ["Services", "expand"]
@@ -24,5 +25,7 @@ __all__ = ["Services", "expand"]
 
 def expand(root, services: Services) -> None:
     """Instantiate the framework's tree under ``root`` in place."""
-    bindings.evaluate(root, services)
+    null_content.settle(root, services)
+    contexts = bindings.evaluate(root, services)
     templates.instantiate(root, services)
+    bindings.spend(contexts)

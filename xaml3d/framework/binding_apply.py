@@ -26,23 +26,44 @@ _KEEP = object()  # the binding stays as written
 _REMOVE = object()  # the property keeps its default
 
 
-def apply(root, services, sites: list[Site]) -> None:
-    """Evaluate the ``sites`` of the tree under ``root`` and write their outcomes."""
+def apply(root, services, sites: list[Site]) -> list[Site]:
+    """Evaluate the ``sites`` of the tree under ``root`` and write their outcomes; the
+    DataContext bindings kept for the items below them (nodes of XML data) are returned."""
     index = {(id(s.el), s.prop): s for s in sites if s.ext is not None}
     ev = Evaluator(services, name_scope(root), index)
     _cut_visual_cycles(sites, ev, services)
     pinned = False
+    contexts: list[Site] = []
     for site in sites:
         if site.ext is None:
             outcome = "{x:Null}" if site.cut else _REMOVE
         else:
             outcome = _outcome(site, ev, services)
         if outcome is _KEEP:
+            if site.prop == "DataContext" and _xml_nodes(site.value):
+                contexts.append(site)
             continue
         if (site.prop_el is not None or isinstance(outcome, tuple)) and not pinned:
             services.pin(root)  # a property element goes: the tree changes shape
             pinned = True
         _write(site, outcome)
+    return contexts
+
+
+def spend(contexts: list[Site]) -> None:
+    """Remove the DataContext bindings ``apply`` kept, once the items they fed are made: the
+    framework evaluated them; the reader has nothing left to evaluate."""
+    for site in contexts:
+        if site.prop_el is not None:
+            if site.prop_el.getparent() is site.el:
+                site.el.remove(site.prop_el)
+        else:
+            site.el.attrib.pop(site.key, None)
+
+
+def _xml_nodes(v: Value | None) -> bool:
+    return v is not None and v.items is not None and v.el is not None and (
+        local(v.el) == "XmlDataProvider")  # fmt: skip
 
 
 def value_text(root, services, el, text: str, prop: str = "") -> str | None:
@@ -81,7 +102,8 @@ def bound_items(root, services, el, text: str) -> list | None:
         v = ev.binding_value(el, "ItemsSource", ext)
     except (Cycle, Unresolved):
         return None
-    return list(v.items) if v.items is not None and ext.arg("XPath", None) is not None else None
+    xml = ext.arg("XPath", None) is not None or _xml_nodes(v)  # the provider's own XPath
+    return list(v.items) if v.items is not None and xml else None
 
 
 def _outcome(site: Site, ev: Evaluator, services):

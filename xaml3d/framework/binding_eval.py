@@ -45,6 +45,20 @@ from xaml3d.framework.markup_syntax import (
 MAX_CHAIN = 64
 
 
+# the properties an XPath gives nodes (a collection), not the first node's text
+_NODE_TARGETS = ("ItemsSource", "DataContext")
+
+
+def _xml_source(v: Value) -> bool:
+    """Whether ``v`` is an XmlDataProvider (or nodes of its data a DataContext holds)."""
+    return v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider"
+
+
+def _own_xpath(v: Value) -> bool:
+    """Whether ``v`` is an XmlDataProvider itself (not nodes of it) with an XPath of its own."""
+    return v.items is None and _xml_source(v) and bool((v.el.get("XPath") or "").strip())
+
+
 class Cycle(Exception):
     """A binding whose source is, through other bindings, its own target."""
 
@@ -107,6 +121,8 @@ class Evaluator(PropertyValues):
         v = self._source(el, prop, ext)
         xpath = ext.arg("XPath", None)
         path = ext.arg("Path")
+        if xpath is None and path is None and prop in _NODE_TARGETS and _own_xpath(v):
+            xpath = ""  # the provider's own XPath gives the nodes
         if xpath is not None:
             v = self._xpath(v, xpath, prop)
             if v.items is not None or path is not None:
@@ -224,8 +240,16 @@ class Evaluator(PropertyValues):
 
         if not isinstance(xpath, str):
             raise needs_code("XPath object", "an XPath given as an object")
-        if v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider":
-            nodes = X.provider_nodes(v.el, self.s)
+        if v.items is not None and _xml_source(v):
+            # nodes a DataContext holds: WPF reads the collection's current item, its first
+            nodes = list(v.items[:1])
+        elif v.el is not None and is_wpf(v.el) and local(v.el) == "XmlDataProvider":
+            try:
+                nodes = X.provider_nodes(v.el, self.s)
+            except X.XPathError as exc:  # the provider's own XPath
+                own = v.el.get("XPath")
+                detail = f"the XmlDataProvider's XPath {own!r} is not evaluated ({exc})"
+                raise needs_code(f"XPath {own}", detail) from None
             if nodes is None and v.el.get("Source") is not None:
                 raise Unresolved(None, "XmlDataProvider")  # said where the file was read
             if nodes is None:
@@ -240,7 +264,7 @@ class Evaluator(PropertyValues):
         except X.XPathError as exc:
             detail = f"XPath {xpath!r} is not evaluated ({exc})"
             raise needs_code(f"XPath {xpath}", detail) from None
-        if prop == "ItemsSource":
+        if prop in _NODE_TARGETS:
             return Value(items=tuple(picked), el=v.el)
         if not picked:
             raise fails("XPath", f"XPath {xpath!r} selects nothing")

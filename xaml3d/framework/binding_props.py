@@ -6,6 +6,7 @@ primitives (``sys:Double``...) among them; a binding set on the property evaluat
 
 from __future__ import annotations
 
+from xaml3d.framework.binding_sites import binding_element_extension
 from xaml3d.framework.binding_tree import (
     BINDINGS,
     children,
@@ -137,10 +138,24 @@ class PropertyValues:
                 f"code's ({local(el)} is a type of the application)")  # fmt: skip
         d = default(local(el), prop) or self._base_default(el, prop)
         if d is None:
+            self._check_member(el, prop)
             # xaml3d's limit, not WPF's failure: said once, as what needs code is
             raise needs_code("default", f"{local(el)}.{prop} is not set in the markup and xaml3d "
                                         "does not know its default")  # fmt: skip
         return d
+
+    def _check_member(self, el, prop: str) -> None:
+        """A path naming no property of a WPF type the reader's vocabulary knows fails, as
+        WPF's binding does at run time (its default shown); the near name suggested."""
+        members = getattr(self.s, "members", None)
+        known = members(local(el)) if members is not None and "." not in prop else None
+        if known is None or prop in known:
+            return
+        import difflib  # only for a name that is wrong
+
+        near = difflib.get_close_matches(prop, sorted(known), 1, 0.7)
+        hint = f"; did you mean {near[0]}?" if near else ""
+        raise fails("path", f"{local(el)} has no property {prop!r}{hint}")
 
     def _base_default(self, el, prop: str) -> Value | None:
         for base in ("ContentControl", "Control", "RangeBase", "Panel"):
@@ -157,6 +172,8 @@ class PropertyValues:
             ext = parse(raw)
         except MarkupSyntaxError as exc:
             raise fails("syntax", str(exc)) from None
+        if ext.name in BINDINGS and prop:
+            return self.binding_value(el, prop, ext)  # for the property it sets (DataContext)
         return self._extension_value(el, ext, prop)
 
     def _prop_element(self, el, prop: str):
@@ -175,6 +192,12 @@ class PropertyValues:
         kids = children(pe)
         if not kids:
             return Value((pe.text or "").strip(), clr_of(prop))
+        if len(kids) == 1 and is_wpf(kids[0]) and local(kids[0]) in BINDINGS:
+            try:  # <X.DataContext><Binding .../></X.DataContext>
+                ext = binding_element_extension(kids[0])
+            except MarkupSyntaxError as exc:
+                raise fails("syntax", str(exc)) from None
+            return self.binding_value(el, prop, ext)
         if len(kids) == 1 and not local(kids[0]).endswith("Collection"):
             return self.element_value(kids[0])
         if len(kids) == 1:

@@ -29,15 +29,25 @@ from __future__ import annotations
 from xaml3d.framework.binding_sites import collect
 
 
-def evaluate(root, services) -> None:
-    """Replace every evaluable binding under ``root`` by its value (in place)."""
+def evaluate(root, services) -> list:
+    """Replace every evaluable binding under ``root`` by its value (in place). Returns the
+    DataContext bindings to XML data kept for the items pass, for ``spend``."""
     sites = collect(root, services)
     if not sites:
-        return
+        return []
     # the evaluator is imported for a document that has bindings only (most have none)
     from xaml3d.framework.binding_apply import apply
 
-    apply(root, services, sites)
+    return apply(root, services, sites)
+
+
+def spend(contexts: list) -> None:
+    """After the items are made: the DataContext bindings ``evaluate`` kept for them removed
+    (evaluated: nothing is left for the reader)."""
+    if contexts:
+        from xaml3d.framework.binding_apply import spend as remove
+
+        remove(contexts)
 
 
 def value_text(root, services, el, text: str, prop: str = "") -> str | None:

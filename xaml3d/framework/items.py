@@ -15,7 +15,7 @@ attributes).
 
 from __future__ import annotations
 
-from xaml3d.framework import markup, string_formats, xml_data
+from xaml3d.framework import binding_data, markup, string_formats, xml_data
 from xaml3d.framework.styles import Control, elements, local_name
 
 CONTAINERS = {"ItemsControl": "ContentPresenter", "ListBox": "ListBoxItem",
@@ -167,7 +167,7 @@ def _shown(c: Control, item, sv):
         visual = [k for k in elements(template) if "." not in local_name(k.tag)]
         if visual:
             copy = sv.copy(visual[0])
-            fill_data(copy, item)
+            fill_data(copy, item, sv, c.el)
             return ("visual", copy)
     path = c.value("DisplayMemberPath")
     if path is not None and path[0] == "text" and markup.split(path[1]) is None:
@@ -178,24 +178,22 @@ def _shown(c: Control, item, sv):
     return ("text", local_name(item[1].tag))  # an object without a template: its type's name
 
 
-def fill_data(root, item) -> None:
+def fill_data(root, item, sv=None, scope=None) -> None:
     """A DataTemplate's copy with its bindings to the data context replaced by the item's
-    values (a binding to nothing the item has is cleared: the property's default)."""
+    values (binding_data.py; a binding to nothing the item has is cleared: the property's
+    default). ``sv``: where a refused StringFormat is said; ``scope``: the element showing the
+    item, from which a Converter resource is looked up."""
     stack = [root]
     while stack:
         el = stack.pop()
         if not isinstance(el.tag, str):
             continue
         for attr, value in list(el.attrib.items()):
-            path = markup.data_binding(value)
-            xpath = xml_data.xpath_binding(value) if path is None else None
-            if path is None and xpath is None:
+            if "{" not in value:
                 continue
-            if xpath is not None:
-                node = item[2]
-                text = xml_data.item_text(node, xpath) if xml_data.is_data(node) else None
-            else:
-                text = item_property(item, path)
+            text = binding_data.item_binding(value, item, item_property, sv, el, attr, scope)
+            if text is binding_data.NOT_THE_ITEMS:
+                continue
             if text is None:
                 del el.attrib[attr]
             else:
@@ -274,6 +272,10 @@ def containers(c: Control, sv, on_item=None) -> list | None:
             chosen = -1
         if 0 <= chosen < len(out) and out[chosen].get("IsSelected") is None:
             out[chosen].set("IsSelected", "True")
+    # a bound ItemsSource is spent: its items are the containers now (the reader has
+    # nothing left to evaluate)
+    if (markup.split(c.el.get("ItemsSource")) or ("",))[0] == "Binding":
+        del c.el.attrib["ItemsSource"]
     # the inline items' property element, emptied
     for child in elements(c.el):
         if local_name(child.tag).rpartition(".")[2] == "Items" and not elements(child):

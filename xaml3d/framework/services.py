@@ -37,6 +37,11 @@ class Services(Protocol):
         names (the type or a base class); None when it is not known (another namespace's
         type, a class tree not known to its top)."""
 
+    def members(self, type_name: str) -> Any:
+        """Every member name the WPF type ``type_name`` has (its bases' too) as the reader's
+        vocabulary knows them, or None when it has no table (a binding's path is then not
+        checked)."""
+
     def copy(self, el: Any) -> Any:
         """A deep copy of ``el`` whose elements report the source positions of the originals."""
 

@@ -43,7 +43,15 @@ without a user template are left to the reader's theme drawing.
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import binding_tree, data_triggers, items, markup, string_formats, text_host
+from xaml3d.framework import (
+    binding_data,
+    binding_tree,
+    data_triggers,
+    items,
+    markup,
+    string_formats,
+    text_host,
+)
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -507,9 +515,17 @@ class _Instantiation:
                 "ContentPresenter"
             ):
                 continue  # placed by present()
+            found = binding_data.UNEVALUATED
+            if not plain:  # the framework's own converters, a StringFormat
+                found = binding_data.templated_value(
+                    self.sv, value, prop, c.value(prop), (part, c.el), attr
+                )
+            if found is not binding_data.UNEVALUATED:
+                put(self.sv, part, attr, found)
+                continue
             if not plain:
-                msg = (f"{attr} binds the templated parent's {prop} through a converter or "
-                       "format, which is code: the property keeps its default")  # fmt: skip
+                msg = (f"{attr} binds the templated parent's {prop} through a converter of "
+                       "the application (code): the property keeps its default")  # fmt: skip
                 self.sv.diag("TPL002", msg, part, attr=attr, once=("TPL002", id(part), attr))
                 del part.attrib[attr]
                 continue
@@ -598,7 +614,7 @@ class _Instantiation:
             visual = [k for k in elements(data_template) if "." not in local_name(k.tag)]
             if visual:
                 shown = sv.copy(visual[0])
-                items.fill_data(shown, item)
+                items.fill_data(shown, item, sv, c.el)
                 presenter.append(shown)
                 self.conditions.item_context(presenter, item)
                 self.data_template_triggers(data_template, shown, item, presenter)

@@ -8,6 +8,7 @@ import copy
 from pathlib import Path
 
 from xaml3d.errors import XamlError
+from xaml3d.xaml import framework_members
 from xaml3d.xaml.context import as_written, is_presentation, qname
 from xaml3d.xaml.framework_members import derives
 from xaml3d.xaml.parser import parse_document
@@ -43,6 +44,9 @@ class ReaderServices:
 
     def theme_styles(self, type_name: str) -> list:
         return theme_styles(type_name)
+
+    def members(self, type_name: str):
+        return framework_members.members(type_name)
 
     def wpf_type(self, el) -> str | None:
         if not isinstance(el.tag, str):
