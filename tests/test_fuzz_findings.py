@@ -386,7 +386,9 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # in the part that can be seen: it took minutes to draw); visual-brush-denormal-tile, a
     # repeated tile 5e-324 high (its positions are NaN: undrawn, never a NaN texel index);
     # visual-brush-viewbox-zero-high, a Label in a Viewbox 0 high as a VisualBrush's Visual (its
-    # template's parts are scaled to nothing: not drawn, never a division by that scale)
+    # template's parts are scaled to nothing: not drawn, never a division by that scale);
+    # image-brush-scaled-past-range, an ImageBrush whose Transform scales past the doubles' range
+    # (its map's determinant overflows: nothing is sampled)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 

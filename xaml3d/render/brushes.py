@@ -234,9 +234,10 @@ def image_layout(brush: ImageBrush, bounds: Bounds) -> np.ndarray | None:
         return None  # an empty viewbox or viewport draws nothing
     (vpx, vpy, vpw, vph), (vbx, vby), (sx, sy), (ox, oy) = tile
     matrix = brush_to_texture_matrix(brush, bounds, False)
-    det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
+    with np.errstate(over="ignore", invalid="ignore"):  # a scale past the doubles' range
+        det = matrix[0, 0] * matrix[1, 1] - matrix[0, 1] * matrix[1, 0]
     if not np.isfinite(det) or abs(det) < 1e-300:
-        return None
+        return None  # singular, or magnified past the doubles' range: nothing to sample
     inv = np.linalg.inv(matrix)
     # TileMode None just beyond the mesh's box: WPF's Extend addressing (``edge_mode``)
     code = TILE_CODES.get(edge_mode(brush.tile_mode, matrix, bounds, (vpx, vpy, vpw, vph)), 0)
