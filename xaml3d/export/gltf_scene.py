@@ -21,6 +21,7 @@ from xaml3d.export.codes import diag
 from xaml3d.export.gltf_camera import gltf_camera
 from xaml3d.export.gltf_document import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, Document
 from xaml3d.export.gltf_materials import Materials, bake_for, srgb_to_linear
+from xaml3d.scene.camera_math import cross3
 from xaml3d.scene.types import AmbientLight, DirectionalLight, PointLight, SpotLight
 
 GENERATOR = "xaml3d"
@@ -54,9 +55,9 @@ def frame_looking(position, direction, up_hint=(0.0, 1.0, 0.0)) -> np.ndarray:
     up = np.asarray(up_hint, dtype=np.float64)
     if abs(float(up @ w)) > 0.999:
         up = np.array([1.0, 0.0, 0.0])
-    u = np.cross(up, w)
+    u = cross3(up, w)
     u /= np.linalg.norm(u)
-    v = np.cross(w, u)
+    v = cross3(w, u)
     m = np.eye(4)
     m[:3, 0], m[:3, 1], m[:3, 2], m[:3, 3] = u, v, w, position
     return m

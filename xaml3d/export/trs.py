@@ -12,6 +12,8 @@ import math
 
 import numpy as np
 
+_W = np.array((0.0, 0.0, 0.0, 1.0))
+_EYE3 = np.eye(3)
 TOL = 1e-9  # relative: R must be orthonormal to this, and T R S must give back the matrix
 
 
@@ -54,11 +56,19 @@ def compose(t, q, s) -> np.ndarray:
     return m
 
 
+def _close(a, b, atol: float, rtol: float) -> bool:
+    """``np.allclose(a, b, rtol, atol)`` for finite ``b`` (the same test, |a - b| <= atol +
+    rtol |b|, a NaN never close) without its broadcasting and infinity handling, which cost
+    more than the test on these few numbers: an animation's export decomposes every sample."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        return bool(np.all(np.abs(np.subtract(a, b)) <= atol + rtol * np.abs(b)))
+
+
 def decompose(m: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """(translation, rotation quaternion, scale) with ``compose(t, q, s) == m`` to ``TOL``, or
     None when ``m`` is projective, shears, or is singular (a zero scale has no rotation)."""
     m = np.asarray(m, dtype=np.float64)
-    if not np.all(np.isfinite(m)) or not np.allclose(m[3], (0, 0, 0, 1), atol=TOL, rtol=0):
+    if not np.all(np.isfinite(m)) or not _close(m[3], _W, TOL, 0.0):
         return None
     linear = m[:3, :3]
     scale = np.linalg.norm(linear, axis=0)
@@ -68,11 +78,11 @@ def decompose(m: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None
     if np.linalg.det(linear) < 0:  # a mirror: one negative scale keeps R a rotation
         scale[0] = -scale[0]
     r = linear / scale[None, :]
-    if not np.allclose(r.T @ r, np.eye(3), atol=1e-7, rtol=0):
+    if not _close(r.T @ r, _EYE3, 1e-7, 0.0):
         return None
     q = quaternion(r)
     t = m[:3, 3].copy()
-    if not np.allclose(compose(t, q, scale), m, atol=1e-7 * max(size, 1.0), rtol=1e-7):
+    if not _close(compose(t, q, scale), m, 1e-7 * max(size, 1.0), 1e-7):
         return None
     return t, q, scale
 
