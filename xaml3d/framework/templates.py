@@ -61,8 +61,9 @@ THEMED = {"Button", "ToggleButton", "RepeatButton"}
 THEMED |= {"CheckBox", "RadioButton"}
 THEMED |= {"Label", "TextBox", "PasswordBox"}
 # themed controls a ToolBar draws in the theme's template (its TextBox Style, ToolBar.
-# TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
-_OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
+# TextBoxStyleKey, is a Border around PART_ContentHost as the theme's; its ComboBox shows
+# the closed ComboBox's face)
+_OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox", "ComboBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
 THEMED |= {"ComboBox"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
