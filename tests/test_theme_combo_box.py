@@ -137,3 +137,28 @@ def test_combo_box_items_panel_is_said_not_used(tmp_path):
       </ComboBox>"""))  # fmt: skip
     scene = load(path)
     assert [d.code for d in scene.diagnostics if d.code.startswith("TPL")] == ["TPL008"]
+
+
+def test_a_user_template_shows_the_selection_box_item(tmp_path):
+    feature = window("", """
+      <ComboBox SelectedIndex="0">
+        <ComboBox.Template>
+          <ControlTemplate TargetType="ComboBox">
+            <Border BorderBrush="Green" BorderThickness="2">
+              <ContentPresenter Content="{TemplateBinding SelectionBoxItem}" />
+            </Border>
+          </ControlTemplate>
+        </ComboBox.Template>
+        <ComboBoxItem>Alpha</ComboBoxItem><ComboBoxItem>Beta</ComboBoxItem>
+      </ComboBox>""")  # fmt: skip
+    twin = window("", """
+      <ContentControl>
+        <Border BorderBrush="Green" BorderThickness="2">
+          <ContentPresenter><TextBlock Text="Alpha" /></ContentPresenter>
+        </Border>
+      </ContentControl>""")  # fmt: skip
+    path = tmp_path / "user.xaml"
+    path.write_text(feature)
+    assert not [d for d in load(path).diagnostics if d.code.startswith("TPL")]
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[0, 0, :3]) == (0, 128, 0)
