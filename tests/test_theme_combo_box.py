@@ -162,3 +162,11 @@ def test_a_user_template_shows_the_selection_box_item(tmp_path):
     assert not [d for d in load(path).diagnostics if d.code.startswith("TPL")]
     px = _same(tmp_path, feature, twin)
     assert tuple(px[0, 0, :3]) == (0, 128, 0)
+
+
+def test_selected_item_from_a_resource(tmp_path):
+    resources = ARRAYS + '<sys:String x:Key="pick">Green</sys:String>'
+    feature = window(resources, '<ComboBox ItemsSource="{StaticResource names}" '
+                                'SelectedItem="{StaticResource pick}" />')  # fmt: skip
+    twin = window("", _closed('<TextBlock Text="Green" />'))
+    _same(tmp_path, _with_ns(feature), _with_ns(twin))

@@ -396,7 +396,11 @@ class _Instantiation:
         an item's IsSelected), shown through the ItemTemplate or DisplayMemberPath as the
         container shows it; else the Text an editable ComboBox keeps. WPF sets SelectionBoxItem
         in code; here at load. Returns the containers."""
+        picked = self.selected_item(c)
         boxes = self.boxes(c)
+        if picked is not None and picked < len(boxes) and not any(
+                (b.get("IsSelected") or "").strip().lower() == "true" for b in boxes):  # fmt: skip
+            boxes[picked].set("IsSelected", "True")
         if themed and c.value("ItemsPanel") is not None:
             msg = (f"the ItemsPanel of this {c.type} is not used: the theme's look shows its "
                    "selected item alone (its list is a drop-down window)")  # fmt: skip
@@ -412,6 +416,21 @@ class _Instantiation:
             put(self.sv, c.el, "Text", ("text", _literal(shown[1])))
         self.selection[id(c.el)] = shown
         return boxes
+
+    def selected_item(self, c: Control) -> int | None:
+        """The index of the item ``SelectedItem="{StaticResource k}"`` names (the resource
+        itself, or a string equal to it: WPF compares items with Equals), else None."""
+        value = c.value("SelectedItem")
+        key = markup.resource_key(value[1]) if value is not None and value[0] == "text" else None
+        entry = self.sv.find(key, c.el) if key is not None else None
+        found = items.items_of(c, self.sv) if entry is not None else None
+        if found is None:
+            return None
+        text = None if elements(entry) or self.sv.wpf_type(entry) else (entry.text or "")
+        for i, (kind, shown, source) in enumerate(found[0]):
+            if source is entry or (kind == "text" and text is not None and shown == text):
+                return i
+        return None
 
     # ----------------------------------------------------------------- instantiation
     def apply(self, c: Control, template, themed: bool = False):
