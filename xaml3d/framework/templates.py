@@ -30,7 +30,8 @@ Button, ToggleButton and RepeatButton without a template of their own (nor their
 take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox and RadioButton
 (their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
 PasswordBox (a TextBox's or PasswordBox's ``PART_ContentHost`` holds its text view,
-text_host.py, in the theme's template or a user's), ListBox and ListBoxItem; the other controls
+text_host.py, in the theme's template or a user's), ListBox and ListBoxItem, and ComboBox (its
+SelectionBoxItem filled at load with the selected item's content); the other controls
 without a user template are left to the reader's theme drawing.
 """
 
@@ -393,9 +394,10 @@ class _Instantiation:
     def selection_box(self, c: Control, themed: bool):
         """A ComboBox's items generated (its containers, as its drop-down would hold them) and
         what its selection box shows: the content of the selected container (SelectedIndex,
-        an item's IsSelected), shown through the ItemTemplate or DisplayMemberPath as the
-        container shows it; else the Text an editable ComboBox keeps. WPF sets SelectionBoxItem
-        in code; here at load. Returns the containers."""
+        an item's IsSelected, SelectedItem from a resource), shown through the ItemTemplate
+        or DisplayMemberPath as the container shows it; an editable ComboBox without Text
+        takes the selected item's. WPF sets SelectionBoxItem in code; here at load. Returns
+        the containers."""
         picked = self.selected_item(c)
         boxes = self.boxes(c)
         if picked is not None and picked < len(boxes) and not any(
