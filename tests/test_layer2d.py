@@ -305,17 +305,20 @@ def test_textblock_wraps_to_its_width(tmp_path):
 def test_closed_combo_box_shows_its_selected_item(tmp_path):
     from xaml3d.text_metrics import line_height
 
-    combo = ('<ComboBox SelectedIndex="1"><ComboBoxItem>Alpha</ComboBoxItem>'
-             "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>")  # fmt: skip
-    path = tmp_path / "s.xaml"
-    path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{combo}"
-                                  "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
-    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
-    face, band, text, arrow = group.children
-    assert text.children[0].text == "Beta"
-    # WPF's closed ComboBox is 22 px tall at 12 px text: Padding 3 + 3, border 1 + 1
-    assert face.geometry.rect[3] + 2 == pytest.approx(line_height(12.0) + 8)
-    assert band.brush.color[:3] == pytest.approx((0xAC / 255,) * 3)
+    scene, drawing = _control_drawing(
+        tmp_path,
+        '<ComboBox SelectedIndex="1"><ComboBoxItem>Alpha</ComboBoxItem>'
+        "<ComboBoxItem>Beta</ComboBoxItem></ComboBox>",
+    )
+    assert [t for t, _, _ in _texts(drawing)] == ["Beta"]
+    # the theme's template: the presenter at Padding 6,3,5,3 beside the button's 1 px border,
+    # so the box is the text's line and 3 + 3 tall (22 px at 12 px Segoe UI): its face, inside
+    # templateRoot's 1 px #FFACACAC border, 2 px less
+    rects = [g for g in _geometries(drawing) if isinstance(g.geometry, RectangleGeometry)]
+    assert max(g.geometry.rect[3] for g in rects) == pytest.approx(line_height(12.0) + 4)
+    grey = (0xAC / 255,) * 3
+    assert any(tuple(getattr(b, "color", (0, 0, 0))[:3]) == pytest.approx(grey)
+               for b in _fills(drawing))  # fmt: skip
 
 
 def test_slider_thumb_at_its_value(tmp_path):

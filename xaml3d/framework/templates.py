@@ -36,7 +36,8 @@ Button, ToggleButton and RepeatButton without a template of their own (nor their
 take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox and RadioButton
 (their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
 PasswordBox (a TextBox's or PasswordBox's ``PART_ContentHost`` holds its text view,
-text_host.py, in the theme's template or a user's), ListBox and ListBoxItem; the other controls
+text_host.py, in the theme's template or a user's), ListBox and ListBoxItem, and ComboBox (its
+SelectionBoxItem filled at load with the selected item's content); the other controls
 without a user template are left to the reader's theme drawing.
 """
 
@@ -75,18 +76,23 @@ THEMED = {"Button", "ToggleButton", "RepeatButton"}
 THEMED |= {"CheckBox", "RadioButton"}
 THEMED |= {"Label", "TextBox", "PasswordBox"}
 # themed controls a ToolBar draws in the theme's template (its TextBox Style, ToolBar.
-# TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
-_OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
+# TextBoxStyleKey, is a Border around PART_ContentHost as the theme's; its ComboBox shows
+# the closed ComboBox's face)
+_OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox", "ComboBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
+THEMED |= {"ComboBox"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
+# items controls whose template's presenter shows the selected item (SelectionBoxItem)
+SELECTION_BOXES = {"ComboBox"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
 # controls whose template's PART_ContentHost shows their text (text_host.py)
 TEXT_HOSTS = set(text_host.HOSTS)
 SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS | TEXT_HOSTS
+SUPPORTED |= SELECTION_BOXES
 # controls whose templates place parts xaml3d does not generate (items, text hosts, tracks)
 UNSUPPORTED = {
-    "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
+    "ListView", "TabControl", "Menu", "MenuItem",
     "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid",
     "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
@@ -133,6 +139,7 @@ class _Instantiation:
         self.count = 0  # the templates instantiated
         self.conditions = data_triggers.Conditions(root, services)
         self.cyclic: list = []  # the controls whose template holds itself (TPL004)
+        self.selection: dict[int, object] = {}  # a ComboBox's selection box content, by id
 
     def run(self) -> None:
         for el in list(self.root.iter(*self.tags)):
@@ -411,6 +418,7 @@ class _Instantiation:
         if value is None:
             if c.type not in THEMED or (c.type not in _OWN_ON_TOOL_BAR and _on_tool_bar(el, sv)):
                 return None
+            self.theme_triggers(c)
             value = c.theme_setters().get("Template")
             if value is None or value[0] != "element" or not _is_template(value[1]):
                 return None  # OverridesDefaultStyle without a template of its own
@@ -423,6 +431,64 @@ class _Instantiation:
         if not _is_template(entry):
             return None
         return entry, ("Style" if el.get("Style") is not None else None)
+
+    def theme_triggers(self, c: Control) -> None:
+        """The theme Style's triggers that fire at load (a ComboBox's IsEditable choosing the
+        editable template and Padding) set theme values above the theme's Setters, below the
+        control's own Style (WPF's precedence for a default Style's triggers)."""
+        found = c.theme_setters()
+        if not found:
+            return  # OverridesDefaultStyle: no theme Style
+        for style in self.sv.theme_styles(c.type):
+            for trigger in triggers(style, "Style"):
+                if c.fires(trigger):
+                    for s in setters(trigger):
+                        prop, value = s.get("Property"), setter_value(s)
+                        if prop and value is not None and not s.get("TargetName"):
+                            found[property_name(prop)] = value
+
+    def selection_box(self, c: Control, themed: bool):
+        """A ComboBox's items generated (its containers, as its drop-down would hold them) and
+        what its selection box shows: the content of the selected container (SelectedIndex,
+        an item's IsSelected, SelectedItem from a resource), shown through the ItemTemplate
+        or DisplayMemberPath as the container shows it; an editable ComboBox without Text
+        takes the selected item's. WPF sets SelectionBoxItem in code; here at load. Returns
+        the containers."""
+        picked = self.selected_item(c)
+        boxes = self.boxes(c)
+        if picked is not None and picked < len(boxes) and not any(
+                (b.get("IsSelected") or "").strip().lower() == "true" for b in boxes):  # fmt: skip
+            boxes[picked].set("IsSelected", "True")
+        if themed and c.value("ItemsPanel") is not None:
+            msg = (f"the ItemsPanel of this {c.type} is not used: the theme's look shows its "
+                   "selected item alone (its list is a drop-down window)")  # fmt: skip
+            where = "ItemsPanel" if c.el.get("ItemsPanel") is not None else None
+            self.sv.diag("TPL008", msg, c.el, attr=where)
+        chosen = next((b for b in boxes
+                       if (b.get("IsSelected") or "").strip().lower() == "true"), None)  # fmt: skip
+        shown = None
+        if chosen is not None:
+            shown = _content(Control(chosen, self.sv.wpf_type(chosen) or "", self.sv), "Content")
+        editable = (c.value_of_own("IsEditable") or "").strip().lower() == "true"
+        if editable and c.local("Text") is None and shown is not None and shown[0] == "text":
+            put(self.sv, c.el, "Text", ("text", _literal(shown[1])))
+        self.selection[id(c.el)] = shown
+        return boxes
+
+    def selected_item(self, c: Control) -> int | None:
+        """The index of the item ``SelectedItem="{StaticResource k}"`` names (the resource
+        itself, or a string equal to it: WPF compares items with Equals), else None."""
+        value = c.value("SelectedItem")
+        key = markup.resource_key(value[1]) if value is not None and value[0] == "text" else None
+        entry = self.sv.find(key, c.el) if key is not None else None
+        found = items.items_of(c, self.sv) if entry is not None else None
+        if found is None:
+            return None
+        text = None if elements(entry) or self.sv.wpf_type(entry) else (entry.text or "")
+        for i, (kind, shown, source) in enumerate(found[0]):
+            if source is entry or (kind == "text" and text is not None and shown == text):
+                return i
+        return None
 
     # ----------------------------------------------------------------- instantiation
     def apply(self, c: Control, template, themed: bool = False):
@@ -443,14 +509,15 @@ class _Instantiation:
                     names.setdefault(name, part)
                     del part.attrib[attr]
         self.template_triggers_on_control(c, template, names)
+        boxes = self.selection_box(c, themed) if c.type in SELECTION_BOXES else None
         if instance is not None:
             for part in parts:
                 self.bind(c, part)
             for part in parts:
                 if sv.wpf_type(part) == "ContentPresenter":
                     self.present(c, part)
-            if c.type in ITEMS_CONTROLS:
-                self.host_items(c, parts)
+            if c.type in ITEMS_CONTROLS | SELECTION_BOXES:
+                self.host_items(c, parts, boxes)
             if c.type in TEXT_HOSTS:
                 text_host.fill(sv, c, names.get(text_host.PART), _literal)
             self.template_triggers_on_parts(c, template, names)
@@ -483,13 +550,13 @@ class _Instantiation:
             el.append(instance)
         sv.templated(el, template)
 
-    def host_items(self, c: Control, parts: list) -> None:
+    def host_items(self, c: Control, parts: list, boxes=None) -> None:
         """The items in the template's ItemsPresenter (the ItemsPanel's panel inside it) or
-        in its panel marked IsItemsHost."""
+        in its panel marked IsItemsHost (``boxes``: the containers already generated)."""
         sv = self.sv
         hosts = [p for p in parts if sv.wpf_type(p) == "ItemsPresenter"
                  or (p.get("IsItemsHost") or "").strip().lower() == "true"]  # fmt: skip
-        boxes = self.boxes(c)
+        boxes = self.boxes(c) if boxes is None else boxes
         if not hosts:
             return
         host = hosts[0]
@@ -511,9 +578,8 @@ class _Instantiation:
             if ref is None:
                 continue
             prop, plain = ref
-            if prop in ("Content", "ContentTemplate") and self.sv.wpf_type(part) == (
-                "ContentPresenter"
-            ):
+            shown = ("Content", "ContentTemplate")
+            if (prop in shown or attr in shown) and self.sv.wpf_type(part) == "ContentPresenter":
                 continue  # placed by present()
             found = binding_data.UNEVALUATED
             if not plain:  # the framework's own converters, a StringFormat
@@ -576,7 +642,10 @@ class _Instantiation:
             presenter.attrib.pop(attr, None)
         if own is not None:
             ref = markup.templated_parent_property(own)
-            if ref is not None:
+            if ref is not None and ref[0] == "SelectionBoxItem" and id(c.el) in self.selection:
+                source = ref[0]
+                content = self.selection[id(c.el)]
+            elif ref is not None:
                 source = ref[0]
                 content = _content(c, source)
             elif markup.split(own) is None:

@@ -4,7 +4,7 @@ One measurement for the controls inside a visual (VisualBrush, Viewport2DVisual3
 beside the viewports (``render --window``): a TextBlock's text recorded for layout to measure
 (``text_block``: layout breaks its lines at the width offered); text by the package font's
 advance widths and Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of
-a closed ComboBox (and of a ToolBar's buttons, check boxes and radio buttons, which its template
+a ToolBar's buttons, check boxes and radio buttons (which its template
 restyles); a Slider's thumb; a ScrollBar's
 and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
 the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module
@@ -20,8 +20,6 @@ from xaml3d.text_metrics import line_height, text_width
 from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
 from xaml3d.xaml.controls_reader import (
-    _COMBO_BUTTON,
-    _combo_items,
     scroll_bar_upright,
 )
 from xaml3d.xaml.panels_reader import parse_thickness
@@ -55,12 +53,6 @@ def content_size(reader, n, v, el, font: float):
     if local == "Slider":
         # Aero2's thumb is 11 x 18 (18 x 11 upright); the track stretches
         return (18.0, 0.0) if vertical(v) else (0.0, 18.0)
-    if local == "ComboBox":
-        items = [_text_of(k) for k in _combo_items(el)] or [""]
-        style = _font_style(el, reader.r)
-        widest = max(text_width(t, font, *style) for t in items)
-        # Aero2: Padding 6,3,5,3, a 1 px border, the 17 px drop-down button column
-        return (widest + 6 + 5 + 2 + _COMBO_BUTTON, line_height(font, style[2]) + 6 + 2)
     if local == "TextBlock":  # measured by layout, its lines broken at the width offered
         n.text = text_content(v, el, font)
         return (0.0, 0.0)

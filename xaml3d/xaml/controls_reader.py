@@ -1,7 +1,7 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
 Covers ProgressBar,
-a closed ComboBox, a Slider (horizontal or upright) and a ScrollBar in their resting state, with
+a Slider (horizontal or upright) and a ScrollBar in their resting state, with
 the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
 text through ``visual_text``.
@@ -17,19 +17,13 @@ from xaml3d.scene.drawing import (
     GeometryDrawing,
     Pen,
     RectangleGeometry,
-    TextDrawing,
 )
-from xaml3d.text_metrics import baseline, line_height
 from xaml3d.xaml import values as V
-from xaml3d.xaml.context import qname
 from xaml3d.xaml.geometry_reader import path_from_string
 from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.visual_style import box_drawing as _box_drawing
 from xaml3d.xaml.visual_style import element_brush as _brush
-from xaml3d.xaml.visual_style import font_style as _font_style
-from xaml3d.xaml.visual_style import foreground_brush as _foreground
 from xaml3d.xaml.visual_style import rgb as _rgb
-from xaml3d.xaml.visual_text import text_of as _text_of
 
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 
@@ -51,49 +45,6 @@ def _progress_bar(r, v, w: float, h: float, out: list) -> None:
         rect = (thick[0], thick[1], inner_w * share, inner_h)
         fill = _brush(r, v, "Foreground", _rgb("06B025"))
         out.append(GeometryDrawing(RectangleGeometry(rect), brush=fill))
-
-
-_COMBO_BUTTON = 17.0  # SystemParameters.VerticalScrollBarWidth: the drop-down button's column
-# Aero2's drop-down arrow (ComboBoxToggleButton's Path), 5.33 x 4.45 px
-_COMBO_ARROW = "M0,0 L2.667,2.66665 5.3334,0 5.3334,-1.78168 2.6667,0.88501 0,-1.78168 0,0Z"
-
-
-def _combo_items(el) -> list:
-    return [k for k in el if isinstance(k.tag, str) and qname(k.tag)[1] == "ComboBoxItem"]
-
-
-def _combo_box(r, v, el, font: float, w: float, h: float, out: list) -> None:
-    """Aero2's closed ComboBox: the #FFF0F0F0-#FFE5E5E5 face in a #FFACACAC border, the
-    selected item's text (SelectedIndex, an item's IsSelected, or Text) at Padding 6,3,5,3,
-    and the #FF606060 arrow centred in the 17 px button column."""
-    from xaml3d.scene.types import GradientStop, LinearGradientBrush
-
-    face = LinearGradientBrush(
-        stops=(GradientStop((0xF0 / 255,) * 3 + (1.0,), 0.0),
-               GradientStop((0xE5 / 255,) * 3 + (1.0,), 1.0)),
-        start_point=(0.0, 0.0), end_point=(0.0, 1.0),
-    )  # fmt: skip
-    background = _brush(r, v, "Background", face)
-    border = _brush(r, v, "BorderBrush", _rgb("ACACAC"))
-    out.extend(_box_drawing(background, border, (1.0,) * 4, 0.0, w, h))
-    items = _combo_items(el)
-    index = v.get("SelectedIndex", V.parse_int, -1)
-    chosen = items[index] if 0 <= index < len(items) else next(
-        (k for k in items if k.get("IsSelected") == "True"), None)  # fmt: skip
-    text = _text_of(chosen) if chosen is not None else (el.get("Text") or "")
-    if text:
-        weight, italic, family = _font_style(el, r)
-        box = (7.0, 4.0, max(0.0, w - 13.0 - _COMBO_BUTTON), max(0.0, h - 8.0))
-        line = TextDrawing(
-            text=text, origin=(7.0, (h - line_height(font, family)) / 2 + baseline(font, family)),
-            font_size=font, weight=weight, italic=italic, family=family, brush=_foreground(r, el),
-        )  # fmt: skip
-        out.append(DrawingGroup(children=(line,), clip=RectangleGeometry(box)))
-    arrow = path_from_string(_COMBO_ARROW)
-    cx, cy = w - 1.0 - _COMBO_BUTTON / 2, h / 2
-    m = np.array([[1.0, 0.0, cx - 2.6667], [0.0, 1.0, cy + 1.78168 / 2 - 0.44], [0, 0, 1.0]])
-    out.append(DrawingGroup(children=(GeometryDrawing(arrow, brush=_rgb("606060")),),
-                            transform=m))  # fmt: skip
 
 
 def _slider(r, v, w: float, h: float, out: list) -> None:
