@@ -37,7 +37,15 @@ without a user template are left to the reader's theme drawing.
 from __future__ import annotations
 
 from xaml3d.access_text import access_text
-from xaml3d.framework import binding_tree, data_triggers, items, markup, string_formats, text_host
+from xaml3d.framework import (
+    binding_tree,
+    data_triggers,
+    gap_mask,
+    items,
+    markup,
+    string_formats,
+    text_host,
+)
 from xaml3d.framework.styles import (
     X_NS,
     Control,
@@ -64,6 +72,7 @@ THEMED |= {"Label", "TextBox", "PasswordBox"}
 # TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
 _OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
+THEMED |= {"GroupBox"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
@@ -378,6 +387,8 @@ class _Instantiation:
             # the theme's parts are the control's own, in the document's text
             for part in instance.iter():
                 sv.made(part, c.el)
+        if instance is not None:
+            gap_mask.mark(sv, instance)
         names: dict[str, object] = {}
         parts = _parts(instance) if instance is not None else []
         for part in parts:

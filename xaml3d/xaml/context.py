@@ -105,6 +105,8 @@ class ReadContext:
         self.templated: dict[int, etree._Element] = {}
         # the ControlTemplates so instantiated: id -> element
         self.instantiated: dict[int, etree._Element] = {}
+        # parts masked by BorderGapMaskConverter: id -> (part, its header part, the offset)
+        self.gap_masks: dict[int, tuple] = {}
 
     # ----------------------------------------------------------------- documents
     def add_document(self, doc: ParsedDocument, *, trusted: bool = False) -> None:
