@@ -29,6 +29,7 @@ from xaml3d.scene.element_tree import (
     WRAP,
     Node,
 )
+from xaml3d.xaml.gap_clip import gap_clip, nodes_by_element
 from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
 if TYPE_CHECKING:
@@ -197,12 +198,7 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
     from xaml3d.xaml.picture_reader import animates, element_layer
 
     out, notes = {}, {}
-    nodes_of = {}
-    if r.ctx.gap_masks:  # the laid-out node of each element, for a gap mask's header
-        for n in root.walk():
-            el = elements.get(id(n), (None,))[0]
-            if el is not None:
-                nodes_of.setdefault(id(el), n)
+    nodes_of = nodes_by_element(root, elements) if r.ctx.gap_masks else {}
     for n in root.walk():
         el = elements.get(id(n), (None,))[0]
         if el is None:
@@ -216,7 +212,7 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
             layer = replace(layer, opacity=1.0)
         if n.layout_transform is not None:
             layer = replace(layer or Layer2D(), layout_transform=r.ctx.stages.placed_by_layout(n))
-        gap = _gap_clip(r, n, el, nodes_of) if r.ctx.gap_masks else None
+        gap = gap_clip(r, n, el, nodes_of) if r.ctx.gap_masks else None
         if gap is not None:
             layer = layer or Layer2D()
             if layer.clip is not None:
@@ -237,22 +233,6 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
         if layer.changes_picture or note is not None:
             out[id(n)] = _animated(r, layer, note)
     return out, notes
-
-
-def _gap_clip(r, n: Node, el, nodes_of: dict):
-    """The cut of an element masked by BorderGapMaskConverter (``framework.gap_mask``): all
-    of its box but the rectangle from the offset, its header's laid-out width wide, over its
-    top half, as the converter's mask; None when ``el`` has no such mask."""
-    hit = r.ctx.gap_masks.get(id(el))
-    if hit is None or hit[0] is not el:
-        return None
-    header = nodes_of.get(id(hit[1]))
-    width = float(header.ink[0]) if header is not None and header.arranged else 0.0
-    w, h = float(n.ink[0]), float(n.ink[1])
-    if width <= 0.0:
-        return None
-    gap = RectangleGeometry((hit[2], 0.0, width, h / 2))
-    return CombinedGeometry("Exclude", RectangleGeometry((0.0, 0.0, w, h)), gap)
 
 
 def _animated(r, layer: Layer2D, note) -> Layer2D:
