@@ -9,8 +9,6 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   #FFACACAC border open at the bottom; the selected tab white, 2 px larger each side and above,
   drawn over its neighbours), then the selected tab's content in a white Border (#FFACACAC, 1 px)
   at Padding 2. SelectedIndex or IsSelected choose the tab; the first one otherwise.
-- GroupBox: the header at Padding 3,1,3,0 over a 1 px #FFD5DFE5 border (CornerRadius 3) that
-  starts half the header's height down and leaves a gap for the header; the content 6 px inside.
 - Menu: a #FFF0F0F0 Border (Menu.Static.Background) at Padding, its text #FF212121 at 12 px
   (the Style's Foreground and MenuFontSize), its items side by side (the
   ItemsPanel, a WrapPanel, on one row); each top-level MenuItem a transparent 1 px Border
@@ -50,7 +48,6 @@ import numpy as np
 from xaml3d.access_text import access_text
 from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
-    CombinedGeometry,
     DrawingGroup,
     EllipseGeometry,
     GeometryDrawing,
@@ -74,7 +71,7 @@ from xaml3d.xaml.visual_text import warn_uncovered
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _OPTIONS = {"CheckBox", "RadioButton"}  # a ToolBar's: drawn as its parts
-_HEADERED = {"TabControl", "GroupBox", "Expander", "TabItem"}
+_HEADERED = {"TabControl", "Expander", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
@@ -102,7 +99,6 @@ _TOOL_SEPARATOR = _rgb("B6BDC5")
 _TOOL_CHECKED = _rgb("0080FF", 0x40 / 255)
 _TOOL_CHECKED_BORDER = _rgb("DADADA", 0x80 / 255)
 _TOOL_BUTTONS = {"Button", "ToggleButton", "RepeatButton", "CheckBox", "RadioButton"}
-_GROUP_BORDER = _rgb("D5DFE5")
 _EXPANDER_INK = _rgb("333333")
 _CIRCLE = 19.0  # the Expander's toggle circle and its column
 # Aero2's Expander arrow (ExpanderDownHeaderStyle's Path), collapsed and expanded
@@ -328,50 +324,6 @@ def _tab_control(reader, n, el, v, font) -> None:
                  border_brush=_brush(reader.r, v, "BorderBrush", _TAB_BORDER),
                  border=v.get("BorderThickness", parse_thickness, (1.0,) * 4))  # fmt: skip
     n.children = [strip, panel]
-
-
-def _group_box(reader, n, el, v, font) -> None:
-    n.kind = L.GRID
-    n.columns = (L.Definition("pixel", 6.0), L.Definition("auto"), L.Definition("star"),
-                 L.Definition("pixel", 6.0))  # fmt: skip
-    n.rows = (L.Definition("auto"), L.Definition("auto"), L.Definition("star"),
-              L.Definition("pixel", 6.0))  # fmt: skip
-    header = part(reader, L.BORDER, font, _header(reader, el, font), padding=(3.0, 1.0, 3.0, 0.0),
-                  row=0, row_span=2, col=1)  # fmt: skip
-    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-    body = _presenter(reader, font, _content(reader, el, font), pad, row=2, col=1, col_span=2)
-    n.children = [header, body]
-
-
-def group_box_chrome(r, el, n) -> list:
-    """The GroupBox's Background and its #FFD5DFE5 border with the gap under the header, from
-    the laid-out header (BorderGapMaskConverter: the line is hidden from 7 px for the header's
-    width, over the top half of the border's box)."""
-    v = ElementValues(r, el)
-    w, h = n.ink
-    header = n.children[0]
-    top = header.ink[1] / 2 if header.arranged else 0.0
-    box_h = max(0.0, h - top)
-    out = []
-    background = _brush(r, v, "Background", None)
-    if background is not None:
-        rect = RectangleGeometry((0.0, top, w, box_h), 4.0, 4.0)
-        out.append(GeometryDrawing(rect, brush=background))
-    brush = _brush(r, v, "BorderBrush", _GROUP_BORDER)
-    t = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
-    if brush is None or not any(t):
-        return out
-    # the coloured border sits inside the template's outer 1 px white border
-    x0, y0, bw, bh = t[0], top + t[1], max(0.0, w - t[0] - t[2]), max(0.0, box_h - t[1] - t[3])
-    inner = (x0 + t[0], y0 + t[1], max(0.0, bw - t[0] - t[2]), max(0.0, bh - t[1] - t[3]))
-    band = CombinedGeometry("Exclude", RectangleGeometry((x0, y0, bw, bh), 3.0, 3.0),
-                            RectangleGeometry(inner, 2.0, 2.0))  # fmt: skip
-    gap_w = header.ink[0] if header.arranged else 0.0
-    if gap_w > 0:
-        gap = RectangleGeometry((7.0, top, gap_w, box_h / 2))
-        band = CombinedGeometry("Exclude", band, gap)
-    out.append(GeometryDrawing(band, brush=brush))
-    return out
 
 
 def _expander(reader, n, el, v, font) -> None:
@@ -627,7 +579,6 @@ def raise_selected_tabs(root: L.Node) -> None:
 # item: its sub-items are in a closed Popup)
 _TEMPLATES = {
     "TabControl": _tab_control,
-    "GroupBox": _group_box,
     "Expander": _expander,
     "Menu": _menu,
     "ToolBar": _tool_bar,

@@ -217,8 +217,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         return  # drawn by its template's instance, its child
     if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
         out.extend(_part(n, w, h))
-        if local == "GroupBox":
-            out.extend(templates.group_box_chrome(r, el, n))
         return
     if local == "Separator":
         fill = element_brush(r, v, "Background", rgb("A0A0A0"))  # SystemColors.ControlDark
@@ -299,11 +297,6 @@ def attach_control_drawings(r, root, elements: dict) -> None:
     space is kept: LAY003 says it is estimated)."""
     templates.after_layout(root)
     for n in root.walk():
-        if n.type == "GroupBox" and n.kind == L.GRID and n.arranged:
-            el = elements.get(id(n), (None,))[0]
-            if el is not None:  # its border with the header's gap, over its Background
-                n.drawing = DrawingGroup(children=tuple(templates.group_box_chrome(r, el, n)))
-            continue
         if n.kind == L.SCROLL and n.arranged and n.scrolled is not None:
             bars = scroll_viewer_bars(r, n.scrolled, *n.ink)
             n.drawing = DrawingGroup(children=tuple(bars)) if bars else None
