@@ -162,3 +162,45 @@ def test_the_frames_line_is_cut_under_the_header_alone(tmp_path):
     # from 7 px, the header's 32 px: no line beside the text (cols 9..35)
     assert (line[7:9] == 255).all() and (line[36:39] == 255).all()
     assert tuple(line[40]) == frame
+
+
+USER_TEMPLATE = """<Window {ns} Width="216" Height="140" Background="White">
+  <Window.Resources><BorderGapMaskConverter x:Key="gap" /></Window.Resources>
+  <GroupBox Header="Hi">
+    <GroupBox.Template>
+      <ControlTemplate TargetType="GroupBox">
+        <Grid>
+          <Grid.RowDefinitions>
+            <RowDefinition Height="Auto" /><RowDefinition />
+          </Grid.RowDefinitions>
+          <Border Grid.RowSpan="2" BorderBrush="Red" BorderThickness="2">
+            <Border.OpacityMask>
+              <MultiBinding Converter="{{StaticResource gap}}" ConverterParameter="20">
+                <Binding ElementName="H" Path="ActualWidth" />
+                <Binding Path="ActualWidth" RelativeSource="{{RelativeSource Self}}" />
+                <Binding Path="ActualHeight" RelativeSource="{{RelativeSource Self}}" />
+              </MultiBinding>
+            </Border.OpacityMask>
+          </Border>
+          <Border x:Name="H" Width="30" Height="10" HorizontalAlignment="Left" />
+          <ContentPresenter Grid.Row="1" />
+        </Grid>
+      </ControlTemplate>
+    </GroupBox.Template>
+    <Viewport3D />
+  </GroupBox>
+</Window>"""
+
+
+def test_a_users_template_masked_by_border_gap_mask_converter(tmp_path):
+    p = tmp_path / "u.xaml"
+    p.write_text(USER_TEMPLATE.format(ns=NS), encoding="utf-8")
+    s = load(p)
+    assert not {d.code for d in s.diagnostics} & {"XAML009", "XAML011", "TPL002"}
+    px = _window_pixels(p)[:, :, :3]
+    red = (255, 0, 0)
+    top = px[0]  # the frame's 2 px top line, cut from 20 px for the 30 px header's width
+    assert tuple(top[10]) == red and tuple(top[19]) == red
+    assert (top[20:50] == 255).all()
+    assert tuple(top[50]) == red and tuple(top[150]) == red
+    assert tuple(px[60, 0]) == red  # the left line below the top half: not cut

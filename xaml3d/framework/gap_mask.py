@@ -11,9 +11,12 @@ part and the offset (``Services.gap_masked``); the layout step cuts the element'
 
 from __future__ import annotations
 
+import re
+
 from xaml3d.framework.styles import X_NS, elements, local_name
 
 CONVERTER = "BorderGapMaskConverter"
+_RESOURCE = re.compile(r"\{\s*(?:StaticResource|DynamicResource)\s+(?:ResourceKey=)?([^\s}]+)\s*\}")
 
 
 def mark(sv, instance) -> None:
@@ -42,7 +45,7 @@ def _gap_binding(sv, prop) -> tuple[str, float] | None:
     if len(kids) != 1 or sv.wpf_type(kids[0]) != "MultiBinding":
         return None
     multi = kids[0]
-    if CONVERTER not in (multi.get("Converter") or ""):
+    if not _is_gap_converter(sv, multi):
         return None
     bindings = [b for b in elements(multi) if sv.wpf_type(b) == "Binding"]
     if not bindings or not bindings[0].get("ElementName"):
@@ -52,6 +55,18 @@ def _gap_binding(sv, prop) -> tuple[str, float] | None:
     except ValueError:
         return None
     return bindings[0].get("ElementName").strip(), offset
+
+
+def _is_gap_converter(sv, multi) -> bool:
+    """Whether the MultiBinding's Converter is a BorderGapMaskConverter resource (the theme's
+    is keyed by its type's name, found in the theme dictionary rather than the document)."""
+    m = _RESOURCE.fullmatch((multi.get("Converter") or "").strip())
+    if m is None:
+        return False
+    entry = sv.find(m.group(1), multi)
+    if entry is not None:
+        return sv.wpf_type(entry) == CONVERTER
+    return m.group(1) == CONVERTER
 
 
 def _named(instance, name: str):
