@@ -73,6 +73,7 @@ THEMED |= {"Label", "TextBox", "PasswordBox"}
 _OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
 THEMED |= {"GroupBox"}
+THEMED |= {"Expander"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
