@@ -25,8 +25,6 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   takes ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 line across the bar with Margin 2.
 - ToolBarTray: #FFEEF5FD, its ToolBars side by side on one band.
 - DatePicker (closed) and Calendar (month view): ``date_templates``.
-- Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
-  the content below when IsExpanded.
 
 A text Header of a GroupBox, Expander, TabItem or MenuItem is AccessText, as their templates'
 ContentPresenter (RecognizesAccessKey) shows it: ``_Name`` shows Name (``text_content``); a
@@ -49,7 +47,6 @@ from xaml3d.access_text import access_text
 from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     DrawingGroup,
-    EllipseGeometry,
     GeometryDrawing,
     Pen,
     RectangleGeometry,
@@ -71,7 +68,7 @@ from xaml3d.xaml.visual_text import warn_uncovered
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _OPTIONS = {"CheckBox", "RadioButton"}  # a ToolBar's: drawn as its parts
-_HEADERED = {"TabControl", "Expander", "TabItem"}
+_HEADERED = {"TabControl", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
@@ -99,11 +96,6 @@ _TOOL_SEPARATOR = _rgb("B6BDC5")
 _TOOL_CHECKED = _rgb("0080FF", 0x40 / 255)
 _TOOL_CHECKED_BORDER = _rgb("DADADA", 0x80 / 255)
 _TOOL_BUTTONS = {"Button", "ToggleButton", "RepeatButton", "CheckBox", "RadioButton"}
-_EXPANDER_INK = _rgb("333333")
-_CIRCLE = 19.0  # the Expander's toggle circle and its column
-# Aero2's Expander arrow (ExpanderDownHeaderStyle's Path), collapsed and expanded
-_ARROW_DOWN = "M 1,1.5 L 4.5,5 L 8,1.5"
-_ARROW_UP = "M 1,4.5 L 4.5,1 L 8,4.5"
 
 
 def _elements(items) -> list:
@@ -326,27 +318,6 @@ def _tab_control(reader, n, el, v, font) -> None:
     n.children = [strip, panel]
 
 
-def _expander(reader, n, el, v, font) -> None:
-    _chrome(reader, n, v, None, None)
-    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
-    expanded = v.get("IsExpanded", V.parse_bool, False)
-    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-    h, vv = _align(v, "Stretch", "Stretch")
-    circle = part(reader, L.CONTROL, font, estimate=(_CIRCLE, _CIRCLE), h_align="Center",
-                  v_align="Center")  # fmt: skip
-    circle.drawing = _toggle_circle(expanded)
-    title = _presenter(reader, font, _header(reader, el, font), (4.0, 0.0, 0.0, 0.0), "Left",
-                       "Center", col=1)  # fmt: skip
-    grid = part(reader, L.GRID, font, [circle, title],
-                columns=(L.Definition("pixel", _CIRCLE), L.Definition("star")))  # fmt: skip
-    toggle = part(reader, L.BORDER, font, [grid], padding=pad, margin=(1.0,) * 4, dock="Top")
-    kids = [toggle]
-    if expanded:
-        kids.append(_presenter(reader, font, _content(reader, el, font), pad, h, vv,
-                               dock="Bottom"))  # fmt: skip
-    n.children = [part(reader, L.DOCK, font, kids)]
-
-
 def _menu(reader, n, el, v, font) -> None:
     from xaml3d.xaml.panels_reader import FONT_SIZE, parse_length
 
@@ -398,22 +369,6 @@ def _menu_item(reader, n, el, v, font) -> None:
         if k.type == TEXT_PART and k.drawing is not None:
             k.drawing = replace(k.drawing, brush=ink)
     n.children = [_presenter(reader, font, header, pad, "Left", "Center")]
-
-
-def _toggle_circle(expanded: bool) -> DrawingGroup:
-    """Aero2's Expander toggle: a 19 px white circle with a #FF333333 edge and the 2 px arrow
-    (an 8 x 5 chevron, pointing down when collapsed) centred in it."""
-    ring = GeometryDrawing(EllipseGeometry((9.5, 9.5), 9.0, 9.0), brush=_WHITE,
-                           pen=Pen(brush=_EXPANDER_INK, thickness=1.0))  # fmt: skip
-    arrow = path_from_string(_ARROW_UP if expanded else _ARROW_DOWN)
-    # the Path's box is its geometry's extent (1..8 x 1..5 or 1..4.5) plus the pen: centre it
-    top = 1.0 if expanded else 1.5
-    bottom = 4.5 if expanded else 5.0
-    dx = 9.5 - 4.5
-    dy = 9.5 - (top + bottom) / 2
-    m = np.array([[1.0, 0.0, dx], [0.0, 1.0, dy], [0.0, 0.0, 1.0]])
-    chevron = GeometryDrawing(arrow, pen=Pen(brush=_EXPANDER_INK, thickness=2.0))
-    return DrawingGroup(children=(ring, DrawingGroup(children=(chevron,), transform=m)))
 
 
 def _tool_bar(reader, n, el, v, font) -> None:
@@ -579,7 +534,6 @@ def raise_selected_tabs(root: L.Node) -> None:
 # item: its sub-items are in a closed Popup)
 _TEMPLATES = {
     "TabControl": _tab_control,
-    "Expander": _expander,
     "Menu": _menu,
     "ToolBar": _tool_bar,
     "ToolBarTray": _tool_bar_tray,
