@@ -31,7 +31,8 @@ take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox a
 (their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
 PasswordBox (a TextBox's or PasswordBox's ``PART_ContentHost`` holds its text view,
 text_host.py, in the theme's template or a user's), ListBox and ListBoxItem; the other controls
-without a user template are left to the reader's theme drawing.
+without a user template are left to the reader's theme drawing. GroupBox and Expander take
+the theme's too (a GroupBox's frame masked by BorderGapMaskConverter: gap_mask.py).
 """
 
 from __future__ import annotations
