@@ -19,7 +19,6 @@ THEME: dict[str, dict[str, str]] = {
         "HorizontalContentAlignment": "Left",
         "VerticalContentAlignment": "Top",
     },
-    "GroupBox": {"BorderBrush": "#FFD5DFE5", "BorderThickness": "1"},
 }
 
 # Control's own defaults (the dependency properties' default values); Background, BorderBrush

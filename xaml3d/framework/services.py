@@ -52,6 +52,10 @@ class Services(Protocol):
         """``el`` is a control drawn by the user's ``template`` (None: by the items the
         framework generated in the theme's template): its only child is the instance."""
 
+    def gap_masked(self, el: Any, header: Any, offset: float) -> None:
+        """``el`` (a template's part) is masked by BorderGapMaskConverter: hidden from
+        ``offset`` for ``header``'s laid-out width over its top half (``gap_mask``)."""
+
     def pin(self, root: Any) -> None:
         """Called once before the first change to the tree under ``root``."""
 

@@ -37,8 +37,9 @@ take the theme Style's (``THEMED``), instantiated the same way, as do CheckBox a
 (their triggers on HasContent and on IsChecked's ``{x:Null}`` included), Label, TextBox and
 PasswordBox (a TextBox's or PasswordBox's ``PART_ContentHost`` holds its text view,
 text_host.py, in the theme's template or a user's), ListBox and ListBoxItem, and ComboBox (its
-SelectionBoxItem filled at load with the selected item's content); the other controls
-without a user template are left to the reader's theme drawing.
+SelectionBoxItem filled at load with the selected item's content); GroupBox and Expander take
+the theme's too (a GroupBox's frame masked by BorderGapMaskConverter: gap_mask.py); the other
+controls without a user template are left to the reader's theme drawing.
 """
 
 from __future__ import annotations
@@ -48,6 +49,7 @@ from xaml3d.framework import (
     binding_data,
     binding_tree,
     data_triggers,
+    gap_mask,
     items,
     markup,
     string_formats,
@@ -81,6 +83,8 @@ THEMED |= {"Label", "TextBox", "PasswordBox"}
 _OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox", "ComboBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
 THEMED |= {"ComboBox"}
+THEMED |= {"GroupBox"}
+THEMED |= {"Expander"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
 PLAIN_CONTROLS = {"Control", "Separator"}
 # items controls whose template's presenter shows the selected item (SelectionBoxItem)
@@ -500,6 +504,8 @@ class _Instantiation:
             # the theme's parts are the control's own, in the document's text
             for part in instance.iter():
                 sv.made(part, c.el)
+        if instance is not None:
+            gap_mask.mark(sv, instance)
         names: dict[str, object] = {}
         parts = _parts(instance) if instance is not None else []
         for part in parts:

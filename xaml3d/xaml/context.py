@@ -105,6 +105,8 @@ class ReadContext:
         self.templated: dict[int, etree._Element] = {}
         # the ControlTemplates so instantiated: id -> element
         self.instantiated: dict[int, etree._Element] = {}
+        # parts masked by BorderGapMaskConverter: id -> (part, its header part, the offset)
+        self.gap_masks: dict[int, tuple] = {}
         # the elements no WPF type names (XAML017), id -> element: no findings follow from
         # their estimated size or their missing drawing
         self.refused_elements: dict[int, etree._Element] = {}

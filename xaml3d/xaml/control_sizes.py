@@ -21,10 +21,8 @@ from xaml3d.xaml.panels_reader import (
     turns,
 )
 
-# The controls that show only part of their content (the selected tab, an expanded Expander's)
-_SELECTING = {"TabControl", "TabItem", "Expander"}
-# The controls that frame their content: a viewport inside gets the template's inner rectangle
-_FRAMING = {"GroupBox"}
+# The controls that show only part of their content (the selected tab)
+_SELECTING = {"TabControl", "TabItem"}
 
 
 class MeasuringPanels(PanelsReader):
@@ -34,13 +32,12 @@ class MeasuringPanels(PanelsReader):
     built_controls = False  # True once a control was built (``layout_step`` asks)
 
     def kind_of(self, el):
-        """A TabControl, TabItem, Expander or GroupBox holding a viewport is laid out through
-        its template like any other (``templates``): only the selected tab's content, and an
-        Expander's only when IsExpanded, is laid out; the others' viewports are not shown. A
-        GroupBox's viewport is laid out inside its header row and frame."""
+        """A TabControl or TabItem holding a viewport is laid out through
+        its template like any other (``templates``): only the selected tab's content is laid
+        out; the others' viewports are not shown."""
         kind = super().kind_of(el)
         ns, local = qname(el.tag)
-        if (kind == L.CONTAINER and local in _SELECTING | _FRAMING and is_presentation(ns)
+        if (kind == L.CONTAINER and local in _SELECTING and is_presentation(ns)
                 and not self.r.ctx.is_templated(el)):  # fmt: skip
             v = ElementValues(self.r, el, self.style_setters(el, local))
             if not turns(layout_transform_of(self.r, v)):  # a turned one is not expanded

@@ -87,6 +87,11 @@ class ReaderServices:
             self.ctx.keep(template)
             self.ctx.instantiated[id(template)] = template
 
+    def gap_masked(self, el, header, offset) -> None:
+        self.ctx.keep(el)
+        self.ctx.keep(header)
+        self.ctx.gap_masks[id(el)] = (el, header, float(offset))
+
     def pin(self, root) -> None:
         self.ctx.pin_positions(root)
 

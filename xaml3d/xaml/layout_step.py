@@ -29,6 +29,7 @@ from xaml3d.scene.element_tree import (
     WRAP,
     Node,
 )
+from xaml3d.xaml.gap_clip import gap_clip, nodes_by_element
 from xaml3d.xaml.panels_reader import ElementValues, parse_length
 
 if TYPE_CHECKING:
@@ -146,12 +147,17 @@ def lay_out(r, root_el, viewport_elements: list, window_size=None):
     layers, notes = _layers(r, root, elements) if result is not None else ({}, {})
     out: dict[int, ViewportLayout] = {}
     if result is not None:
+        hidden = _hidden_by_template(r, viewport_elements)
         for note in r.ctx.stages.viewport_notes(result.viewports):
             el = viewport_elements[note.node.viewport]
+            if note.code == "LAY002" and id(el) in hidden:
+                continue  # LAY008 says why: its Expander is collapsed
             r.ctx.add(Diagnostic(note.code, LAYOUT_CODES[note.code][0], note.message), el)
+    else:
+        hidden = {}
     for i, el in enumerate(viewport_elements):
         n = nodes.get(i)
-        if n is None:
+        if n is None or id(el) in hidden:
             out[i] = unreached(r, el)
             if reader.built_controls:
                 _not_shown(r, el)
@@ -197,6 +203,7 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
     from xaml3d.xaml.picture_reader import animates, element_layer
 
     out, notes = {}, {}
+    nodes_of = nodes_by_element(root, elements) if r.ctx.gap_masks else {}
     for n in root.walk():
         el = elements.get(id(n), (None,))[0]
         if el is None:
@@ -210,6 +217,12 @@ def _layers(r, root: Node, elements: dict) -> tuple[dict, dict]:
             layer = replace(layer, opacity=1.0)
         if n.layout_transform is not None:
             layer = replace(layer or Layer2D(), layout_transform=r.ctx.stages.placed_by_layout(n))
+        gap = gap_clip(r, n, el, nodes_of) if r.ctx.gap_masks else None
+        if gap is not None:
+            layer = layer or Layer2D()
+            if layer.clip is not None:
+                gap = CombinedGeometry("Intersect", layer.clip, gap)
+            layer = replace(layer, clip=gap)
         if n.clip_box is not None and n.kind != VIEWPORT:
             # the layout clip cuts what the element and its children draw
             layer = layer or Layer2D()
@@ -237,6 +250,20 @@ def _animated(r, layer: Layer2D, note) -> Layer2D:
         if opacity:
             r.tag(layer, el, {"Opacity": "opacity"})
     return layer
+
+
+def _hidden_by_template(r, viewport_elements: list) -> dict:
+    """The viewports a theme template's collapsed part hides (the ExpandSite of an Expander
+    that is not IsExpanded): reached by layout, but not shown, as a viewport in an Expander's
+    content always was (LAY008, its own size for render), by id."""
+    inside = [
+        el for el in viewport_elements if next(el.iterancestors("{*}Expander"), None) is not None
+    ]
+    if not inside:
+        return {}
+    from xaml3d.xaml.templates import not_shown
+
+    return {id(el): el for el in inside if not_shown(r, el) is not None}
 
 
 def _not_shown(r, el) -> None:

@@ -9,8 +9,6 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   #FFACACAC border open at the bottom; the selected tab white, 2 px larger each side and above,
   drawn over its neighbours), then the selected tab's content in a white Border (#FFACACAC, 1 px)
   at Padding 2. SelectedIndex or IsSelected choose the tab; the first one otherwise.
-- GroupBox: the header at Padding 3,1,3,0 over a 1 px #FFD5DFE5 border (CornerRadius 3) that
-  starts half the header's height down and leaves a gap for the header; the content 6 px inside.
 - Menu: a #FFF0F0F0 Border (Menu.Static.Background) at Padding, its text #FF212121 at 12 px
   (the Style's Foreground and MenuFontSize), its items side by side (the
   ItemsPanel, a WrapPanel, on one row); each top-level MenuItem a transparent 1 px Border
@@ -27,8 +25,6 @@ their chrome, beside the viewports (``render --window``) and inside visuals alik
   takes ToolBar.SeparatorStyleKey: a 1 px #FFB6BDC5 line across the bar with Margin 2.
 - ToolBarTray: #FFEEF5FD, its ToolBars side by side on one band.
 - DatePicker (closed) and Calendar (month view): ``date_templates``.
-- Expander: the 19 px white circle (#FF333333 edge) with the arrow, the header 4 px right of it;
-  the content below when IsExpanded.
 
 A text Header of a GroupBox, Expander, TabItem or MenuItem is AccessText, as their templates'
 ContentPresenter (RecognizesAccessKey) shows it: ``_Name`` shows Name (``text_content``); a
@@ -50,9 +46,7 @@ import numpy as np
 from xaml3d.access_text import access_text
 from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
-    CombinedGeometry,
     DrawingGroup,
-    EllipseGeometry,
     GeometryDrawing,
     Pen,
     RectangleGeometry,
@@ -74,7 +68,7 @@ from xaml3d.xaml.visual_text import warn_uncovered
 TEXT_PART, PART, TABS_PART, GRIP_PART = "#text", "#part", "#tabs", "#grip"
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
 _OPTIONS = {"CheckBox", "RadioButton"}  # a ToolBar's: drawn as its parts
-_HEADERED = {"TabControl", "GroupBox", "Expander", "TabItem"}
+_HEADERED = {"TabControl", "TabItem"}
 _MENUS = {"Menu", "MenuItem"}
 _BARS = {"ToolBar", "ToolBarTray"}
 _DATES = {"DatePicker", "Calendar"}  # expanded by date_templates (control_sizes calls it)
@@ -102,12 +96,6 @@ _TOOL_SEPARATOR = _rgb("B6BDC5")
 _TOOL_CHECKED = _rgb("0080FF", 0x40 / 255)
 _TOOL_CHECKED_BORDER = _rgb("DADADA", 0x80 / 255)
 _TOOL_BUTTONS = {"Button", "ToggleButton", "RepeatButton", "CheckBox", "RadioButton"}
-_GROUP_BORDER = _rgb("D5DFE5")
-_EXPANDER_INK = _rgb("333333")
-_CIRCLE = 19.0  # the Expander's toggle circle and its column
-# Aero2's Expander arrow (ExpanderDownHeaderStyle's Path), collapsed and expanded
-_ARROW_DOWN = "M 1,1.5 L 4.5,5 L 8,1.5"
-_ARROW_UP = "M 1,4.5 L 4.5,1 L 8,4.5"
 
 
 def _elements(items) -> list:
@@ -330,71 +318,6 @@ def _tab_control(reader, n, el, v, font) -> None:
     n.children = [strip, panel]
 
 
-def _group_box(reader, n, el, v, font) -> None:
-    n.kind = L.GRID
-    n.columns = (L.Definition("pixel", 6.0), L.Definition("auto"), L.Definition("star"),
-                 L.Definition("pixel", 6.0))  # fmt: skip
-    n.rows = (L.Definition("auto"), L.Definition("auto"), L.Definition("star"),
-              L.Definition("pixel", 6.0))  # fmt: skip
-    header = part(reader, L.BORDER, font, _header(reader, el, font), padding=(3.0, 1.0, 3.0, 0.0),
-                  row=0, row_span=2, col=1)  # fmt: skip
-    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-    body = _presenter(reader, font, _content(reader, el, font), pad, row=2, col=1, col_span=2)
-    n.children = [header, body]
-
-
-def group_box_chrome(r, el, n) -> list:
-    """The GroupBox's Background and its #FFD5DFE5 border with the gap under the header, from
-    the laid-out header (BorderGapMaskConverter: the line is hidden from 7 px for the header's
-    width, over the top half of the border's box)."""
-    v = ElementValues(r, el)
-    w, h = n.ink
-    header = n.children[0]
-    top = header.ink[1] / 2 if header.arranged else 0.0
-    box_h = max(0.0, h - top)
-    out = []
-    background = _brush(r, v, "Background", None)
-    if background is not None:
-        rect = RectangleGeometry((0.0, top, w, box_h), 4.0, 4.0)
-        out.append(GeometryDrawing(rect, brush=background))
-    brush = _brush(r, v, "BorderBrush", _GROUP_BORDER)
-    t = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
-    if brush is None or not any(t):
-        return out
-    # the coloured border sits inside the template's outer 1 px white border
-    x0, y0, bw, bh = t[0], top + t[1], max(0.0, w - t[0] - t[2]), max(0.0, box_h - t[1] - t[3])
-    inner = (x0 + t[0], y0 + t[1], max(0.0, bw - t[0] - t[2]), max(0.0, bh - t[1] - t[3]))
-    band = CombinedGeometry("Exclude", RectangleGeometry((x0, y0, bw, bh), 3.0, 3.0),
-                            RectangleGeometry(inner, 2.0, 2.0))  # fmt: skip
-    gap_w = header.ink[0] if header.arranged else 0.0
-    if gap_w > 0:
-        gap = RectangleGeometry((7.0, top, gap_w, box_h / 2))
-        band = CombinedGeometry("Exclude", band, gap)
-    out.append(GeometryDrawing(band, brush=brush))
-    return out
-
-
-def _expander(reader, n, el, v, font) -> None:
-    _chrome(reader, n, v, None, None)
-    n.border = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
-    expanded = v.get("IsExpanded", V.parse_bool, False)
-    pad = v.get("Padding", parse_thickness, (0.0,) * 4)
-    h, vv = _align(v, "Stretch", "Stretch")
-    circle = part(reader, L.CONTROL, font, estimate=(_CIRCLE, _CIRCLE), h_align="Center",
-                  v_align="Center")  # fmt: skip
-    circle.drawing = _toggle_circle(expanded)
-    title = _presenter(reader, font, _header(reader, el, font), (4.0, 0.0, 0.0, 0.0), "Left",
-                       "Center", col=1)  # fmt: skip
-    grid = part(reader, L.GRID, font, [circle, title],
-                columns=(L.Definition("pixel", _CIRCLE), L.Definition("star")))  # fmt: skip
-    toggle = part(reader, L.BORDER, font, [grid], padding=pad, margin=(1.0,) * 4, dock="Top")
-    kids = [toggle]
-    if expanded:
-        kids.append(_presenter(reader, font, _content(reader, el, font), pad, h, vv,
-                               dock="Bottom"))  # fmt: skip
-    n.children = [part(reader, L.DOCK, font, kids)]
-
-
 def _menu(reader, n, el, v, font) -> None:
     from xaml3d.xaml.panels_reader import FONT_SIZE, parse_length
 
@@ -446,22 +369,6 @@ def _menu_item(reader, n, el, v, font) -> None:
         if k.type == TEXT_PART and k.drawing is not None:
             k.drawing = replace(k.drawing, brush=ink)
     n.children = [_presenter(reader, font, header, pad, "Left", "Center")]
-
-
-def _toggle_circle(expanded: bool) -> DrawingGroup:
-    """Aero2's Expander toggle: a 19 px white circle with a #FF333333 edge and the 2 px arrow
-    (an 8 x 5 chevron, pointing down when collapsed) centred in it."""
-    ring = GeometryDrawing(EllipseGeometry((9.5, 9.5), 9.0, 9.0), brush=_WHITE,
-                           pen=Pen(brush=_EXPANDER_INK, thickness=1.0))  # fmt: skip
-    arrow = path_from_string(_ARROW_UP if expanded else _ARROW_DOWN)
-    # the Path's box is its geometry's extent (1..8 x 1..5 or 1..4.5) plus the pen: centre it
-    top = 1.0 if expanded else 1.5
-    bottom = 4.5 if expanded else 5.0
-    dx = 9.5 - 4.5
-    dy = 9.5 - (top + bottom) / 2
-    m = np.array([[1.0, 0.0, dx], [0.0, 1.0, dy], [0.0, 0.0, 1.0]])
-    chevron = GeometryDrawing(arrow, pen=Pen(brush=_EXPANDER_INK, thickness=2.0))
-    return DrawingGroup(children=(ring, DrawingGroup(children=(chevron,), transform=m)))
 
 
 def _tool_bar(reader, n, el, v, font) -> None:
@@ -627,8 +534,6 @@ def raise_selected_tabs(root: L.Node) -> None:
 # item: its sub-items are in a closed Popup)
 _TEMPLATES = {
     "TabControl": _tab_control,
-    "GroupBox": _group_box,
-    "Expander": _expander,
     "Menu": _menu,
     "ToolBar": _tool_bar,
     "ToolBarTray": _tool_bar_tray,

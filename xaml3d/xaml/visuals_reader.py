@@ -30,6 +30,7 @@ import numpy as np
 
 from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
+    CombinedGeometry,
     DrawingGroup,
     GeometryDrawing,
     ImageDrawing,
@@ -48,6 +49,7 @@ from xaml3d.xaml.controls_reader import (
     _slider,
     scroll_viewer_bars,
 )
+from xaml3d.xaml.gap_clip import gap_clip, nodes_by_element
 from xaml3d.xaml.image_element import ImageLayout
 from xaml3d.xaml.panels_reader import (
     FONT_SIZE,
@@ -95,12 +97,13 @@ def _visual_drawing(r, el):
     r.ctx.stages.layout(root, size if size is not None and min(size) > 0 else (math.inf, math.inf))
     templates.after_layout(root)
     out = []
-    _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0))
+    nodes_of = nodes_by_element(root, reader.elements) if r.ctx.gap_masks else {}
+    _compile(r, reader, root, out, (0.0, 0.0, 1.0, 1.0), nodes_of)
     w, h = root.rect[2], root.rect[3]
     return DrawingGroup(children=tuple(out)), (0.0, 0.0, float(w), float(h))
 
 
-def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
+def _compile(r, reader: MeasuringPanels, n, out: list, parent, nodes_of: dict) -> None:
     """``parent``: the parent's absolute origin and scale (x, y, sx, sy); the layout's
     rectangles are absolute, the drawing groups nest."""
     if not n.arranged or n.visibility != "Visible":
@@ -125,7 +128,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     scrolls = n.kind == L.SCROLL and n.scrolled is not None
     inner = [] if scrolls else own
     for k in n.children:
-        _compile(r, reader, k, inner, (x, y, sx, sy))
+        _compile(r, reader, k, inner, (x, y, sx, sy), nodes_of)
     if scrolls and inner:  # the content cut at the view (WPF's ScrollContentPresenter)
         vb, hb = n.scrolled[:2]
         view = RectangleGeometry((0.0, 0.0, max(0.0, ink_w - vb), max(0.0, ink_h - hb)))
@@ -140,6 +143,10 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
     # children as one layer, in its own coordinates, as the window's and a viewport's do (a
     # template's part has no element: no properties of its own)
     layer = element_layer(r, r.props(el), ink_w, ink_h, bounds=True) if el is not None else None
+    cut = layer.clip if layer is not None else None
+    gap = gap_clip(r, n, el, nodes_of) if nodes_of and el is not None else None
+    if gap is not None:  # BorderGapMaskConverter's mask: the frame's line under the header
+        cut = gap if cut is None else CombinedGeometry("Intersect", cut, gap)
     m = np.array([[sx / psx, 0.0, (x - px) / psx], [0.0, sy / psy, (y - py) / psy], [0, 0, 1.0]])
     if n.layout_transform is not None:  # its own box turned about the corner the layout set
         m = m @ r.ctx.stages.placed_by_layout(n)
@@ -151,7 +158,7 @@ def _compile(r, reader: MeasuringPanels, n, out: list, parent) -> None:
             children=tuple(own),
             opacity=opacity,
             transform=m,
-            clip=layer.clip if layer is not None else None,
+            clip=cut,
             # the mask's relative units refer to what the element and its children draw (the
             # group's content), as WPF's compositor sizes a visual's OpacityMask
             opacity_mask=layer.opacity_mask if layer is not None else None,
@@ -209,8 +216,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         return  # drawn by its template's instance, its child
     if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
         out.extend(_part(n, w, h))
-        if local == "GroupBox":
-            out.extend(templates.group_box_chrome(r, el, n))
         return
     if local == "Separator":
         fill = element_brush(r, v, "Background", rgb("A0A0A0"))  # SystemColors.ControlDark
@@ -288,11 +293,6 @@ def attach_control_drawings(r, root, elements: dict) -> None:
     space is kept: LAY003 says it is estimated)."""
     templates.after_layout(root)
     for n in root.walk():
-        if n.type == "GroupBox" and n.kind == L.GRID and n.arranged:
-            el = elements.get(id(n), (None,))[0]
-            if el is not None:  # its border with the header's gap, over its Background
-                n.drawing = DrawingGroup(children=tuple(templates.group_box_chrome(r, el, n)))
-            continue
         if n.kind == L.SCROLL and n.arranged and n.scrolled is not None:
             bars = scroll_viewer_bars(r, n.scrolled, *n.ink)
             n.drawing = DrawingGroup(children=tuple(bars)) if bars else None

@@ -261,6 +261,7 @@ ItemContainerTemplate ItemContainerTemplateSelector
 MultiTrigger Condition DataTrigger MultiDataTrigger EventSetter ToolTip Menu MenuItem Separator
 Expander GroupBox TabControl TabItem ItemsControl ToggleButton RepeatButton ProgressBar InkCanvas
 MediaElement KeyBinding MouseBinding BooleanToVisibilityConverter Run Span Bold Italic Underline
+BorderGapMaskConverter
 Hyperlink LineBreak Paragraph FlowDocument FlowDocumentScrollViewer RichTextBox PasswordBox
 UniformGrid GridSplitter StatusBar StatusBarItem ToolBar ToolBarTray DocumentViewer Popup
 Thumb Track ScrollBar ResizeGrip NavigationWindow HeaderedContentControl Calendar DatePicker
