@@ -909,3 +909,41 @@ def test_text_host_in_a_users_template_and_inside_a_visual(tmp_path):
     px = _same(tmp_path, doc, in_brush("", twin), _viewport_pixels)
     assert px[2:14, 3:20, :3].min() < 60  # the password's marks
     assert not [d for d in load(doc, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
+
+
+def test_theme_separator_and_grid_splitter_are_their_templates(tmp_path):
+    # Aero2: a Separator is a 1 px Border (SystemColors.ControlDark) inside the Style's
+    # Margin 0,2,0,2, centred in a taller Separator; a GridSplitter a Border of its Background
+    # (SystemColors.Control), BorderBrush and BorderThickness, on the right by default
+    feature = window(
+        "",
+        """
+      <Separator />
+      <Separator Background="Red" Height="9" />
+      <Grid Height="50">
+        <GridSplitter Width="6" />
+        <GridSplitter Width="8" HorizontalAlignment="Center" Background="Yellow"
+                      BorderBrush="Blue" BorderThickness="1,2,1,2" />
+      </Grid>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Margin="0,2,0,2"><Border Background="#FFA0A0A0" Height="1" /></ContentControl>
+      <ContentControl Margin="0,2,0,2" Height="9"><Border Background="Red" Height="1" />
+      </ContentControl>
+      <Grid Height="50">
+        <ContentControl Width="6" HorizontalAlignment="Right">
+          <Border Background="#FFF0F0F0" />
+        </ContentControl>
+        <ContentControl Width="8" HorizontalAlignment="Center">
+          <Border Background="Yellow" BorderBrush="Blue" BorderThickness="1,2,1,2" />
+        </ContentControl>
+      </Grid>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[2, 40][:3]) == (160, 160, 160) and tuple(px[1, 40][:3]) == (255, 255, 255)
+    assert tuple(px[11, 40][:3]) == (255, 0, 0)  # 5 + 2 + 4: the 1 px Border centred in 9
+    assert tuple(px[40, 77][:3]) == (240, 240, 240) and tuple(px[40, 73][:3]) == (255, 255, 255)
+    assert tuple(px[40, 40][:3]) == (255, 255, 0) and tuple(px[40, 36][:3]) == (0, 0, 255)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code in ("DRW002", "LAY003")]

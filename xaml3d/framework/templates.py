@@ -64,8 +64,9 @@ THEMED |= {"Label", "TextBox", "PasswordBox"}
 # TextBoxStyleKey, is a Border around PART_ContentHost as the theme's)
 _OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
+THEMED |= {"Separator", "GridSplitter"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
-PLAIN_CONTROLS = {"Control", "Separator"}
+PLAIN_CONTROLS = {"Control", "Separator", "GridSplitter"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
 # controls whose template's PART_ContentHost shows their text (text_host.py)
 TEXT_HOSTS = set(text_host.HOSTS)
@@ -77,6 +78,9 @@ UNSUPPORTED = {
     "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
 }  # fmt: skip
+# the control's own layout properties a theme Style may set (the reader reads them there)
+_THEME_LAYOUT = ("Margin", "Width", "Height", "MinWidth", "MinHeight", "HorizontalAlignment",
+                 "VerticalAlignment")  # fmt: skip
 # elements whose content is not part of the visual tree where they are written
 _NOT_VISUAL = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
                "HierarchicalDataTemplate", "ItemContainerTemplate",
@@ -378,6 +382,8 @@ class _Instantiation:
             # the theme's parts are the control's own, in the document's text
             for part in instance.iter():
                 sv.made(part, c.el)
+        if themed:
+            self.theme_layout(c)
         names: dict[str, object] = {}
         parts = _parts(instance) if instance is not None else []
         for part in parts:
@@ -400,6 +406,15 @@ class _Instantiation:
             self.template_triggers_on_parts(c, template, names)
         self.finish(c, instance, template)
         return instance
+
+    def theme_layout(self, c: Control) -> None:
+        """The theme Style's layout values (a Separator's Margin 0,2,0,2) on the control where
+        neither it nor its Style sets them: the reader lays the control out from its own."""
+        theme = c.theme_setters()
+        for prop in _THEME_LAYOUT:
+            value = theme.get(prop)
+            if value is not None and c.local(prop) is None and prop not in c.setters:
+                put(self.sv, c.el, prop, value)
 
     def presented(self, c: Control) -> None:
         """A ContentControl with a ContentTemplate and no template of the user's: its default
