@@ -31,7 +31,6 @@ import numpy as np
 from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     DrawingGroup,
-    GeometryDrawing,
     ImageDrawing,
     RectangleGeometry,
 )
@@ -58,7 +57,7 @@ from xaml3d.xaml.panels_reader import (
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.shapes_reader import SHAPES, shape_drawing
-from xaml3d.xaml.visual_style import box_drawing, element_brush, rgb
+from xaml3d.xaml.visual_style import box_drawing, element_brush
 from xaml3d.xaml.visual_text import block_drawing
 
 _TEXT_CONTROLS = TEXT_CONTROLS
@@ -213,15 +212,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         if local == "GroupBox":
             out.extend(templates.group_box_chrome(r, el, n))
         return
-    if local == "Separator":
-        fill = element_brush(r, v, "Background", rgb("A0A0A0"))  # SystemColors.ControlDark
-        out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)), brush=fill))
-        return
-    if local == "GridSplitter":  # Aero2: a Border of Background (SystemColors.Control)
-        border = v.get("BorderThickness", parse_thickness, (0.0,) * 4)
-        fill = element_brush(r, v, "Background", rgb("F0F0F0"))
-        out.extend(box_drawing(fill, element_brush(r, v, "BorderBrush"), border, 0.0, w, h))
-        return
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.WRAP, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
@@ -283,7 +273,7 @@ def _shape(r, v, n, local: str, w: float, h: float, out: list) -> None:
 
 
 _WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
-                                             "Separator", "ScrollBar", "GridSplitter"}  # fmt: skip
+                                             "ScrollBar"}  # fmt: skip
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
