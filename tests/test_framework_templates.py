@@ -947,3 +947,34 @@ def test_theme_separator_and_grid_splitter_are_their_templates(tmp_path):
     assert tuple(px[40, 77][:3]) == (240, 240, 240) and tuple(px[40, 73][:3]) == (255, 255, 255)
     assert tuple(px[40, 40][:3]) == (255, 255, 0) and tuple(px[40, 36][:3]) == (0, 0, 255)
     assert not [d for d in load(feature, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
+
+
+def test_grid_splitter_template_of_the_users_is_instantiated(tmp_path):
+    # a GridSplitter restyled as a thin centred grip: its template is drawn, not the theme's
+    feature = window(
+        "",
+        """
+      <Grid Height="40">
+        <GridSplitter Width="10" HorizontalAlignment="Center" Background="Orange">
+          <GridSplitter.Template>
+            <ControlTemplate TargetType="{x:Type GridSplitter}">
+              <Grid Background="{TemplateBinding Background}">
+                <Border Width="2" Background="Blue" />
+              </Grid>
+            </ControlTemplate>
+          </GridSplitter.Template>
+        </GridSplitter>
+      </Grid>""",
+    )
+    twin = window(
+        "",
+        """
+      <Grid Height="40">
+        <ContentControl Width="10" HorizontalAlignment="Center">
+          <Grid Background="Orange"><Border Width="2" Background="Blue" /></Grid>
+        </ContentControl>
+      </Grid>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[20, 36][:3]) == (255, 165, 0) and tuple(px[20, 40][:3]) == (0, 0, 255)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code == "TPL001"]
