@@ -978,3 +978,44 @@ def test_grid_splitter_template_of_the_users_is_instantiated(tmp_path):
     px = _same(tmp_path, feature, twin)
     assert tuple(px[20, 36][:3]) == (255, 165, 0) and tuple(px[20, 40][:3]) == (0, 0, 255)
     assert not [d for d in load(feature, text=True).diagnostics if d.code == "TPL001"]
+
+
+def test_theme_progress_bar_indicator_is_its_share_of_the_track(tmp_path):
+    # Aero2: a Grid of the Border, PART_Track and PART_Indicator (HorizontalAlignment Left),
+    # the indicator as wide as Value's share of the track (WPF sets that Width in code);
+    # Orientation Vertical turns the Grid by -90 (a LayoutTransform); IsIndeterminate shows
+    # the still frame: no indicator
+    feature = window(
+        "",
+        """
+      <ProgressBar Value="25" Height="10" />
+      <ProgressBar Value="3" Minimum="2" Maximum="6" Height="10" Foreground="Blue" />
+      <ProgressBar IsIndeterminate="True" Value="50" Height="10" />
+      <ProgressBar Orientation="Vertical" Value="75" Width="10" Height="40"
+                   HorizontalAlignment="Left" />""",
+    )
+
+    def twin_bar(width, fill, turned=""):
+        turn = "<Grid.LayoutTransform><RotateTransform Angle='-90' /></Grid.LayoutTransform>"
+        indicator = (f'<Grid Width="{width}" HorizontalAlignment="Left"><Rectangle Fill="{fill}" />'
+                     f'<Rectangle Fill="{fill}" /></Grid>' if width else "")  # fmt: skip
+        return f"""<Grid>{turn if turned else ""}
+          <Border Background="#FFE6E6E6" BorderBrush="#FFBCBCBC" BorderThickness="1" />
+          <Rectangle />{indicator}</Grid>"""
+
+    twin = window(
+        "",
+        f"""
+      <ContentControl Height="10">{twin_bar(20, "#FF06B025")}</ContentControl>
+      <ContentControl Height="10">{twin_bar(20, "Blue")}</ContentControl>
+      <ContentControl Height="10">{twin_bar(0, "")}</ContentControl>
+      <ContentControl Width="10" Height="40" HorizontalAlignment="Left">
+        {twin_bar(30, "#FF06B025", turned=True)}</ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[5, 0][:3]) == (6, 176, 37) and tuple(px[5, 19][:3]) == (6, 176, 37)
+    assert tuple(px[5, 20][:3]) == (230, 230, 230) and tuple(px[0, 40][:3]) == (188, 188, 188)
+    assert tuple(px[15, 10][:3]) == (0, 0, 255)  # (3 - 2) / (6 - 2) of 80 px
+    assert tuple(px[25, 10][:3]) == (230, 230, 230)  # indeterminate: the still frame
+    assert tuple(px[35, 5][:3]) == (230, 230, 230) and tuple(px[45, 5][:3]) == (6, 176, 37)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code in ("DRW002", "LAY003")]

@@ -42,6 +42,10 @@ class Services(Protocol):
         """``el`` is a control drawn by the user's ``template`` (None: by the items the
         framework generated in the theme's template): its only child is the instance."""
 
+    def indicator(self, el: Any, share: float) -> None:
+        """``el`` (a ProgressBar's PART_Indicator) is as wide as ``share`` of its track: the
+        width WPF's ProgressBar sets in code once the track is laid out."""
+
     def pin(self, root: Any) -> None:
         """Called once before the first change to the tree under ``root``."""
 

@@ -36,6 +36,8 @@ without a user template are left to the reader's theme drawing.
 
 from __future__ import annotations
 
+import math
+
 from xaml3d.access_text import access_text
 from xaml3d.framework import binding_tree, data_triggers, items, markup, string_formats, text_host
 from xaml3d.framework.styles import (
@@ -65,8 +67,9 @@ THEMED |= {"Label", "TextBox", "PasswordBox"}
 _OWN_ON_TOOL_BAR = {"Label", "TextBox", "PasswordBox"}
 THEMED |= {"ListBox", "ListBoxItem"}
 THEMED |= {"Separator", "GridSplitter"}
+THEMED |= {"ProgressBar"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
-PLAIN_CONTROLS = {"Control", "Separator", "GridSplitter"}
+PLAIN_CONTROLS = {"Control", "Separator", "GridSplitter", "ProgressBar"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
 # controls whose template's PART_ContentHost shows their text (text_host.py)
 TEXT_HOSTS = set(text_host.HOSTS)
@@ -75,7 +78,7 @@ SUPPORTED = CONTENT_CONTROLS | HEADERED | PLAIN_CONTROLS | ITEMS_CONTROLS | TEXT
 UNSUPPORTED = {
     "ComboBox", "ListView", "TabControl", "Menu", "MenuItem",
     "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid",
-    "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
+    "RichTextBox", "Slider", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
 }  # fmt: skip
 # the control's own layout properties a theme Style may set (the reader reads them there)
@@ -404,6 +407,8 @@ class _Instantiation:
             if c.type in TEXT_HOSTS:
                 text_host.fill(sv, c, names.get(text_host.PART), _literal)
             self.template_triggers_on_parts(c, template, names)
+            if c.type == "ProgressBar" and names.get("PART_Indicator") is not None:
+                self.sv.indicator(names["PART_Indicator"], _progress_share(c))
         self.finish(c, instance, template)
         return instance
 
@@ -688,6 +693,28 @@ def put(sv, el, prop: str, value) -> None:
     made.attrib.pop(f"{{{X_NS}}}Key", None)  # a resource entry's copy, now a property value
     holder.append(made)
     el.insert(0, holder)
+
+
+def _progress_share(c: Control) -> float:
+    """The share of PART_Track's width a ProgressBar's PART_Indicator takes, as WPF's
+    ProgressBar sets it in code: 1 when IsIndeterminate or Maximum <= Minimum, else Value's
+    place in Minimum..Maximum (Value coerced into that range, as RangeBase does)."""
+
+    def number(prop: str, default: float) -> float:
+        hit = c.value(prop)
+        try:
+            x = float(hit[1]) if hit is not None and hit[0] == "text" else default
+        except ValueError:
+            return default  # a binding or resource: the property's default
+        return x if math.isfinite(x) else default
+
+    indeterminate = c.value("IsIndeterminate")
+    lo, hi = number("Minimum", 0.0), number("Maximum", 100.0)
+    hi = max(hi, lo)  # RangeBase coerces Maximum up to Minimum
+    if (indeterminate is not None and indeterminate[0] == "text"
+            and indeterminate[1].strip().lower() == "true") or hi <= lo:  # fmt: skip
+        return 1.0
+    return (min(hi, max(lo, number("Value", 0.0))) - lo) / (hi - lo)
 
 
 def _ancestor_binding(value) -> tuple[str, str] | None:

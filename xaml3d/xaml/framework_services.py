@@ -72,6 +72,10 @@ class ReaderServices:
             self.ctx.keep(template)
             self.ctx.instantiated[id(template)] = template
 
+    def indicator(self, el, share: float) -> None:
+        self.ctx.keep(el)
+        self.ctx.width_shares[id(el)] = share
+
     def pin(self, root) -> None:
         self.ctx.pin_positions(root)
 

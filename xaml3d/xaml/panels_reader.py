@@ -483,6 +483,7 @@ class PanelsReader:
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
         if local == "GridSplitter":  # its HorizontalAlignment's own default (GridSplitter's)
             n.h_align = "Right"
+        n.width_share = self.r.ctx.width_shares.get(id(el))
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
         turned = layout_transform_of(self.r, v)
