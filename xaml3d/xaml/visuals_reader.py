@@ -43,7 +43,6 @@ from xaml3d.xaml.control_content import TEXT_CONTROLS
 from xaml3d.xaml.control_sizes import MeasuringPanels
 from xaml3d.xaml.controls_reader import (
     _combo_box,
-    _progress_bar,
     _scroll_bar,
     _slider,
     scroll_viewer_bars,
@@ -234,9 +233,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         if t is not None:
             out.append(t)
         return
-    if local == "ProgressBar":
-        _progress_bar(r, v, w, h, out)
-        return
     if local == "ComboBox":
         _combo_box(r, v, el, font, w, h, out)
         return
@@ -272,7 +268,7 @@ def _shape(r, v, n, local: str, w: float, h: float, out: list) -> None:
         out.append(d)
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "ComboBox", "Slider",
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ComboBox", "Slider",
                                              "ScrollBar"}  # fmt: skip
 
 
