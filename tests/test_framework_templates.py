@@ -1019,3 +1019,31 @@ def test_theme_progress_bar_indicator_is_its_share_of_the_track(tmp_path):
     assert tuple(px[25, 10][:3]) == (230, 230, 230)  # indeterminate: the still frame
     assert tuple(px[35, 5][:3]) == (230, 230, 230) and tuple(px[45, 5][:3]) == (6, 176, 37)
     assert not [d for d in load(feature, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
+
+
+def test_users_progress_bar_template_gets_its_indicator_width(tmp_path):
+    feature = window(
+        "",
+        """
+      <ProgressBar Value="50" Height="10">
+        <ProgressBar.Template>
+          <ControlTemplate TargetType="{x:Type ProgressBar}">
+            <Grid Background="Yellow">
+              <Rectangle x:Name="PART_Track" />
+              <Border x:Name="PART_Indicator" HorizontalAlignment="Left" Background="Red" />
+            </Grid>
+          </ControlTemplate>
+        </ProgressBar.Template>
+      </ProgressBar>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Height="10">
+        <Grid Background="Yellow">
+          <Rectangle /><Border Width="40" HorizontalAlignment="Left" Background="Red" />
+        </Grid>
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[5, 39][:3]) == (255, 0, 0) and tuple(px[5, 40][:3]) == (255, 255, 0)
