@@ -908,3 +908,141 @@ def test_text_host_in_a_users_template_and_inside_a_visual(tmp_path):
     px = _same(tmp_path, doc, in_brush("", twin), _viewport_pixels)
     assert px[2:14, 3:20, :3].min() < 60  # the password's marks
     assert not [d for d in load(doc, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
+
+
+def test_theme_separator_and_grid_splitter_are_their_templates(tmp_path):
+    # Aero2: a Separator is a 1 px Border (SystemColors.ControlDark) inside the Style's
+    # Margin 0,2,0,2, centred in a taller Separator; a GridSplitter a Border of its Background
+    # (SystemColors.Control), BorderBrush and BorderThickness, on the right by default
+    feature = window(
+        "",
+        """
+      <Separator />
+      <Separator Background="Red" Height="9" />
+      <Grid Height="50">
+        <GridSplitter Width="6" />
+        <GridSplitter Width="8" HorizontalAlignment="Center" Background="Yellow"
+                      BorderBrush="Blue" BorderThickness="1,2,1,2" />
+      </Grid>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Margin="0,2,0,2"><Border Background="#FFA0A0A0" Height="1" /></ContentControl>
+      <ContentControl Margin="0,2,0,2" Height="9"><Border Background="Red" Height="1" />
+      </ContentControl>
+      <Grid Height="50">
+        <ContentControl Width="6" HorizontalAlignment="Right">
+          <Border Background="#FFF0F0F0" />
+        </ContentControl>
+        <ContentControl Width="8" HorizontalAlignment="Center">
+          <Border Background="Yellow" BorderBrush="Blue" BorderThickness="1,2,1,2" />
+        </ContentControl>
+      </Grid>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[2, 40][:3]) == (160, 160, 160) and tuple(px[1, 40][:3]) == (255, 255, 255)
+    assert tuple(px[11, 40][:3]) == (255, 0, 0)  # 5 + 2 + 4: the 1 px Border centred in 9
+    assert tuple(px[40, 77][:3]) == (240, 240, 240) and tuple(px[40, 73][:3]) == (255, 255, 255)
+    assert tuple(px[40, 40][:3]) == (255, 255, 0) and tuple(px[40, 36][:3]) == (0, 0, 255)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
+
+
+def test_grid_splitter_template_of_the_users_is_instantiated(tmp_path):
+    # a GridSplitter restyled as a thin centred grip: its template is drawn, not the theme's
+    feature = window(
+        "",
+        """
+      <Grid Height="40">
+        <GridSplitter Width="10" HorizontalAlignment="Center" Background="Orange">
+          <GridSplitter.Template>
+            <ControlTemplate TargetType="{x:Type GridSplitter}">
+              <Grid Background="{TemplateBinding Background}">
+                <Border Width="2" Background="Blue" />
+              </Grid>
+            </ControlTemplate>
+          </GridSplitter.Template>
+        </GridSplitter>
+      </Grid>""",
+    )
+    twin = window(
+        "",
+        """
+      <Grid Height="40">
+        <ContentControl Width="10" HorizontalAlignment="Center">
+          <Grid Background="Orange"><Border Width="2" Background="Blue" /></Grid>
+        </ContentControl>
+      </Grid>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[20, 36][:3]) == (255, 165, 0) and tuple(px[20, 40][:3]) == (0, 0, 255)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code == "TPL001"]
+
+
+def test_theme_progress_bar_indicator_is_its_share_of_the_track(tmp_path):
+    # Aero2: a Grid of the Border, PART_Track and PART_Indicator (HorizontalAlignment Left),
+    # the indicator as wide as Value's share of the track (WPF sets that Width in code);
+    # Orientation Vertical turns the Grid by -90 (a LayoutTransform); IsIndeterminate shows
+    # the still frame: no indicator
+    feature = window(
+        "",
+        """
+      <ProgressBar Value="25" Height="10" />
+      <ProgressBar Value="3" Minimum="2" Maximum="6" Height="10" Foreground="Blue" />
+      <ProgressBar IsIndeterminate="True" Value="50" Height="10" />
+      <ProgressBar Orientation="Vertical" Value="75" Width="10" Height="40"
+                   HorizontalAlignment="Left" />""",
+    )
+
+    def twin_bar(width, fill, turned=""):
+        turn = "<Grid.LayoutTransform><RotateTransform Angle='-90' /></Grid.LayoutTransform>"
+        indicator = (f'<Grid Width="{width}" HorizontalAlignment="Left"><Rectangle Fill="{fill}" />'
+                     f'<Rectangle Fill="{fill}" /></Grid>' if width else "")  # fmt: skip
+        return f"""<Grid>{turn if turned else ""}
+          <Border Background="#FFE6E6E6" BorderBrush="#FFBCBCBC" BorderThickness="1" />
+          <Rectangle />{indicator}</Grid>"""
+
+    twin = window(
+        "",
+        f"""
+      <ContentControl Height="10">{twin_bar(20, "#FF06B025")}</ContentControl>
+      <ContentControl Height="10">{twin_bar(20, "Blue")}</ContentControl>
+      <ContentControl Height="10">{twin_bar(0, "")}</ContentControl>
+      <ContentControl Width="10" Height="40" HorizontalAlignment="Left">
+        {twin_bar(30, "#FF06B025", turned=True)}</ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[5, 0][:3]) == (6, 176, 37) and tuple(px[5, 19][:3]) == (6, 176, 37)
+    assert tuple(px[5, 20][:3]) == (230, 230, 230) and tuple(px[0, 40][:3]) == (188, 188, 188)
+    assert tuple(px[15, 10][:3]) == (0, 0, 255)  # (3 - 2) / (6 - 2) of 80 px
+    assert tuple(px[25, 10][:3]) == (230, 230, 230)  # indeterminate: the still frame
+    assert tuple(px[35, 5][:3]) == (230, 230, 230) and tuple(px[45, 5][:3]) == (6, 176, 37)
+    assert not [d for d in load(feature, text=True).diagnostics if d.code in ("DRW002", "LAY003")]
+
+
+def test_users_progress_bar_template_gets_its_indicator_width(tmp_path):
+    feature = window(
+        "",
+        """
+      <ProgressBar Value="50" Height="10">
+        <ProgressBar.Template>
+          <ControlTemplate TargetType="{x:Type ProgressBar}">
+            <Grid Background="Yellow">
+              <Rectangle x:Name="PART_Track" />
+              <Border x:Name="PART_Indicator" HorizontalAlignment="Left" Background="Red" />
+            </Grid>
+          </ControlTemplate>
+        </ProgressBar.Template>
+      </ProgressBar>""",
+    )
+    twin = window(
+        "",
+        """
+      <ContentControl Height="10">
+        <Grid Background="Yellow">
+          <Rectangle /><Border Width="40" HorizontalAlignment="Left" Background="Red" />
+        </Grid>
+      </ContentControl>""",
+    )
+    px = _same(tmp_path, feature, twin)
+    assert tuple(px[5, 39][:3]) == (255, 0, 0) and tuple(px[5, 40][:3]) == (255, 255, 0)

@@ -251,13 +251,15 @@ def test_progress_bar_in_aero2_look(tmp_path):
     path = tmp_path / "s.xaml"
     path.write_text(_visual_scene(f"<VisualBrush><VisualBrush.Visual>{bar}"
                                   "</VisualBrush.Visual></VisualBrush>"))  # fmt: skip
-    group = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing.children[0]
-    track, band, indicator = group.children
-    assert track.brush.color[:3] == pytest.approx((0xE6 / 255,) * 3)
+    drawing = xaml3d.load(path).viewports[0].models[0].material[0].brush.drawing
+    face, band, *rest = _geometries(drawing)  # the theme template's Border first
+    assert face.brush.color[:3] == pytest.approx((0xE6 / 255,) * 3)
+    assert face.geometry.rect == (1.0, 1.0, 100.0, 8.0)
     assert band.brush.color[:3] == pytest.approx((0xBC / 255,) * 3)
-    # a quarter of the 100 x 8 inside, from the left, in #06B025
-    assert indicator.geometry.rect == (1.0, 1.0, 25.0, 8.0)
-    assert indicator.brush.color[:3] == pytest.approx((6 / 255, 0xB0 / 255, 0x25 / 255))
+    # PART_Indicator: a quarter of PART_Track's 102 px from the left, over the Border, #06B025
+    green = (6 / 255, 0xB0 / 255, 0x25 / 255)
+    filled = [g for g in rest if g.brush is not None and g.brush.color[:3] == pytest.approx(green)]
+    assert filled and all(g.geometry.rect == (0.0, 0.0, 25.5, 10.0) for g in filled)
 
 
 def test_outer_glow_is_an_unmoved_shadow_and_bitmap_scaling_mode_is_said(tmp_path):

@@ -56,6 +56,10 @@ class Services(Protocol):
         """``el`` (a template's part) is masked by BorderGapMaskConverter: hidden from
         ``offset`` for ``header``'s laid-out width over its top half (``gap_mask``)."""
 
+    def indicator(self, el: Any, share: float) -> None:
+        """``el`` (a ProgressBar's PART_Indicator) is as wide as ``share`` of its track: the
+        width WPF's ProgressBar sets in code once the track is laid out."""
+
     def pin(self, root: Any) -> None:
         """Called once before the first change to the tree under ``root``."""
 

@@ -44,6 +44,8 @@ controls without a user template are left to the reader's theme drawing.
 
 from __future__ import annotations
 
+import math
+
 from xaml3d.access_text import access_text
 from xaml3d.framework import (
     binding_data,
@@ -85,8 +87,10 @@ THEMED |= {"ListBox", "ListBoxItem"}
 THEMED |= {"ComboBox"}
 THEMED |= {"GroupBox"}
 THEMED |= {"Expander"}
+THEMED |= {"Separator", "GridSplitter"}
+THEMED |= {"ProgressBar"}
 HEADERED = {"GroupBox", "HeaderedContentControl", "Expander", "TabItem"}
-PLAIN_CONTROLS = {"Control", "Separator"}
+PLAIN_CONTROLS = {"Control", "Separator", "GridSplitter", "ProgressBar"}
 # items controls whose template's presenter shows the selected item (SelectionBoxItem)
 SELECTION_BOXES = {"ComboBox"}
 ITEMS_CONTROLS = {"ItemsControl", "ListBox"}  # their items placed by ItemsPresenter/IsItemsHost
@@ -98,9 +102,12 @@ SUPPORTED |= SELECTION_BOXES
 UNSUPPORTED = {
     "ListView", "TabControl", "Menu", "MenuItem",
     "ToolBar", "StatusBar", "TreeView", "TreeViewItem", "DataGrid",
-    "RichTextBox", "Slider", "ProgressBar", "ScrollBar", "ScrollViewer", "Calendar",
+    "RichTextBox", "Slider", "ScrollBar", "ScrollViewer", "Calendar",
     "DatePicker", "DocumentViewer", "FlowDocumentScrollViewer",
 }  # fmt: skip
+# the control's own layout properties a theme Style may set (the reader reads them there)
+_THEME_LAYOUT = ("Margin", "Width", "Height", "MinWidth", "MinHeight", "HorizontalAlignment",
+                 "VerticalAlignment")  # fmt: skip
 # elements whose content is not part of the visual tree where they are written
 _NOT_VISUAL = {"Style", "ControlTemplate", "DataTemplate", "ItemsPanelTemplate",
                "HierarchicalDataTemplate", "ItemContainerTemplate",
@@ -506,6 +513,8 @@ class _Instantiation:
                 sv.made(part, c.el)
         if instance is not None:
             gap_mask.mark(sv, instance)
+        if themed:
+            self.theme_layout(c)
         names: dict[str, object] = {}
         parts = _parts(instance) if instance is not None else []
         for part in parts:
@@ -527,8 +536,19 @@ class _Instantiation:
             if c.type in TEXT_HOSTS:
                 text_host.fill(sv, c, names.get(text_host.PART), _literal)
             self.template_triggers_on_parts(c, template, names)
+            if c.type == "ProgressBar" and names.get("PART_Indicator") is not None:
+                self.sv.indicator(names["PART_Indicator"], _progress_share(c))
         self.finish(c, instance, template)
         return instance
+
+    def theme_layout(self, c: Control) -> None:
+        """The theme Style's layout values (a Separator's Margin 0,2,0,2) on the control where
+        neither it nor its Style sets them: the reader lays the control out from its own."""
+        theme = c.theme_setters()
+        for prop in _THEME_LAYOUT:
+            value = theme.get(prop)
+            if value is not None and c.local(prop) is None and prop not in c.setters:
+                put(self.sv, c.el, prop, value)
 
     def presented(self, c: Control) -> None:
         """A ContentControl with a ContentTemplate and no template of the user's: its default
@@ -817,6 +837,28 @@ def put(sv, el, prop: str, value) -> None:
     made.attrib.pop(f"{{{X_NS}}}Key", None)  # a resource entry's copy, now a property value
     holder.append(made)
     el.insert(0, holder)
+
+
+def _progress_share(c: Control) -> float:
+    """The share of PART_Track's width a ProgressBar's PART_Indicator takes, as WPF's
+    ProgressBar sets it in code: 1 when IsIndeterminate or Maximum <= Minimum, else Value's
+    place in Minimum..Maximum (Value coerced into that range, as RangeBase does)."""
+
+    def number(prop: str, default: float) -> float:
+        hit = c.value(prop)
+        try:
+            x = float(hit[1]) if hit is not None and hit[0] == "text" else default
+        except ValueError:
+            return default  # a binding or resource: the property's default
+        return x if math.isfinite(x) else default
+
+    indeterminate = c.value("IsIndeterminate")
+    lo, hi = number("Minimum", 0.0), number("Maximum", 100.0)
+    hi = max(hi, lo)  # RangeBase coerces Maximum up to Minimum
+    if (indeterminate is not None and indeterminate[0] == "text"
+            and indeterminate[1].strip().lower() == "true") or hi <= lo:  # fmt: skip
+        return 1.0
+    return (min(hi, max(lo, number("Value", 0.0))) - lo) / (hi - lo)
 
 
 def _ancestor_binding(value) -> tuple[str, str] | None:

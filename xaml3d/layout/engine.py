@@ -224,6 +224,8 @@ class Engine:
             aw = uw
         if n.v_align != "Stretch":
             ah = uh
+        if n.width_share is not None:  # the indicator's Width, set from the track's width
+            aw = n.width_share * max(0.0, w - mw)
         lt = n.layout_transform
         if lt is not None:
             # arranged in its own space: the largest box whose transformed bounds fit, unless

@@ -113,6 +113,10 @@ class Node:
     scroll_v: str = "Visible"  # ScrollViewer.VerticalScrollBarVisibility
     # a root UserControl's d:DesignWidth/Height, a root Page's WindowWidth/Height less the frame
     design_size: tuple[float | None, float | None] | None = None
+    # a ProgressBar's PART_Indicator: its Width is this share of the room its slot gives (WPF
+    # sets it in code from Value over Minimum..Maximum times PART_Track's ActualWidth, the track
+    # filling the same cell); None: its own Width
+    width_share: float | None = None
     # a control that is not laid out: its estimated content size (width, height)
     estimate: tuple[float, float] | None = None
     # a control whose size depends on the room offered (text wrapped to the width): a function

@@ -103,6 +103,8 @@ class ReadContext:
         # controls drawn by a user's ControlTemplate (the framework step's instance is their
         # only child): id -> element
         self.templated: dict[int, etree._Element] = {}
+        # a ProgressBar's PART_Indicator: its share of the track's width (framework step)
+        self.width_shares: dict[int, float] = {}
         # the ControlTemplates so instantiated: id -> element
         self.instantiated: dict[int, etree._Element] = {}
         # parts masked by BorderGapMaskConverter: id -> (part, its header part, the offset)

@@ -5,11 +5,10 @@ beside the viewports (``render --window``): a TextBlock's text recorded for layo
 (``text_block``: layout breaks its lines at the width offered); text by the package font's
 advance widths and Segoe UI's line height (``xaml3d.text_metrics``) inside the Aero2 chrome of
 a ToolBar's buttons, check boxes and radio buttons (which its template
-restyles); a Slider's thumb; a ScrollBar's
-and a Separator's thickness; the shapes' sizes as WPF's Shape measures them (``shapes_reader``:
-the geometry's render bounds, Stretch). ``control_sizes.MeasuringPanels`` imports this module
-when it measures its first control: a document without controls never loads it, nor the
-templates, text and shape readers it needs.
+restyles); a Slider's thumb; a ScrollBar's and a ToolBar's Separator's thickness; the shapes'
+sizes as WPF's Shape measures them (``shapes_reader``: the geometry's render bounds, Stretch).
+``control_sizes.MeasuringPanels`` imports this module when it measures its first control: a
+document without controls never loads it, nor the templates, text and shape readers it needs.
 """
 
 from __future__ import annotations
@@ -41,11 +40,8 @@ def content_size(reader, n, v, el, font: float):
         return (0.0, 0.0)  # laid out through its template's parts (build)
     if local == "ScrollBar":  # 17 px across (SystemParameters' scroll bar size)
         return (17.0, 0.0) if scroll_bar_upright(v) else (0.0, 17.0)
-    if local == "Separator":
-        return (0.0, 1.0)  # Aero2: a 1 px Border (its Margin 0,2,0,2 is the Style's)
-    if local == "GridSplitter":  # Aero2: a Border with no child, its BorderThickness across
-        b = v.get("BorderThickness", parse_thickness, (0.0,) * 4)
-        return (b[0] + b[2], b[1] + b[3])
+    if local == "Separator":  # a ToolBar's (ToolBar.SeparatorStyleKey, the reader's ToolBar)
+        return (0.0, 1.0)  # a 1 px Border; the others are their theme template's instance
     if local in SHAPES:  # measured and arranged as WPF's Shape (shapes_reader)
         return attach_layout(reader.r, v, n, local)
     if local == "Image":  # a DrawingImage: its Drawing's size, stretched (image_element)

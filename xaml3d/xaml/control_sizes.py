@@ -17,7 +17,6 @@ from xaml3d.xaml.panels_reader import (
     ElementValues,
     PanelsReader,
     layout_transform_of,
-    parse_thickness,
     turns,
 )
 
@@ -48,9 +47,6 @@ class MeasuringPanels(PanelsReader):
         n = super().build(el, font)
         if n is not None and n.kind == L.CONTROL:
             self.built_controls = True
-        if n is not None and n.type == "Separator" and n.kind == L.CONTROL:
-            v = ElementValues(self.r, el, self.style_setters(el, n.type))
-            n.margin = v.get("Margin", parse_thickness, (0.0, 2.0, 0.0, 2.0))  # Aero2's Style
         if n is None or n.kind != L.CONTROL or self._in_bar:
             return n
         from xaml3d.xaml import date_templates, templates

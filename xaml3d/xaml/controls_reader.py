@@ -1,8 +1,7 @@
 """WPF's common controls in their default Windows 10/11 look, as drawings (visuals_reader).
 
-Covers ProgressBar,
-a Slider (horizontal or upright) and a ScrollBar in their resting state, with
-the values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
+Covers a Slider (horizontal or upright) and a ScrollBar in their resting state, with the
+values of the [[Aero2.NormalColor]] sections of dotnet/wpf's theme files
 (PresentationFramework.Aero2): backgrounds, borders, paddings, marks, arrows and thumbs; their
 text through ``visual_text``.
 A content control's element content is laid out through its template (``templates``).
@@ -20,31 +19,11 @@ from xaml3d.scene.drawing import (
 )
 from xaml3d.xaml import values as V
 from xaml3d.xaml.geometry_reader import path_from_string
-from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.visual_style import box_drawing as _box_drawing
 from xaml3d.xaml.visual_style import element_brush as _brush
 from xaml3d.xaml.visual_style import rgb as _rgb
 
 _INLINES = {"Run", "Bold", "Italic", "Underline", "Span", "LineBreak", "Hyperlink"}
-
-
-def _progress_bar(r, v, w: float, h: float, out: list) -> None:
-    """Aero2's ProgressBar: a bordered track, the indicator filling Value's share of the inside
-    from the left (Minimum 0, Maximum 100, Value 0 by default)."""
-    background = _brush(r, v, "Background", _rgb("E6E6E6"))
-    border = _brush(r, v, "BorderBrush", _rgb("BCBCBC"))
-    thick = v.get("BorderThickness", parse_thickness, (1.0,) * 4)
-    out.extend(_box_drawing(background, border, thick, 0.0, w, h))
-    lo = v.get("Minimum", V.parse_double, 0.0)
-    hi = v.get("Maximum", V.parse_double, 100.0)
-    value = v.get("Value", V.parse_double, 0.0)
-    share = min(1.0, max(0.0, (value - lo) / (hi - lo))) if hi > lo else 0.0
-    inner_w = max(0.0, w - thick[0] - thick[2])
-    inner_h = max(0.0, h - thick[1] - thick[3])
-    if share > 0 and inner_h > 0:
-        rect = (thick[0], thick[1], inner_w * share, inner_h)
-        fill = _brush(r, v, "Foreground", _rgb("06B025"))
-        out.append(GeometryDrawing(RectangleGeometry(rect), brush=fill))
 
 
 def _slider(r, v, w: float, h: float, out: list) -> None:

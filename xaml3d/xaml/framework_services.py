@@ -92,6 +92,10 @@ class ReaderServices:
         self.ctx.keep(header)
         self.ctx.gap_masks[id(el)] = (el, header, float(offset))
 
+    def indicator(self, el, share: float) -> None:
+        self.ctx.keep(el)
+        self.ctx.width_shares[id(el)] = share
+
     def pin(self, root) -> None:
         self.ctx.pin_positions(root)
 

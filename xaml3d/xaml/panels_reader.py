@@ -70,8 +70,6 @@ _DEFAULT_PADDING = {
     "Label": (5, 5, 5, 5), "Button": (1, 1, 1, 1), "ToggleButton": (1, 1, 1, 1),
     "RepeatButton": (1, 1, 1, 1), "TextBox": (1, 1, 1, 1), "PasswordBox": (1, 1, 1, 1),
 }  # fmt: skip
-# Controls the 2D layer draws whose content size has no measurement: their estimate stands.
-_DRAWN_ESTIMATED = {"ProgressBar"}
 # Bars whose items sit side by side: their estimate is the sum of the items' sizes.
 _BARS = {"ToolBar", "ToolBarTray", "StatusBar"}
 # Property elements whose children are not laid out as content.
@@ -485,6 +483,7 @@ class PanelsReader:
         n = L.Node(kind, local, element_name(el), **self.r.ctx.position(el))
         if local == "GridSplitter":  # its HorizontalAlignment's own default (GridSplitter's)
             n.h_align = "Right"
+        n.width_share = self.r.ctx.width_shares.get(id(el))
         v = ElementValues(self.r, el, self.style_setters(el, local))
         self._framework(n, v)
         turned = layout_transform_of(self.r, v)
@@ -683,8 +682,7 @@ class PanelsReader:
         unsized = n.width != n.width or n.height != n.height
         if measured is not None or not unsized or self.r.ctx.refused(el):
             return  # an unknown element is an error already: its estimate is no news
-        what = (f"{local} is drawn but not measured by xaml3d" if local in _DRAWN_ESTIMATED
-                else f"{local} is not laid out by xaml3d")  # fmt: skip
+        what = f"{local} is not laid out by xaml3d"
         turned = ", then turned by its LayoutTransform" if n.layout_transform is not None else ""
         if self._beside_viewport(el):
             # the viewport's box depends on the guess: said without -v (LAY007)

@@ -32,7 +32,6 @@ from xaml3d.scene import element_tree as L
 from xaml3d.scene.drawing import (
     CombinedGeometry,
     DrawingGroup,
-    GeometryDrawing,
     ImageDrawing,
     RectangleGeometry,
 )
@@ -44,7 +43,6 @@ from xaml3d.xaml.context import qname
 from xaml3d.xaml.control_content import TEXT_CONTROLS
 from xaml3d.xaml.control_sizes import MeasuringPanels
 from xaml3d.xaml.controls_reader import (
-    _progress_bar,
     _scroll_bar,
     _slider,
     scroll_viewer_bars,
@@ -59,7 +57,7 @@ from xaml3d.xaml.panels_reader import (
 )
 from xaml3d.xaml.picture_reader import bitmap_scaling_mode, element_layer
 from xaml3d.xaml.shapes_reader import SHAPES, shape_drawing
-from xaml3d.xaml.visual_style import box_drawing, element_brush, rgb
+from xaml3d.xaml.visual_style import box_drawing, element_brush
 from xaml3d.xaml.visual_text import block_drawing
 
 _TEXT_CONTROLS = TEXT_CONTROLS
@@ -217,15 +215,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
     if local in templates.TEMPLATED and n.kind != L.CONTROL:  # laid out through its parts
         out.extend(_part(n, w, h))
         return
-    if local == "Separator":
-        fill = element_brush(r, v, "Background", rgb("A0A0A0"))  # SystemColors.ControlDark
-        out.append(GeometryDrawing(RectangleGeometry((0.0, 0.0, w, h)), brush=fill))
-        return
-    if local == "GridSplitter":  # Aero2: a Border of Background (SystemColors.Control)
-        border = v.get("BorderThickness", parse_thickness, (0.0,) * 4)
-        fill = element_brush(r, v, "Background", rgb("F0F0F0"))
-        out.extend(box_drawing(fill, element_brush(r, v, "BorderBrush"), border, 0.0, w, h))
-        return
     if n.kind in (L.WINDOW, L.PAGE, L.USER_CONTROL, L.GRID, L.DOCK, L.STACK, L.CANVAS,
                   L.UNIFORM, L.WRAP, L.SCROLL, L.CONTAINER, L.VIEWBOX):  # fmt: skip
         out.extend(box_drawing(element_brush(r, v, "Background"), None, (0,) * 4, 0.0, w, h))
@@ -247,9 +236,6 @@ def _element(r, v, n, el, font, w: float, h: float, out: list) -> None:
         t = block_drawing(r, el, v, n, pad[0], pad[1], w - pad[0] - pad[2])
         if t is not None:
             out.append(t)
-        return
-    if local == "ProgressBar":
-        _progress_bar(r, v, w, h, out)
         return
     if local == "Slider":
         _slider(r, v, w, h, out)
@@ -283,8 +269,7 @@ def _shape(r, v, n, local: str, w: float, h: float, out: list) -> None:
         out.append(d)
 
 
-_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "ProgressBar", "Slider",
-                                             "Separator", "ScrollBar", "GridSplitter"}  # fmt: skip
+_WINDOW_DRAWN = _TEXT_CONTROLS | _SHAPES | {"Image", "Slider", "ScrollBar"}  # fmt: skip
 
 
 def attach_control_drawings(r, root, elements: dict) -> None:
