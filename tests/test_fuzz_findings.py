@@ -237,6 +237,7 @@ def test_a_tile_magnified_far_past_its_box_draws_the_texel_it_shows():
     # a tile 10,000 times its box, seen in its first texel: that texel's colour everywhere
     import skia
 
+    from xaml3d.render.layer2d.paint import PLAYER
     from xaml3d.render.layer2d.shaders import paint_of
     from xaml3d.scene.types import ImageBrush
 
@@ -246,7 +247,7 @@ def test_a_tile_magnified_far_past_its_box_draws_the_texel_it_shows():
     surface = skia.Surface(60, 45)
     canvas = surface.getCanvas()
     canvas.translate(3, 4)
-    canvas.drawPaint(paint_of(brush, skia.Rect.MakeWH(40, 30)))
+    canvas.drawPaint(paint_of(brush, skia.Rect.MakeWH(40, 30), player=PLAYER))
     rgba = surface.makeImageSnapshot().toarray(colorType=skia.ColorType.kRGBA_8888_ColorType)
     assert (rgba[4:34, 3:43] == (200, 40, 10, 255)).all()
 
@@ -388,7 +389,9 @@ def test_documents_the_structured_fuzzing_found_run_clean(name):
     # visual-brush-viewbox-zero-high, a Label in a Viewbox 0 high as a VisualBrush's Visual (its
     # template's parts are scaled to nothing: not drawn, never a division by that scale);
     # image-brush-scaled-past-range, an ImageBrush whose Transform scales past the doubles' range
-    # (its map's determinant overflows: nothing is sampled)
+    # (its map's determinant overflows: nothing is sampled); image-mask-tile-stretched-one-way,
+    # an opacity mask's tile stretched a billion times along one axis (rasterized by xaml3d at
+    # most 2048 texels a side: skia's picture shader took twenty seconds to draw it)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from fuzz_documents import run_document
 

@@ -11,6 +11,7 @@ units refer to the box of what is filled.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import NamedTuple
 
@@ -242,8 +243,48 @@ def _tile_shader(brush, bounds, player: DrawingPlayer) -> skia.Shader | None:
     draw_content(canvas, brush, player)
     picture = rec.finishRecordingAsPicture()
     tx, ty = (_tile_mode(mode, flip) for flip in (("FlipX", "FlipXY"), ("FlipY", "FlipXY")))
+    raster = _raster_size(local, vpw, vph)
+    if raster is not None:
+        return _raster_tile_shader(picture, (vpx, vpy, vpw, vph), raster, local, tx, ty)
     return picture.makeShader(
         tx, ty, skia.FilterMode.kLinear, matrix(local), skia.Rect.MakeXYWH(vpx, vpy, vpw, vph)
+    )
+
+
+# A tile whose side spans more than this many pixels where it is drawn is rasterized by xaml3d
+# at most ``_RASTER_MAX`` texels a side (then sampled, as the 3D brushes' tiles are): skia's
+# picture shader rasterizes a tile at its drawn size, and a tile stretched a billion times along
+# one axis took it twenty seconds. Below it, the picture shader keeps vector content sharp.
+_RASTER_AT = 8192.0
+_RASTER_MAX = 2048
+
+
+def _raster_size(local, vpw: float, vph: float) -> tuple[int, int] | None:
+    """The texels (w, h) to rasterize a tile of ``vpw`` x ``vph`` brush units in, when
+    ``local`` (brush space -> the element's box) stretches a side past ``_RASTER_AT`` pixels;
+    None for an ordinary tile."""
+    lin = np.asarray(local, dtype=np.float64)[:2, :2]
+    with np.errstate(over="ignore", invalid="ignore"):
+        across = (vpw * float(np.hypot(lin[0, 0], lin[1, 0])),
+                  vph * float(np.hypot(lin[0, 1], lin[1, 1])))  # fmt: skip
+    if not all(math.isfinite(a) for a in across) or max(across) <= _RASTER_AT:
+        return None
+    return tuple(int(min(max(math.ceil(a), 1), _RASTER_MAX)) for a in across)
+
+
+def _raster_tile_shader(picture, tile, size, local, tx, ty) -> skia.Shader:
+    """The tile ``picture`` rasterized into ``size`` texels and repeated as an image: the same
+    tiling as the picture shader's, its texels stretched by ``local``."""
+    (vpx, vpy, vpw, vph), (rw, rh) = tile, size
+    surface = skia.Surface(rw, rh)
+    canvas = surface.getCanvas()
+    canvas.clear(skia.ColorTRANSPARENT)
+    canvas.scale(rw / vpw, rh / vph)
+    canvas.translate(-vpx, -vpy)
+    canvas.drawPicture(picture)
+    texels = np.array([[vpw / rw, 0.0, vpx], [0.0, vph / rh, vpy], [0.0, 0.0, 1.0]])
+    return surface.makeImageSnapshot().makeShader(
+        tx, ty, skia.SamplingOptions(skia.FilterMode.kLinear), matrix(np.asarray(local) @ texels)
     )
 
 
