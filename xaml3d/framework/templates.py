@@ -45,6 +45,7 @@ controls without a user template are left to the reader's theme drawing.
 from __future__ import annotations
 
 import math
+import re
 
 from xaml3d.access_text import access_text
 from xaml3d.framework import (
@@ -816,9 +817,16 @@ def _item_template(c: Control, sv):
     return None if value is None else items.template_element(value, c.el, sv, "DataTemplate")
 
 
+# a property's name, or an attached one's Owner.Name: what a Setter may name
+_MEMBER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)?\Z")
+
+
 def put(sv, el, prop: str, value) -> None:
     """Set ``el``'s property ``prop`` to ``value`` (text, or an element copied into a property
-    element), replacing how it was written before; None clears it (the default stands)."""
+    element), replacing how it was written before; None clears it (the default stands). A
+    name that is no property name (``Background,``) is not set: the reader's checks refuse it."""
+    if not _MEMBER.match(prop):
+        return
     el.attrib.pop(prop, None)
     for child in elements(el):
         local = local_name(child.tag)
