@@ -13,8 +13,6 @@ document without controls never loads it, nor the templates, text and shape read
 
 from __future__ import annotations
 
-import math
-
 from xaml3d.text_metrics import line_height, text_width
 from xaml3d.xaml import image_element, templates
 from xaml3d.xaml import values as V
@@ -25,8 +23,8 @@ from xaml3d.xaml.panels_reader import parse_thickness
 from xaml3d.xaml.shapes_reader import SHAPES, attach_layout
 from xaml3d.xaml.text_block import text_content
 from xaml3d.xaml.visual_style import font_style as _font_style
+from xaml3d.xaml.visual_text import text_lines
 from xaml3d.xaml.visual_text import text_of as _text_of
-from xaml3d.xaml.visual_text import wrapped_lines as _lines
 
 TEXT_CONTROLS = {"TextBlock", "Button", "ToggleButton", "RepeatButton",
                  "CheckBox", "RadioButton"}  # fmt: skip
@@ -68,7 +66,7 @@ def _text_control_size(v, el, local: str, font: float):
     pad = v.get("Padding", parse_thickness, (0.0,) * 4)
     text = _text_of(el)
     weight, italic, family = _font_style(el, v.r)
-    lines = _lines(text, font, weight, italic, math.inf, family)
+    lines = text_lines(text)
     w = max((text_width(t, font, weight, italic, family) for t in lines), default=0.0)
     h = line_height(font, family) * max(1, len(lines))
     w += pad[0] + pad[2]

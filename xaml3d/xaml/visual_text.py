@@ -13,8 +13,6 @@ and a Border-like box's Background / BorderBrush band are ``visual_style``'s.
 
 from __future__ import annotations
 
-import math
-
 from xaml3d.access_text import access_text
 from xaml3d.scene.drawing import (
     DrawingGroup,
@@ -22,7 +20,7 @@ from xaml3d.scene.drawing import (
     RectangleGeometry,
     TextDrawing,
 )
-from xaml3d.text_metrics import UI, baseline, line_height, text_width, uncovered
+from xaml3d.text_metrics import baseline, line_height, text_width, uncovered
 from xaml3d.xaml import values as V
 from xaml3d.xaml.context import qname, split_markup
 from xaml3d.xaml.inline_text import Format
@@ -65,9 +63,6 @@ def _plain_text(el) -> str:
 
 _WRAPS = ("NoWrap", "Wrap", "WrapWithOverflow")
 _TRIMS = ("None", "CharacterEllipsis", "WordEllipsis")
-# a line laid out again at its arranged width may meet a width rounded to whole pixels below
-# the measured one (UseLayoutRounding): so much is let through rather than wrapped
-_SLACK = 0.5
 
 
 def wraps(v) -> bool:
@@ -79,28 +74,11 @@ def trimming(v) -> str:
     return v.get("TextTrimming", lambda s: V.parse_enum(s, _TRIMS), "None")
 
 
-def wrapped_lines(
-    text: str, font: float, weight: int, italic: bool, width: float, family: str = UI
-) -> list[str]:
-    """``text`` broken into lines no wider than ``width`` at spaces (a word wider than the
-    line keeps a line of its own). A line feed (kept by xml:space="preserve") starts a new
-    line, as it does in WPF's text formatter."""
-    if "\n" in text:
-        return [x for part in text.split("\n") for x in (wrapped_lines(part, font, weight, italic,
-                                                               width, family) or [""])]  # fmt: skip
-    if not text or not math.isfinite(width):
-        return [text] if text else []
-    lines: list[str] = []
-    cur = ""
-    for word in text.split(" "):
-        trial = f"{cur} {word}" if cur else word
-        if cur and text_width(trial, font, weight, italic, family) > width:
-            lines.append(cur)
-            cur = word
-        else:
-            cur = trial
-    lines.append(cur)
-    return lines
+def text_lines(text: str) -> list[str]:
+    """A control's one-line text split where a line feed (kept by xml:space="preserve") starts
+    a new line, as WPF's text formatter does; none for no text. (Lines broken to a width are a
+    TextBlock's, broken by layout: ``xaml3d.layout.text``.)"""
+    return text.split("\n") if text else []
 
 
 def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_center: bool = False):
@@ -110,11 +88,10 @@ def text_drawing(r, el, v, font: float, x: float, y: float, w: float, align_cent
     if not text:
         return None
     weight, italic, family = font_style(el, r)
-    width = math.inf  # one line per line feed: wrapping text is a TextBlock's (text_block)
     alignment = _alignment(v)
     brush = foreground_brush(r, el)
     out = []
-    for i, line in enumerate(wrapped_lines(text, font, weight, italic, width, family)):
+    for i, line in enumerate(text_lines(text)):
         if not line:
             continue  # an empty line (between two line feeds) takes its height only
         tw = text_width(line, font, weight, italic, family)
